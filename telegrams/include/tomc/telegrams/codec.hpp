@@ -1,0 +1,51 @@
+#pragma once
+// Encodes and decodes one telegram of one direction into caller-provided bytes. No allocation, no
+// exceptions: every outcome is a TelegramError. Configure once (create), then call per cycle.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "tomc/telegrams/byte_order.hpp"
+#include "tomc/telegrams/error.hpp"
+#include "tomc/telegrams/layout.hpp"
+#include "tomc/telegrams/signals.hpp"
+
+namespace tomc::telegrams {
+
+struct CodecOptions {
+  ByteOrder byte_order = ByteOrder::kBig;
+  // Telegram 83: byte offset of NIST_B in the actual frame, 4, 8 or 12 (default 12, spec 06 §2.13
+  // [UNCONFIRMED]). G1_XIST1 and G1_XIST2 keep their order in the remaining 32-bit slots.
+  std::uint8_t telegram83_nist_b_offset = 12;
+};
+
+class TelegramCodec {
+ public:
+  TelegramCodec() noexcept = default;  // empty codec: length 0, every call fails with kUnknownTelegram
+  static Result<TelegramCodec> create(int telegram, Direction direction, CodecOptions options = {}) noexcept;
+
+  const TelegramLayout& layout() const noexcept { return layout_; }
+  int telegram() const noexcept { return layout_.telegram; }
+  Direction direction() const noexcept { return layout_.direction; }
+  std::size_t frame_size() const noexcept { return layout_.length; }
+  ByteOrder byte_order() const noexcept { return options_.byte_order; }
+  bool carries(Signal signal) const noexcept { return layout_.carries(signal); }
+
+  // The frame must be exactly frame_size() bytes; signals the telegram does not carry are left untouched.
+  TelegramError encode(const SetpointSignals& values, std::span<std::byte> frame) const noexcept;
+  TelegramError encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept;
+  TelegramError decode(std::span<const std::byte> frame, SetpointSignals& values) const noexcept;
+  TelegramError decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept;
+
+ private:
+  template <typename Values>
+  TelegramError encode_fields(const Values& values, std::span<std::byte> frame, Direction expected) const noexcept;
+  template <typename Values>
+  TelegramError decode_fields(std::span<const std::byte> frame, Values& values, Direction expected) const noexcept;
+
+  TelegramLayout layout_{};
+  CodecOptions options_{};
+};
+
+}  // namespace tomc::telegrams
