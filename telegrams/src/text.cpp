@@ -38,7 +38,7 @@ std::string_view describe(TelegramError error) noexcept {
     case TelegramError::kUnknownTelegram:
       return "unknown telegram (supported: 1, 2, 3, 4, 5, 6, 81, 83, 102, 103, 105, 106, 750)";
     case TelegramError::kTelegram104NotDefined:
-      return "telegram 104 is not defined for SINAMICS / S7-1500 technology objects";
+      return "not defined for SINAMICS drives or S7-1500 technology objects";
     case TelegramError::kFrameLengthMismatch: return "frame length does not match the telegram";
     case TelegramError::kWrongDirection: return "signals of the other direction for this telegram";
     case TelegramError::kInvalidOption: return "invalid codec option";

@@ -1,1 +1,45 @@
-int main(){}
+// tomc — the project's command-line program. Subcommands: telegram (more arrive with later layers).
+#include <exception>
+#include <iostream>
+#include <string_view>
+#include <vector>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+
+namespace {
+
+constexpr std::string_view kUsage =
+    "usage: tomc <command> [arguments]\n"
+    "\n"
+    "commands:\n"
+    "  telegram   encode and decode PROFIdrive telegrams (tomc telegram --help)\n"
+    "\n"
+    "Bad input prints one line on stderr and exits with status 2.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string_view> args(argv + 1, argv + argc);
+  try {
+    if (args.empty()) throw tomc::cli::UsageError("missing command (try: tomc --help)");
+    const std::string_view command = args.front();
+    const std::span<const std::string_view> rest(args.data() + 1, args.size() - 1);
+    if (command == "--help" || command == "-h" || command == "help") {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (command == "--version") {
+      std::cout << "tomc 0.1.0\n";
+      return 0;
+    }
+    if (command == "telegram") return tomc::cli::telegram_command(rest, std::cout);
+    throw tomc::cli::UsageError("unknown command '" + std::string(command) + "' (try: tomc --help)");
+  } catch (const tomc::cli::UsageError& e) {
+    std::cerr << "tomc: " << e.what() << '\n';
+    return tomc::cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "tomc: internal error: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,12 @@
+#pragma once
+// Subcommands of the tomc CLI. Each takes the arguments after its name and returns the exit status;
+// bad input throws UsageError (main prints it on one line and exits 2).
+#include <iosfwd>
+#include <span>
+#include <string_view>
+
+namespace tomc::cli {
+
+int telegram_command(std::span<const std::string_view> args, std::ostream& out);
+
+}  // namespace tomc::cli
