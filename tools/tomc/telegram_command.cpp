@@ -337,7 +337,9 @@ std::uint32_t checked_raw(tg::Signal s, long long value, const std::string& wher
 std::uint32_t word_from_object(tg::Signal s, const Json& obj, const std::string& where) {
   std::uint32_t word = 0;
   if (const auto it = obj.find("value"); it != obj.end()) word = checked_raw(s, json_integer(*it, where + ".value"), where + ".value");
-  for (const auto& [key, v] : obj.items()) {
+  for (const auto& item : obj.items()) {
+    const std::string key = item.key();
+    const Json& v = item.value();
     if (key == "value" || key == "hex") continue;
     const auto fields = tg::word_fields(s);
     const auto f = std::find_if(fields.begin(), fields.end(), [&](const tg::NamedField& nf) { return nf.name == key; });
