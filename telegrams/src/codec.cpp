@@ -1,11 +1,108 @@
-// Table-driven frame codec: walks the telegram's fields and moves each between the value struct and the bytes.
+// Table-driven frame codec: at create() the layout is resolved into (frame offset, value offset, width)
+// triples; encode/decode then move each signal between the value struct and the bytes.
 #include "tomc/telegrams/codec.hpp"
 
+#include <cstddef>
+#include <cstring>
+
 namespace tomc::telegrams {
+namespace {
+
+// Where each signal lives in its value struct. Both structs are standard-layout (Word<> has one uint16_t).
+constexpr std::uint8_t value_offset(Signal s) noexcept {
+  switch (s) {
+    case Signal::STW1: return offsetof(SetpointSignals, STW1);
+    case Signal::NSOLL_A: return offsetof(SetpointSignals, NSOLL_A);
+    case Signal::NSOLL_B: return offsetof(SetpointSignals, NSOLL_B);
+    case Signal::STW2: return offsetof(SetpointSignals, STW2);
+    case Signal::G1_STW: return offsetof(SetpointSignals, G1_STW);
+    case Signal::G2_STW: return offsetof(SetpointSignals, G2_STW);
+    case Signal::XERR: return offsetof(SetpointSignals, XERR);
+    case Signal::KPC: return offsetof(SetpointSignals, KPC);
+    case Signal::MOMRED: return offsetof(SetpointSignals, MOMRED);
+    case Signal::STW2_ENC: return offsetof(SetpointSignals, STW2_ENC);
+    case Signal::M_ADD1: return offsetof(SetpointSignals, M_ADD1);
+    case Signal::M_LIMIT_POS: return offsetof(SetpointSignals, M_LIMIT_POS);
+    case Signal::M_LIMIT_NEG: return offsetof(SetpointSignals, M_LIMIT_NEG);
+    case Signal::ZSW1: return offsetof(ActualSignals, ZSW1);
+    case Signal::NIST_A: return offsetof(ActualSignals, NIST_A);
+    case Signal::NIST_B: return offsetof(ActualSignals, NIST_B);
+    case Signal::ZSW2: return offsetof(ActualSignals, ZSW2);
+    case Signal::G1_ZSW: return offsetof(ActualSignals, G1_ZSW);
+    case Signal::G1_XIST1: return offsetof(ActualSignals, G1_XIST1);
+    case Signal::G1_XIST2: return offsetof(ActualSignals, G1_XIST2);
+    case Signal::G2_ZSW: return offsetof(ActualSignals, G2_ZSW);
+    case Signal::G2_XIST1: return offsetof(ActualSignals, G2_XIST1);
+    case Signal::G2_XIST2: return offsetof(ActualSignals, G2_XIST2);
+    case Signal::MELDW: return offsetof(ActualSignals, MELDW);
+    case Signal::ZSW2_ENC: return offsetof(ActualSignals, ZSW2_ENC);
+    case Signal::M_ACT: return offsetof(ActualSignals, M_ACT);
+  }
+  return 0;
+}
+
+static_assert(sizeof(Stw1) == 2 && sizeof(EncoderStatusWord) == 2, "words are plain 16-bit values");
+
+template <ByteOrder kOrder, typename Field>
+void encode_loop(const Field* fields, std::size_t count, const void* values, std::byte* frame) noexcept {
+  const auto* base = static_cast<const unsigned char*>(values);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Field& f = fields[i];
+    if (f.bytes == 4) {
+      std::uint32_t v;
+      std::memcpy(&v, base + f.value_offset, sizeof v);
+      write_double_word(frame + f.frame_offset, v, kOrder);
+    } else {
+      std::uint16_t v;
+      std::memcpy(&v, base + f.value_offset, sizeof v);
+      write_word(frame + f.frame_offset, v, kOrder);
+    }
+  }
+}
+
+template <ByteOrder kOrder, typename Field>
+void decode_loop(const Field* fields, std::size_t count, const std::byte* frame, void* values) noexcept {
+  auto* base = static_cast<unsigned char*>(values);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Field& f = fields[i];
+    if (f.bytes == 4) {
+      const std::uint32_t v = read_double_word(frame + f.frame_offset, kOrder);
+      std::memcpy(base + f.value_offset, &v, sizeof v);
+    } else {
+      const std::uint16_t v = read_word(frame + f.frame_offset, kOrder);
+      std::memcpy(base + f.value_offset, &v, sizeof v);
+    }
+  }
+}
+
+template <typename Field>
+void encode_any(ByteOrder order, const Field* fields, std::size_t count, const void* values, std::byte* frame) noexcept {
+  switch (order) {
+    case ByteOrder::kBig: encode_loop<ByteOrder::kBig>(fields, count, values, frame); break;
+    case ByteOrder::kLittleBytes: encode_loop<ByteOrder::kLittleBytes>(fields, count, values, frame); break;
+    case ByteOrder::kSwappedWords: encode_loop<ByteOrder::kSwappedWords>(fields, count, values, frame); break;
+    case ByteOrder::kLittle: encode_loop<ByteOrder::kLittle>(fields, count, values, frame); break;
+  }
+}
+
+template <typename Field>
+void decode_any(ByteOrder order, const Field* fields, std::size_t count, const std::byte* frame, void* values) noexcept {
+  switch (order) {
+    case ByteOrder::kBig: decode_loop<ByteOrder::kBig>(fields, count, frame, values); break;
+    case ByteOrder::kLittleBytes: decode_loop<ByteOrder::kLittleBytes>(fields, count, frame, values); break;
+    case ByteOrder::kSwappedWords: decode_loop<ByteOrder::kSwappedWords>(fields, count, frame, values); break;
+    case ByteOrder::kLittle: decode_loop<ByteOrder::kLittle>(fields, count, frame, values); break;
+  }
+}
+
+}  // namespace
 
 Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction, CodecOptions options) noexcept {
   auto layout = find_layout(telegram, direction);
   if (!layout) return layout.error();
+  if (static_cast<unsigned>(options.byte_order) > static_cast<unsigned>(ByteOrder::kLittle)) {
+    return TelegramError::kInvalidOption;
+  }
   TelegramCodec codec;
   codec.layout_ = layout.value();
   codec.options_ = options;
@@ -24,52 +121,46 @@ Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction, C
       }
     }
   }
+  codec.compile();
   return codec;
 }
 
-template <typename Values>
-TelegramError TelegramCodec::encode_fields(const Values& values, std::span<std::byte> frame,
-                                           Direction expected) const noexcept {
-  if (layout_.length == 0) return TelegramError::kUnknownTelegram;
-  if (layout_.direction != expected) return TelegramError::kWrongDirection;
-  if (frame.size() != layout_.length) return TelegramError::kFrameLengthMismatch;
-  for (const auto& f : layout_.fields()) {
-    std::byte* p = frame.data() + f.offset;
-    if (info(f.signal).bits == 32) {
-      write_double_word(p, values.raw(f.signal), options_.byte_order);
-    } else {
-      write_word(p, static_cast<std::uint16_t>(values.raw(f.signal)), options_.byte_order);
-    }
+void TelegramCodec::compile() noexcept {
+  for (std::size_t i = 0; i < layout_.field_count; ++i) {
+    const FieldLayout& f = layout_.field_table[i];
+    compiled_[i] = CompiledField{f.offset, value_offset(f.signal), static_cast<std::uint8_t>(info(f.signal).bits / 8)};
   }
-  return TelegramError::kNone;
 }
 
-template <typename Values>
-TelegramError TelegramCodec::decode_fields(std::span<const std::byte> frame, Values& values,
-                                           Direction expected) const noexcept {
+TelegramError TelegramCodec::check(std::size_t frame_size, Direction expected) const noexcept {
   if (layout_.length == 0) return TelegramError::kUnknownTelegram;
   if (layout_.direction != expected) return TelegramError::kWrongDirection;
-  if (frame.size() != layout_.length) return TelegramError::kFrameLengthMismatch;
-  for (const auto& f : layout_.fields()) {
-    const std::byte* p = frame.data() + f.offset;
-    const std::uint32_t raw =
-        info(f.signal).bits == 32 ? read_double_word(p, options_.byte_order) : read_word(p, options_.byte_order);
-    values.set_raw(f.signal, raw);
-  }
+  if (frame_size != layout_.length) return TelegramError::kFrameLengthMismatch;
   return TelegramError::kNone;
 }
 
 TelegramError TelegramCodec::encode(const SetpointSignals& values, std::span<std::byte> frame) const noexcept {
-  return encode_fields(values, frame, Direction::kSetpoint);
+  const TelegramError e = check(frame.size(), Direction::kSetpoint);
+  if (e == TelegramError::kNone) encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
+  return e;
 }
+
 TelegramError TelegramCodec::encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept {
-  return encode_fields(values, frame, Direction::kActual);
+  const TelegramError e = check(frame.size(), Direction::kActual);
+  if (e == TelegramError::kNone) encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
+  return e;
 }
+
 TelegramError TelegramCodec::decode(std::span<const std::byte> frame, SetpointSignals& values) const noexcept {
-  return decode_fields(frame, values, Direction::kSetpoint);
+  const TelegramError e = check(frame.size(), Direction::kSetpoint);
+  if (e == TelegramError::kNone) decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
+  return e;
 }
+
 TelegramError TelegramCodec::decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept {
-  return decode_fields(frame, values, Direction::kActual);
+  const TelegramError e = check(frame.size(), Direction::kActual);
+  if (e == TelegramError::kNone) decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
+  return e;
 }
 
 }  // namespace tomc::telegrams

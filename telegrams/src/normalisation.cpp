@@ -7,13 +7,20 @@
 namespace tomc::telegrams {
 namespace {
 
-// round half away from zero, then saturate to [lo, hi]; NaN -> 0.
+// Round half away from zero, then saturate to [lo, hi] (|lo|, |hi| <= 2^31); NaN -> 0. Clamping first keeps the
+// integer conversion defined; x - trunc(x) is exact here, so this equals std::round without a libm call in the
+// servo path.
 double round_saturate(double x, double lo, double hi) noexcept {
   if (std::isnan(x)) return 0.0;
-  const double r = std::round(x);  // std::round rounds half away from zero
-  if (r < lo) return lo;
-  if (r > hi) return hi;
-  return r;
+  if (x <= lo) return lo;
+  if (x >= hi) return hi;
+  const auto t = static_cast<std::int64_t>(x);  // truncation toward zero
+  const double fraction = x - static_cast<double>(t);
+  std::int64_t r = t;
+  if (fraction >= 0.5) ++r;
+  if (fraction <= -0.5) --r;
+  const auto rounded = static_cast<double>(r);
+  return rounded < lo ? lo : (rounded > hi ? hi : rounded);
 }
 
 bool usable_reference(double reference) noexcept { return std::isfinite(reference) && reference > 0.0; }

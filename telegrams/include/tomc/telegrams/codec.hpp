@@ -3,6 +3,7 @@
 // exceptions: every outcome is a TelegramError. Configure once (create), then call per cycle.
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -39,13 +40,19 @@ class TelegramCodec {
   TelegramError decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept;
 
  private:
-  template <typename Values>
-  TelegramError encode_fields(const Values& values, std::span<std::byte> frame, Direction expected) const noexcept;
-  template <typename Values>
-  TelegramError decode_fields(std::span<const std::byte> frame, Values& values, Direction expected) const noexcept;
+  // The layout resolved once at create(): where each signal sits in the frame and in the value struct, so the
+  // per-cycle loop is a few loads and stores (docs/performance.md).
+  struct CompiledField {
+    std::uint8_t frame_offset;
+    std::uint8_t value_offset;  // offsetof the member in SetpointSignals / ActualSignals
+    std::uint8_t bytes;         // 2 or 4
+  };
+  void compile() noexcept;
+  TelegramError check(std::size_t frame_size, Direction expected) const noexcept;
 
   TelegramLayout layout_{};
   CodecOptions options_{};
+  std::array<CompiledField, kMaxFieldsPerFrame> compiled_{};
 };
 
 }  // namespace tomc::telegrams
