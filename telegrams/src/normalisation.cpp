@@ -28,12 +28,12 @@ bool usable_reference(double reference) noexcept { return std::isfinite(referenc
 }  // namespace
 
 std::int16_t speed_to_n2(double speed, double reference_speed) noexcept {
-  if (!usable_reference(reference_speed)) return 0;
+  if (!usable_reference(reference_speed) || !std::isfinite(speed)) return 0;  // non-finite -> 0
   return static_cast<std::int16_t>(round_saturate(speed / reference_speed * kN2Hundred, INT16_MIN, INT16_MAX));
 }
 
 std::int32_t speed_to_n4(double speed, double reference_speed) noexcept {
-  if (!usable_reference(reference_speed)) return 0;
+  if (!usable_reference(reference_speed) || !std::isfinite(speed)) return 0;  // non-finite -> 0
   return static_cast<std::int32_t>(round_saturate(speed / reference_speed * kN4Hundred, INT32_MIN, INT32_MAX));
 }
 
@@ -67,12 +67,14 @@ double torque_limit_from_momred(std::uint16_t momred, double reference_torque) n
 }
 
 std::int32_t kpc_from_kv(double kv_per_second) noexcept {
+  if (!std::isfinite(kv_per_second)) return 0;  // header: non-finite value -> 0 (KPC = 0 deactivates DSC)
   return static_cast<std::int32_t>(round_saturate(kv_per_second * 1000.0, INT32_MIN, INT32_MAX));
 }
 
 double kv_from_kpc(std::int32_t kpc) noexcept { return static_cast<double>(kpc) / 1000.0; }
 
 std::int32_t xerr_from_counts(double counts) noexcept {
+  if (!std::isfinite(counts)) return 0;  // header: non-finite value -> 0
   return static_cast<std::int32_t>(round_saturate(counts, INT32_MIN, INT32_MAX));
 }
 
