@@ -1,0 +1,627 @@
+// The simulated PROFIdrive drive. One call of read_actual() is one servo cycle of the drive: take the setpoints
+// the controller wrote last cycle, run the state machine and the motor/load model for one cycle, answer with
+// actual-value frames. Pure arithmetic on preallocated state: no allocation, no locks, no exceptions.
+#include "tomc/drives/simulated_drive.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tomc/telegrams/layout.hpp"
+#include "tomc/telegrams/normalisation.hpp"
+
+namespace tomc::drives {
+
+namespace tg = tomc::telegrams;
+using Reaction = SimulatedDriveParameters::FaultReaction;
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double rpm_to_rad_s(double rpm) { return rpm * kTwoPi / 60.0; }
+constexpr double rad_s_to_rpm(double w) { return w * 60.0 / kTwoPi; }
+constexpr bool bit(std::uint16_t w, unsigned n) { return ((w >> n) & 1u) != 0; }
+
+bool has_dsc(std::uint16_t telegram) {
+  return telegram == 5 || telegram == 6 || telegram == 105 || telegram == 106;
+}
+
+// Encoder k (0 = G1, 1 = G2) of the drive telegram, or of a separate encoder slot (spec 01 §3.3).
+int encoder_index_of_slot(const DeviceConfig& c, Slot slot) {
+  if (slot == Slot::kEncoder2) return 1;
+  const auto layout = tg::find_layout(c.drive_telegram, tg::Direction::kActual);
+  const bool drive_has_g1 = layout && layout->carries(tg::Signal::G1_ZSW);
+  return drive_has_g1 ? 1 : 0;
+}
+
+double counts_per_revolution(const SimulatedEncoderParameters& e) {
+  return tg::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist1);
+}
+
+}  // namespace
+
+SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveParameters& parameters)
+    : config_(config), p_(parameters) {
+  if (p_.substeps == 0) p_.substeps = 1;
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    const auto t = config_.telegram(static_cast<Slot>(i));
+    if (t == 0) continue;
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, config_.codec)) setpoint_codecs_[i] = c.value();
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, config_.codec)) actual_codecs_[i] = c.value();
+  }
+  setpoint_frames_ = make_frames(config_, tg::Direction::kSetpoint);
+  // Which encoders exist: those carried by the drive telegram, plus separately connected ones.
+  const auto& drive_actual = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  encoders_[0].present = drive_actual.carries(tg::Signal::G1_ZSW);
+  encoders_[1].present = drive_actual.carries(tg::Signal::G2_ZSW);
+  for (Slot s : {Slot::kEncoder1, Slot::kEncoder2}) {
+    if (config_.telegram(s) != 0) encoders_[static_cast<std::size_t>(encoder_index_of_slot(config_, s))].present = true;
+  }
+  master_monitor_ = tg::SignOfLifeMonitor(tg::SignOfLifeMonitorConfig{p_.sign_of_life_tolerance, 1});
+  load_position_ = p_.initial_load_position;
+  motor_revolutions_ =
+      load_position_ / p_.load_units_per_revolution * (p_.gear_motor_revolutions / p_.gear_load_revolutions);
+  power_cycle();
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Adapter interface
+
+void SimulatedDrive::write_setpoint(const DeviceFrames& setpoint) noexcept {
+  if (link_lost_) return;  // the frame never reaches the drive
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    if (setpoint_frames_.slots[i].length == 0) continue;
+    if (setpoint.slots[i].length != setpoint_frames_.slots[i].length) continue;  // malformed: ignored
+    setpoint_frames_.slots[i].bytes = setpoint.slots[i].bytes;
+  }
+  fresh_setpoint_ = true;
+}
+
+bool SimulatedDrive::read_actual(DeviceFrames& actual) noexcept {
+  apply_setpoints();
+  update_state_machine();
+  const double previous_load = load_position_;
+  const double previous_motor = motor_revolutions_;
+  motor_revolutions_at_sample_ = motor_revolutions_;
+  const double dt = p_.servo_cycle_s / static_cast<double>(p_.substeps);
+  for (std::uint32_t i = 0; i < p_.substeps; ++i) integrate(dt);
+  update_encoders(previous_load, previous_motor);
+  if (p_.isochronous && cyclic_data_ && !sign_of_life_frozen_) slave_counter_ = slave_sign_of_life_.next();
+
+  ++health_.exchanges;
+  if (link_lost_) {
+    ++health_.consecutive_missed;
+    ++health_.missed_total;
+    health_.up = false;
+    return false;
+  }
+  health_.consecutive_missed = 0;
+  health_.up = true;
+  encode_actuals(actual);
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Setpoints, faults and the PROFIdrive state machine (spec 06 §4)
+
+void SimulatedDrive::apply_setpoints() noexcept {
+  if (!fresh_setpoint_) {
+    if (cyclic_data_ && ++missed_setpoints_ >= p_.setpoint_timeout_cycles && fault_code_ != kFaultSetpointTimeout) {
+      raise_fault(kFaultSetpointTimeout, p_.communication_fault_reaction);
+    }
+    return;
+  }
+  fresh_setpoint_ = false;
+  missed_setpoints_ = 0;
+  cyclic_data_ = true;
+  previous_stw1_ = drive_sp_.STW1.value();
+  auto decode = [&](Slot s, tg::SetpointSignals& into) {
+    const auto i = static_cast<std::size_t>(s);
+    if (setpoint_codecs_[i].frame_size() != 0) (void)setpoint_codecs_[i].decode(setpoint_frames_.slots[i].view(), into);
+  };
+  decode(Slot::kDrive, drive_sp_);
+  decode(Slot::kSupplementary, supplementary_sp_);
+  decode(Slot::kEncoder1, encoder_sp_[0]);
+  decode(Slot::kEncoder2, encoder_sp_[1]);
+
+  // Master sign-of-life (spec 06 §5): in the drive telegram's STW2, or an encoder telegram's STW2_ENC.
+  const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  if (p_.isochronous) {
+    std::uint8_t master = 0;
+    bool monitored = false;
+    if (drive_codec.carries(tg::Signal::STW2)) {
+      master = static_cast<std::uint8_t>(drive_sp_.STW2.field(tg::kSignOfLifeField));
+      monitored = true;
+    } else if (config_.telegram(Slot::kEncoder1) != 0) {
+      master = static_cast<std::uint8_t>(encoder_sp_[0].STW2_ENC.field(tg::kSignOfLifeField));
+      monitored = true;
+    }
+    if (monitored && master_monitor_.check(master) == tg::SignOfLifeStatus::kFailed) {
+      if (config_.drive_telegram != 0) {
+        if (fault_code_ == 0) raise_fault(kFaultSignOfLife, p_.communication_fault_reaction);
+      } else {
+        const int e = encoder_index_of_slot(config_, Slot::kEncoder1);
+        if (encoders_[static_cast<std::size_t>(e)].error_code == 0) {
+          encoders_[static_cast<std::size_t>(e)].error_code = tg::kEncoderErrorMasterSignOfLife;
+        }
+      }
+    }
+  }
+}
+
+void SimulatedDrive::raise_fault(std::uint32_t code, Reaction reaction) noexcept {
+  if (fault_code_ != 0) return;  // the first fault decides the reaction
+  fault_code_ = code;
+  fault_reaction_ = reaction;
+}
+
+void SimulatedDrive::inject_fault(std::uint32_t code, Reaction reaction) noexcept {
+  injected_fault_ = code == 0 ? 1 : code;
+  injected_reaction_ = reaction;
+}
+
+void SimulatedDrive::inject_encoder_error(int encoder, std::uint16_t code) noexcept {
+  if (encoder < 1 || encoder > 2) return;
+  encoders_[static_cast<std::size_t>(encoder - 1)].error_code = code == 0 ? tg::kEncoderErrorSensorGroup : code;
+}
+
+void SimulatedDrive::clear_encoder_error(int encoder) noexcept {
+  if (encoder < 1 || encoder > 2) return;
+  // The cause is gone; the error bit stays until the controller acknowledges (G_STW.15, spec 06 §6.3).
+  auto& e = encoders_[static_cast<std::size_t>(encoder - 1)];
+  if (e.error_code != tg::kEncoderErrorMasterSignOfLife) e.error_code = 0;
+}
+
+void SimulatedDrive::update_state_machine() noexcept {
+  if (config_.drive_telegram == 0) return;  // encoder-only device
+  const std::uint16_t stw1 = drive_sp_.STW1.value();
+  const bool motor_encoder_error = encoders_[0].present && encoders_[0].error_code != 0 &&
+                                   p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kMotor;
+
+  // Causes that are present now raise their fault (once).
+  if (injected_fault_ != 0) raise_fault(injected_fault_, injected_reaction_);
+  if (motor_encoder_error) raise_fault(kFaultMotorEncoder, Reaction::kOff2);
+  if (cyclic_data_ && !bit(stw1, 10) && state_ != tg::DriveState::kS0NotReady &&
+      state_ != tg::DriveState::kS1SwitchingOnInhibited && state_ != tg::DriveState::kS2ReadyForSwitchingOn) {
+    raise_fault(kFaultNoControlByPlc, Reaction::kOff1);
+  }
+
+  // Acknowledge: a 0 -> 1 edge of STW1.7 clears the fault when its cause is gone (spec 06 §3.1 bit 7).
+  if (fault_code_ != 0 && bit(stw1, 7) && !bit(previous_stw1_, 7)) {
+    const bool cause_present = (fault_code_ == injected_fault_ && injected_fault_ != 0) ||
+                               (fault_code_ == kFaultMotorEncoder && motor_encoder_error) ||
+                               (fault_code_ == kFaultSetpointTimeout && missed_setpoints_ != 0);
+    if (!cause_present) {
+      fault_code_ = 0;
+      master_monitor_.reset();
+      state_ = tg::DriveState::kS1SwitchingOnInhibited;
+    }
+  }
+  previous_stw1_ = stw1;
+
+  // A fault forces its reaction by masking STW1 (DevKit behaviour, spec 06 §4.1) and blocks switching on.
+  std::uint16_t effective = stw1;
+  if (fault_code_ != 0) {
+    switch (fault_reaction_) {
+      case Reaction::kOff1: effective &= static_cast<std::uint16_t>(~0x0001u); break;
+      case Reaction::kOff2: effective &= static_cast<std::uint16_t>(~0x0002u); break;
+      case Reaction::kOff3: effective &= static_cast<std::uint16_t>(~0x0004u); break;
+    }
+  }
+  if (!cyclic_data_) return;
+  const bool standstill = std::fabs(rad_s_to_rpm(omega_)) < p_.standstill_threshold_rpm;
+  tg::DriveState next = tg::next_drive_state(state_, effective, standstill);
+  // A present fault inhibits switching on: the drive ends in S1 once its fault reaction is complete.
+  if (fault_code_ != 0 && (next == tg::DriveState::kS2ReadyForSwitchingOn || next == tg::DriveState::kS3SwitchedOn ||
+                           next == tg::DriveState::kS4Operation)) {
+    next = tg::DriveState::kS1SwitchingOnInhibited;
+  }
+  // Entering a ramp stop starts the ramp-function generator at the present speed.
+  if ((next == tg::DriveState::kS5aRampStop || next == tg::DriveState::kS5bQuickStop) && next != state_) {
+    ramp_setpoint_rpm_ = rad_s_to_rpm(omega_);
+  }
+  state_ = next;
+  pulses_enabled_ = state_ == tg::DriveState::kS4Operation || state_ == tg::DriveState::kS5aRampStop ||
+                    state_ == tg::DriveState::kS5bQuickStop;
+}
+
+double SimulatedDrive::speed_setpoint_rpm() const noexcept {
+  const auto& codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  double n = codec.carries(tg::Signal::NSOLL_B) ? tg::n4_to_speed(drive_sp_.NSOLL_B, p_.reference_speed_rpm)
+                                                : tg::n2_to_speed(drive_sp_.NSOLL_A, p_.reference_speed_rpm);
+  // STW1.4..6: ramp generator enable / unfreeze / setpoint enable; 0 forces the setpoint to 0.
+  const std::uint16_t stw1 = drive_sp_.STW1.value();
+  if (!bit(stw1, 4) || !bit(stw1, 6)) n = 0.0;
+  return n;
+}
+
+double SimulatedDrive::torque_limit_positive() const noexcept {
+  double limit = p_.torque_limit_nm;
+  const auto& drive = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  if (drive.carries(tg::Signal::MOMRED)) {
+    limit = std::min(limit, tg::torque_limit_from_momred(drive_sp_.MOMRED, p_.reference_torque_nm));
+  }
+  if (config_.supplementary_telegram == 750) {
+    limit = std::min(limit, tg::n2_to_torque(supplementary_sp_.M_LIMIT_POS, p_.reference_torque_nm));
+  }
+  return limit;
+}
+
+double SimulatedDrive::torque_limit_negative() const noexcept {
+  double limit = -p_.torque_limit_nm;
+  const auto& drive = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  if (drive.carries(tg::Signal::MOMRED)) {
+    limit = std::max(limit, -tg::torque_limit_from_momred(drive_sp_.MOMRED, p_.reference_torque_nm));
+  }
+  if (config_.supplementary_telegram == 750) {
+    limit = std::max(limit, tg::n2_to_torque(supplementary_sp_.M_LIMIT_NEG, p_.reference_torque_nm));
+  }
+  return limit;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Motor and load
+
+void SimulatedDrive::integrate(double dt) noexcept {
+  const double ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;  // motor rev per load rev
+  const double inertia = p_.motor_inertia_kgm2 + p_.load_inertia_kgm2 / (ratio * ratio);
+
+  if (config_.drive_telegram == 0) {  // encoder-only device: the shaft moves as told
+    load_position_ += external_speed_ * dt;
+    motor_revolutions_ = load_position_ / p_.load_units_per_revolution * ratio;
+    return;
+  }
+
+  // Speed reference of the speed loop for this state.
+  double reference_rpm = 0.0;
+  if (state_ == tg::DriveState::kS4Operation) {
+    reference_rpm = speed_setpoint_rpm();
+    // DSC (spec 06 §7): position loop in the drive on XERR with gain KPC, plus the NSOLL_B pre-control.
+    if (has_dsc(config_.drive_telegram) && drive_sp_.KPC != 0 && encoders_[0].present) {
+      const double cpr = counts_per_revolution(p_.encoder1);
+      double error_motor_revolutions = static_cast<double>(drive_sp_.XERR) / cpr;
+      if (p_.encoder1.linear) {
+        error_motor_revolutions = static_cast<double>(drive_sp_.XERR) * p_.encoder1.resolution /
+                                  std::ldexp(1.0, p_.encoder1.fine_resolution_xist1) / p_.load_units_per_revolution * ratio;
+      } else if (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad) {
+        error_motor_revolutions *= ratio;
+      }
+      const double moved = motor_revolutions_ - motor_revolutions_at_sample_;
+      reference_rpm += tg::kv_from_kpc(drive_sp_.KPC) * (error_motor_revolutions - moved) * 60.0;
+    }
+  } else if (state_ == tg::DriveState::kS5aRampStop || state_ == tg::DriveState::kS5bQuickStop) {
+    const double ramp_time =
+        state_ == tg::DriveState::kS5aRampStop ? p_.off1_ramp_down_time_s : p_.off3_ramp_down_time_s;
+    const double step = ramp_time > 0.0 ? p_.max_speed_rpm / ramp_time * dt : std::fabs(ramp_setpoint_rpm_);
+    ramp_setpoint_rpm_ = ramp_setpoint_rpm_ > 0.0 ? std::max(0.0, ramp_setpoint_rpm_ - step)
+                                                  : std::min(0.0, ramp_setpoint_rpm_ + step);
+    reference_rpm = ramp_setpoint_rpm_;
+  }
+  reference_rpm = std::clamp(reference_rpm, -p_.max_speed_rpm, p_.max_speed_rpm);
+  const double reference = rpm_to_rad_s(reference_rpm);
+
+  // Friction at the motor shaft: viscous + Coulomb; static friction holds a shaft at rest.
+  const double moving_threshold = 1e-6;
+  const double coulomb = std::fabs(omega_) > moving_threshold ? std::copysign(p_.coulomb_friction_nm, omega_) : 0.0;
+  const double friction = p_.viscous_friction_nm_per_rad_s * omega_ + coulomb;
+
+  double torque = 0.0;
+  if (pulses_enabled_) {
+    // Closed speed loop = first-order lag with time constant T (exact discretisation), friction compensated;
+    // the additional torque of telegram 750 (M_ADD1) is added to the demand.
+    const double lag = 1.0 - std::exp(-dt / p_.speed_loop_time_constant_s);
+    const double accel_demand = (reference - omega_) * lag / dt;
+    double demand = inertia * accel_demand + friction;
+    if (std::fabs(omega_) <= moving_threshold) demand += std::copysign(p_.coulomb_friction_nm, reference);
+    if (config_.supplementary_telegram == 750) demand += tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
+    if (blocked_) {
+      // At a fixed stop the speed controller's integral winds up until the torque limit (spec: torque rises).
+      stall_integral_ += inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
+      stall_integral_ = std::clamp(stall_integral_, -2.0 * p_.torque_limit_nm, 2.0 * p_.torque_limit_nm);
+      demand += stall_integral_;
+    } else {
+      stall_integral_ = 0.0;
+    }
+    torque = std::clamp(demand, torque_limit_negative(), torque_limit_positive());
+  }
+  torque_ = torque;
+
+  double omega_next = omega_;
+  if (std::fabs(omega_) <= moving_threshold && std::fabs(torque) <= p_.coulomb_friction_nm) {
+    omega_next = 0.0;  // static friction holds
+  } else {
+    omega_next = omega_ + (torque - friction) / inertia * dt;
+    if (!pulses_enabled_ && omega_ * omega_next < 0.0) omega_next = 0.0;  // friction alone never reverses
+  }
+  const double delta_motor_revolutions = 0.5 * (omega_ + omega_next) * dt / kTwoPi;
+  omega_ = omega_next;
+  motor_revolutions_ += delta_motor_revolutions;
+  load_position_ += delta_motor_revolutions / ratio * p_.load_units_per_revolution;
+
+  // Mechanical end stops: the load cannot pass; the motor shaft (rigid coupling) stops with it.
+  const auto& m = p_.machine;
+  blocked_ = false;
+  auto stop_at = [&](double stop) {
+    load_position_ = stop;
+    motor_revolutions_ = stop / p_.load_units_per_revolution * ratio;
+    omega_ = 0.0;
+    blocked_ = true;
+  };
+  if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0) stop_at(*m.positive_fixed_stop);
+  if (m.negative_fixed_stop && load_position_ <= *m.negative_fixed_stop && torque_ <= 0.0) stop_at(*m.negative_fixed_stop);
+}
+
+double SimulatedDrive::motor_speed_rpm() const noexcept { return rad_s_to_rpm(omega_); }
+
+double SimulatedDrive::load_speed() const noexcept {
+  if (config_.drive_telegram == 0) return external_speed_;
+  const double ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;
+  return omega_ / kTwoPi / ratio * p_.load_units_per_revolution;
+}
+
+MachineInputs SimulatedDrive::machine_inputs() const noexcept {
+  const auto& m = p_.machine;
+  MachineInputs in;
+  in.negative_limit_switch = m.negative_limit_switch && load_position_ <= *m.negative_limit_switch;
+  in.positive_limit_switch = m.positive_limit_switch && load_position_ >= *m.positive_limit_switch;
+  in.reference_cam = m.reference_cam && m.reference_cam->contains(load_position_);
+  in.probe1 = m.probe1 && m.probe1->contains(load_position_);
+  in.probe2 = m.probe2 && m.probe2->contains(load_position_);
+  in.at_fixed_stop = blocked_;
+  return in;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Encoders (spec 06 §6)
+
+double SimulatedDrive::shaft_revolutions(const SimulatedEncoderParameters& e, double motor_revolutions,
+                                         double load_position) const noexcept {
+  if (e.linear) return load_position / e.resolution;  // in steps, see xist1_of
+  if (e.shaft == SimulatedEncoderParameters::Shaft::kMotor) return motor_revolutions;
+  return load_position / p_.load_units_per_revolution;
+}
+
+std::uint32_t SimulatedDrive::xist1_of(int index, double shaft) const noexcept {
+  const auto& e = index == 0 ? p_.encoder1 : p_.encoder2;
+  const auto& s = encoders_[static_cast<std::size_t>(index)];
+  const double scale = e.linear ? std::ldexp(1.0, e.fine_resolution_xist1) : counts_per_revolution(e);
+  double counts = 0.0;
+  if (e.determinable_revolutions == 0) {
+    counts = static_cast<double>(s.xist1_at_power_on) + (shaft - s.revolutions_at_power_on) * scale;
+  } else {
+    counts = (shaft - (e.linear ? 0.0 : e.absolute_offset_revolutions)) * scale;
+  }
+  const double modulus = std::ldexp(1.0, std::clamp<int>(e.xist1_width_bits, 1, 32));
+  double wrapped = std::fmod(std::floor(counts), modulus);
+  if (wrapped < 0.0) wrapped += modulus;
+  return static_cast<std::uint32_t>(wrapped);
+}
+
+void SimulatedDrive::update_encoders(double previous_load_position, double previous_motor_revolutions) noexcept {
+  for (int i = 0; i < 2; ++i) {
+    if (!encoders_[static_cast<std::size_t>(i)].present) continue;
+    const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
+    update_encoder(i, shaft_revolutions(e, previous_motor_revolutions, previous_load_position),
+                   shaft_revolutions(e, motor_revolutions_, load_position_), previous_load_position, load_position_);
+  }
+}
+
+void SimulatedDrive::update_encoder(int index, double previous_shaft, double shaft, double previous_load,
+                                    double load) noexcept {
+  auto& s = encoders_[static_cast<std::size_t>(index)];
+  const auto& e = index == 0 ? p_.encoder1 : p_.encoder2;
+  // The Gx_STW of this encoder: in the drive telegram (G1/G2) or in its separate encoder telegram.
+  const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  std::uint16_t control = 0;
+  bool control_by_plc = true;
+  if (index == 0 && drive_codec.carries(tg::Signal::G1_STW)) {
+    control = drive_sp_.G1_STW.value();
+  } else if (index == 1 && drive_codec.carries(tg::Signal::G2_STW)) {
+    control = drive_sp_.G2_STW.value();
+  } else {
+    for (Slot slot : {Slot::kEncoder1, Slot::kEncoder2}) {
+      if (config_.telegram(slot) != 0 && encoder_index_of_slot(config_, slot) == index) {
+        const auto& sp = encoder_sp_[slot == Slot::kEncoder1 ? 0 : 1];
+        control = sp.G1_STW.value();
+        control_by_plc = sp.STW2_ENC.test(tg::Stw2EncBit::kControlByPlc);
+      }
+    }
+  }
+  s.control = control;
+  std::uint16_t status = s.status & 0x00FFu;  // functions active / values available persist
+  const tg::EncoderControlWord stw{control};
+
+  // Encoder error and its acknowledge (spec 06 §6.3, §6.4): the error bit is set while the cause is present and
+  // stays after it is gone until the controller acknowledges with Gx_STW.15 (shown as Gx_ZSW.11).
+  const bool acknowledge = stw.test(tg::EncoderControlBit::kAcknowledgeEncoderError);
+  if (acknowledge) status |= 0x0800u;
+  if (s.error_code != 0) s.reported_error_code = s.error_code;
+  const bool error = s.error_code != 0 || ((s.status & 0x8000u) != 0 && !acknowledge);
+  if (error) status |= 0x8000u;
+
+  // Parking, cyclic absolute value.
+  if (stw.test(tg::EncoderControlBit::kRequestParkEncoder)) status |= 0x4000u;
+  const bool absolute = e.determinable_revolutions != 0 && control_by_plc &&
+                        stw.test(tg::EncoderControlBit::kRequestAbsoluteValue);
+  if (absolute) status |= 0x2000u;
+
+  // Reference-mark search and flying measurement (functions 1..4, command, mode).
+  const std::uint16_t functions = stw.field(tg::kEncoderFunctionsField);
+  const std::uint16_t command = stw.field(tg::kEncoderCommandField);
+  const bool measurement = stw.test(tg::EncoderControlBit::kMeasurementMode);
+  std::uint16_t active = status & 0x000Fu;
+  std::uint16_t available = (status >> 4) & 0x000Fu;
+  if (command > 3) {
+    s.error_code = tg::kEncoderErrorCommandNotSupported;
+    status |= 0x8000u;
+  } else if (command == 1) {
+    const std::uint16_t newly = functions & static_cast<std::uint16_t>(~active);
+    active |= newly;
+    available &= static_cast<std::uint16_t>(~newly);
+  } else if (command == 3) {
+    active &= static_cast<std::uint16_t>(~functions);
+    available &= static_cast<std::uint16_t>(~functions);
+  }
+  // Functions whose request bit was removed are switched off (PROFIdrive: deactivate by resetting the bits).
+  if (command != 3) {
+    active &= functions;
+    available &= functions;
+  }
+  // Events: a reference mark crossed (mode 0) or a probe edge (mode 1) captures XIST1 at that position.
+  const bool encoder_ok = (status & 0x8000u) == 0;
+  if (encoder_ok && active != 0 && (active & static_cast<std::uint16_t>(~available)) != 0) {
+    if (!measurement) {
+      const double interval = e.reference_mark_interval_revolutions;
+      const double offset = e.reference_mark_offset_revolutions;
+      const double prev_rev = e.linear ? previous_shaft * e.resolution / p_.load_units_per_revolution : previous_shaft;
+      const double now_rev = e.linear ? shaft * e.resolution / p_.load_units_per_revolution : shaft;
+      const double k_prev = std::floor((prev_rev - offset) / interval);
+      const double k_now = std::floor((now_rev - offset) / interval);
+      if (k_prev != k_now && interval > 0.0) {
+        const double mark_rev = offset + std::max(k_prev, k_now) * interval;
+        const double mark_shaft = e.linear ? mark_rev * p_.load_units_per_revolution / e.resolution : mark_rev;
+        s.captured = xist1_of(index, mark_shaft);
+        available |= active & 0x0001u;  // reference mark 1 (function 1)
+        if ((active & 0x0002u) != 0) available |= 0x0002u;
+      }
+    } else {
+      // Probe windows are in load units; the edge is interpolated inside this cycle.
+      const auto& m = p_.machine;
+      auto edge = [&](const std::optional<PositionWindow>& w, std::uint16_t rising_bit, std::uint16_t falling_bit) {
+        if (!w) return;
+        const bool was = w->contains(previous_load);
+        const bool is = w->contains(load);
+        if (was == is) return;
+        // The boundary crossed: moving up, a rising edge enters at `from` and a falling one leaves at `to`.
+        const bool moving_up = load > previous_load;
+        const double boundary = moving_up == is ? w->from : w->to;
+        const double span = load - previous_load;
+        const double t = span != 0.0 ? std::clamp((boundary - previous_load) / span, 0.0, 1.0) : 1.0;
+        const double shaft_at_edge = previous_shaft + t * (shaft - previous_shaft);
+        const std::uint16_t wanted = is ? rising_bit : falling_bit;
+        if ((active & wanted & static_cast<std::uint16_t>(~available)) != 0) {
+          s.captured = xist1_of(index, shaft_at_edge);
+          available |= wanted;
+        }
+      };
+      edge(m.probe1, 0x0001u, 0x0002u);
+      edge(m.probe2, 0x0004u, 0x0008u);
+    }
+  }
+  status = static_cast<std::uint16_t>((status & 0xFF00u) | active | (available << 4));
+  const auto& machine = p_.machine;
+  if (machine.probe1 && machine.probe1->contains(load)) status |= 0x0100u;
+  if (machine.probe2 && machine.probe2->contains(load)) status |= 0x0200u;
+
+  // XIST2: error code > requested value > absolute value > nothing (spec 06 §6.2).
+  if ((status & 0x8000u) != 0) {
+    s.xist2 = s.reported_error_code;
+  } else if (command == 2 && available != 0) {
+    s.xist2 = s.captured;
+  } else if (absolute) {
+    const double range = static_cast<double>(e.determinable_revolutions);
+    double revolutions = e.linear ? shaft * e.resolution / p_.load_units_per_revolution
+                                  : shaft - e.absolute_offset_revolutions;
+    revolutions = std::fmod(revolutions, range);
+    if (revolutions < 0.0) revolutions += range;
+    s.xist2 = static_cast<std::uint32_t>(std::floor(
+        revolutions * tg::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist2)));
+  } else {
+    s.xist2 = 0;
+  }
+  s.status = status;
+}
+
+void SimulatedDrive::power_cycle() noexcept {
+  state_ = tg::DriveState::kS0NotReady;
+  cyclic_data_ = false;
+  fresh_setpoint_ = false;
+  missed_setpoints_ = 0;
+  fault_code_ = 0;
+  pulses_enabled_ = false;
+  drive_sp_ = {};
+  previous_stw1_ = 0;
+  master_monitor_.reset();
+  slave_sign_of_life_.reset(1);
+  slave_counter_ = 0;
+  for (int i = 0; i < 2; ++i) {
+    auto& s = encoders_[static_cast<std::size_t>(i)];
+    const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
+    s.status = 0;
+    s.control = 0;
+    s.captured = 0;
+    s.xist2 = 0;
+    s.xist1_at_power_on = e.xist1_at_power_on;
+    s.revolutions_at_power_on = shaft_revolutions(e, motor_revolutions_, load_position_);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Actual-value frames
+
+void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
+  const bool fault = fault_code_ != 0;
+  const double speed_rpm = rad_s_to_rpm(omega_);
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    const auto& codec = actual_codecs_[i];
+    if (codec.frame_size() == 0) continue;
+    const auto slot = static_cast<Slot>(i);
+    tg::ActualSignals a;
+    if (slot == Slot::kDrive) {
+      std::uint16_t zsw1 = tg::zsw1_for(state_, drive_sp_.STW1.value(), cyclic_data_, fault, false);
+      // In fault the drive shows OFF2 and OFF3 active (switching on inhibited), as 0x0248 of spec 06 TV24/TV26.
+      if (fault) zsw1 &= static_cast<std::uint16_t>(~0x0030u);
+      const double deviation = std::fabs(speed_setpoint_rpm() - speed_rpm);
+      if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm) zsw1 |= 0x0100u;
+      a.ZSW1 = tg::Zsw1{zsw1};
+      a.NIST_A = tg::speed_to_n2(speed_rpm, p_.reference_speed_rpm);
+      a.NIST_B = tg::speed_to_n4(speed_rpm, p_.reference_speed_rpm);
+      a.ZSW2.set(tg::Zsw2Bit::kPulsesEnabled, pulses_enabled_);
+      a.ZSW2.set(tg::Zsw2Bit::kTravelToFixedStopActive, drive_sp_.STW2.test(tg::Stw2Bit::kTravelToFixedStop));
+      a.ZSW2.set_field(tg::kSignOfLifeField, slave_counter_);
+      tg::Meldw meldw;
+      meldw.set(tg::MeldwBit::kRampFunctionCompleted, state_ != tg::DriveState::kS5aRampStop &&
+                                                          state_ != tg::DriveState::kS5bQuickStop);
+      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_) < 0.9 * p_.torque_limit_nm);
+      meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold, std::fabs(speed_rpm) < p_.standstill_threshold_rpm);
+      meldw.set(tg::MeldwBit::kSpeedAtOrBelowThreshold2, std::fabs(speed_rpm) <= p_.standstill_threshold_rpm);
+      meldw.set(tg::MeldwBit::kNoMotorOverTemperatureAlarm);
+      meldw.set(tg::MeldwBit::kNoPowerUnitOverloadAlarm);
+      meldw.set(tg::MeldwBit::kSpeedDeviationWithinTolerance, (zsw1 & 0x0100u) != 0);
+      meldw.set(tg::MeldwBit::kControllerEnable, pulses_enabled_);
+      meldw.set(tg::MeldwBit::kDriveReady, cyclic_data_ && !fault);
+      meldw.set(tg::MeldwBit::kPulsesEnabled, pulses_enabled_);
+      a.MELDW = meldw;
+      a.G1_ZSW = tg::EncoderStatusWord{encoders_[0].status};
+      a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
+      a.G1_XIST2 = encoders_[0].xist2;
+      a.G2_ZSW = tg::EncoderStatusWord{encoders_[1].status};
+      a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
+      a.G2_XIST2 = encoders_[1].xist2;
+    } else if (slot == Slot::kSupplementary) {
+      a.M_ACT = tg::torque_to_n2(torque_, p_.reference_torque_nm);
+    } else {
+      const int e = encoder_index_of_slot(config_, slot);
+      const auto& s = encoders_[static_cast<std::size_t>(e)];
+      const auto& ep = e == 0 ? p_.encoder1 : p_.encoder2;
+      const auto& sp = encoder_sp_[slot == Slot::kEncoder1 ? 0 : 1];
+      tg::Zsw2Enc zsw2;
+      zsw2.set(tg::Zsw2EncBit::kControlRequested, cyclic_data_);
+      zsw2.set(tg::Zsw2EncBit::kFaultPresent, (s.status & 0x8000u) != 0);
+      zsw2.set_field(tg::kSignOfLifeField, slave_counter_);
+      a.ZSW2_ENC = zsw2;
+      const bool plc = sp.STW2_ENC.test(tg::Stw2EncBit::kControlByPlc);
+      a.G1_ZSW = tg::EncoderStatusWord{plc ? s.status : static_cast<std::uint16_t>(s.status & 0x8000u)};
+      a.G1_XIST1 = xist1_of(e, shaft_revolutions(ep, motor_revolutions_, load_position_));
+      a.G1_XIST2 = plc ? s.xist2 : 0;  // no XIST2 without control by PLC (spec 06 §3.8)
+      const double shaft_speed = ep.linear ? load_speed()
+                                           : (ep.shaft == SimulatedEncoderParameters::Shaft::kMotor
+                                                  ? speed_rpm
+                                                  : load_speed() / p_.load_units_per_revolution * 60.0);
+      a.NIST_B = tg::speed_to_n4(shaft_speed, ep.nist_reference_speed);
+    }
+    (void)codec.encode(a, actual.slots[i].view());
+  }
+}
+
+}  // namespace tomc::drives
