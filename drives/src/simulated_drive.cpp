@@ -112,6 +112,9 @@ void SimulatedDrive::apply_setpoints() noexcept {
     return;
   }
   fresh_setpoint_ = false;
+  // After a gap the master sign-of-life has moved on by the missed cycles: resynchronise (the gap itself is
+  // the setpoint timeout's business, docs/decisions.md).
+  if (missed_setpoints_ != 0) master_monitor_.reset();
   missed_setpoints_ = 0;
   cyclic_data_ = true;
   previous_stw1_ = drive_sp_.STW1.value();
@@ -192,9 +195,13 @@ void SimulatedDrive::update_state_machine() noexcept {
                                (fault_code_ == kFaultMotorEncoder && motor_encoder_error) ||
                                (fault_code_ == kFaultSetpointTimeout && missed_setpoints_ != 0);
     if (!cause_present) {
+      // Acknowledged: switching on inhibited; the next evaluation of STW1 happens next cycle (TV26).
       fault_code_ = 0;
       master_monitor_.reset();
       state_ = tg::DriveState::kS1SwitchingOnInhibited;
+      previous_stw1_ = stw1;
+      pulses_enabled_ = false;
+      return;
     }
   }
   previous_stw1_ = stw1;
@@ -536,6 +543,9 @@ void SimulatedDrive::power_cycle() noexcept {
   state_ = tg::DriveState::kS0NotReady;
   cyclic_data_ = false;
   fresh_setpoint_ = false;
+  // After a gap the master sign-of-life has moved on by the missed cycles: resynchronise (the gap itself is
+  // the setpoint timeout's business, docs/decisions.md).
+  if (missed_setpoints_ != 0) master_monitor_.reset();
   missed_setpoints_ = 0;
   fault_code_ = 0;
   pulses_enabled_ = false;

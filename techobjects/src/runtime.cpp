@@ -1,0 +1,79 @@
+// One application cycle, in the order of ARCHITECTURE-GUIDE §2 and seed §6.2.3.2 as corrected by spec 01 §11 A6
+// (MC_PreServo -> MC_Servo -> MC_PostServo).
+#include "tomc/techobjects/runtime.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace tomc::techobjects {
+
+Runtime::Runtime(RuntimeConfig config) : config_(config) {
+  if (!(config_.servo_cycle_s > 0.0)) throw std::invalid_argument("servo_cycle_s must be > 0");
+  if (config_.interpolator_ratio == 0) throw std::invalid_argument("interpolator_ratio must be >= 1");
+  if (config_.user_program_ratio == 0 || config_.user_program_ratio % config_.interpolator_ratio != 0) {
+    throw std::invalid_argument("user_program_ratio must be a positive multiple of interpolator_ratio");
+  }
+  clock_.servo_cycle_s = config_.servo_cycle_s;
+  clock_.interpolator_cycle_s = config_.servo_cycle_s * config_.interpolator_ratio;
+}
+
+void Runtime::require_setup(const char* what) const {
+  if (started_) throw std::logic_error(std::string(what) + ": the runtime has started; set-up is over");
+}
+
+DeviceIo& Runtime::add_device(std::unique_ptr<drives::DriveAdapter> adapter) {
+  require_setup("add_device");
+  if (!adapter) throw std::invalid_argument("add_device: no adapter");
+  auto io = std::make_unique<DeviceIo>();
+  io->actual = drives::make_frames(adapter->config(), telegrams::Direction::kActual);
+  io->setpoint = drives::make_frames(adapter->config(), telegrams::Direction::kSetpoint);
+  io->adapter = std::move(adapter);
+  devices_.push_back(std::move(io));
+  return *devices_.back();
+}
+
+void Runtime::add_technology_object(std::unique_ptr<TechnologyObject> object) {
+  require_setup("add_technology_object");
+  if (!object) throw std::invalid_argument("add_technology_object: no object");
+  objects_.push_back(std::move(object));
+}
+
+void Runtime::set_pre_servo(Hook hook) {
+  require_setup("set_pre_servo");
+  pre_servo_ = std::move(hook);
+}
+void Runtime::set_post_servo(Hook hook) {
+  require_setup("set_post_servo");
+  post_servo_ = std::move(hook);
+}
+void Runtime::set_user_program(Hook hook) {
+  require_setup("set_user_program");
+  user_program_ = std::move(hook);
+}
+
+void Runtime::start() {
+  require_setup("start");
+  started_ = true;
+}
+
+void Runtime::step() noexcept {
+  if (!started_) return;
+  // MC_PreServo
+  if (pre_servo_) pre_servo_(*this);
+  // MC_Servo: read every actual frame, servo part of every TO, write every setpoint frame.
+  for (auto& d : devices_) d->fresh = d->adapter->read_actual(d->actual);
+  for (auto& o : objects_) o->servo(clock_);
+  for (auto& d : devices_) d->adapter->write_setpoint(d->setpoint);
+  // MC_PostServo
+  if (post_servo_) post_servo_(*this);
+  const std::uint64_t cycle = clock_.servo_cycles;
+  // MC_Interpolator, then the user program, at their ratios of the servo cycle.
+  if (cycle % config_.interpolator_ratio == 0) {
+    for (auto& o : objects_) o->interpolate(clock_);
+    ++clock_.interpolator_cycles;
+  }
+  if (cycle % config_.user_program_ratio == 0 && user_program_) user_program_(*this);
+  ++clock_.servo_cycles;
+}
+
+}  // namespace tomc::techobjects
