@@ -33,6 +33,9 @@ DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& 
   // The TO owns STW1 bits 0..7 and 10; 4..6 held at 1 (spec 06 §3.1).
   drive_sp_.STW1 = tg::Stw1{tg::stw1_for(tg::DriveCommand::kIdle)};
   for (auto& e : encoder_sp_) e.STW2_ENC.set(tg::Stw2EncBit::kControlByPlc);
+  const auto& drive_actual = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  has_nist_b_ = drive_actual.carries(tg::Signal::NIST_B);
+  has_zsw2_ = drive_actual.carries(tg::Signal::ZSW2);
 }
 
 void DriveConnection::acknowledge() noexcept {
@@ -68,14 +71,14 @@ void DriveConnection::read() noexcept {
   const bool has_drive = drive_codec.frame_size() != 0;
   if (has_drive) {
     status_ = tg::decode_zsw1(drive_act_.ZSW1.value());
-    actual_speed_rpm_ = drive_codec.carries(tg::Signal::NIST_B)
+    actual_speed_rpm_ = has_nist_b_
                             ? tg::n4_to_speed(drive_act_.NIST_B, config_.reference_speed_rpm)
                             : tg::n2_to_speed(drive_act_.NIST_A, config_.reference_speed_rpm);
   }
 
   // Slave sign-of-life, once per fresh frame (spec 06 §5.2): ZSW2 of the drive or ZSW2_ENC of an encoder.
   if (config_.isochronous && fresh) {
-    if (drive_codec.carries(tg::Signal::ZSW2)) {
+    if (has_zsw2_) {
       (void)slave_monitor_.check(static_cast<std::uint8_t>(drive_act_.ZSW2.field(tg::kSignOfLifeField)));
     } else if (!has_drive && actual_codecs_[static_cast<std::size_t>(Slot::kEncoder1)].frame_size() != 0) {
       (void)slave_monitor_.check(static_cast<std::uint8_t>(encoder_act_[0].ZSW2_ENC.field(tg::kSignOfLifeField)));

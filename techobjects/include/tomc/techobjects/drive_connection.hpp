@@ -93,6 +93,8 @@ class DriveConnection {
   double actual_speed_rpm_ = 0.0;
   std::uint32_t missed_ = 0;
   bool ever_fresh_ = false;
+  bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
+  bool has_zsw2_ = false;
 };
 
 }  // namespace tomc::techobjects

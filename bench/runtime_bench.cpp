@@ -1,0 +1,65 @@
+// Cost of one application cycle per simulated drive (issue 3): the runtime with N simulated PROFIdrive drives,
+// each driven by a small speed-commanding technology object through a DriveConnection; and the simulated
+// drive alone (setpoint in, one model cycle, actual frames out).
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <vector>
+
+#include "../tests/support/speed_command_object.hpp"
+#include "tomc/drives/simulated_drive.hpp"
+#include "tomc/techobjects/runtime.hpp"
+
+namespace {
+
+using namespace tomc;
+
+void BM_ApplicationCycle(benchmark::State& state) {
+  const auto drives = static_cast<int>(state.range(0));
+  techobjects::Runtime rt(techobjects::RuntimeConfig{0.001, 1, 1});
+  for (int i = 0; i < drives; ++i) {
+    drives::DeviceConfig device;
+    device.drive_telegram = 105;
+    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    rt.emplace<testing::SpeedCommandObject>(io, techobjects::DriveConnectionConfig{}, 1000.0, 0.5);
+  }
+  rt.start();
+  for (int i = 0; i < 20; ++i) rt.step();  // enabled and moving
+  for (auto _ : state) rt.step();
+  state.SetItemsProcessed(state.iterations() * drives);
+  state.counters["ns_per_drive"] = benchmark::Counter(static_cast<double>(state.iterations() * drives),
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_SimulatedDriveCycle(benchmark::State& state) {
+  drives::DeviceConfig device;
+  device.drive_telegram = static_cast<std::uint16_t>(state.range(0));
+  drives::SimulatedDrive drive(device, drives::SimulatedDriveParameters{});
+  auto setpoint = drives::make_frames(device, telegrams::Direction::kSetpoint);
+  auto actual = drives::make_frames(device, telegrams::Direction::kActual);
+  const auto codec = telegrams::TelegramCodec::create(device.drive_telegram, telegrams::Direction::kSetpoint).value();
+  telegrams::SetpointSignals sp;
+  sp.STW1 = telegrams::Stw1{0x047E};
+  for (int i = 0; i < 4; ++i) {  // S0 -> S4
+    if (i == 2) sp.STW1 = telegrams::Stw1{0x047F};
+    (void)codec.encode(sp, setpoint[drives::Slot::kDrive].view());
+    drive.write_setpoint(setpoint);
+    drive.read_actual(actual);
+  }
+  sp.NSOLL_B = 0x10000000;
+  sp.NSOLL_A = 0x1000;
+  std::uint8_t life = 1;
+  for (auto _ : state) {
+    sp.STW2.set_field(telegrams::kSignOfLifeField, life);
+    life = static_cast<std::uint8_t>(life == 15 ? 1 : life + 1);
+    (void)codec.encode(sp, setpoint[drives::Slot::kDrive].view());
+    drive.write_setpoint(setpoint);
+    benchmark::DoNotOptimize(drive.read_actual(actual));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+}  // namespace
+
+BENCHMARK(BM_ApplicationCycle)->Arg(1)->Arg(16)->Arg(256)->Arg(4096);
+BENCHMARK(BM_SimulatedDriveCycle)->Arg(1)->Arg(3)->Arg(105)->Arg(106);

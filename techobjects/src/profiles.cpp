@@ -1,0 +1,1 @@
+// Profile planners: being written (see profiles.hpp).
