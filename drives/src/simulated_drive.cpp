@@ -319,12 +319,18 @@ void SimulatedDrive::integrate(double dt) noexcept {
     const double lag = 1.0 - std::exp(-dt / p_.speed_loop_time_constant_s);
     const double accel_demand = (reference - omega_) * lag / dt;
     double demand = inertia * accel_demand + friction;
-    if (std::fabs(omega_) <= moving_threshold) demand += std::copysign(p_.coulomb_friction_nm, reference);
+    // Break-away: at rest the friction to overcome acts against the reference (none with a zero reference).
+    if (std::fabs(omega_) <= moving_threshold && reference != 0.0) {
+      demand += std::copysign(p_.coulomb_friction_nm, reference);
+    }
     if (config_.supplementary_telegram == 750) demand += tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
     if (blocked_) {
       // At a fixed stop the speed controller's integral winds up until the torque limit (spec: torque rises).
       stall_integral_ += inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
-      stall_integral_ = std::clamp(stall_integral_, -2.0 * p_.torque_limit_nm, 2.0 * p_.torque_limit_nm);
+      // Anti-windup: the integral grows only until the torque reaches the active limit (p1520/MOMRED/750), so
+      // the drive leaves the stop as soon as the speed setpoint reverses.
+      stall_integral_ = std::clamp(stall_integral_, std::min(0.0, torque_limit_negative() - demand),
+                                   std::max(0.0, torque_limit_positive() - demand));
       demand += stall_integral_;
     } else {
       stall_integral_ = 0.0;
@@ -337,7 +343,11 @@ void SimulatedDrive::integrate(double dt) noexcept {
   if (std::fabs(omega_) <= moving_threshold && std::fabs(torque) <= p_.coulomb_friction_nm) {
     omega_next = 0.0;  // static friction holds
   } else {
-    omega_next = omega_ + (torque - friction) / inertia * dt;
+    // Breaking away from rest, the Coulomb friction opposes the starting motion (the direction of the
+    // torque).
+    const double acting_friction =
+        std::fabs(omega_) <= moving_threshold ? std::copysign(p_.coulomb_friction_nm, torque) : friction;
+    omega_next = omega_ + (torque - acting_friction) / inertia * dt;
     if (!pulses_enabled_ && omega_ * omega_next < 0.0) omega_next = 0.0;  // friction alone never reverses
   }
   const double delta_motor_revolutions = 0.5 * (omega_ + omega_next) * dt / kTwoPi;
@@ -459,7 +469,8 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
   std::uint16_t active = status & 0x000Fu;
   std::uint16_t available = (status >> 4) & 0x000Fu;
   if (command > 3) {
-    s.error_code = tg::kEncoderErrorCommandNotSupported;
+    // Present while the invalid command is; latched in Gx_ZSW.15 until acknowledged like any encoder error.
+    s.reported_error_code = tg::kEncoderErrorCommandNotSupported;
     status |= 0x8000u;
   } else if (command == 1) {
     const std::uint16_t newly = functions & static_cast<std::uint16_t>(~active);
