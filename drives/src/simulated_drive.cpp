@@ -58,6 +58,32 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
     if (config_.telegram(s) != 0) encoders_[static_cast<std::size_t>(encoder_index_of_slot(config_, s))].present = true;
   }
   master_monitor_ = tg::SignOfLifeMonitor(tg::SignOfLifeMonitorConfig{p_.sign_of_life_tolerance, 1});
+  const auto& drive_setpoint = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  r_.nsoll_b = drive_setpoint.carries(tg::Signal::NSOLL_B);
+  r_.stw2 = drive_setpoint.carries(tg::Signal::STW2);
+  r_.momred = drive_setpoint.carries(tg::Signal::MOMRED);
+  r_.g1_stw = drive_setpoint.carries(tg::Signal::G1_STW);
+  r_.g2_stw = drive_setpoint.carries(tg::Signal::G2_STW);
+  r_.dsc = has_dsc(config_.drive_telegram);
+  r_.supplementary = config_.supplementary_telegram == 750;
+  r_.ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;
+  r_.inertia = p_.motor_inertia_kgm2 + p_.load_inertia_kgm2 / (r_.ratio * r_.ratio);
+  r_.dt = p_.servo_cycle_s / static_cast<double>(p_.substeps);
+  r_.lag = 1.0 - std::exp(-r_.dt / p_.speed_loop_time_constant_s);
+  for (int i = 0; i < 2; ++i) {
+    const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
+    r_.xist1_scale[static_cast<std::size_t>(i)] =
+        e.linear ? std::ldexp(1.0, e.fine_resolution_xist1) : counts_per_revolution(e);
+    r_.xist1_modulus[static_cast<std::size_t>(i)] = std::ldexp(1.0, std::clamp<int>(e.xist1_width_bits, 1, 32));
+  }
+  // DSC: XERR (encoder-1 counts) -> motor revolutions.
+  if (p_.encoder1.linear) {
+    r_.dsc_counts_to_motor_revolutions = p_.encoder1.resolution / std::ldexp(1.0, p_.encoder1.fine_resolution_xist1) /
+                                         p_.load_units_per_revolution * r_.ratio;
+  } else {
+    r_.dsc_counts_to_motor_revolutions = 1.0 / counts_per_revolution(p_.encoder1) *
+                                         (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
+  }
   load_position_ = p_.initial_load_position;
   motor_revolutions_ =
       load_position_ / p_.load_units_per_revolution * (p_.gear_motor_revolutions / p_.gear_load_revolutions);
@@ -83,8 +109,10 @@ bool SimulatedDrive::read_actual(DeviceFrames& actual) noexcept {
   const double previous_load = load_position_;
   const double previous_motor = motor_revolutions_;
   motor_revolutions_at_sample_ = motor_revolutions_;
-  const double dt = p_.servo_cycle_s / static_cast<double>(p_.substeps);
-  for (std::uint32_t i = 0; i < p_.substeps; ++i) integrate(dt);
+  cycle_speed_setpoint_rpm_ = speed_setpoint_rpm();
+  cycle_torque_limit_positive_ = torque_limit_positive();
+  cycle_torque_limit_negative_ = torque_limit_negative();
+  for (std::uint32_t i = 0; i < p_.substeps; ++i) integrate(r_.dt);
   update_encoders(previous_load, previous_motor);
   if (p_.isochronous && cyclic_data_ && !sign_of_life_frozen_) slave_counter_ = slave_sign_of_life_.next();
 
@@ -128,11 +156,10 @@ void SimulatedDrive::apply_setpoints() noexcept {
   decode(Slot::kEncoder2, encoder_sp_[1]);
 
   // Master sign-of-life (spec 06 §5): in the drive telegram's STW2, or an encoder telegram's STW2_ENC.
-  const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
   if (p_.isochronous) {
     std::uint8_t master = 0;
     bool monitored = false;
-    if (drive_codec.carries(tg::Signal::STW2)) {
+    if (r_.stw2) {
       master = static_cast<std::uint8_t>(drive_sp_.STW2.field(tg::kSignOfLifeField));
       monitored = true;
     } else if (config_.telegram(Slot::kEncoder1) != 0) {
@@ -233,8 +260,7 @@ void SimulatedDrive::update_state_machine() noexcept {
 }
 
 double SimulatedDrive::speed_setpoint_rpm() const noexcept {
-  const auto& codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
-  double n = codec.carries(tg::Signal::NSOLL_B) ? tg::n4_to_speed(drive_sp_.NSOLL_B, p_.reference_speed_rpm)
+  double n = r_.nsoll_b ? tg::n4_to_speed(drive_sp_.NSOLL_B, p_.reference_speed_rpm)
                                                 : tg::n2_to_speed(drive_sp_.NSOLL_A, p_.reference_speed_rpm);
   // STW1.4..6: ramp generator enable / unfreeze / setpoint enable; 0 forces the setpoint to 0.
   const std::uint16_t stw1 = drive_sp_.STW1.value();
@@ -244,8 +270,7 @@ double SimulatedDrive::speed_setpoint_rpm() const noexcept {
 
 double SimulatedDrive::torque_limit_positive() const noexcept {
   double limit = p_.torque_limit_nm;
-  const auto& drive = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
-  if (drive.carries(tg::Signal::MOMRED)) {
+  if (r_.momred) {
     limit = std::min(limit, tg::torque_limit_from_momred(drive_sp_.MOMRED, p_.reference_torque_nm));
   }
   if (config_.supplementary_telegram == 750) {
@@ -256,8 +281,7 @@ double SimulatedDrive::torque_limit_positive() const noexcept {
 
 double SimulatedDrive::torque_limit_negative() const noexcept {
   double limit = -p_.torque_limit_nm;
-  const auto& drive = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
-  if (drive.carries(tg::Signal::MOMRED)) {
+  if (r_.momred) {
     limit = std::max(limit, -tg::torque_limit_from_momred(drive_sp_.MOMRED, p_.reference_torque_nm));
   }
   if (config_.supplementary_telegram == 750) {
@@ -270,8 +294,8 @@ double SimulatedDrive::torque_limit_negative() const noexcept {
 // Motor and load
 
 void SimulatedDrive::integrate(double dt) noexcept {
-  const double ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;  // motor rev per load rev
-  const double inertia = p_.motor_inertia_kgm2 + p_.load_inertia_kgm2 / (ratio * ratio);
+  const double ratio = r_.ratio;  // motor rev per load rev
+  const double inertia = r_.inertia;
 
   if (config_.drive_telegram == 0) {  // encoder-only device: the shaft moves as told
     load_position_ += external_speed_ * dt;
@@ -282,17 +306,10 @@ void SimulatedDrive::integrate(double dt) noexcept {
   // Speed reference of the speed loop for this state.
   double reference_rpm = 0.0;
   if (state_ == tg::DriveState::kS4Operation) {
-    reference_rpm = speed_setpoint_rpm();
+    reference_rpm = cycle_speed_setpoint_rpm_;
     // DSC (spec 06 §7): position loop in the drive on XERR with gain KPC, plus the NSOLL_B pre-control.
-    if (has_dsc(config_.drive_telegram) && drive_sp_.KPC != 0 && encoders_[0].present) {
-      const double cpr = counts_per_revolution(p_.encoder1);
-      double error_motor_revolutions = static_cast<double>(drive_sp_.XERR) / cpr;
-      if (p_.encoder1.linear) {
-        error_motor_revolutions = static_cast<double>(drive_sp_.XERR) * p_.encoder1.resolution /
-                                  std::ldexp(1.0, p_.encoder1.fine_resolution_xist1) / p_.load_units_per_revolution * ratio;
-      } else if (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad) {
-        error_motor_revolutions *= ratio;
-      }
+    if (r_.dsc && drive_sp_.KPC != 0 && encoders_[0].present) {
+      const double error_motor_revolutions = static_cast<double>(drive_sp_.XERR) * r_.dsc_counts_to_motor_revolutions;
       const double moved = motor_revolutions_ - motor_revolutions_at_sample_;
       reference_rpm += tg::kv_from_kpc(drive_sp_.KPC) * (error_motor_revolutions - moved) * 60.0;
     }
@@ -316,7 +333,7 @@ void SimulatedDrive::integrate(double dt) noexcept {
   if (pulses_enabled_) {
     // Closed speed loop = first-order lag with time constant T (exact discretisation), friction compensated;
     // the additional torque of telegram 750 (M_ADD1) is added to the demand.
-    const double lag = 1.0 - std::exp(-dt / p_.speed_loop_time_constant_s);
+    const double lag = r_.lag;
     const double accel_demand = (reference - omega_) * lag / dt;
     double demand = inertia * accel_demand + friction;
     // Break-away: at rest the friction to overcome acts against the reference (none with a zero reference).
@@ -329,13 +346,13 @@ void SimulatedDrive::integrate(double dt) noexcept {
       stall_integral_ += inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
       // Anti-windup: the integral grows only until the torque reaches the active limit (p1520/MOMRED/750), so
       // the drive leaves the stop as soon as the speed setpoint reverses.
-      stall_integral_ = std::clamp(stall_integral_, std::min(0.0, torque_limit_negative() - demand),
-                                   std::max(0.0, torque_limit_positive() - demand));
+      stall_integral_ = std::clamp(stall_integral_, std::min(0.0, cycle_torque_limit_negative_ - demand),
+                                   std::max(0.0, cycle_torque_limit_positive_ - demand));
       demand += stall_integral_;
     } else {
       stall_integral_ = 0.0;
     }
-    torque = std::clamp(demand, torque_limit_negative(), torque_limit_positive());
+    torque = std::clamp(demand, cycle_torque_limit_negative_, cycle_torque_limit_positive_);
   }
   torque_ = torque;
 
@@ -401,17 +418,18 @@ double SimulatedDrive::shaft_revolutions(const SimulatedEncoderParameters& e, do
 std::uint32_t SimulatedDrive::xist1_of(int index, double shaft) const noexcept {
   const auto& e = index == 0 ? p_.encoder1 : p_.encoder2;
   const auto& s = encoders_[static_cast<std::size_t>(index)];
-  const double scale = e.linear ? std::ldexp(1.0, e.fine_resolution_xist1) : counts_per_revolution(e);
+  const double scale = r_.xist1_scale[static_cast<std::size_t>(index)];
   double counts = 0.0;
   if (e.determinable_revolutions == 0) {
     counts = static_cast<double>(s.xist1_at_power_on) + (shaft - s.revolutions_at_power_on) * scale;
   } else {
     counts = (shaft - (e.linear ? 0.0 : e.absolute_offset_revolutions)) * scale;
   }
-  const double modulus = std::ldexp(1.0, std::clamp<int>(e.xist1_width_bits, 1, 32));
-  double wrapped = std::fmod(std::floor(counts), modulus);
-  if (wrapped < 0.0) wrapped += modulus;
-  return static_cast<std::uint32_t>(wrapped);
+  // Wrap at 2^width with integer arithmetic (two's complement keeps negative counts right); |counts| stays far
+  // below 2^63 for any travel the model can make.
+  const auto modulus = static_cast<std::uint64_t>(r_.xist1_modulus[static_cast<std::size_t>(index)]);
+  const auto whole = static_cast<std::int64_t>(std::floor(counts));
+  return static_cast<std::uint32_t>(static_cast<std::uint64_t>(whole) & (modulus - 1));
 }
 
 void SimulatedDrive::update_encoders(double previous_load_position, double previous_motor_revolutions) noexcept {
@@ -428,12 +446,11 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
   auto& s = encoders_[static_cast<std::size_t>(index)];
   const auto& e = index == 0 ? p_.encoder1 : p_.encoder2;
   // The Gx_STW of this encoder: in the drive telegram (G1/G2) or in its separate encoder telegram.
-  const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
   std::uint16_t control = 0;
   bool control_by_plc = true;
-  if (index == 0 && drive_codec.carries(tg::Signal::G1_STW)) {
+  if (index == 0 && r_.g1_stw) {
     control = drive_sp_.G1_STW.value();
-  } else if (index == 1 && drive_codec.carries(tg::Signal::G2_STW)) {
+  } else if (index == 1 && r_.g2_stw) {
     control = drive_sp_.G2_STW.value();
   } else {
     for (Slot slot : {Slot::kEncoder1, Slot::kEncoder2}) {
@@ -592,7 +609,7 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       std::uint16_t zsw1 = tg::zsw1_for(state_, drive_sp_.STW1.value(), cyclic_data_, fault, false);
       // In fault the drive shows OFF2 and OFF3 active (switching on inhibited), as 0x0248 of spec 06 TV24/TV26.
       if (fault) zsw1 &= static_cast<std::uint16_t>(~0x0030u);
-      const double deviation = std::fabs(speed_setpoint_rpm() - speed_rpm);
+      const double deviation = std::fabs(cycle_speed_setpoint_rpm_ - speed_rpm);
       if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm) zsw1 |= 0x0100u;
       a.ZSW1 = tg::Zsw1{zsw1};
       a.NIST_A = tg::speed_to_n2(speed_rpm, p_.reference_speed_rpm);
@@ -614,10 +631,10 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       meldw.set(tg::MeldwBit::kPulsesEnabled, pulses_enabled_);
       a.MELDW = meldw;
       a.G1_ZSW = tg::EncoderStatusWord{encoders_[0].status};
-      a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
+      if (encoders_[0].present) a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
       a.G1_XIST2 = encoders_[0].xist2;
       a.G2_ZSW = tg::EncoderStatusWord{encoders_[1].status};
-      a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
+      if (encoders_[1].present) a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
       a.G2_XIST2 = encoders_[1].xist2;
     } else if (slot == Slot::kSupplementary) {
       a.M_ACT = tg::torque_to_n2(torque_, p_.reference_torque_nm);

@@ -208,6 +208,28 @@ class SimulatedDrive final : public DriveAdapter {
 
   std::array<EncoderState, 2> encoders_{};
   LinkHealth health_{};
+
+  // Resolved once at construction so that a cycle does no layout look-ups or transcendental set-up.
+  struct Resolved {
+    bool nsoll_b = false;
+    bool stw2 = false;
+    bool momred = false;
+    bool g1_stw = false;
+    bool g2_stw = false;
+    bool dsc = false;
+    bool supplementary = false;
+    double ratio = 1.0;       // motor revolutions per load revolution
+    double inertia = 0.0;     // at the motor shaft
+    double lag = 0.0;         // 1 - exp(-dt/T) of the speed loop per substep
+    double dt = 0.0;          // substep
+    std::array<double, 2> xist1_scale{};    // counts per shaft revolution (linear: per step)
+    std::array<double, 2> xist1_modulus{};  // 2^width
+    double dsc_counts_to_motor_revolutions = 0.0;
+  } r_{};
+  // Per cycle: the speed setpoint and torque limits from this cycle's telegrams.
+  double cycle_speed_setpoint_rpm_ = 0.0;
+  double cycle_torque_limit_positive_ = 0.0;
+  double cycle_torque_limit_negative_ = 0.0;
 };
 
 }  // namespace tomc::drives
