@@ -314,6 +314,44 @@ Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
   return Submission::accept(running);
 }
 
+Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                                   std::uint16_t stw2_mask) noexcept {
+  constexpr std::uint16_t kUserStw1 = 0xFB00;  // bits 8, 9, 11..15 (the TO owns 0..7 and 10)
+  constexpr std::uint16_t kUserStw2 = 0x0FFF;  // bits 0..11 (12..15: master sign-of-life)
+  if ((stw1_mask & ~kUserStw1) != 0 || (stw2_mask & ~kUserStw2) != 0) return Submission::reject(error_id::kInvalidBitMask);
+  if (device_ == nullptr || drive_.device_config().drive_telegram == 0) return Submission::reject(error_id::kNoDriveTelegram);
+  auto& sp = drive_.drive_setpoint();
+  sp.STW1 = tg::Stw1{static_cast<std::uint16_t>((sp.STW1.value() & ~stw1_mask) | (stw1 & stw1_mask))};
+  sp.STW2 = tg::Stw2{static_cast<std::uint16_t>((sp.STW2.value() & ~stw2_mask) | (stw2 & stw2_mask))};
+  return Submission::accept(new_job(JobKind::kSetAxisStw, JobState::kDone));  // in effect from the next servo cycle
+}
+
+Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
+  switch (parameter_number) {
+    case 1010:
+    case 1011:
+    case 1012: {
+      if (!finite(value) || value < 0.0) return Submission::reject(error_id::kInvalidParameterValue);
+      double& target = parameter_number == 1010   ? communication_times_start_.Ti
+                       : parameter_number == 1011 ? communication_times_start_.To
+                                                  : communication_times_start_.Tdc;
+      target = value;
+      assign(db_.StatusWord, StatusWordBit::kOnlineStartValuesChanged, true);  // effective after restart
+      break;
+    }
+    case 1020: {
+      const VariableInfo* v = find_by_write_parameter(speed_axis_variables(), 1020);
+      if (v == nullptr || v->write(db_, value) != ValueError::kNone) {
+        return Submission::reject(error_id::kInvalidParameterValue);
+      }
+      (void)v->write(start_, value);  // RES written this way survives a TO restart (spec 04 §0.3)
+      break;
+    }
+    default: return Submission::reject(error_id::kInvalidParameterNumber);
+  }
+  return Submission::accept(new_job(JobKind::kWriteParameter, JobState::kDone));
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Alarms
 
@@ -621,6 +659,7 @@ void SpeedAxis::restart() noexcept {
   // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7); RES and DIR values return to them.
   const auto status_word3 = StatusWordBit::kOnlineStartValuesChanged;
   db_ = start_;
+  communication_times_ = communication_times_start_;
   assign(db_.StatusWord, status_word3, false);
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
   motion_ = Motion{};

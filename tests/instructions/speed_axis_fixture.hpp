@@ -10,6 +10,8 @@
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
+#include "tomc/instructions/mc_set_axis_stw.hpp"
+#include "tomc/instructions/mc_write_parameter.hpp"
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
@@ -39,6 +41,8 @@ struct SpeedAxisMachine {
       halt(*axis);
       stop(*axis);
       jog(*axis);
+      set_stw(*axis);
+      write_parameter(*axis);
       if (user) user();
     });
     runtime.start();
@@ -70,6 +74,8 @@ struct SpeedAxisMachine {
   instructions::MC_Halt<SpeedAxis> halt;
   instructions::MC_Stop<SpeedAxis> stop;
   instructions::MC_MoveJog<SpeedAxis> jog;
+  instructions::MC_SetAxisSTW<SpeedAxis> set_stw;
+  instructions::MC_WriteParameter<SpeedAxis> write_parameter;
   std::function<void()> user;
 };
 

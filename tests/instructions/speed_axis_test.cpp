@@ -383,4 +383,84 @@ TEST(SpeedAxis, VelocityLimitedWithWarning) {
   EXPECT_TRUE(techobjects::test(m.axis->data().WarningWord, techobjects::WarningWordBit::kDynamicWarning));
 }
 
+// spec 03 §4.14: only STW1 bits 8, 9, 11..15 and STW2 bits 0..11 are the user's; the drive receives them.
+TEST(SpeedAxis, SetAxisStwWritesTheUsersBits) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.set_stw.STW1 = 0x0100;  // jog 1 bit of the drive
+  m.set_stw.STW1BitMask = 0x0100;
+  m.set_stw.STW2 = 0x0080;  // parking axis selection
+  m.set_stw.STW2BitMask = 0x0080;
+  m.set_stw.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.set_stw.Done);
+  const auto& sp = m.axis->drive()->drive_setpoint();
+  EXPECT_EQ(sp.STW1.value() & 0x0100, 0x0100);
+  EXPECT_EQ(sp.STW1.value() & 0x04FF, 0x047F);  // the TO's bits untouched: still operating
+  EXPECT_EQ(sp.STW2.value() & 0x0FFF, 0x0080);
+  EXPECT_TRUE(m.axis->drive()->in_operation());
+  // A mask over the TO's bits (STW1 bit 0) or the sign-of-life (STW2 12..15) is refused.
+  m.set_stw.Execute = false;
+  m.run(1);
+  m.set_stw.STW1BitMask = 0x0001;
+  m.set_stw.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.set_stw.Error);
+  EXPECT_EQ(m.set_stw.ErrorID, eid::kInvalidBitMask);
+  m.set_stw.Execute = false;
+  m.run(1);
+  m.set_stw.STW1BitMask = 0;
+  m.set_stw.STW2BitMask = 0xF000;
+  m.set_stw.Execute = true;
+  m.run(1);
+  EXPECT_EQ(m.set_stw.ErrorID, eid::kInvalidBitMask);
+}
+
+// spec 03 §4.15: 1020 RemoveEnableReaction takes effect at once (here: OFF2 instead of OFF3 on a drive fault);
+// 1010..1012 after restart; unknown numbers and values are rejected.
+TEST(SpeedAxis, WriteParameter) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.write_parameter.ParameterNumber = 1020;
+  m.write_parameter.Value = 3.0;  // 16#3: OFF2
+  m.write_parameter.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.write_parameter.Done);
+  EXPECT_EQ(m.axis->data().Actor.RemoveEnableReaction, 3);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  // A communication alarm (remove enable) now coasts the drive: OFF2 (spec 02 §3.4).
+  m.drive->freeze_sign_of_life(true);
+  m.run(8);
+  // OFF2 switched the pulses off at once (S1; the sequencer then re-arms S2): no ramp, the motor coasts.
+  const auto state = m.drive->state();
+  EXPECT_TRUE(state == telegrams::DriveState::kS1SwitchingOnInhibited ||
+              state == telegrams::DriveState::kS2ReadyForSwitchingOn);
+  EXPECT_GT(std::fabs(m.drive->motor_speed_rpm()), 1000.0);
+  // Invalid value 16#2 and unknown number.
+  m.write_parameter.Execute = false;
+  m.run(1);
+  m.write_parameter.Value = 2.0;
+  m.write_parameter.Execute = true;
+  m.run(1);
+  EXPECT_EQ(m.write_parameter.ErrorID, eid::kInvalidParameterValue);
+  m.write_parameter.Execute = false;
+  m.run(1);
+  m.write_parameter.ParameterNumber = 1000;  // positioning axes only
+  m.write_parameter.Execute = true;
+  m.run(1);
+  EXPECT_EQ(m.write_parameter.ErrorID, eid::kInvalidParameterNumber);
+  m.write_parameter.Execute = false;
+  m.run(1);
+  m.write_parameter.ParameterNumber = 1010;
+  m.write_parameter.Value = 0.000125;
+  m.write_parameter.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.write_parameter.Done);
+  EXPECT_DOUBLE_EQ(m.axis->communication_times().Ti, 0.0);  // after restart only
+  EXPECT_TRUE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
+}
+
 }  // namespace

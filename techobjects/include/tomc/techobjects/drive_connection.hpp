@@ -52,6 +52,7 @@ class DriveConnection {
   double speed_setpoint() const noexcept { return speed_setpoint_rpm_; }
   // Signals beyond STW1/STW2 sign-of-life/NSOLL (Gx_STW, MOMRED, XERR, KPC, telegram 750, user STW bits).
   telegrams::SetpointSignals& drive_setpoint() noexcept { return drive_sp_; }
+  const telegrams::SetpointSignals& drive_setpoint() const noexcept { return drive_sp_; }
   telegrams::SetpointSignals& supplementary_setpoint() noexcept { return supplementary_sp_; }
   telegrams::SetpointSignals& encoder_setpoint(int index) noexcept { return encoder_sp_[index == 0 ? 0 : 1]; }
 

@@ -99,10 +99,23 @@ class SpeedAxis final : public TechnologyObject {
   void stop_execute(JobId job, bool execute) noexcept;
   // MC_MoveJog: level-class. Starts a jog job on the first call with an input set, updates it on later calls.
   Submission jog(JobId running, const JogInputs& in) noexcept;
+  // MC_SetAxisSTW (spec 03 §4.14): the user's bits of STW1 (8, 9, 11..15) and STW2 (0..11).
+  Submission set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                          std::uint16_t stw2_mask) noexcept;
+  // MC_WriteParameter (spec 03 §4.15): 1010/1011/1012 communication times (s, after restart), 1020
+  // Actor.RemoveEnableReaction (immediately). 1000 belongs to positioning axes.
+  Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // Ti, To, T_DC (seconds) in effect; they enter the following error of position-controlled axes.
+  struct CommunicationTimes {
+    double Ti = 0.0;
+    double To = 0.0;
+    double Tdc = 0.0;
+  };
+  const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
   JobStatus job_status(JobId id) const noexcept;
 
  private:
-  enum class JobKind : std::uint8_t { kNone, kReset, kMoveVelocity, kJog, kHalt, kStop };
+  enum class JobKind : std::uint8_t { kNone, kReset, kMoveVelocity, kJog, kHalt, kStop, kSetAxisStw, kWriteParameter };
   enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
 
   struct JobRecord {
@@ -184,6 +197,8 @@ class SpeedAxis final : public TechnologyObject {
   bool drive_fault_seen_ = false;
   bool limited_velocity_ = false;
   bool limited_dynamics_ = false;
+  CommunicationTimes communication_times_{};
+  CommunicationTimes communication_times_start_{};
 };
 
 }  // namespace tomc::techobjects
