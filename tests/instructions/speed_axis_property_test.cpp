@@ -62,7 +62,7 @@ void random_inputs(SpeedAxisMachine& m, std::mt19937& rng) {
     const double r = unit(rng);
     return r < 0.2 ? -1.0 : (r < 0.23 ? 0.0 : 5.0 + 195.0 * unit(rng));  // default, invalid, or a value
   };
-  if (chance(0.002)) m.power.Enable = !m.power.Enable;
+  if (chance(0.0005)) m.power.Enable = !m.power.Enable;
   if (chance(0.002)) m.power.StopMode = static_cast<std::int16_t>(rng() % 4);
   if (chance(0.01)) {
     m.move.Execute = !m.move.Execute;
@@ -71,12 +71,12 @@ void random_inputs(SpeedAxisMachine& m, std::mt19937& rng) {
     m.move.Deceleration = dynamic();
     m.move.Jerk = chance(0.5) ? 0.0 : (chance(0.5) ? -1.0 : 100.0 + 5000.0 * unit(rng));
   }
-  if (chance(0.005)) {
+  if (chance(0.002)) {
     m.halt.Execute = !m.halt.Execute;
     m.halt.Deceleration = dynamic();
     m.halt.AbortAcceleration = chance(0.5);
   }
-  if (chance(0.003)) {
+  if (chance(0.001)) {
     m.stop.Execute = !m.stop.Execute;
     m.stop.Mode = static_cast<std::int32_t>(rng() % 4);
     m.stop.Deceleration = dynamic();
@@ -87,9 +87,9 @@ void random_inputs(SpeedAxisMachine& m, std::mt19937& rng) {
     m.jog.Velocity = 3000.0 * unit(rng);
   }
   if (chance(0.002)) (void)m.axis->write("Override.Velocity", 200.0 * unit(rng));
-  if (chance(0.001)) m.drive->inject_fault(7000, drives::SimulatedDriveParameters::FaultReaction::kOff3);
+  if (chance(0.0003)) m.drive->inject_fault(7000, drives::SimulatedDriveParameters::FaultReaction::kOff3);
   if (chance(0.003)) m.drive->clear_injected_fault();
-  if (chance(0.0005)) m.drive->freeze_sign_of_life(true);
+  if (chance(0.0002)) m.drive->freeze_sign_of_life(true);
   if (chance(0.003)) m.drive->freeze_sign_of_life(false);
   if (chance(0.004)) m.reset.Execute = !m.reset.Execute;
 }
@@ -129,6 +129,7 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
     techobjects::SpeedAxisData data;
     data.DynamicLimits.MaxJerk = i == 0 ? 0.0 : 2000.0;  // trapezoids on one axis, jerk-limited on the others
     machines.push_back(std::make_unique<SpeedAxisMachine>(static_cast<std::uint16_t>(i == 2 ? 105 : 2), data));
+    machines.back()->power.Enable = true;
   }
   std::mt19937 rng(20261122);
   Violations v;
@@ -155,7 +156,7 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
   std::size_t alarms = 0;
   for (auto& m : machines) alarms += m->axis->alarms().log().last_sequence();
   EXPECT_GT(alarms, 0u);
-  EXPECT_GT(v.moving_cycles, kCycles * kAxes / 10) << "too few cycles with an enabled, moving axis";
+  EXPECT_GT(v.moving_cycles, kCycles * kAxes / 5) << "too few cycles with an enabled, moving axis";
 }
 
 }  // namespace
