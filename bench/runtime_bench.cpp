@@ -8,7 +8,10 @@
 
 #include "../tests/support/speed_command_object.hpp"
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/instructions/mc_move_velocity.hpp"
+#include "tomc/instructions/mc_power.hpp"
 #include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/speed_axis.hpp"
 
 namespace {
 
@@ -59,7 +62,40 @@ void BM_SimulatedDriveCycle(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Speed axes (TO_SpeedAxis + MC_Power + MC_MoveVelocity in the user program) on simulated drives, steady motion.
+void BM_SpeedAxisCycle(benchmark::State& state) {
+  const auto axes = static_cast<int>(state.range(0));
+  techobjects::Runtime rt(techobjects::RuntimeConfig{0.001, 1, 1});
+  struct Program {
+    techobjects::SpeedAxis* axis;
+    instructions::MC_Power<techobjects::SpeedAxis> power;
+    instructions::MC_MoveVelocity<techobjects::SpeedAxis> move;
+  };
+  std::vector<Program> programs(static_cast<std::size_t>(axes));
+  for (auto& p : programs) {
+    drives::DeviceConfig device;
+    device.drive_telegram = 105;
+    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    p.axis = &rt.emplace<techobjects::SpeedAxis>("Axis", &io, techobjects::SpeedAxisData{});
+    p.power.Enable = true;
+    p.move.Velocity = 1500.0;
+  }
+  rt.set_user_program([&](techobjects::Runtime&) {
+    for (auto& p : programs) {
+      p.power(*p.axis);
+      p.move.Execute = p.power.Status;
+      p.move(*p.axis);
+    }
+  });
+  rt.start();
+  for (int i = 0; i < 2000; ++i) rt.step();
+  for (auto _ : state) rt.step();
+  state.counters["ns_per_axis"] = benchmark::Counter(static_cast<double>(state.iterations() * axes),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
+BENCHMARK(BM_SpeedAxisCycle)->Arg(1)->Arg(16)->Arg(256);
 BENCHMARK(BM_ApplicationCycle)->Arg(1)->Arg(16)->Arg(256)->Arg(4096);
 BENCHMARK(BM_SimulatedDriveCycle)->Arg(1)->Arg(3)->Arg(105)->Arg(106);

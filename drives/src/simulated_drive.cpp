@@ -612,8 +612,11 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       const double deviation = std::fabs(cycle_speed_setpoint_rpm_ - speed_rpm);
       if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm) zsw1 |= 0x0100u;
       a.ZSW1 = tg::Zsw1{zsw1};
-      a.NIST_A = tg::speed_to_n2(speed_rpm, p_.reference_speed_rpm);
-      a.NIST_B = tg::speed_to_n4(speed_rpm, p_.reference_speed_rpm);
+      if (r_.nsoll_b) {  // telegram 1 carries NIST_A, all others NIST_B
+        a.NIST_B = tg::speed_to_n4(speed_rpm, p_.reference_speed_rpm);
+      } else {
+        a.NIST_A = tg::speed_to_n2(speed_rpm, p_.reference_speed_rpm);
+      }
       a.ZSW2.set(tg::Zsw2Bit::kPulsesEnabled, pulses_enabled_);
       a.ZSW2.set(tg::Zsw2Bit::kTravelToFixedStopActive, drive_sp_.STW2.test(tg::Stw2Bit::kTravelToFixedStop));
       a.ZSW2.set_field(tg::kSignOfLifeField, slave_counter_);

@@ -112,8 +112,11 @@ void DriveConnection::write() noexcept {
     drive_sp_.STW1 = tg::Stw1{static_cast<std::uint16_t>((drive_sp_.STW1.value() & ~owned) | (stw1 & owned))};
     drive_sp_.STW2.set_field(tg::kSignOfLifeField, master);
     // Setpoints only count in S4; before, the drive ignores them (spec 01 §6.2) - send them anyway.
-    drive_sp_.NSOLL_A = tg::speed_to_n2(speed_setpoint_rpm_, config_.reference_speed_rpm);
-    drive_sp_.NSOLL_B = tg::speed_to_n4(speed_setpoint_rpm_, config_.reference_speed_rpm);
+    if (has_nist_b_) {  // telegram 1 carries NSOLL_A/NIST_A, all others NSOLL_B/NIST_B
+      drive_sp_.NSOLL_B = tg::speed_to_n4(speed_setpoint_rpm_, config_.reference_speed_rpm);
+    } else {
+      drive_sp_.NSOLL_A = tg::speed_to_n2(speed_setpoint_rpm_, config_.reference_speed_rpm);
+    }
   }
   for (auto& e : encoder_sp_) e.STW2_ENC.set_field(tg::kSignOfLifeField, master);
   auto encode = [&](Slot s, const tg::SetpointSignals& from) {

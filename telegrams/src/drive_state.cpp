@@ -22,29 +22,6 @@ std::string_view to_string(DriveState state) noexcept {
   return "?";
 }
 
-DriveStatus decode_zsw1(std::uint16_t zsw1) noexcept {
-  DriveStatus status;
-  status.control_requested = bit(zsw1, 9);
-  status.warning = bit(zsw1, 7);
-  status.coast_stop_active = !bit(zsw1, 4);
-  status.quick_stop_active = !bit(zsw1, 5);
-  if (bit(zsw1, 3)) {
-    status.state = DriveState::kFault;
-  } else if (bit(zsw1, 6)) {
-    status.state = DriveState::kS1SwitchingOnInhibited;
-  } else if ((zsw1 & 0x0007u) == 0x0007u) {
-    status.state = DriveState::kS4Operation;
-  } else if ((zsw1 & 0x0003u) == 0x0003u) {
-    // S3, or S5 while ramping; bit 5 = 0 means the OFF3 quick stop is running (S5b).
-    status.state = bit(zsw1, 5) ? DriveState::kS3SwitchedOn : DriveState::kS5bQuickStop;
-  } else if (bit(zsw1, 0)) {
-    status.state = DriveState::kS2ReadyForSwitchingOn;
-  } else {
-    status.state = DriveState::kS0NotReady;
-  }
-  return status;
-}
-
 std::uint16_t stw1_for(DriveCommand command) noexcept {
   switch (command) {
     case DriveCommand::kIdle: return 0x047E;

@@ -28,7 +28,30 @@ struct DriveStatus {
   bool coast_stop_active = false;  // ZSW1.4 == 0
   bool quick_stop_active = false;  // ZSW1.5 == 0
 };
-DriveStatus decode_zsw1(std::uint16_t zsw1) noexcept;
+// Inline: it runs several times per axis and servo cycle.
+constexpr DriveStatus decode_zsw1(std::uint16_t zsw1) noexcept {
+  auto bit = [zsw1](unsigned n) { return ((zsw1 >> n) & 1u) != 0; };
+  DriveStatus status;
+  status.control_requested = bit(9);
+  status.warning = bit(7);
+  status.coast_stop_active = !bit(4);
+  status.quick_stop_active = !bit(5);
+  if (bit(3)) {
+    status.state = DriveState::kFault;
+  } else if (bit(6)) {
+    status.state = DriveState::kS1SwitchingOnInhibited;
+  } else if ((zsw1 & 0x0007u) == 0x0007u) {
+    status.state = DriveState::kS4Operation;
+  } else if ((zsw1 & 0x0003u) == 0x0003u) {
+    // S3, or S5 while ramping; bit 5 = 0 means the OFF3 quick stop is running (S5b).
+    status.state = bit(5) ? DriveState::kS3SwitchedOn : DriveState::kS5bQuickStop;
+  } else if (bit(0)) {
+    status.state = DriveState::kS2ReadyForSwitchingOn;
+  } else {
+    status.state = DriveState::kS0NotReady;
+  }
+  return status;
+}
 
 // Canonical STW1 words, spec 06 §4.3 [OUR CHOICE].
 enum class DriveCommand : std::uint8_t {
