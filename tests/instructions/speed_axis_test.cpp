@@ -463,4 +463,83 @@ TEST(SpeedAxis, WriteParameter) {
   EXPECT_TRUE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
 }
 
+// spec 02 §3.1 StopMode 2: the TO ramps with MaxDeceleration (100 1/s², MaxJerk 0 here): 25 1/s in 0.25 s.
+TEST(SpeedAxis, DisableWithMaximumDynamics) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  m.power.Enable = false;
+  m.power.StopMode = 2;
+  const int cycles = m.run_until([&] { return !m.power.Busy; }, 1000);
+  EXPECT_NEAR(cycles, 251, 1);  // the call, then 250 interpolator cycles of ramp
+}
+
+// spec 02 §3.4: RemoveEnableReaction 16#1 makes "remove enable" an OFF1 (the drive ramps on p1121, S5a).
+TEST(SpeedAxis, RemoveEnableWithOff1) {
+  auto data = trapezoid_data();
+  data.Actor.RemoveEnableReaction = 0x1;
+  SpeedAxisMachine m(3, data);
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  m.drive->freeze_sign_of_life(true);  // alarm 406, reaction 4
+  ASSERT_GT(m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS5aRampStop; }, 20), 0);
+  // p1121 = 1 s from 6000 rpm: 1500 rpm take about 0.25 s, then the drive is ready for switching on (S2).
+  const int stopped = m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS2ReadyForSwitchingOn; }, 1000);
+  EXPECT_NEAR(stopped, 250, 10);
+  EXPECT_FALSE(m.power.Status);
+  EXPECT_TRUE(m.power.Busy);
+}
+
+// spec 01 §6.1: a drive that cannot switch on keeps MC_Power Busy without Status; the TO reports why.
+TEST(SpeedAxis, DriveThatNeverBecomesReady) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  m.run(3);
+  m.drive->inject_fault(7900, drives::SimulatedDriveParameters::FaultReaction::kOff2);
+  m.power.Enable = true;
+  m.run(3000);
+  EXPECT_TRUE(m.power.Busy);
+  EXPECT_FALSE(m.power.Status);
+  EXPECT_TRUE(m.axis->alarms().pending(techobjects::kAlarmDriveFault));
+  EXPECT_FALSE(m.axis->data().StatusDrive.InOperation);
+}
+
+// spec 03 §6.1 R4 x C6 = N: MC_Halt and MC_MoveJog are rejected while MC_Stop runs; R4 x C3 = A: a jog aborts
+// a running MoveVelocity.
+TEST(SpeedAxis, PriorityCellsOfTheSpeedAxisInstructions) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 600.0;
+  m.move.Execute = true;
+  m.run(50);
+  m.jog.JogForward = true;
+  m.run(2);
+  EXPECT_TRUE(m.move.CommandAborted);
+  EXPECT_TRUE(m.jog.Busy);
+  m.stop.Mode = 3;
+  m.stop.Deceleration = 10.0;
+  m.stop.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.jog.CommandAborted);
+  EXPECT_TRUE(m.stop.Busy);
+  m.halt.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.halt.Error);
+  EXPECT_NE(m.halt.ErrorID, 0);
+  EXPECT_TRUE(m.stop.Busy);  // the running MC_Stop continues
+  // A heavier MC_Stop (Mode 0) aborts the running one (legend B).
+  m.stop.Execute = false;
+  m.run(1);
+  m.stop.Mode = 0;
+  m.stop.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.stop.Busy);
+  EXPECT_GT(m.run_until([&] { return m.stop.Done; }, 1000), 0);
+}
+
 }  // namespace
