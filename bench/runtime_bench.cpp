@@ -1,6 +1,6 @@
-// Cost of one application cycle per simulated drive (issue 3): the runtime with N simulated PROFIdrive drives,
-// each driven by a small speed-commanding technology object through a DriveConnection; and the simulated
-// drive alone (setpoint in, one model cycle, actual frames out).
+// Cost of one application cycle per simulated drive (issue 3): the runtime with N simulated PROFIdrive
+// drives, each driven by a small speed-commanding technology object through a DriveConnection; and the
+// simulated drive alone (setpoint in, one model cycle, actual frames out).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -23,15 +23,19 @@ void BM_ApplicationCycle(benchmark::State& state) {
   for (int i = 0; i < drives; ++i) {
     drives::DeviceConfig device;
     device.drive_telegram = 105;
-    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    auto& io =
+        rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
     rt.emplace<testing::SpeedCommandObject>(io, techobjects::DriveConnectionConfig{}, 1000.0, 0.5);
   }
   rt.start();
-  for (int i = 0; i < 20; ++i) rt.step();  // enabled and moving
-  for (auto _ : state) rt.step();
+  for (int i = 0; i < 20; ++i)
+    rt.step();  // enabled and moving
+  for (auto _ : state)
+    rt.step();
   state.SetItemsProcessed(state.iterations() * drives);
-  state.counters["ns_per_drive"] = benchmark::Counter(static_cast<double>(state.iterations() * drives),
-                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_drive"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * drives),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void BM_SimulatedDriveCycle(benchmark::State& state) {
@@ -40,7 +44,8 @@ void BM_SimulatedDriveCycle(benchmark::State& state) {
   drives::SimulatedDrive drive(device, drives::SimulatedDriveParameters{});
   auto setpoint = drives::make_frames(device, telegrams::Direction::kSetpoint);
   auto actual = drives::make_frames(device, telegrams::Direction::kActual);
-  const auto codec = telegrams::TelegramCodec::create(device.drive_telegram, telegrams::Direction::kSetpoint).value();
+  const auto codec =
+      telegrams::TelegramCodec::create(device.drive_telegram, telegrams::Direction::kSetpoint).value();
   telegrams::SetpointSignals sp;
   sp.STW1 = telegrams::Stw1{0x047E};
   for (int i = 0; i < 4; ++i) {  // S0 -> S4
@@ -62,7 +67,8 @@ void BM_SimulatedDriveCycle(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// Speed axes (TO_SpeedAxis + MC_Power + MC_MoveVelocity in the user program) on simulated drives, steady motion.
+// Speed axes (TO_SpeedAxis + MC_Power + MC_MoveVelocity in the user program) on simulated drives, steady
+// motion.
 void BM_SpeedAxisCycle(benchmark::State& state) {
   const auto axes = static_cast<int>(state.range(0));
   techobjects::Runtime rt(techobjects::RuntimeConfig{0.001, 1, 1});
@@ -75,7 +81,8 @@ void BM_SpeedAxisCycle(benchmark::State& state) {
   for (auto& p : programs) {
     drives::DeviceConfig device;
     device.drive_telegram = 105;
-    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    auto& io =
+        rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
     p.axis = &rt.emplace<techobjects::SpeedAxis>("Axis", &io, techobjects::SpeedAxisData{});
     p.power.Enable = true;
     p.move.Velocity = 1500.0;
@@ -88,10 +95,13 @@ void BM_SpeedAxisCycle(benchmark::State& state) {
     }
   });
   rt.start();
-  for (int i = 0; i < 2000; ++i) rt.step();
-  for (auto _ : state) rt.step();
-  state.counters["ns_per_axis"] = benchmark::Counter(static_cast<double>(state.iterations() * axes),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  for (int i = 0; i < 2000; ++i)
+    rt.step();
+  for (auto _ : state)
+    rt.step();
+  state.counters["ns_per_axis"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * axes),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 }  // namespace

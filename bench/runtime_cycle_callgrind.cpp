@@ -12,18 +12,22 @@ using namespace tomc;
 constexpr int kCycles = 20000;
 constexpr int kDrives = 16;
 
-extern "C" __attribute__((noinline)) void runtime_cycle(techobjects::Runtime& rt) { rt.step(); }
+extern "C" __attribute__((noinline)) void runtime_cycle(techobjects::Runtime& rt) {
+  rt.step();
+}
 
 int main() {
   techobjects::Runtime rt(techobjects::RuntimeConfig{0.001, 1, 1});
   for (int i = 0; i < kDrives; ++i) {
     drives::DeviceConfig device;
     device.drive_telegram = 105;
-    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    auto& io =
+        rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
     rt.emplace<testing::SpeedCommandObject>(io, techobjects::DriveConnectionConfig{}, 1000.0, 0.5);
   }
   rt.start();
-  for (int i = 0; i < kCycles; ++i) runtime_cycle(rt);
+  for (int i = 0; i < kCycles; ++i)
+    runtime_cycle(rt);
   std::printf("cycles=%d units=%d\n", kCycles, kDrives);
   return 0;
 }

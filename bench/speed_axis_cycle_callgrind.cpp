@@ -13,13 +13,16 @@ using namespace tomc;
 
 constexpr int kCycles = 20000;
 
-extern "C" __attribute__((noinline)) void speed_axis_cycle(techobjects::Runtime& rt) { rt.step(); }
+extern "C" __attribute__((noinline)) void speed_axis_cycle(techobjects::Runtime& rt) {
+  rt.step();
+}
 
 int main() {
   techobjects::Runtime rt(techobjects::RuntimeConfig{0.001, 1, 1});
   drives::DeviceConfig device;
   device.drive_telegram = 105;
-  auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+  auto& io =
+      rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
   auto& axis = rt.emplace<techobjects::SpeedAxis>("Axis1", &io, techobjects::SpeedAxisData{});
   instructions::MC_Power<techobjects::SpeedAxis> power;
   instructions::MC_MoveVelocity<techobjects::SpeedAxis> move;
@@ -31,8 +34,10 @@ int main() {
     move(axis);
   });
   rt.start();
-  for (int i = 0; i < 2000; ++i) rt.step();  // enabled and at speed: steady motion from here
-  for (int i = 0; i < kCycles; ++i) speed_axis_cycle(rt);
+  for (int i = 0; i < 2000; ++i)
+    rt.step();  // enabled and at speed: steady motion from here
+  for (int i = 0; i < kCycles; ++i)
+    speed_axis_cycle(rt);
   std::printf("cycles=%d units=1 invelocity=%d\n", kCycles, move.InVelocity ? 1 : 0);
   return 0;
 }

@@ -14,7 +14,8 @@ namespace tg = tomc::telegrams;
 namespace {
 
 void BM_EncodeSetpoint(benchmark::State& state) {
-  const auto codec = tg::TelegramCodec::create(static_cast<int>(state.range(0)), tg::Direction::kSetpoint).value();
+  const auto codec =
+      tg::TelegramCodec::create(static_cast<int>(state.range(0)), tg::Direction::kSetpoint).value();
   tg::SetpointSignals values;
   values.STW1 = tg::Stw1{0x047F};
   std::array<std::byte, tg::kMaxFrameBytes> frame{};
@@ -30,9 +31,11 @@ void BM_EncodeSetpoint(benchmark::State& state) {
 }
 
 void BM_DecodeActual(benchmark::State& state) {
-  const auto codec = tg::TelegramCodec::create(static_cast<int>(state.range(0)), tg::Direction::kActual).value();
+  const auto codec =
+      tg::TelegramCodec::create(static_cast<int>(state.range(0)), tg::Direction::kActual).value();
   std::array<std::byte, tg::kMaxFrameBytes> frame{};
-  for (std::size_t i = 0; i < frame.size(); ++i) frame[i] = static_cast<std::byte>(i * 37);
+  for (std::size_t i = 0; i < frame.size(); ++i)
+    frame[i] = static_cast<std::byte>(i * 37);
   const std::span in(frame.data(), codec.frame_size());
   tg::ActualSignals values;
   for (auto _ : state) {

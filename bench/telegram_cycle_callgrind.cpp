@@ -41,7 +41,8 @@ extern "C" __attribute__((noinline)) void telegram_cycle(Axis& a, double speed) 
 
 int main() {
   Axis axis;
-  for (int i = 0; i < kCycles; ++i) telegram_cycle(axis, 0.01 * i);
+  for (int i = 0; i < kCycles; ++i)
+    telegram_cycle(axis, 0.01 * i);
   std::printf("cycles=%d last=%02x\n", kCycles, static_cast<unsigned>(axis.out[3]));
   return 0;
 }

@@ -1,5 +1,5 @@
-// Embedding tomc in a program of your own: one speed axis on the simulated PROFIdrive drive, a user program with
-// MC_Power and MC_MoveVelocity, run in real time by RealTimeRunner (1 ms cycle) for the given seconds.
+// Embedding tomc in a program of your own: one speed axis on the simulated PROFIdrive drive, a user program
+// with MC_Power and MC_MoveVelocity, run in real time by RealTimeRunner (1 ms cycle) for the given seconds.
 //   build/bin/embed_speed_axis [seconds]
 // Replace the SimulatedDrive by another DriveAdapter (e.g. the gateway adapter) and nothing else changes.
 #include <chrono>
@@ -24,8 +24,10 @@ int main(int argc, char** argv) {
   techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
   drives::DeviceConfig device;
   device.drive_telegram = 2;  // PROFIdrive standard telegram 2: STW1/STW2, NSOLL_B, ZSW1/ZSW2, NIST_B
-  auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
-  techobjects::SpeedAxisData start_values;  // the data block's start values, as TIA Portal would download them
+  auto& io = runtime.add_device(
+      std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+  techobjects::SpeedAxisData
+      start_values;  // the data block's start values, as TIA Portal would download them
   start_values.DynamicDefaults.Acceleration = 20.0;  // 1/s²
   auto& axis = runtime.emplace<techobjects::SpeedAxis>("Conveyor", &io, start_values);
 
@@ -40,8 +42,8 @@ int main(int argc, char** argv) {
   });
   runtime.start();  // from here on the cycle allocates nothing
 
-  techobjects::RealTimeRunner runner(techobjects::RealTimeRunnerConfig{std::chrono::milliseconds(1), 0, false},
-                                     [&] { runtime.step(); });
+  techobjects::RealTimeRunner runner(
+      techobjects::RealTimeRunnerConfig{std::chrono::milliseconds(1), 0, false}, [&] { runtime.step(); });
   runner.start();
   std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
   runner.stop();
@@ -51,7 +53,8 @@ int main(int argc, char** argv) {
   std::printf("cycles %llu, overruns %llu, wake-up jitter median %.0f us, p99 %.0f us, max %.0f us\n",
               static_cast<unsigned long long>(stats.cycles), static_cast<unsigned long long>(stats.overruns),
               stats.jitter_median_us, stats.jitter_p99_us, stats.jitter_max_us);
-  std::printf("Conveyor: enabled %d, InVelocity %d, Velocity %.1f 1/min, ActualSpeed %.1f 1/min, ErrorDetail %u\n",
-              power.Status ? 1 : 0, move.InVelocity ? 1 : 0, db.Velocity, db.ActualSpeed, db.ErrorDetail.Number);
+  std::printf(
+      "Conveyor: enabled %d, InVelocity %d, Velocity %.1f 1/min, ActualSpeed %.1f 1/min, ErrorDetail %u\n",
+      power.Status ? 1 : 0, move.InVelocity ? 1 : 0, db.Velocity, db.ActualSpeed, db.ErrorDetail.Number);
   return power.Status && move.InVelocity ? 0 : 1;
 }

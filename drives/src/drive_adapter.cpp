@@ -8,10 +8,14 @@ namespace tg = tomc::telegrams;
 
 std::uint16_t DeviceConfig::telegram(Slot s) const noexcept {
   switch (s) {
-    case Slot::kDrive: return drive_telegram;
-    case Slot::kSupplementary: return supplementary_telegram;
-    case Slot::kEncoder1: return encoder_telegrams[0];
-    case Slot::kEncoder2: return encoder_telegrams[1];
+    case Slot::kDrive:
+      return drive_telegram;
+    case Slot::kSupplementary:
+      return supplementary_telegram;
+    case Slot::kEncoder1:
+      return encoder_telegrams[0];
+    case Slot::kEncoder2:
+      return encoder_telegrams[1];
   }
   return 0;
 }

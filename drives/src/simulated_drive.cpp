@@ -1,6 +1,7 @@
-// The simulated PROFIdrive drive. One call of read_actual() is one servo cycle of the drive: take the setpoints
-// the controller wrote last cycle, run the state machine and the motor/load model for one cycle, answer with
-// actual-value frames. Pure arithmetic on preallocated state: no allocation, no locks, no exceptions.
+// The simulated PROFIdrive drive. One call of read_actual() is one servo cycle of the drive: take the
+// setpoints the controller wrote last cycle, run the state machine and the motor/load model for one cycle,
+// answer with actual-value frames. Pure arithmetic on preallocated state: no allocation, no locks, no
+// exceptions.
 #include "tomc/drives/simulated_drive.hpp"
 
 #include <algorithm>
@@ -18,9 +19,15 @@ using Reaction = SimulatedDriveParameters::FaultReaction;
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double rpm_to_rad_s(double rpm) { return rpm * kTwoPi / 60.0; }
-constexpr double rad_s_to_rpm(double w) { return w * 60.0 / kTwoPi; }
-constexpr bool bit(std::uint16_t w, unsigned n) { return ((w >> n) & 1u) != 0; }
+constexpr double rpm_to_rad_s(double rpm) {
+  return rpm * kTwoPi / 60.0;
+}
+constexpr double rad_s_to_rpm(double w) {
+  return w * 60.0 / kTwoPi;
+}
+constexpr bool bit(std::uint16_t w, unsigned n) {
+  return ((w >> n) & 1u) != 0;
+}
 
 bool has_dsc(std::uint16_t telegram) {
   return telegram == 5 || telegram == 6 || telegram == 105 || telegram == 106;
@@ -46,8 +53,10 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
   for (std::size_t i = 0; i < kSlotCount; ++i) {
     const auto t = config_.telegram(static_cast<Slot>(i));
     if (t == 0) continue;
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, config_.codec)) setpoint_codecs_[i] = c.value();
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, config_.codec)) actual_codecs_[i] = c.value();
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, config_.codec))
+      setpoint_codecs_[i] = c.value();
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, config_.codec))
+      actual_codecs_[i] = c.value();
   }
   setpoint_frames_ = make_frames(config_, tg::Direction::kSetpoint);
   // Which encoders exist: those carried by the drive telegram, plus separately connected ones.
@@ -55,7 +64,8 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
   encoders_[0].present = drive_actual.carries(tg::Signal::G1_ZSW);
   encoders_[1].present = drive_actual.carries(tg::Signal::G2_ZSW);
   for (Slot s : {Slot::kEncoder1, Slot::kEncoder2}) {
-    if (config_.telegram(s) != 0) encoders_[static_cast<std::size_t>(encoder_index_of_slot(config_, s))].present = true;
+    if (config_.telegram(s) != 0)
+      encoders_[static_cast<std::size_t>(encoder_index_of_slot(config_, s))].present = true;
   }
   master_monitor_ = tg::SignOfLifeMonitor(tg::SignOfLifeMonitorConfig{p_.sign_of_life_tolerance, 1});
   const auto& drive_setpoint = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
@@ -74,15 +84,18 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
     const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
     r_.xist1_scale[static_cast<std::size_t>(i)] =
         e.linear ? std::ldexp(1.0, e.fine_resolution_xist1) : counts_per_revolution(e);
-    r_.xist1_modulus[static_cast<std::size_t>(i)] = std::ldexp(1.0, std::clamp<int>(e.xist1_width_bits, 1, 32));
+    r_.xist1_modulus[static_cast<std::size_t>(i)] =
+        std::ldexp(1.0, std::clamp<int>(e.xist1_width_bits, 1, 32));
   }
   // DSC: XERR (encoder-1 counts) -> motor revolutions.
   if (p_.encoder1.linear) {
-    r_.dsc_counts_to_motor_revolutions = p_.encoder1.resolution / std::ldexp(1.0, p_.encoder1.fine_resolution_xist1) /
+    r_.dsc_counts_to_motor_revolutions = p_.encoder1.resolution /
+                                         std::ldexp(1.0, p_.encoder1.fine_resolution_xist1) /
                                          p_.load_units_per_revolution * r_.ratio;
   } else {
-    r_.dsc_counts_to_motor_revolutions = 1.0 / counts_per_revolution(p_.encoder1) *
-                                         (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
+    r_.dsc_counts_to_motor_revolutions =
+        1.0 / counts_per_revolution(p_.encoder1) *
+        (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
   }
   load_position_ = p_.initial_load_position;
   motor_revolutions_ =
@@ -112,7 +125,8 @@ bool SimulatedDrive::read_actual(DeviceFrames& actual) noexcept {
   cycle_speed_setpoint_rpm_ = speed_setpoint_rpm();
   cycle_torque_limit_positive_ = torque_limit_positive();
   cycle_torque_limit_negative_ = torque_limit_negative();
-  for (std::uint32_t i = 0; i < p_.substeps; ++i) integrate(r_.dt);
+  for (std::uint32_t i = 0; i < p_.substeps; ++i)
+    integrate(r_.dt);
   update_encoders(previous_load, previous_motor);
   if (p_.isochronous && cyclic_data_ && !sign_of_life_frozen_) slave_counter_ = slave_sign_of_life_.next();
 
@@ -134,7 +148,8 @@ bool SimulatedDrive::read_actual(DeviceFrames& actual) noexcept {
 
 void SimulatedDrive::apply_setpoints() noexcept {
   if (!fresh_setpoint_) {
-    if (cyclic_data_ && ++missed_setpoints_ >= p_.setpoint_timeout_cycles && fault_code_ != kFaultSetpointTimeout) {
+    if (cyclic_data_ && ++missed_setpoints_ >= p_.setpoint_timeout_cycles &&
+        fault_code_ != kFaultSetpointTimeout) {
       raise_fault(kFaultSetpointTimeout, p_.communication_fault_reaction);
     }
     return;
@@ -148,7 +163,8 @@ void SimulatedDrive::apply_setpoints() noexcept {
   previous_stw1_ = drive_sp_.STW1.value();
   auto decode = [&](Slot s, tg::SetpointSignals& into) {
     const auto i = static_cast<std::size_t>(s);
-    if (setpoint_codecs_[i].frame_size() != 0) (void)setpoint_codecs_[i].decode(setpoint_frames_.slots[i].view(), into);
+    if (setpoint_codecs_[i].frame_size() != 0)
+      (void)setpoint_codecs_[i].decode(setpoint_frames_.slots[i].view(), into);
   };
   decode(Slot::kDrive, drive_sp_);
   decode(Slot::kSupplementary, supplementary_sp_);
@@ -192,7 +208,8 @@ void SimulatedDrive::inject_fault(std::uint32_t code, Reaction reaction) noexcep
 
 void SimulatedDrive::inject_encoder_error(int encoder, std::uint16_t code) noexcept {
   if (encoder < 1 || encoder > 2) return;
-  encoders_[static_cast<std::size_t>(encoder - 1)].error_code = code == 0 ? tg::kEncoderErrorSensorGroup : code;
+  encoders_[static_cast<std::size_t>(encoder - 1)].error_code =
+      code == 0 ? tg::kEncoderErrorSensorGroup : code;
 }
 
 void SimulatedDrive::clear_encoder_error(int encoder) noexcept {
@@ -237,17 +254,23 @@ void SimulatedDrive::update_state_machine() noexcept {
   std::uint16_t effective = stw1;
   if (fault_code_ != 0) {
     switch (fault_reaction_) {
-      case Reaction::kOff1: effective &= static_cast<std::uint16_t>(~0x0001u); break;
-      case Reaction::kOff2: effective &= static_cast<std::uint16_t>(~0x0002u); break;
-      case Reaction::kOff3: effective &= static_cast<std::uint16_t>(~0x0004u); break;
+      case Reaction::kOff1:
+        effective &= static_cast<std::uint16_t>(~0x0001u);
+        break;
+      case Reaction::kOff2:
+        effective &= static_cast<std::uint16_t>(~0x0002u);
+        break;
+      case Reaction::kOff3:
+        effective &= static_cast<std::uint16_t>(~0x0004u);
+        break;
     }
   }
   if (!cyclic_data_) return;
   const bool standstill = std::fabs(rad_s_to_rpm(omega_)) < p_.standstill_threshold_rpm;
   tg::DriveState next = tg::next_drive_state(state_, effective, standstill);
   // A present fault inhibits switching on: the drive ends in S1 once its fault reaction is complete.
-  if (fault_code_ != 0 && (next == tg::DriveState::kS2ReadyForSwitchingOn || next == tg::DriveState::kS3SwitchedOn ||
-                           next == tg::DriveState::kS4Operation)) {
+  if (fault_code_ != 0 && (next == tg::DriveState::kS2ReadyForSwitchingOn ||
+                           next == tg::DriveState::kS3SwitchedOn || next == tg::DriveState::kS4Operation)) {
     next = tg::DriveState::kS1SwitchingOnInhibited;
   }
   // Entering a ramp stop starts the ramp-function generator at the present speed.
@@ -261,7 +284,7 @@ void SimulatedDrive::update_state_machine() noexcept {
 
 double SimulatedDrive::speed_setpoint_rpm() const noexcept {
   double n = r_.nsoll_b ? tg::n4_to_speed(drive_sp_.NSOLL_B, p_.reference_speed_rpm)
-                                                : tg::n2_to_speed(drive_sp_.NSOLL_A, p_.reference_speed_rpm);
+                        : tg::n2_to_speed(drive_sp_.NSOLL_A, p_.reference_speed_rpm);
   // STW1.4..6: ramp generator enable / unfreeze / setpoint enable; 0 forces the setpoint to 0.
   const std::uint16_t stw1 = drive_sp_.STW1.value();
   if (!bit(stw1, 4) || !bit(stw1, 6)) n = 0.0;
@@ -309,7 +332,8 @@ void SimulatedDrive::integrate(double dt) noexcept {
     reference_rpm = cycle_speed_setpoint_rpm_;
     // DSC (spec 06 §7): position loop in the drive on XERR with gain KPC, plus the NSOLL_B pre-control.
     if (r_.dsc && drive_sp_.KPC != 0 && encoders_[0].present) {
-      const double error_motor_revolutions = static_cast<double>(drive_sp_.XERR) * r_.dsc_counts_to_motor_revolutions;
+      const double error_motor_revolutions =
+          static_cast<double>(drive_sp_.XERR) * r_.dsc_counts_to_motor_revolutions;
       const double moved = motor_revolutions_ - motor_revolutions_at_sample_;
       reference_rpm += tg::kv_from_kpc(drive_sp_.KPC) * (error_motor_revolutions - moved) * 60.0;
     }
@@ -326,7 +350,8 @@ void SimulatedDrive::integrate(double dt) noexcept {
 
   // Friction at the motor shaft: viscous + Coulomb; static friction holds a shaft at rest.
   const double moving_threshold = 1e-6;
-  const double coulomb = std::fabs(omega_) > moving_threshold ? std::copysign(p_.coulomb_friction_nm, omega_) : 0.0;
+  const double coulomb =
+      std::fabs(omega_) > moving_threshold ? std::copysign(p_.coulomb_friction_nm, omega_) : 0.0;
   const double friction = p_.viscous_friction_nm_per_rad_s * omega_ + coulomb;
 
   double torque = 0.0;
@@ -340,10 +365,12 @@ void SimulatedDrive::integrate(double dt) noexcept {
     if (std::fabs(omega_) <= moving_threshold && reference != 0.0) {
       demand += std::copysign(p_.coulomb_friction_nm, reference);
     }
-    if (config_.supplementary_telegram == 750) demand += tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
+    if (config_.supplementary_telegram == 750)
+      demand += tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
     if (blocked_) {
       // At a fixed stop the speed controller's integral winds up until the torque limit (spec: torque rises).
-      stall_integral_ += inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
+      stall_integral_ +=
+          inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
       // Anti-windup: the integral grows only until the torque reaches the active limit (p1520/MOMRED/750), so
       // the drive leaves the stop as soon as the speed setpoint reverses.
       stall_integral_ = std::clamp(stall_integral_, std::min(0.0, cycle_torque_limit_negative_ - demand),
@@ -381,11 +408,15 @@ void SimulatedDrive::integrate(double dt) noexcept {
     omega_ = 0.0;
     blocked_ = true;
   };
-  if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0) stop_at(*m.positive_fixed_stop);
-  if (m.negative_fixed_stop && load_position_ <= *m.negative_fixed_stop && torque_ <= 0.0) stop_at(*m.negative_fixed_stop);
+  if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0)
+    stop_at(*m.positive_fixed_stop);
+  if (m.negative_fixed_stop && load_position_ <= *m.negative_fixed_stop && torque_ <= 0.0)
+    stop_at(*m.negative_fixed_stop);
 }
 
-double SimulatedDrive::motor_speed_rpm() const noexcept { return rad_s_to_rpm(omega_); }
+double SimulatedDrive::motor_speed_rpm() const noexcept {
+  return rad_s_to_rpm(omega_);
+}
 
 double SimulatedDrive::load_speed() const noexcept {
   if (config_.drive_telegram == 0) return external_speed_;
@@ -425,19 +456,21 @@ std::uint32_t SimulatedDrive::xist1_of(int index, double shaft) const noexcept {
   } else {
     counts = (shaft - (e.linear ? 0.0 : e.absolute_offset_revolutions)) * scale;
   }
-  // Wrap at 2^width with integer arithmetic (two's complement keeps negative counts right); |counts| stays far
-  // below 2^63 for any travel the model can make.
+  // Wrap at 2^width with integer arithmetic (two's complement keeps negative counts right); |counts| stays
+  // far below 2^63 for any travel the model can make.
   const auto modulus = static_cast<std::uint64_t>(r_.xist1_modulus[static_cast<std::size_t>(index)]);
   const auto whole = static_cast<std::int64_t>(std::floor(counts));
   return static_cast<std::uint32_t>(static_cast<std::uint64_t>(whole) & (modulus - 1));
 }
 
-void SimulatedDrive::update_encoders(double previous_load_position, double previous_motor_revolutions) noexcept {
+void SimulatedDrive::update_encoders(double previous_load_position,
+                                     double previous_motor_revolutions) noexcept {
   for (int i = 0; i < 2; ++i) {
     if (!encoders_[static_cast<std::size_t>(i)].present) continue;
     const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
     update_encoder(i, shaft_revolutions(e, previous_motor_revolutions, previous_load_position),
-                   shaft_revolutions(e, motor_revolutions_, load_position_), previous_load_position, load_position_);
+                   shaft_revolutions(e, motor_revolutions_, load_position_), previous_load_position,
+                   load_position_);
   }
 }
 
@@ -465,8 +498,8 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
   std::uint16_t status = s.status & 0x00FFu;  // functions active / values available persist
   const tg::EncoderControlWord stw{control};
 
-  // Encoder error and its acknowledge (spec 06 §6.3, §6.4): the error bit is set while the cause is present and
-  // stays after it is gone until the controller acknowledges with Gx_STW.15 (shown as Gx_ZSW.11).
+  // Encoder error and its acknowledge (spec 06 §6.3, §6.4): the error bit is set while the cause is present
+  // and stays after it is gone until the controller acknowledges with Gx_STW.15 (shown as Gx_ZSW.11).
   const bool acknowledge = stw.test(tg::EncoderControlBit::kAcknowledgeEncoderError);
   if (acknowledge) status |= 0x0800u;
   if (s.error_code != 0) s.reported_error_code = s.error_code;
@@ -508,13 +541,15 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
     if (!measurement) {
       const double interval = e.reference_mark_interval_revolutions;
       const double offset = e.reference_mark_offset_revolutions;
-      const double prev_rev = e.linear ? previous_shaft * e.resolution / p_.load_units_per_revolution : previous_shaft;
+      const double prev_rev =
+          e.linear ? previous_shaft * e.resolution / p_.load_units_per_revolution : previous_shaft;
       const double now_rev = e.linear ? shaft * e.resolution / p_.load_units_per_revolution : shaft;
       const double k_prev = std::floor((prev_rev - offset) / interval);
       const double k_now = std::floor((now_rev - offset) / interval);
       if (k_prev != k_now && interval > 0.0) {
         const double mark_rev = offset + std::max(k_prev, k_now) * interval;
-        const double mark_shaft = e.linear ? mark_rev * p_.load_units_per_revolution / e.resolution : mark_rev;
+        const double mark_shaft =
+            e.linear ? mark_rev * p_.load_units_per_revolution / e.resolution : mark_rev;
         s.captured = xist1_of(index, mark_shaft);
         available |= active & 0x0001u;  // reference mark 1 (function 1)
         if ((active & 0x0002u) != 0) available |= 0x0002u;
@@ -522,7 +557,8 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
     } else {
       // Probe windows are in load units; the edge is interpolated inside this cycle.
       const auto& m = p_.machine;
-      auto edge = [&](const std::optional<PositionWindow>& w, std::uint16_t rising_bit, std::uint16_t falling_bit) {
+      auto edge = [&](const std::optional<PositionWindow>& w, std::uint16_t rising_bit,
+                      std::uint16_t falling_bit) {
         if (!w) return;
         const bool was = w->contains(previous_load);
         const bool is = w->contains(load);
@@ -559,8 +595,8 @@ void SimulatedDrive::update_encoder(int index, double previous_shaft, double sha
                                   : shaft - e.absolute_offset_revolutions;
     revolutions = std::fmod(revolutions, range);
     if (revolutions < 0.0) revolutions += range;
-    s.xist2 = static_cast<std::uint32_t>(std::floor(
-        revolutions * tg::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist2)));
+    s.xist2 = static_cast<std::uint32_t>(
+        std::floor(revolutions * tg::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist2)));
   } else {
     s.xist2 = 0;
   }
@@ -607,10 +643,12 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
     tg::ActualSignals a;
     if (slot == Slot::kDrive) {
       std::uint16_t zsw1 = tg::zsw1_for(state_, drive_sp_.STW1.value(), cyclic_data_, fault, false);
-      // In fault the drive shows OFF2 and OFF3 active (switching on inhibited), as 0x0248 of spec 06 TV24/TV26.
+      // In fault the drive shows OFF2 and OFF3 active (switching on inhibited), as 0x0248 of spec 06
+      // TV24/TV26.
       if (fault) zsw1 &= static_cast<std::uint16_t>(~0x0030u);
       const double deviation = std::fabs(cycle_speed_setpoint_rpm_ - speed_rpm);
-      if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm) zsw1 |= 0x0100u;
+      if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm)
+        zsw1 |= 0x0100u;
       a.ZSW1 = tg::Zsw1{zsw1};
       if (r_.nsoll_b) {  // telegram 1 carries NIST_A, all others NIST_B
         a.NIST_B = tg::speed_to_n4(speed_rpm, p_.reference_speed_rpm);
@@ -621,10 +659,12 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       a.ZSW2.set(tg::Zsw2Bit::kTravelToFixedStopActive, drive_sp_.STW2.test(tg::Stw2Bit::kTravelToFixedStop));
       a.ZSW2.set_field(tg::kSignOfLifeField, slave_counter_);
       tg::Meldw meldw;
-      meldw.set(tg::MeldwBit::kRampFunctionCompleted, state_ != tg::DriveState::kS5aRampStop &&
-                                                          state_ != tg::DriveState::kS5bQuickStop);
-      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_) < 0.9 * p_.torque_limit_nm);
-      meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold, std::fabs(speed_rpm) < p_.standstill_threshold_rpm);
+      meldw.set(tg::MeldwBit::kRampFunctionCompleted,
+                state_ != tg::DriveState::kS5aRampStop && state_ != tg::DriveState::kS5bQuickStop);
+      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold,
+                std::fabs(torque_) < 0.9 * p_.torque_limit_nm);
+      meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold,
+                std::fabs(speed_rpm) < p_.standstill_threshold_rpm);
       meldw.set(tg::MeldwBit::kSpeedAtOrBelowThreshold2, std::fabs(speed_rpm) <= p_.standstill_threshold_rpm);
       meldw.set(tg::MeldwBit::kNoMotorOverTemperatureAlarm);
       meldw.set(tg::MeldwBit::kNoPowerUnitOverloadAlarm);
@@ -634,10 +674,12 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       meldw.set(tg::MeldwBit::kPulsesEnabled, pulses_enabled_);
       a.MELDW = meldw;
       a.G1_ZSW = tg::EncoderStatusWord{encoders_[0].status};
-      if (encoders_[0].present) a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
+      if (encoders_[0].present)
+        a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
       a.G1_XIST2 = encoders_[0].xist2;
       a.G2_ZSW = tg::EncoderStatusWord{encoders_[1].status};
-      if (encoders_[1].present) a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
+      if (encoders_[1].present)
+        a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
       a.G2_XIST2 = encoders_[1].xist2;
     } else if (slot == Slot::kSupplementary) {
       a.M_ACT = tg::torque_to_n2(torque_, p_.reference_torque_nm);

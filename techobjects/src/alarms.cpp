@@ -8,17 +8,21 @@ namespace {
 using C = AlarmClass;
 using R = AlarmReaction;
 
-// Reactions as the manual states them (spec 02 §1.3, spec 04 §7); 533/534/531 are configurable and carry their
-// default here; the drive-communication alarms 401..406 are [OUR CHOICE] (docs/decisions.md A1).
+// Reactions as the manual states them (spec 02 §1.3, spec 04 §7); 533/534/531 are configurable and carry
+// their default here; the drive-communication alarms 401..406 are [OUR CHOICE] (docs/decisions.md A1).
 constexpr AlarmDefinition kAlarms[] = {
     {kAlarmDriveFault, C::kAcknowledge, R::kRemoveEnable, "drive fault (ZSW1.3 fault present)"},
-    {kAlarmDriveNotReady, C::kAcknowledge, R::kRemoveEnable, "drive not ready: control not requested or left operation"},
+    {kAlarmDriveNotReady, C::kAcknowledge, R::kRemoveEnable,
+     "drive not ready: control not requested or left operation"},
     {kAlarmDriveCommunication, C::kAcknowledge, R::kRemoveEnable, "communication with the drive lost"},
     {kAlarmDriveSignOfLife, C::kAcknowledge, R::kRemoveEnable, "drive sign-of-life failure"},
-    {kAlarmModuloTooFast, C::kAcknowledge, R::kRemoveEnable, "modulo axis faster than Modulo.Length / servo cycle"},
+    {kAlarmModuloTooFast, C::kAcknowledge, R::kRemoveEnable,
+     "modulo axis faster than Modulo.Length / servo cycle"},
     {kAlarmDriveSto, C::kAcknowledge, R::kRemoveEnable, "drive STO / autonomous OFF2"},
-    {kAlarmDynamicsLimitedVelocity, C::kWarning, R::kNone, "programmed velocity limited to the dynamic limits"},
-    {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone, "programmed acceleration/deceleration limited"},
+    {kAlarmDynamicsLimitedVelocity, C::kWarning, R::kNone,
+     "programmed velocity limited to the dynamic limits"},
+    {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone,
+     "programmed acceleration/deceleration limited"},
     {kAlarmDynamicsLimitedJerk, C::kWarning, R::kNone, "programmed jerk limited"},
     {kAlarmFollowingError, C::kAcknowledge, R::kRemoveEnable, "permissible following error exceeded"},
     {kAlarmFollowingErrorWarning, C::kWarning, R::kNone, "following-error warning level reached"},
@@ -33,12 +37,18 @@ constexpr AlarmDefinition kAlarms[] = {
 
 std::string_view to_string(AlarmReaction reaction) noexcept {
   switch (reaction) {
-    case R::kNone: return "none";
-    case R::kStopCurrentDynamics: return "stop with current dynamic values";
-    case R::kStopMaxDynamics: return "stop with maximum dynamic values";
-    case R::kStopEmergencyRamp: return "stop with emergency stop ramp";
-    case R::kRemoveEnable: return "remove enable";
-    case R::kFollowSetpoint: return "follow setpoint";
+    case R::kNone:
+      return "none";
+    case R::kStopCurrentDynamics:
+      return "stop with current dynamic values";
+    case R::kStopMaxDynamics:
+      return "stop with maximum dynamic values";
+    case R::kStopEmergencyRamp:
+      return "stop with emergency stop ramp";
+    case R::kRemoveEnable:
+      return "remove enable";
+    case R::kFollowSetpoint:
+      return "follow setpoint";
   }
   return "?";
 }
@@ -50,16 +60,24 @@ const AlarmDefinition* find_alarm(std::uint32_t number) noexcept {
   return nullptr;
 }
 
-std::span<const AlarmDefinition> alarm_definitions() noexcept { return kAlarms; }
+std::span<const AlarmDefinition> alarm_definitions() noexcept {
+  return kAlarms;
+}
 
 int reaction_rank(AlarmReaction reaction) noexcept {
   switch (reaction) {
-    case R::kRemoveEnable: return 5;
-    case R::kFollowSetpoint: return 4;
-    case R::kStopEmergencyRamp: return 3;
-    case R::kStopMaxDynamics: return 2;
-    case R::kStopCurrentDynamics: return 1;
-    case R::kNone: return 0;
+    case R::kRemoveEnable:
+      return 5;
+    case R::kFollowSetpoint:
+      return 4;
+    case R::kStopEmergencyRamp:
+      return 3;
+    case R::kStopMaxDynamics:
+      return 2;
+    case R::kStopCurrentDynamics:
+      return 1;
+    case R::kNone:
+      return 0;
   }
   return 0;
 }
@@ -77,7 +95,8 @@ std::uint64_t AlarmLog::lost_before() const noexcept {
 std::size_t AlarmLog::copy_since(std::uint64_t after, std::span<AlarmEvent> out) const noexcept {
   std::uint64_t first = std::max(after + 1, lost_before());
   std::size_t copied = 0;
-  for (std::uint64_t s = first; s < next_sequence_ && copied < out.size(); ++s) out[copied++] = ring_[(s - 1) % kCapacity];
+  for (std::uint64_t s = first; s < next_sequence_ && copied < out.size(); ++s)
+    out[copied++] = ring_[(s - 1) % kCapacity];
   return copied;
 }
 
@@ -104,7 +123,8 @@ std::size_t AlarmList::acknowledge(bool restart, std::uint64_t cycle) noexcept {
   for (std::size_t i = 0; i < count_; ++i) {
     const PendingAlarm& a = alarms_[i];
     if (a.alarm_class != AlarmClass::kRestart || restart) {
-      log_.append(AlarmEvent{0, cycle, AlarmEvent::Kind::kAcknowledged, a.number, a.additional_value, a.reaction});
+      log_.append(
+          AlarmEvent{0, cycle, AlarmEvent::Kind::kAcknowledged, a.number, a.additional_value, a.reaction});
       ++cleared;
     } else {
       alarms_[kept++] = a;
@@ -138,7 +158,8 @@ const PendingAlarm* AlarmList::error_detail() const noexcept {
   const PendingAlarm* top = nullptr;
   for (std::size_t i = 0; i < count_; ++i) {
     // Strictly stronger only: among equals the oldest (first raised) stays on top.
-    if (top == nullptr || reaction_rank(alarms_[i].reaction) > reaction_rank(top->reaction)) top = &alarms_[i];
+    if (top == nullptr || reaction_rank(alarms_[i].reaction) > reaction_rank(top->reaction))
+      top = &alarms_[i];
   }
   return top;
 }

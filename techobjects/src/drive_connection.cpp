@@ -9,11 +9,16 @@ using drives::Slot;
 
 std::string_view to_string(CommunicationFault fault) noexcept {
   switch (fault) {
-    case CommunicationFault::kNone: return "none";
-    case CommunicationFault::kLinkLost: return "link lost";
-    case CommunicationFault::kNotControlled: return "drive does not request control (ZSW1.9 = 0)";
-    case CommunicationFault::kDriveFault: return "drive fault (ZSW1.3)";
-    case CommunicationFault::kSignOfLifeFailed: return "drive sign-of-life failed";
+    case CommunicationFault::kNone:
+      return "none";
+    case CommunicationFault::kLinkLost:
+      return "link lost";
+    case CommunicationFault::kNotControlled:
+      return "drive does not request control (ZSW1.9 = 0)";
+    case CommunicationFault::kDriveFault:
+      return "drive fault (ZSW1.3)";
+    case CommunicationFault::kSignOfLifeFailed:
+      return "drive sign-of-life failed";
   }
   return "?";
 }
@@ -24,15 +29,18 @@ DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& 
   for (std::size_t i = 0; i < drives::kSlotCount; ++i) {
     const auto t = dc.telegram(static_cast<Slot>(i));
     if (t == 0) continue;
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, dc.codec)) setpoint_codecs_[i] = c.value();
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, dc.codec)) actual_codecs_[i] = c.value();
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, dc.codec))
+      setpoint_codecs_[i] = c.value();
+    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, dc.codec))
+      actual_codecs_[i] = c.value();
   }
   // Without MC_TorqueRange the TO sends the reference torque as limits (spec 06 §8, TV14).
   supplementary_sp_.M_LIMIT_POS = 0x4000;
   supplementary_sp_.M_LIMIT_NEG = static_cast<std::int16_t>(-0x4000);
   // The TO owns STW1 bits 0..7 and 10; 4..6 held at 1 (spec 06 §3.1).
   drive_sp_.STW1 = tg::Stw1{tg::stw1_for(tg::DriveCommand::kIdle)};
-  for (auto& e : encoder_sp_) e.STW2_ENC.set(tg::Stw2EncBit::kControlByPlc);
+  for (auto& e : encoder_sp_)
+    e.STW2_ENC.set(tg::Stw2EncBit::kControlByPlc);
   const auto& drive_actual = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
   has_nist_b_ = drive_actual.carries(tg::Signal::NIST_B);
   has_zsw2_ = drive_actual.carries(tg::Signal::ZSW2);
@@ -51,13 +59,15 @@ void DriveConnection::read() noexcept {
   if (device_ == nullptr) return;
   const bool fresh = device_->fresh;
   if (fresh) {
-    // After a gap the drive's counter has moved on: resynchronise; the gap is the link supervision's business.
+    // After a gap the drive's counter has moved on: resynchronise; the gap is the link supervision's
+    // business.
     if (missed_ != 0) slave_monitor_.reset();
     missed_ = 0;
     ever_fresh_ = true;
     auto decode = [&](Slot s, tg::ActualSignals& into) {
       const auto i = static_cast<std::size_t>(s);
-      if (actual_codecs_[i].frame_size() != 0) (void)actual_codecs_[i].decode(device_->actual.slots[i].view(), into);
+      if (actual_codecs_[i].frame_size() != 0)
+        (void)actual_codecs_[i].decode(device_->actual.slots[i].view(), into);
     };
     decode(Slot::kDrive, drive_act_);
     decode(Slot::kSupplementary, supplementary_act_);
@@ -71,9 +81,8 @@ void DriveConnection::read() noexcept {
   const bool has_drive = drive_codec.frame_size() != 0;
   if (has_drive) {
     status_ = tg::decode_zsw1(drive_act_.ZSW1.value());
-    actual_speed_rpm_ = has_nist_b_
-                            ? tg::n4_to_speed(drive_act_.NIST_B, config_.reference_speed_rpm)
-                            : tg::n2_to_speed(drive_act_.NIST_A, config_.reference_speed_rpm);
+    actual_speed_rpm_ = has_nist_b_ ? tg::n4_to_speed(drive_act_.NIST_B, config_.reference_speed_rpm)
+                                    : tg::n2_to_speed(drive_act_.NIST_A, config_.reference_speed_rpm);
   }
 
   // Slave sign-of-life, once per fresh frame (spec 06 §5.2): ZSW2 of the drive or ZSW2_ENC of an encoder.
@@ -81,7 +90,8 @@ void DriveConnection::read() noexcept {
     if (has_zsw2_) {
       (void)slave_monitor_.check(static_cast<std::uint8_t>(drive_act_.ZSW2.field(tg::kSignOfLifeField)));
     } else if (!has_drive && actual_codecs_[static_cast<std::size_t>(Slot::kEncoder1)].frame_size() != 0) {
-      (void)slave_monitor_.check(static_cast<std::uint8_t>(encoder_act_[0].ZSW2_ENC.field(tg::kSignOfLifeField)));
+      (void)slave_monitor_.check(
+          static_cast<std::uint8_t>(encoder_act_[0].ZSW2_ENC.field(tg::kSignOfLifeField)));
     }
   }
 
@@ -118,10 +128,12 @@ void DriveConnection::write() noexcept {
       drive_sp_.NSOLL_A = tg::speed_to_n2(speed_setpoint_rpm_, config_.reference_speed_rpm);
     }
   }
-  for (auto& e : encoder_sp_) e.STW2_ENC.set_field(tg::kSignOfLifeField, master);
+  for (auto& e : encoder_sp_)
+    e.STW2_ENC.set_field(tg::kSignOfLifeField, master);
   auto encode = [&](Slot s, const tg::SetpointSignals& from) {
     const auto i = static_cast<std::size_t>(s);
-    if (setpoint_codecs_[i].frame_size() != 0) (void)setpoint_codecs_[i].encode(from, device_->setpoint.slots[i].view());
+    if (setpoint_codecs_[i].frame_size() != 0)
+      (void)setpoint_codecs_[i].encode(from, device_->setpoint.slots[i].view());
   };
   encode(Slot::kDrive, drive_sp_);
   encode(Slot::kSupplementary, supplementary_sp_);

@@ -4,27 +4,48 @@ namespace tomc::techobjects::error_id {
 
 std::string_view describe(std::uint16_t id) noexcept {
   switch (id) {
-    case kNone: return "no error";
-    case kAbortedByAlarmReaction: return "job aborted by the stop reaction of a technology alarm";
-    case kJogWrongDirection: return "wrong direction specification: JogForward and JogBackward both TRUE";
-    case kRejectedByRunningJob: return "rejected by a running job (override matrix cell N)";
-    case kLockedByStop: return "motion jobs are blocked while MC_Stop.Execute is TRUE";
-    case kAxisNotEnabled: return "technology object not enabled";
-    case kAxisBlockedByAlarm: return "technology object blocked by an alarm reaction";
-    case kInvalidVelocity: return "invalid Velocity";
-    case kInvalidAcceleration: return "invalid Acceleration";
-    case kInvalidDeceleration: return "invalid Deceleration";
-    case kInvalidJerk: return "invalid Jerk";
-    case kInvalidMode: return "invalid Mode";
-    case kInvalidDirection: return "invalid Direction";
-    case kInvalidStartMode: return "invalid StartMode";
-    case kInvalidStopMode: return "invalid StopMode";
-    case kRestartNeedsDisabledAxis: return "restart needs a disabled technology object";
-    case kInvalidParameterNumber: return "parameter number not writable on this technology object";
-    case kInvalidParameterValue: return "parameter value not permitted";
-    case kInvalidBitMask: return "bit mask selects bits the technology object owns";
-    case kNoDriveTelegram: return "no drive telegram (virtual axis or simulation)";
-    default: return "unknown ErrorID";
+    case kNone:
+      return "no error";
+    case kAbortedByAlarmReaction:
+      return "job aborted by the stop reaction of a technology alarm";
+    case kJogWrongDirection:
+      return "wrong direction specification: JogForward and JogBackward both TRUE";
+    case kRejectedByRunningJob:
+      return "rejected by a running job (override matrix cell N)";
+    case kLockedByStop:
+      return "motion jobs are blocked while MC_Stop.Execute is TRUE";
+    case kAxisNotEnabled:
+      return "technology object not enabled";
+    case kAxisBlockedByAlarm:
+      return "technology object blocked by an alarm reaction";
+    case kInvalidVelocity:
+      return "invalid Velocity";
+    case kInvalidAcceleration:
+      return "invalid Acceleration";
+    case kInvalidDeceleration:
+      return "invalid Deceleration";
+    case kInvalidJerk:
+      return "invalid Jerk";
+    case kInvalidMode:
+      return "invalid Mode";
+    case kInvalidDirection:
+      return "invalid Direction";
+    case kInvalidStartMode:
+      return "invalid StartMode";
+    case kInvalidStopMode:
+      return "invalid StopMode";
+    case kRestartNeedsDisabledAxis:
+      return "restart needs a disabled technology object";
+    case kInvalidParameterNumber:
+      return "parameter number not writable on this technology object";
+    case kInvalidParameterValue:
+      return "parameter value not permitted";
+    case kInvalidBitMask:
+      return "bit mask selects bits the technology object owns";
+    case kNoDriveTelegram:
+      return "no drive telegram (virtual axis or simulation)";
+    default:
+      return "unknown ErrorID";
   }
 }
 

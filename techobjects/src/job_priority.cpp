@@ -40,11 +40,16 @@ Cell priority_cell(NewJob row, RunningJob column) noexcept {
 
 std::string_view to_string(Cell cell) noexcept {
   switch (cell) {
-    case Cell::kNoEffect: return "-";
-    case Cell::kAbort: return "A";
-    case Cell::kReject: return "N";
-    case Cell::kStopWeight: return "B";
-    case Cell::kAppendOrReject: return "-/N";
+    case Cell::kNoEffect:
+      return "-";
+    case Cell::kAbort:
+      return "A";
+    case Cell::kReject:
+      return "N";
+    case Cell::kStopWeight:
+      return "B";
+    case Cell::kAppendOrReject:
+      return "-/N";
   }
   return "?";
 }
@@ -58,25 +63,36 @@ Outcome resolve(NewJob row, RunningJob column, const ArbitrationContext& context
       // Footnote 1: MC_Home Mode 3/5 on a virtual or simulated axis aborts nothing.
       if (row == NewJob::kActiveHoming && context.virtual_or_simulated_axis) return Outcome::kProceed;
       return Outcome::kAbortRunning;
-    case Cell::kReject: return Outcome::kRejectNew;
+    case Cell::kReject:
+      return Outcome::kRejectNew;
     case Cell::kStopWeight:
-      // Legend B: a new MC_Stop with equal or higher weight aborts the running MC_Stop; a lighter one is rejected.
-      return context.new_stop_weight >= context.running_stop_weight ? Outcome::kAbortRunning : Outcome::kRejectNew;
+      // Legend B: a new MC_Stop with equal or higher weight aborts the running MC_Stop; a lighter one is
+      // rejected.
+      return context.new_stop_weight >= context.running_stop_weight ? Outcome::kAbortRunning
+                                                                    : Outcome::kRejectNew;
     case Cell::kAppendOrReject:
-      // Spec 03 §6.1 [IMPL] for [AMB-11]: append behind jobs that end by themselves, reject behind endless ones.
+      // Spec 03 §6.1 [IMPL] for [AMB-11]: append behind jobs that end by themselves, reject behind endless
+      // ones.
       return context.running_job_ends_by_itself ? Outcome::kQueueNew : Outcome::kRejectNew;
   }
   return Outcome::kRejectNew;
 }
 
-Decision arbitrate(NewJob row, std::span<const RunningJob> running, const ArbitrationContext& context) noexcept {
+Decision arbitrate(NewJob row, std::span<const RunningJob> running,
+                   const ArbitrationContext& context) noexcept {
   Decision d;
   for (std::size_t i = 0; i < running.size() && i < 8; ++i) {
     switch (resolve(row, running[i], context)) {
-      case Outcome::kRejectNew: return Decision{true, false, 0};
-      case Outcome::kAbortRunning: d.abort_mask = static_cast<std::uint8_t>(d.abort_mask | (1u << i)); break;
-      case Outcome::kQueueNew: d.queue = true; break;
-      case Outcome::kProceed: break;
+      case Outcome::kRejectNew:
+        return Decision{true, false, 0};
+      case Outcome::kAbortRunning:
+        d.abort_mask = static_cast<std::uint8_t>(d.abort_mask | (1u << i));
+        break;
+      case Outcome::kQueueNew:
+        d.queue = true;
+        break;
+      case Outcome::kProceed:
+        break;
     }
   }
   // A queued job aborts nothing: the running job it waits for goes on.
@@ -86,10 +102,14 @@ Decision arbitrate(NewJob row, std::span<const RunningJob> running, const Arbitr
 
 int stop_weight_of_mc_stop_mode(int mode) noexcept {
   switch (mode) {
-    case 0: return 3;  // emergency stop
-    case 2: return 2;  // maximum dynamics
-    case 3: return 1;  // specified dynamics
-    default: return 0;
+    case 0:
+      return 3;  // emergency stop
+    case 2:
+      return 2;  // maximum dynamics
+    case 3:
+      return 1;  // specified dynamics
+    default:
+      return 0;
   }
 }
 

@@ -14,7 +14,9 @@ namespace {
 
 constexpr std::int64_t kNsPerSecond = 1'000'000'000;
 
-std::int64_t to_ns(const timespec& t) { return static_cast<std::int64_t>(t.tv_sec) * kNsPerSecond + t.tv_nsec; }
+std::int64_t to_ns(const timespec& t) {
+  return static_cast<std::int64_t>(t.tv_sec) * kNsPerSecond + t.tv_nsec;
+}
 timespec from_ns(std::int64_t ns) {
   timespec t{};
   t.tv_sec = static_cast<time_t>(ns / kNsPerSecond);
@@ -29,12 +31,14 @@ std::int64_t now_ns() {
 
 void prefault_stack() {
   volatile unsigned char buffer[256 * 1024];
-  for (std::size_t i = 0; i < sizeof buffer; i += 4096) buffer[i] = 0;
+  for (std::size_t i = 0; i < sizeof buffer; i += 4096)
+    buffer[i] = 0;
 }
 
 }  // namespace
 
-RealTimeRunner::RealTimeRunner(RealTimeRunnerConfig config, Cycle cycle) : config_(config), cycle_(std::move(cycle)) {
+RealTimeRunner::RealTimeRunner(RealTimeRunnerConfig config, Cycle cycle)
+    : config_(config), cycle_(std::move(cycle)) {
   if (config_.period.count() <= 0) throw std::invalid_argument("RealTimeRunner: period must be > 0");
   if (!cycle_) throw std::invalid_argument("RealTimeRunner: no cycle function");
   if (config_.fifo_priority < 0 || config_.fifo_priority > 99) {
@@ -42,7 +46,9 @@ RealTimeRunner::RealTimeRunner(RealTimeRunnerConfig config, Cycle cycle) : confi
   }
 }
 
-RealTimeRunner::~RealTimeRunner() { stop(); }
+RealTimeRunner::~RealTimeRunner() {
+  stop();
+}
 
 void RealTimeRunner::start() {
   if (thread_.joinable()) return;
@@ -50,7 +56,8 @@ void RealTimeRunner::start() {
   setup_done_.store(false);
   setup_warnings_.clear();
   thread_ = std::thread([this] { loop(); });
-  while (!running_.load(std::memory_order_acquire) && !stop_requested_.load()) std::this_thread::yield();
+  while (!running_.load(std::memory_order_acquire) && !stop_requested_.load())
+    std::this_thread::yield();
 }
 
 void RealTimeRunner::stop() {
@@ -61,7 +68,8 @@ void RealTimeRunner::stop() {
 
 void RealTimeRunner::record_jitter(std::int64_t ns) noexcept {
   if (ns < 0) ns = 0;
-  const auto bucket = static_cast<std::size_t>(ns / 1000) < kMaxJitterUs ? static_cast<std::size_t>(ns / 1000) : kMaxJitterUs;
+  const auto bucket =
+      static_cast<std::size_t>(ns / 1000) < kMaxJitterUs ? static_cast<std::size_t>(ns / 1000) : kMaxJitterUs;
   histogram_[bucket].fetch_add(1, std::memory_order_relaxed);
   std::int64_t seen = jitter_min_ns_.load(std::memory_order_relaxed);
   while (ns < seen && !jitter_min_ns_.compare_exchange_weak(seen, ns, std::memory_order_relaxed)) {
@@ -74,7 +82,8 @@ void RealTimeRunner::record_jitter(std::int64_t ns) noexcept {
 void RealTimeRunner::loop() noexcept {
   // Set-up of the real-time thread: failures are reported, not fatal (a desktop has no RT rights).
   if (config_.lock_memory) {
-    if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0) setup_warnings_ += std::string("mlockall: ") + std::strerror(errno) + "; ";
+    if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0)
+      setup_warnings_ += std::string("mlockall: ") + std::strerror(errno) + "; ";
     prefault_stack();
   }
   if (config_.fifo_priority > 0) {
@@ -98,7 +107,8 @@ void RealTimeRunner::loop() noexcept {
     deadline += period;
     const std::int64_t end = now_ns();
     if (end > deadline) {
-      // Overrun: the next deadline has passed. Skip the missed periods instead of running cycles back to back.
+      // Overrun: the next deadline has passed. Skip the missed periods instead of running cycles back to
+      // back.
       overruns_.fetch_add(1, std::memory_order_relaxed);
       const std::int64_t missed = (end - deadline) / period + 1;
       skipped_.fetch_add(static_cast<std::uint64_t>(missed), std::memory_order_relaxed);
@@ -114,7 +124,8 @@ RunnerStatistics RealTimeRunner::statistics() const {
   s.skipped_periods = skipped_.load();
   if (setup_done_.load(std::memory_order_acquire)) s.setup_warnings = setup_warnings_;
   std::uint64_t total = 0;
-  for (const auto& b : histogram_) total += b.load(std::memory_order_relaxed);
+  for (const auto& b : histogram_)
+    total += b.load(std::memory_order_relaxed);
   if (total == 0) return s;
   s.jitter_min_us = static_cast<double>(jitter_min_ns_.load()) / 1000.0;
   s.jitter_max_us = static_cast<double>(jitter_max_ns_.load()) / 1000.0;

@@ -1,5 +1,5 @@
-// One application cycle, in the order of ARCHITECTURE-GUIDE §2 and seed §6.2.3.2 as corrected by spec 01 §11 A6
-// (MC_PreServo -> MC_Servo -> MC_PostServo).
+// One application cycle, in the order of ARCHITECTURE-GUIDE §2 and seed §6.2.3.2 as corrected by spec 01 §11
+// A6 (MC_PreServo -> MC_Servo -> MC_PostServo).
 #include "tomc/techobjects/runtime.hpp"
 
 #include <stdexcept>
@@ -61,15 +61,19 @@ void Runtime::step() noexcept {
   // MC_PreServo
   if (pre_servo_) pre_servo_(*this);
   // MC_Servo: read every actual frame, servo part of every TO, write every setpoint frame.
-  for (auto& d : devices_) d->fresh = d->adapter->read_actual(d->actual);
-  for (auto& o : objects_) o->servo(clock_);
-  for (auto& d : devices_) d->adapter->write_setpoint(d->setpoint);
+  for (auto& d : devices_)
+    d->fresh = d->adapter->read_actual(d->actual);
+  for (auto& o : objects_)
+    o->servo(clock_);
+  for (auto& d : devices_)
+    d->adapter->write_setpoint(d->setpoint);
   // MC_PostServo
   if (post_servo_) post_servo_(*this);
   const std::uint64_t cycle = clock_.servo_cycles;
   // MC_Interpolator, then the user program, at their ratios of the servo cycle.
   if (cycle % config_.interpolator_ratio == 0) {
-    for (auto& o : objects_) o->interpolate(clock_);
+    for (auto& o : objects_)
+      o->interpolate(clock_);
     ++clock_.interpolator_cycles;
   }
   if (cycle % config_.user_program_ratio == 0 && user_program_) user_program_(*this);

@@ -16,10 +16,13 @@ namespace tg = tomc::telegrams;
 
 namespace {
 
-constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // a condition still present this long after MC_Reset re-raises
-constexpr double kStandstillEpsilon = 1e-9;           // rev/s
+constexpr std::uint64_t kReRaiseHoldOffCycles =
+    20;                                      // a condition still present this long after MC_Reset re-raises
+constexpr double kStandstillEpsilon = 1e-9;  // rev/s
 
-bool finite(double x) { return std::isfinite(x); }
+bool finite(double x) {
+  return std::isfinite(x);
+}
 
 }  // namespace
 
@@ -45,9 +48,12 @@ SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& st
 
 double SpeedAxis::velocity_unit_per_revolution_per_second() const noexcept {
   switch (db_.Units.VelocityUnit) {
-    case unit_code::kPerSecond: return 1.0;
-    case unit_code::kPerHour: return 3600.0;
-    default: return 60.0;  // 1/min
+    case unit_code::kPerSecond:
+      return 1.0;
+    case unit_code::kPerHour:
+      return 3600.0;
+    default:
+      return 60.0;  // 1/min
   }
 }
 
@@ -57,7 +63,8 @@ double SpeedAxis::override_factor() const noexcept {
 
 double SpeedAxis::velocity_limit() const noexcept {
   // spec 01 §8.3: min(MaxVelocity, Velocity) of the dynamic limits.
-  return std::min(db_.DynamicLimits.MaxVelocity, db_.DynamicLimits.Velocity) / velocity_unit_per_revolution_per_second();
+  return std::min(db_.DynamicLimits.MaxVelocity, db_.DynamicLimits.Velocity) /
+         velocity_unit_per_revolution_per_second();
 }
 
 bool SpeedAxis::blocked() const noexcept {
@@ -103,11 +110,11 @@ std::uint16_t SpeedAxis::motion_prerequisites() const noexcept {
   return 0;
 }
 
-// spec 03 §2.1 and spec 01 §8.1/§8.5: < 0 -> DynamicDefaults, = 0 invalid (jerk: no jerk limit), > 0 as given,
-// then limited to DynamicLimits (warnings 502/503). MaxJerk > 0 also caps a job without jerk limit
+// spec 03 §2.1 and spec 01 §8.1/§8.5: < 0 -> DynamicDefaults, = 0 invalid (jerk: no jerk limit), > 0 as
+// given, then limited to DynamicLimits (warnings 502/503). MaxJerk > 0 also caps a job without jerk limit
 // (docs/decisions.md S3): the limits hold for every motion the TO generates.
-std::optional<std::uint16_t> SpeedAxis::resolve_dynamics(double acceleration, double deceleration, double jerk,
-                                                         ProfileLimits& out) noexcept {
+std::optional<std::uint16_t> SpeedAxis::resolve_dynamics(double acceleration, double deceleration,
+                                                         double jerk, ProfileLimits& out) noexcept {
   if (!finite(acceleration) || acceleration == 0.0) return error_id::kInvalidAcceleration;
   if (!finite(deceleration) || deceleration == 0.0) return error_id::kInvalidDeceleration;
   if (!finite(jerk)) return error_id::kInvalidJerk;
@@ -173,9 +180,9 @@ void SpeedAxis::plan_velocity(double target, const ProfileLimits& limits, bool a
   if (abort_acceleration) start.acceleration = 0.0;  // MC_Halt/MC_Stop.AbortAcceleration (spec 03 §4.4)
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  // A jerk-limited replan while accelerating outward carries the velocity on by a0²/(2j) before the acceleration
-  // is gone. Where that would pass the velocity limit, the limit wins: the acceleration is taken back with the
-  // jerk that just reaches it (docs/decisions.md S4).
+  // A jerk-limited replan while accelerating outward carries the velocity on by a0²/(2j) before the
+  // acceleration is gone. Where that would pass the velocity limit, the limit wins: the acceleration is taken
+  // back with the jerk that just reaches it (docs/decisions.md S4).
   const double v0 = start.velocity;
   const double a0 = start.acceleration;
   if (l.jerk > 0.0 && std::isfinite(l.velocity) && a0 * v0 > 0.0) {
@@ -221,7 +228,8 @@ Submission SpeedAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
   if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
   if (in.Direction < 0 || in.Direction > 2) return Submission::reject(error_id::kInvalidDirection);
   ProfileLimits limits;
-  if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits)) return Submission::reject(*e);
+  if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
   if (const auto e = motion_prerequisites()) return Submission::reject(e);
   if (const auto e = arbitrate_motion(NewJob::kBaseMotion)) return Submission::reject(e);
   const double unit = velocity_unit_per_revolution_per_second();
@@ -230,7 +238,8 @@ Submission SpeedAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
   if (in.Direction == 2) v = -std::fabs(v);
   // Current = TRUE keeps the present velocity and direction (spec 03 §4.8).
   const double command = in.Current ? setpoint_.velocity / std::max(override_factor(), 1e-12) : v;
-  motion_ = Motion{new_job(JobKind::kMoveVelocity, JobState::kActive), JobKind::kMoveVelocity, limits, command, 0.0};
+  motion_ = Motion{new_job(JobKind::kMoveVelocity, JobState::kActive), JobKind::kMoveVelocity, limits,
+                   command, 0.0};
   const double target = std::clamp(command * override_factor(), -limits.velocity, limits.velocity);
   if (std::fabs(command * override_factor()) > limits.velocity + 1e-12) raise(kAlarmDynamicsLimitedVelocity);
   motion_.planned_target = target;
@@ -242,7 +251,8 @@ Submission SpeedAxis::halt(const HaltInputs& in) noexcept {
   if (in.Mode != 0 && in.Mode != 1) return Submission::reject(error_id::kInvalidMode);
   ProfileLimits limits;
   // MC_Halt has no Acceleration input: the deceleration serves both signs of the ramp.
-  if (const auto e = resolve_dynamics(in.Deceleration, in.Deceleration, in.Jerk, limits)) return Submission::reject(*e);
+  if (const auto e = resolve_dynamics(in.Deceleration, in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
   if (const auto e = motion_prerequisites()) return Submission::reject(e);
   if (const auto e = arbitrate_motion(in.Mode == 1 ? NewJob::kHaltBaseOnly : NewJob::kBaseMotion)) {
     return Submission::reject(e);
@@ -254,14 +264,16 @@ Submission SpeedAxis::halt(const HaltInputs& in) noexcept {
 
 Submission SpeedAxis::stop(const StopInputs& in) noexcept {
   const int weight = stop_weight_of_mc_stop_mode(in.Mode);
-  if (weight == 0) return Submission::reject(error_id::kInvalidMode);  // Mode 1 and anything else (spec 03 §4.13)
+  if (weight == 0)
+    return Submission::reject(error_id::kInvalidMode);  // Mode 1 and anything else (spec 03 §4.13)
   ProfileLimits limits;
   const auto& l = db_.DynamicLimits;
   if (in.Mode == 0) {
     limits = ProfileLimits{std::numeric_limits<double>::infinity(), db_.DynamicDefaults.EmergencyDeceleration,
                            db_.DynamicDefaults.EmergencyDeceleration, 0.0};  // no jerk limit (spec 02 §3.7)
   } else if (in.Mode == 2) {
-    limits = ProfileLimits{std::numeric_limits<double>::infinity(), l.MaxDeceleration, l.MaxDeceleration, l.MaxJerk};
+    limits = ProfileLimits{std::numeric_limits<double>::infinity(), l.MaxDeceleration, l.MaxDeceleration,
+                           l.MaxJerk};
   } else if (const auto e = resolve_dynamics(in.Deceleration, in.Deceleration, in.Jerk, limits)) {
     return Submission::reject(*e);
   }
@@ -274,7 +286,8 @@ Submission SpeedAxis::stop(const StopInputs& in) noexcept {
   ArbitrationContext ctx;
   std::array<RunningJob, 2> running{};
   std::size_t n = 0;
-  if (motion_.id != 0) running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
+  if (motion_.id != 0)
+    running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
   if (stop_.id != 0) running[n++] = RunningJob::kStop;
   ctx.new_stop_weight = weight;
   ctx.running_stop_weight = stop_.weight;
@@ -303,7 +316,8 @@ Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
     if (both) return Submission::reject(error_id::kJogWrongDirection);
     if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
     ProfileLimits limits;
-    if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits)) return Submission::reject(*e);
+    if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits))
+      return Submission::reject(*e);
     if (const auto e = motion_prerequisites()) return Submission::reject(e);
     if (const auto e = arbitrate_motion(NewJob::kBaseMotion)) return Submission::reject(e);
     motion_ = Motion{new_job(JobKind::kJog, JobState::kActive), JobKind::kJog, limits, 0.0, 0.0};
@@ -328,12 +342,15 @@ Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, 
                                    std::uint16_t stw2_mask) noexcept {
   constexpr std::uint16_t kUserStw1 = 0xFB00;  // bits 8, 9, 11..15 (the TO owns 0..7 and 10)
   constexpr std::uint16_t kUserStw2 = 0x0FFF;  // bits 0..11 (12..15: master sign-of-life)
-  if ((stw1_mask & ~kUserStw1) != 0 || (stw2_mask & ~kUserStw2) != 0) return Submission::reject(error_id::kInvalidBitMask);
-  if (device_ == nullptr || drive_.device_config().drive_telegram == 0) return Submission::reject(error_id::kNoDriveTelegram);
+  if ((stw1_mask & ~kUserStw1) != 0 || (stw2_mask & ~kUserStw2) != 0)
+    return Submission::reject(error_id::kInvalidBitMask);
+  if (device_ == nullptr || drive_.device_config().drive_telegram == 0)
+    return Submission::reject(error_id::kNoDriveTelegram);
   auto& sp = drive_.drive_setpoint();
   sp.STW1 = tg::Stw1{static_cast<std::uint16_t>((sp.STW1.value() & ~stw1_mask) | (stw1 & stw1_mask))};
   sp.STW2 = tg::Stw2{static_cast<std::uint16_t>((sp.STW2.value() & ~stw2_mask) | (stw2 & stw2_mask))};
-  return Submission::accept(new_job(JobKind::kSetAxisStw, JobState::kDone));  // in effect from the next servo cycle
+  return Submission::accept(
+      new_job(JobKind::kSetAxisStw, JobState::kDone));  // in effect from the next servo cycle
 }
 
 Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
@@ -357,7 +374,8 @@ Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double valu
       (void)v->write(start_, value);  // RES written this way survives a TO restart (spec 04 §0.3)
       break;
     }
-    default: return Submission::reject(error_id::kInvalidParameterNumber);
+    default:
+      return Submission::reject(error_id::kInvalidParameterNumber);
   }
   return Submission::accept(new_job(JobKind::kWriteParameter, JobState::kDone));
 }
@@ -378,11 +396,12 @@ void SpeedAxis::supervise_drive() noexcept {
   if (drive_fault && (!drive_fault_seen_ || !held_off)) raise(kAlarmDriveFault);
   drive_fault_seen_ = drive_fault;
   if (held_off) return;
-  if (fault == CommunicationFault::kLinkLost && drive_.cycles_without_fresh_frame() > 0) raise(kAlarmDriveCommunication);
+  if (fault == CommunicationFault::kLinkLost && drive_.cycles_without_fresh_frame() > 0)
+    raise(kAlarmDriveCommunication);
   if (fault == CommunicationFault::kSignOfLifeFailed) raise(kAlarmDriveSignOfLife);
   // The drive left operation on its own while the TO is enabled.
-  if (phase_ == PowerPhase::kEnabled && reaction_in_force_ == AlarmReaction::kNone && fault == CommunicationFault::kNone &&
-      !drive_.in_operation()) {
+  if (phase_ == PowerPhase::kEnabled && reaction_in_force_ == AlarmReaction::kNone &&
+      fault == CommunicationFault::kNone && !drive_.in_operation()) {
     raise(kAlarmDriveNotReady);
   }
 }
@@ -396,7 +415,8 @@ void SpeedAxis::apply_alarm_reactions() noexcept {
   if (!escalation) {
     // Acknowledged: the TO is no longer blocked. After "remove enable" an MC_Power whose Enable stayed TRUE
     // enables the TO again (spec 03 §3.3 L2).
-    if (r == AlarmReaction::kNone && (before == AlarmReaction::kRemoveEnable || before == AlarmReaction::kFollowSetpoint)) {
+    if (r == AlarmReaction::kNone &&
+        (before == AlarmReaction::kRemoveEnable || before == AlarmReaction::kFollowSetpoint)) {
       if (phase_ == PowerPhase::kEnabled) {
         phase_ = enable_ ? PowerPhase::kEnabling : PowerPhase::kDisabled;
         enabling_since_ = cycle_;
@@ -405,12 +425,14 @@ void SpeedAxis::apply_alarm_reactions() noexcept {
     return;
   }
   // A stop reaction takes over: motion jobs end with Error 16#8001 (spec 03 §6.6).
-  ProfileLimits current = motion_.id != 0 ? motion_.limits
-                                          : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration,
-                                                          db_.DynamicDefaults.Deceleration, db_.DynamicDefaults.Jerk};
+  ProfileLimits current = motion_.id != 0
+                              ? motion_.limits
+                              : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration,
+                                              db_.DynamicDefaults.Deceleration, db_.DynamicDefaults.Jerk};
   abort_motion(error_id::kAbortedByAlarmReaction);
   const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
-  const bool stop_keeps_control = stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint;
+  const bool stop_keeps_control =
+      stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint;
   if (stop_.id != 0 && !stop_keeps_control) {
     set_job(stop_.id, JobState::kAborted);  // MC_Stop reports CommandAborted, not Error (seed §6.9.4)
     stop_ = StopJob{};
@@ -418,7 +440,9 @@ void SpeedAxis::apply_alarm_reactions() noexcept {
   if (stop_keeps_control) return;
   const auto& l = db_.DynamicLimits;
   switch (r) {
-    case AlarmReaction::kStopCurrentDynamics: plan_velocity(0.0, current, false); break;
+    case AlarmReaction::kStopCurrentDynamics:
+      plan_velocity(0.0, current, false);
+      break;
     case AlarmReaction::kStopMaxDynamics:
       plan_velocity(0.0, ProfileLimits{0.0, l.MaxDeceleration, l.MaxDeceleration, l.MaxJerk}, false);
       break;
@@ -432,7 +456,8 @@ void SpeedAxis::apply_alarm_reactions() noexcept {
     case AlarmReaction::kFollowSetpoint:
       generator_active_ = false;  // the drive brakes (remove enable) or is followed (follow setpoint)
       break;
-    case AlarmReaction::kNone: break;
+    case AlarmReaction::kNone:
+      break;
   }
 }
 
@@ -441,7 +466,8 @@ void SpeedAxis::apply_alarm_reactions() noexcept {
 
 void SpeedAxis::servo(const CycleClock&) noexcept {
   const double unit = velocity_unit_per_revolution_per_second();
-  const double gear = static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
+  const double gear =
+      static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
   const double sign = db_.Actor.InverseDirection ? -1.0 : 1.0;
   if (device_ != nullptr) {
     drive_.read();
@@ -451,8 +477,8 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
     db_.StatusDrive.CommunicationOK = drive_.communication_ok();
     db_.StatusDrive.Error = drive_.drive_status().state == tg::DriveState::kFault;
     if (drive_.device_config().supplementary_telegram == 750) {
-      db_.StatusTorqueData.ActualTorque =
-          sign * tg::n2_to_torque(drive_.supplementary_actual().M_ACT, db_.Actor.DriveParameter.ReferenceTorque);
+      db_.StatusTorqueData.ActualTorque = sign * tg::n2_to_torque(drive_.supplementary_actual().M_ACT,
+                                                                  db_.Actor.DriveParameter.ReferenceTorque);
     }
     supervise_drive();
   } else {
@@ -467,9 +493,15 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
   const bool removed = reaction_in_force_ == AlarmReaction::kRemoveEnable;
   if (removed) {
     switch (db_.Actor.RemoveEnableReaction) {  // spec 02 §3.4
-      case 0x1: request = tg::DriveRequest::kOff; break;
-      case 0x3: request = tg::DriveRequest::kCoastStop; break;
-      default: request = tg::DriveRequest::kQuickStop; break;
+      case 0x1:
+        request = tg::DriveRequest::kOff;
+        break;
+      case 0x3:
+        request = tg::DriveRequest::kCoastStop;
+        break;
+      default:
+        request = tg::DriveRequest::kQuickStop;
+        break;
     }
   } else if (phase_ == PowerPhase::kEnabling || phase_ == PowerPhase::kEnabled) {
     request = tg::DriveRequest::kOperate;
@@ -481,11 +513,12 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
     request = stop_mode_ == 3 ? tg::DriveRequest::kCoastStop : tg::DriveRequest::kOff;
   }
 
-  // Speed setpoint to the drive: load-side velocity through the load gear, limited to MaxSpeed (spec 01 §3.6).
+  // Speed setpoint to the drive: load-side velocity through the load gear, limited to MaxSpeed (spec 01
+  // §3.6).
   double rpm = 0.0;
   const bool setpoint_to_drive = !removed && reaction_in_force_ != AlarmReaction::kFollowSetpoint &&
-                                 (phase_ == PowerPhase::kEnabled || (phase_ == PowerPhase::kDisabling && stop_mode_ != 1 &&
-                                                                     stop_mode_ != 3));
+                                 (phase_ == PowerPhase::kEnabled ||
+                                  (phase_ == PowerPhase::kDisabling && stop_mode_ != 1 && stop_mode_ != 3));
   if (setpoint_to_drive) {
     const double max = db_.Actor.DriveParameter.MaxSpeed;
     rpm = std::clamp(sign * setpoint_.velocity * 60.0 * gear, -max, max);
@@ -523,7 +556,8 @@ void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
     if (!enable_) {
       phase_ = PowerPhase::kDisabled;
     } else if (virtual_axis() || drive_.in_operation()) {
-      // A speed axis is enabled with speed setpoint 0: a moving drive is braked by its speed loop (spec 01 §6.2).
+      // A speed axis is enabled with speed setpoint 0: a moving drive is braked by its speed loop (spec 01
+      // §6.2).
       phase_ = PowerPhase::kEnabled;
       setpoint_ = MotionState{};
       generator_active_ = false;
@@ -542,8 +576,10 @@ void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
     phase_ = PowerPhase::kDisabling;
     const auto& l = db_.DynamicLimits;
     if (stop_mode_ == 0) {
-      plan_velocity(0.0, ProfileLimits{0.0, db_.DynamicDefaults.EmergencyDeceleration,
-                                       db_.DynamicDefaults.EmergencyDeceleration, 0.0}, false);
+      plan_velocity(0.0,
+                    ProfileLimits{0.0, db_.DynamicDefaults.EmergencyDeceleration,
+                                  db_.DynamicDefaults.EmergencyDeceleration, 0.0},
+                    false);
     } else if (stop_mode_ == 2) {
       plan_velocity(0.0, ProfileLimits{0.0, l.MaxDeceleration, l.MaxDeceleration, l.MaxJerk}, false);
     } else {
@@ -555,7 +591,7 @@ void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
   // Jog: the live velocity, override and release (spec 03 §3.4).
   if (motion_.kind == JobKind::kJog) {
     const double target = std::clamp(motion_.command_velocity * override_factor(), -motion_.limits.velocity,
-                                      motion_.limits.velocity);
+                                     motion_.limits.velocity);
     if (std::fabs(target - motion_.planned_target) > 1e-12 || !generator_active_) {
       motion_.planned_target = target;
       plan_velocity(target, motion_.limits, false);
@@ -563,7 +599,7 @@ void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
   } else if (motion_.kind == JobKind::kMoveVelocity) {
     // Override changes act at once, with the job's dynamics (spec 01 §8.4).
     const double target = std::clamp(motion_.command_velocity * override_factor(), -motion_.limits.velocity,
-                                      motion_.limits.velocity);
+                                     motion_.limits.velocity);
     if (std::fabs(target - motion_.planned_target) > 1e-12) {
       motion_.planned_target = target;
       plan_velocity(target, motion_.limits, false);
@@ -587,7 +623,7 @@ void SpeedAxis::generate_setpoint() noexcept {
   } else if (generator_active_) {
     profile_time_ += ipo_cycle_s_;
     setpoint_ = profile_.at(profile_time_);
-    if (profile_time_ >= profile_.duration() - 1e-9) {  // cycle sums of 0.001 s drift by ulps
+    if (profile_time_ >= profile_.duration() - 1e-9) {     // cycle sums of 0.001 s drift by ulps
       setpoint_ = profile_.at(profile_.duration() + 1.0);  // exact end state
       generator_active_ = false;
     }
@@ -649,13 +685,20 @@ void SpeedAxis::update_status() noexcept {
       case kAlarmDriveFault:
       case kAlarmDriveNotReady:
       case kAlarmDriveSto:
-      case kAlarmDriveSafeStop: assign(ew, ErrorWordBit::kDriveFault, true); break;
+      case kAlarmDriveSafeStop:
+        assign(ew, ErrorWordBit::kDriveFault, true);
+        break;
       case kAlarmDriveCommunication:
-      case kAlarmDriveSignOfLife: assign(ew, ErrorWordBit::kCommunicationFault, true); break;
+      case kAlarmDriveSignOfLife:
+        assign(ew, ErrorWordBit::kCommunicationFault, true);
+        break;
       case kAlarmDynamicsLimitedVelocity:
       case kAlarmDynamicsLimitedAcceleration:
-      case kAlarmDynamicsLimitedJerk: assign(ww, WarningWordBit::kDynamicWarning, true); break;
-      default: break;
+      case kAlarmDynamicsLimitedJerk:
+        assign(ww, WarningWordBit::kDynamicWarning, true);
+        break;
+      default:
+        break;
     }
   }
   db_.ErrorWord = ew;
@@ -666,7 +709,8 @@ void SpeedAxis::update_status() noexcept {
 }
 
 void SpeedAxis::restart() noexcept {
-  // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7); RES and DIR values return to them.
+  // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7); RES and DIR values return to
+  // them.
   const auto status_word3 = StatusWordBit::kOnlineStartValuesChanged;
   db_ = start_;
   communication_times_ = communication_times_start_;

@@ -11,32 +11,58 @@ namespace {
 // Where each signal lives in its value struct. Both structs are standard-layout (Word<> has one uint16_t).
 constexpr std::uint8_t value_offset(Signal s) noexcept {
   switch (s) {
-    case Signal::STW1: return offsetof(SetpointSignals, STW1);
-    case Signal::NSOLL_A: return offsetof(SetpointSignals, NSOLL_A);
-    case Signal::NSOLL_B: return offsetof(SetpointSignals, NSOLL_B);
-    case Signal::STW2: return offsetof(SetpointSignals, STW2);
-    case Signal::G1_STW: return offsetof(SetpointSignals, G1_STW);
-    case Signal::G2_STW: return offsetof(SetpointSignals, G2_STW);
-    case Signal::XERR: return offsetof(SetpointSignals, XERR);
-    case Signal::KPC: return offsetof(SetpointSignals, KPC);
-    case Signal::MOMRED: return offsetof(SetpointSignals, MOMRED);
-    case Signal::STW2_ENC: return offsetof(SetpointSignals, STW2_ENC);
-    case Signal::M_ADD1: return offsetof(SetpointSignals, M_ADD1);
-    case Signal::M_LIMIT_POS: return offsetof(SetpointSignals, M_LIMIT_POS);
-    case Signal::M_LIMIT_NEG: return offsetof(SetpointSignals, M_LIMIT_NEG);
-    case Signal::ZSW1: return offsetof(ActualSignals, ZSW1);
-    case Signal::NIST_A: return offsetof(ActualSignals, NIST_A);
-    case Signal::NIST_B: return offsetof(ActualSignals, NIST_B);
-    case Signal::ZSW2: return offsetof(ActualSignals, ZSW2);
-    case Signal::G1_ZSW: return offsetof(ActualSignals, G1_ZSW);
-    case Signal::G1_XIST1: return offsetof(ActualSignals, G1_XIST1);
-    case Signal::G1_XIST2: return offsetof(ActualSignals, G1_XIST2);
-    case Signal::G2_ZSW: return offsetof(ActualSignals, G2_ZSW);
-    case Signal::G2_XIST1: return offsetof(ActualSignals, G2_XIST1);
-    case Signal::G2_XIST2: return offsetof(ActualSignals, G2_XIST2);
-    case Signal::MELDW: return offsetof(ActualSignals, MELDW);
-    case Signal::ZSW2_ENC: return offsetof(ActualSignals, ZSW2_ENC);
-    case Signal::M_ACT: return offsetof(ActualSignals, M_ACT);
+    case Signal::STW1:
+      return offsetof(SetpointSignals, STW1);
+    case Signal::NSOLL_A:
+      return offsetof(SetpointSignals, NSOLL_A);
+    case Signal::NSOLL_B:
+      return offsetof(SetpointSignals, NSOLL_B);
+    case Signal::STW2:
+      return offsetof(SetpointSignals, STW2);
+    case Signal::G1_STW:
+      return offsetof(SetpointSignals, G1_STW);
+    case Signal::G2_STW:
+      return offsetof(SetpointSignals, G2_STW);
+    case Signal::XERR:
+      return offsetof(SetpointSignals, XERR);
+    case Signal::KPC:
+      return offsetof(SetpointSignals, KPC);
+    case Signal::MOMRED:
+      return offsetof(SetpointSignals, MOMRED);
+    case Signal::STW2_ENC:
+      return offsetof(SetpointSignals, STW2_ENC);
+    case Signal::M_ADD1:
+      return offsetof(SetpointSignals, M_ADD1);
+    case Signal::M_LIMIT_POS:
+      return offsetof(SetpointSignals, M_LIMIT_POS);
+    case Signal::M_LIMIT_NEG:
+      return offsetof(SetpointSignals, M_LIMIT_NEG);
+    case Signal::ZSW1:
+      return offsetof(ActualSignals, ZSW1);
+    case Signal::NIST_A:
+      return offsetof(ActualSignals, NIST_A);
+    case Signal::NIST_B:
+      return offsetof(ActualSignals, NIST_B);
+    case Signal::ZSW2:
+      return offsetof(ActualSignals, ZSW2);
+    case Signal::G1_ZSW:
+      return offsetof(ActualSignals, G1_ZSW);
+    case Signal::G1_XIST1:
+      return offsetof(ActualSignals, G1_XIST1);
+    case Signal::G1_XIST2:
+      return offsetof(ActualSignals, G1_XIST2);
+    case Signal::G2_ZSW:
+      return offsetof(ActualSignals, G2_ZSW);
+    case Signal::G2_XIST1:
+      return offsetof(ActualSignals, G2_XIST1);
+    case Signal::G2_XIST2:
+      return offsetof(ActualSignals, G2_XIST2);
+    case Signal::MELDW:
+      return offsetof(ActualSignals, MELDW);
+    case Signal::ZSW2_ENC:
+      return offsetof(ActualSignals, ZSW2_ENC);
+    case Signal::M_ACT:
+      return offsetof(ActualSignals, M_ACT);
   }
   return 0;
 }
@@ -76,28 +102,47 @@ void decode_loop(const Field* fields, std::size_t count, const std::byte* frame,
 }
 
 template <typename Field>
-void encode_any(ByteOrder order, const Field* fields, std::size_t count, const void* values, std::byte* frame) noexcept {
+void encode_any(ByteOrder order, const Field* fields, std::size_t count, const void* values,
+                std::byte* frame) noexcept {
   switch (order) {
-    case ByteOrder::kBig: encode_loop<ByteOrder::kBig>(fields, count, values, frame); break;
-    case ByteOrder::kLittleBytes: encode_loop<ByteOrder::kLittleBytes>(fields, count, values, frame); break;
-    case ByteOrder::kSwappedWords: encode_loop<ByteOrder::kSwappedWords>(fields, count, values, frame); break;
-    case ByteOrder::kLittle: encode_loop<ByteOrder::kLittle>(fields, count, values, frame); break;
+    case ByteOrder::kBig:
+      encode_loop<ByteOrder::kBig>(fields, count, values, frame);
+      break;
+    case ByteOrder::kLittleBytes:
+      encode_loop<ByteOrder::kLittleBytes>(fields, count, values, frame);
+      break;
+    case ByteOrder::kSwappedWords:
+      encode_loop<ByteOrder::kSwappedWords>(fields, count, values, frame);
+      break;
+    case ByteOrder::kLittle:
+      encode_loop<ByteOrder::kLittle>(fields, count, values, frame);
+      break;
   }
 }
 
 template <typename Field>
-void decode_any(ByteOrder order, const Field* fields, std::size_t count, const std::byte* frame, void* values) noexcept {
+void decode_any(ByteOrder order, const Field* fields, std::size_t count, const std::byte* frame,
+                void* values) noexcept {
   switch (order) {
-    case ByteOrder::kBig: decode_loop<ByteOrder::kBig>(fields, count, frame, values); break;
-    case ByteOrder::kLittleBytes: decode_loop<ByteOrder::kLittleBytes>(fields, count, frame, values); break;
-    case ByteOrder::kSwappedWords: decode_loop<ByteOrder::kSwappedWords>(fields, count, frame, values); break;
-    case ByteOrder::kLittle: decode_loop<ByteOrder::kLittle>(fields, count, frame, values); break;
+    case ByteOrder::kBig:
+      decode_loop<ByteOrder::kBig>(fields, count, frame, values);
+      break;
+    case ByteOrder::kLittleBytes:
+      decode_loop<ByteOrder::kLittleBytes>(fields, count, frame, values);
+      break;
+    case ByteOrder::kSwappedWords:
+      decode_loop<ByteOrder::kSwappedWords>(fields, count, frame, values);
+      break;
+    case ByteOrder::kLittle:
+      decode_loop<ByteOrder::kLittle>(fields, count, frame, values);
+      break;
   }
 }
 
 }  // namespace
 
-Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction, CodecOptions options) noexcept {
+Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction,
+                                            CodecOptions options) noexcept {
   auto layout = find_layout(telegram, direction);
   if (!layout) return layout.error();
   if (static_cast<unsigned>(options.byte_order) > static_cast<unsigned>(ByteOrder::kLittle)) {
@@ -128,7 +173,8 @@ Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction, C
 void TelegramCodec::compile() noexcept {
   for (std::size_t i = 0; i < layout_.field_count; ++i) {
     const FieldLayout& f = layout_.field_table[i];
-    compiled_[i] = CompiledField{f.offset, value_offset(f.signal), static_cast<std::uint8_t>(info(f.signal).bits / 8)};
+    compiled_[i] =
+        CompiledField{f.offset, value_offset(f.signal), static_cast<std::uint8_t>(info(f.signal).bits / 8)};
   }
 }
 
@@ -139,27 +185,33 @@ TelegramError TelegramCodec::check(std::size_t frame_size, Direction expected) c
   return TelegramError::kNone;
 }
 
-TelegramError TelegramCodec::encode(const SetpointSignals& values, std::span<std::byte> frame) const noexcept {
+TelegramError TelegramCodec::encode(const SetpointSignals& values,
+                                    std::span<std::byte> frame) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kSetpoint);
-  if (e == TelegramError::kNone) encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
+  if (e == TelegramError::kNone)
+    encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
   return e;
 }
 
 TelegramError TelegramCodec::encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kActual);
-  if (e == TelegramError::kNone) encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
+  if (e == TelegramError::kNone)
+    encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
   return e;
 }
 
-TelegramError TelegramCodec::decode(std::span<const std::byte> frame, SetpointSignals& values) const noexcept {
+TelegramError TelegramCodec::decode(std::span<const std::byte> frame,
+                                    SetpointSignals& values) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kSetpoint);
-  if (e == TelegramError::kNone) decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
+  if (e == TelegramError::kNone)
+    decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
   return e;
 }
 
 TelegramError TelegramCodec::decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kActual);
-  if (e == TelegramError::kNone) decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
+  if (e == TelegramError::kNone)
+    decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
   return e;
 }
 

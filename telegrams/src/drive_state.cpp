@@ -4,34 +4,52 @@
 namespace tomc::telegrams {
 namespace {
 
-constexpr bool bit(std::uint16_t word, unsigned n) { return ((word >> n) & 1u) != 0; }
+constexpr bool bit(std::uint16_t word, unsigned n) {
+  return ((word >> n) & 1u) != 0;
+}
 
 }  // namespace
 
 std::string_view to_string(DriveState state) noexcept {
   switch (state) {
-    case DriveState::kS0NotReady: return "S0";
-    case DriveState::kS1SwitchingOnInhibited: return "S1";
-    case DriveState::kS2ReadyForSwitchingOn: return "S2";
-    case DriveState::kS3SwitchedOn: return "S3";
-    case DriveState::kS4Operation: return "S4";
-    case DriveState::kS5aRampStop: return "S5a";
-    case DriveState::kS5bQuickStop: return "S5b";
-    case DriveState::kFault: return "FAULT";
+    case DriveState::kS0NotReady:
+      return "S0";
+    case DriveState::kS1SwitchingOnInhibited:
+      return "S1";
+    case DriveState::kS2ReadyForSwitchingOn:
+      return "S2";
+    case DriveState::kS3SwitchedOn:
+      return "S3";
+    case DriveState::kS4Operation:
+      return "S4";
+    case DriveState::kS5aRampStop:
+      return "S5a";
+    case DriveState::kS5bQuickStop:
+      return "S5b";
+    case DriveState::kFault:
+      return "FAULT";
   }
   return "?";
 }
 
 std::uint16_t stw1_for(DriveCommand command) noexcept {
   switch (command) {
-    case DriveCommand::kIdle: return 0x047E;
-    case DriveCommand::kSwitchOnAndRun: return 0x047F;
-    case DriveCommand::kNormalStop: return 0x047E;
-    case DriveCommand::kQuickStop: return 0x047B;
-    case DriveCommand::kCoastStop: return 0x047C;
-    case DriveCommand::kPulseInhibit: return 0x0477;
-    case DriveCommand::kAcknowledgeFault: return 0x04FE;
-    case DriveCommand::kNoPlcControl: return 0x0000;
+    case DriveCommand::kIdle:
+      return 0x047E;
+    case DriveCommand::kSwitchOnAndRun:
+      return 0x047F;
+    case DriveCommand::kNormalStop:
+      return 0x047E;
+    case DriveCommand::kQuickStop:
+      return 0x047B;
+    case DriveCommand::kCoastStop:
+      return 0x047C;
+    case DriveCommand::kPulseInhibit:
+      return 0x0477;
+    case DriveCommand::kAcknowledgeFault:
+      return 0x04FE;
+    case DriveCommand::kNoPlcControl:
+      return 0x0000;
   }
   return 0x047E;
 }
@@ -43,7 +61,8 @@ DriveState next_drive_state(DriveState state, std::uint16_t stw1, bool standstil
   const bool enable_operation = bit(stw1, 3);
   const bool plc_control = bit(stw1, 10);
   switch (state) {
-    case DriveState::kS0NotReady: return plc_control ? DriveState::kS1SwitchingOnInhibited : state;
+    case DriveState::kS0NotReady:
+      return plc_control ? DriveState::kS1SwitchingOnInhibited : state;
     case DriveState::kS1SwitchingOnInhibited:
       return (!on && no_off2 && no_off3) ? DriveState::kS2ReadyForSwitchingOn : state;
     case DriveState::kS2ReadyForSwitchingOn:
@@ -67,25 +86,35 @@ DriveState next_drive_state(DriveState state, std::uint16_t stw1, bool standstil
     case DriveState::kS5bQuickStop:
       if (!no_off2 || !enable_operation || standstill) return DriveState::kS1SwitchingOnInhibited;
       return state;
-    case DriveState::kFault: return state;  // left only by an acknowledge, which the drive model handles
+    case DriveState::kFault:
+      return state;  // left only by an acknowledge, which the drive model handles
   }
   return state;
 }
 
-std::uint16_t zsw1_for(DriveState state, std::uint16_t stw1, bool cyclic_data, bool fault, bool warning) noexcept {
+std::uint16_t zsw1_for(DriveState state, std::uint16_t stw1, bool cyclic_data, bool fault,
+                       bool warning) noexcept {
   if (!cyclic_data) return 0x0000;
-  std::uint16_t zsw1 = 0x0200;                           // control requested, kept once cyclic data arrived
-  if (bit(stw1, 1)) zsw1 |= 0x0010;                      // ZSW1.4 mirrors STW1.1
+  std::uint16_t zsw1 = 0x0200;       // control requested, kept once cyclic data arrived
+  if (bit(stw1, 1)) zsw1 |= 0x0010;  // ZSW1.4 mirrors STW1.1
   if (bit(stw1, 2) && state != DriveState::kS5bQuickStop) zsw1 |= 0x0020;  // ZSW1.5
   switch (state) {
     case DriveState::kS0NotReady:
     case DriveState::kS1SwitchingOnInhibited:
-    case DriveState::kFault: zsw1 |= 0x0040; break;
-    case DriveState::kS2ReadyForSwitchingOn: zsw1 |= 0x0001; break;
+    case DriveState::kFault:
+      zsw1 |= 0x0040;
+      break;
+    case DriveState::kS2ReadyForSwitchingOn:
+      zsw1 |= 0x0001;
+      break;
     case DriveState::kS3SwitchedOn:
     case DriveState::kS5aRampStop:
-    case DriveState::kS5bQuickStop: zsw1 |= 0x0003; break;
-    case DriveState::kS4Operation: zsw1 |= 0x0007; break;
+    case DriveState::kS5bQuickStop:
+      zsw1 |= 0x0003;
+      break;
+    case DriveState::kS4Operation:
+      zsw1 |= 0x0007;
+      break;
   }
   if (fault || state == DriveState::kFault) zsw1 |= 0x0008;
   if (warning) zsw1 |= 0x0080;
@@ -106,16 +135,17 @@ std::uint16_t Stw1Sequencer::next(std::uint16_t zsw1, DriveRequest request) noex
   const bool off_state = state == DriveState::kS0NotReady || state == DriveState::kS1SwitchingOnInhibited ||
                          state == DriveState::kFault;
   switch (request) {
-    case DriveRequest::kOff: return stw1_for(DriveCommand::kIdle);
+    case DriveRequest::kOff:
+      return stw1_for(DriveCommand::kIdle);
     case DriveRequest::kOperate:
       return (off_state || state == DriveState::kS5bQuickStop) ? stw1_for(DriveCommand::kIdle)
-                                                                : stw1_for(DriveCommand::kSwitchOnAndRun);
+                                                               : stw1_for(DriveCommand::kSwitchOnAndRun);
     case DriveRequest::kQuickStop:
       return (off_state || state == DriveState::kS2ReadyForSwitchingOn) ? stw1_for(DriveCommand::kIdle)
-                                                                         : stw1_for(DriveCommand::kQuickStop);
+                                                                        : stw1_for(DriveCommand::kQuickStop);
     case DriveRequest::kCoastStop:
       return (off_state || state == DriveState::kS2ReadyForSwitchingOn) ? stw1_for(DriveCommand::kIdle)
-                                                                         : stw1_for(DriveCommand::kCoastStop);
+                                                                        : stw1_for(DriveCommand::kCoastStop);
     case DriveRequest::kPulseInhibit:
       return off_state ? stw1_for(DriveCommand::kIdle) : stw1_for(DriveCommand::kPulseInhibit);
   }

@@ -29,23 +29,44 @@ constexpr std::uint16_t word(std::uint8_t functions, EncoderCommand command, boo
                                     (measurement ? 0x0080u : 0u));
 }
 }  // namespace
-std::uint16_t reference_mark_search(std::uint8_t f) noexcept { return word(f, EncoderCommand::kActivate, false); }
-std::uint16_t read_reference_mark(std::uint8_t f) noexcept { return word(f, EncoderCommand::kReadValue, false); }
-std::uint16_t flying_measurement(std::uint8_t f) noexcept { return word(f, EncoderCommand::kActivate, true); }
-std::uint16_t read_measured_value(std::uint8_t f) noexcept { return word(f, EncoderCommand::kReadValue, true); }
-std::uint16_t cancel(std::uint8_t f, bool measurement) noexcept { return word(f, EncoderCommand::kCancel, measurement); }
-std::uint16_t absolute_value() noexcept { return 0x2000; }
-std::uint16_t park() noexcept { return 0x4000; }
-std::uint16_t acknowledge_error() noexcept { return 0x8000; }
+std::uint16_t reference_mark_search(std::uint8_t f) noexcept {
+  return word(f, EncoderCommand::kActivate, false);
+}
+std::uint16_t read_reference_mark(std::uint8_t f) noexcept {
+  return word(f, EncoderCommand::kReadValue, false);
+}
+std::uint16_t flying_measurement(std::uint8_t f) noexcept {
+  return word(f, EncoderCommand::kActivate, true);
+}
+std::uint16_t read_measured_value(std::uint8_t f) noexcept {
+  return word(f, EncoderCommand::kReadValue, true);
+}
+std::uint16_t cancel(std::uint8_t f, bool measurement) noexcept {
+  return word(f, EncoderCommand::kCancel, measurement);
+}
+std::uint16_t absolute_value() noexcept {
+  return 0x2000;
+}
+std::uint16_t park() noexcept {
+  return 0x4000;
+}
+std::uint16_t acknowledge_error() noexcept {
+  return 0x8000;
+}
 }  // namespace encoder_request
 
 std::string_view to_string(Xist2Content content) noexcept {
   switch (content) {
-    case Xist2Content::kNotValid: return "not valid";
-    case Xist2Content::kErrorCode: return "error code";
-    case Xist2Content::kReferenceMark: return "reference mark";
-    case Xist2Content::kMeasuredValue: return "measured value";
-    case Xist2Content::kAbsoluteValue: return "absolute value";
+    case Xist2Content::kNotValid:
+      return "not valid";
+    case Xist2Content::kErrorCode:
+      return "error code";
+    case Xist2Content::kReferenceMark:
+      return "reference mark";
+    case Xist2Content::kMeasuredValue:
+      return "measured value";
+    case Xist2Content::kAbsoluteValue:
+      return "absolute value";
   }
   return "?";
 }
@@ -65,19 +86,31 @@ Xist2Content xist2_content(EncoderControlWord request, EncoderStatusWord status)
 
 std::string_view describe_encoder_error(std::uint16_t code) noexcept {
   switch (code) {
-    case kEncoderErrorSensorGroup: return "sensor group error (position cannot be read)";
-    case kEncoderErrorZeroMarkMonitoring: return "zero-mark monitoring";
-    case kEncoderErrorAbortParking: return "abort parking sensor";
-    case kEncoderErrorAbortReferenceSearch: return "abort reference value search";
-    case kEncoderErrorAbortReferenceRetrieval: return "abort reference value retrieval";
-    case kEncoderErrorAbortFlyingMeasurement: return "abort measurement on the fly";
-    case kEncoderErrorAbortMeasuredValueRetrieval: return "abort measured value retrieval";
+    case kEncoderErrorSensorGroup:
+      return "sensor group error (position cannot be read)";
+    case kEncoderErrorZeroMarkMonitoring:
+      return "zero-mark monitoring";
+    case kEncoderErrorAbortParking:
+      return "abort parking sensor";
+    case kEncoderErrorAbortReferenceSearch:
+      return "abort reference value search";
+    case kEncoderErrorAbortReferenceRetrieval:
+      return "abort reference value retrieval";
+    case kEncoderErrorAbortFlyingMeasurement:
+      return "abort measurement on the fly";
+    case kEncoderErrorAbortMeasuredValueRetrieval:
+      return "abort measured value retrieval";
     case kEncoderErrorAbortAbsoluteValue:
-    case kEncoderErrorAbortAbsoluteValueAlt: return "abort absolute value transmission";
-    case kEncoderErrorCommandNotSupported: return "command not supported / parameter or command error";
-    case kEncoderErrorMasterSignOfLife: return "master sign-of-life error";
-    case kEncoderErrorManufacturer: return "manufacturer-specific error";
-    default: return "unknown encoder error code";
+    case kEncoderErrorAbortAbsoluteValueAlt:
+      return "abort absolute value transmission";
+    case kEncoderErrorCommandNotSupported:
+      return "command not supported / parameter or command error";
+    case kEncoderErrorMasterSignOfLife:
+      return "master sign-of-life error";
+    case kEncoderErrorManufacturer:
+      return "manufacturer-specific error";
+    default:
+      return "unknown encoder error code";
   }
 }
 
@@ -85,7 +118,8 @@ std::uint64_t absolute_range_counts(std::uint32_t steps_per_revolution, std::uin
                                     std::uint32_t determinable_revolutions) noexcept {
   if (fine_resolution_xist2 > 31) return 0;
   const std::uint64_t per_revolution = std::uint64_t{steps_per_revolution} << fine_resolution_xist2;
-  if (determinable_revolutions != 0 && per_revolution > UINT64_MAX / determinable_revolutions) return UINT64_MAX;
+  if (determinable_revolutions != 0 && per_revolution > UINT64_MAX / determinable_revolutions)
+    return UINT64_MAX;
   return per_revolution * determinable_revolutions;
 }
 

@@ -1,4 +1,5 @@
-// Telegram layouts, spec 06 §2.1–§2.15. One row per telegram and direction: (signal, byte offset) in PZD order.
+// Telegram layouts, spec 06 §2.1–§2.15. One row per telegram and direction: (signal, byte offset) in PZD
+// order.
 #include "tomc/telegrams/layout.hpp"
 
 #include <algorithm>
@@ -17,17 +18,18 @@ constexpr TelegramLayout make(std::uint16_t telegram, Direction direction, std::
   layout.telegram = telegram;
   layout.direction = direction;
   layout.length = length;
-  for (const auto& f : fields) layout.field_table[layout.field_count++] = f;
+  for (const auto& f : fields)
+    layout.field_table[layout.field_count++] = f;
   return layout;
 }
 
 // Actual frames shared by several telegrams.
 constexpr std::initializer_list<FieldLayout> kTwoEncoderActual = {  // telegrams 4 and 6, §2.4
-    {ZSW1, 0}, {NIST_B, 2}, {ZSW2, 6}, {G1_ZSW, 8}, {G1_XIST1, 10}, {G1_XIST2, 14},
-    {G2_ZSW, 18}, {G2_XIST1, 20}, {G2_XIST2, 24}};
+    {ZSW1, 0},      {NIST_B, 2},  {ZSW2, 6},      {G1_ZSW, 8},   {G1_XIST1, 10},
+    {G1_XIST2, 14}, {G2_ZSW, 18}, {G2_XIST1, 20}, {G2_XIST2, 24}};
 constexpr std::initializer_list<FieldLayout> kTwoEncoderMeldwActual = {  // telegrams 103 and 106, §2.8
-    {ZSW1, 0}, {NIST_B, 2}, {ZSW2, 6}, {MELDW, 8}, {G1_ZSW, 10}, {G1_XIST1, 12}, {G1_XIST2, 16},
-    {G2_ZSW, 20}, {G2_XIST1, 22}, {G2_XIST2, 26}};
+    {ZSW1, 0},      {NIST_B, 2},    {ZSW2, 6},    {MELDW, 8},     {G1_ZSW, 10},
+    {G1_XIST1, 12}, {G1_XIST2, 16}, {G2_ZSW, 20}, {G2_XIST1, 22}, {G2_XIST2, 26}};
 constexpr std::initializer_list<FieldLayout> kOneEncoderMeldwActual = {  // telegrams 102 and 105, §2.7
     {ZSW1, 0}, {NIST_B, 2}, {ZSW2, 6}, {MELDW, 8}, {G1_ZSW, 10}, {G1_XIST1, 12}, {G1_XIST2, 16}};
 constexpr std::initializer_list<FieldLayout> kOneEncoderActual = {  // telegrams 3 and 5, §2.3
@@ -68,8 +70,9 @@ constexpr TelegramLayout kLayouts[] = {
     make(105, S, 20, {{STW1, 0}, {NSOLL_B, 2}, {STW2, 6}, {MOMRED, 8}, {G1_STW, 10}, {XERR, 12}, {KPC, 16}}),
     make(105, A, 20, kOneEncoderMeldwActual),
     // §2.11 telegram 106, PZD-11/15 [UNCONFIRMED order, see docs/decisions.md]
-    make(106, S, 22,
-         {{STW1, 0}, {NSOLL_B, 2}, {STW2, 6}, {MOMRED, 8}, {G1_STW, 10}, {G2_STW, 12}, {XERR, 14}, {KPC, 18}}),
+    make(
+        106, S, 22,
+        {{STW1, 0}, {NSOLL_B, 2}, {STW2, 6}, {MOMRED, 8}, {G1_STW, 10}, {G2_STW, 12}, {XERR, 14}, {KPC, 18}}),
     make(106, A, 30, kTwoEncoderMeldwActual),
     // §2.14 telegram 750, supplementary torque telegram PZD-3/1
     make(750, S, 6, {{M_ADD1, 0}, {M_LIMIT_POS, 2}, {M_LIMIT_NEG, 4}}),
@@ -85,11 +88,11 @@ constexpr bool layouts_are_consistent() {
     std::uint32_t used = 0;
     for (std::size_t i = 0; i < layout.field_count; ++i) {
       const auto& f = layout.field_table[i];
-      const std::uint32_t bytes = (f.signal == NSOLL_B || f.signal == NIST_B || f.signal == XERR ||
-                                   f.signal == KPC || f.signal == G1_XIST1 || f.signal == G1_XIST2 ||
-                                   f.signal == G2_XIST1 || f.signal == G2_XIST2)
-                                      ? 4
-                                      : 2;
+      const std::uint32_t bytes =
+          (f.signal == NSOLL_B || f.signal == NIST_B || f.signal == XERR || f.signal == KPC ||
+           f.signal == G1_XIST1 || f.signal == G1_XIST2 || f.signal == G2_XIST1 || f.signal == G2_XIST2)
+              ? 4
+              : 2;
       if (f.offset % 2 != 0 || f.offset + bytes > layout.length) return false;
       const std::uint32_t mask = ((1u << bytes) - 1u) << f.offset;
       if ((used & mask) != 0) return false;
@@ -104,7 +107,9 @@ static_assert(layouts_are_consistent());
 
 }  // namespace
 
-bool TelegramLayout::carries(Signal signal) const noexcept { return offset_of(signal) >= 0; }
+bool TelegramLayout::carries(Signal signal) const noexcept {
+  return offset_of(signal) >= 0;
+}
 
 int TelegramLayout::offset_of(Signal signal) const noexcept {
   for (const auto& f : fields()) {
@@ -113,14 +118,20 @@ int TelegramLayout::offset_of(Signal signal) const noexcept {
   return -1;
 }
 
-std::span<const std::uint16_t> supported_telegrams() noexcept { return kSupported; }
+std::span<const std::uint16_t> supported_telegrams() noexcept {
+  return kSupported;
+}
 
 bool is_drive_telegram(int telegram) noexcept {
   return (telegram >= 1 && telegram <= 6) || telegram == 102 || telegram == 103 || telegram == 105 ||
          telegram == 106;
 }
-bool is_encoder_telegram(int telegram) noexcept { return telegram == 81 || telegram == 83; }
-bool is_supplementary_telegram(int telegram) noexcept { return telegram == 750; }
+bool is_encoder_telegram(int telegram) noexcept {
+  return telegram == 81 || telegram == 83;
+}
+bool is_supplementary_telegram(int telegram) noexcept {
+  return telegram == 750;
+}
 
 Result<TelegramLayout> find_layout(int telegram, Direction direction) noexcept {
   if (telegram == 104) return TelegramError::kTelegram104NotDefined;

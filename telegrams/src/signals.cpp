@@ -54,7 +54,9 @@ constexpr bool is_signed(const SignalInfo& s) {
 
 }  // namespace
 
-const SignalInfo& info(Signal signal) noexcept { return kSignals[static_cast<std::size_t>(signal)]; }
+const SignalInfo& info(Signal signal) noexcept {
+  return kSignals[static_cast<std::size_t>(signal)];
+}
 
 std::optional<Signal> parse_signal(std::string_view text) noexcept {
   if (text == "M_ADD") return Signal::M_ADD1;
@@ -77,93 +79,187 @@ std::int64_t raw_maximum(Signal signal) noexcept {
 }
 
 namespace {
-std::uint32_t bits_of(std::int16_t v) { return static_cast<std::uint16_t>(v); }
-std::uint32_t bits_of(std::int32_t v) { return static_cast<std::uint32_t>(v); }
-std::int16_t as_int16(std::uint32_t v) { return static_cast<std::int16_t>(static_cast<std::uint16_t>(v)); }
-std::int32_t as_int32(std::uint32_t v) { return static_cast<std::int32_t>(v); }
-std::uint16_t as_uint16(std::uint32_t v) { return static_cast<std::uint16_t>(v); }
+std::uint32_t bits_of(std::int16_t v) {
+  return static_cast<std::uint16_t>(v);
+}
+std::uint32_t bits_of(std::int32_t v) {
+  return static_cast<std::uint32_t>(v);
+}
+std::int16_t as_int16(std::uint32_t v) {
+  return static_cast<std::int16_t>(static_cast<std::uint16_t>(v));
+}
+std::int32_t as_int32(std::uint32_t v) {
+  return static_cast<std::int32_t>(v);
+}
+std::uint16_t as_uint16(std::uint32_t v) {
+  return static_cast<std::uint16_t>(v);
+}
 }  // namespace
 
 std::uint32_t SetpointSignals::raw(Signal signal) const noexcept {
   switch (signal) {
-    case Signal::STW1: return STW1.value();
-    case Signal::NSOLL_A: return bits_of(NSOLL_A);
-    case Signal::NSOLL_B: return bits_of(NSOLL_B);
-    case Signal::STW2: return STW2.value();
-    case Signal::G1_STW: return G1_STW.value();
-    case Signal::G2_STW: return G2_STW.value();
-    case Signal::XERR: return bits_of(XERR);
-    case Signal::KPC: return bits_of(KPC);
-    case Signal::MOMRED: return MOMRED;
-    case Signal::STW2_ENC: return STW2_ENC.value();
-    case Signal::M_ADD1: return bits_of(M_ADD1);
-    case Signal::M_LIMIT_POS: return bits_of(M_LIMIT_POS);
-    case Signal::M_LIMIT_NEG: return bits_of(M_LIMIT_NEG);
-    default: return 0;
+    case Signal::STW1:
+      return STW1.value();
+    case Signal::NSOLL_A:
+      return bits_of(NSOLL_A);
+    case Signal::NSOLL_B:
+      return bits_of(NSOLL_B);
+    case Signal::STW2:
+      return STW2.value();
+    case Signal::G1_STW:
+      return G1_STW.value();
+    case Signal::G2_STW:
+      return G2_STW.value();
+    case Signal::XERR:
+      return bits_of(XERR);
+    case Signal::KPC:
+      return bits_of(KPC);
+    case Signal::MOMRED:
+      return MOMRED;
+    case Signal::STW2_ENC:
+      return STW2_ENC.value();
+    case Signal::M_ADD1:
+      return bits_of(M_ADD1);
+    case Signal::M_LIMIT_POS:
+      return bits_of(M_LIMIT_POS);
+    case Signal::M_LIMIT_NEG:
+      return bits_of(M_LIMIT_NEG);
+    default:
+      return 0;
   }
 }
 
 void SetpointSignals::set_raw(Signal signal, std::uint32_t v) noexcept {
   switch (signal) {
-    case Signal::STW1: STW1 = Stw1{as_uint16(v)}; break;
-    case Signal::NSOLL_A: NSOLL_A = as_int16(v); break;
-    case Signal::NSOLL_B: NSOLL_B = as_int32(v); break;
-    case Signal::STW2: STW2 = Stw2{as_uint16(v)}; break;
-    case Signal::G1_STW: G1_STW = EncoderControlWord{as_uint16(v)}; break;
-    case Signal::G2_STW: G2_STW = EncoderControlWord{as_uint16(v)}; break;
-    case Signal::XERR: XERR = as_int32(v); break;
-    case Signal::KPC: KPC = as_int32(v); break;
-    case Signal::MOMRED: MOMRED = as_uint16(v); break;
-    case Signal::STW2_ENC: STW2_ENC = Stw2Enc{as_uint16(v)}; break;
-    case Signal::M_ADD1: M_ADD1 = as_int16(v); break;
-    case Signal::M_LIMIT_POS: M_LIMIT_POS = as_int16(v); break;
-    case Signal::M_LIMIT_NEG: M_LIMIT_NEG = as_int16(v); break;
-    default: break;
+    case Signal::STW1:
+      STW1 = Stw1{as_uint16(v)};
+      break;
+    case Signal::NSOLL_A:
+      NSOLL_A = as_int16(v);
+      break;
+    case Signal::NSOLL_B:
+      NSOLL_B = as_int32(v);
+      break;
+    case Signal::STW2:
+      STW2 = Stw2{as_uint16(v)};
+      break;
+    case Signal::G1_STW:
+      G1_STW = EncoderControlWord{as_uint16(v)};
+      break;
+    case Signal::G2_STW:
+      G2_STW = EncoderControlWord{as_uint16(v)};
+      break;
+    case Signal::XERR:
+      XERR = as_int32(v);
+      break;
+    case Signal::KPC:
+      KPC = as_int32(v);
+      break;
+    case Signal::MOMRED:
+      MOMRED = as_uint16(v);
+      break;
+    case Signal::STW2_ENC:
+      STW2_ENC = Stw2Enc{as_uint16(v)};
+      break;
+    case Signal::M_ADD1:
+      M_ADD1 = as_int16(v);
+      break;
+    case Signal::M_LIMIT_POS:
+      M_LIMIT_POS = as_int16(v);
+      break;
+    case Signal::M_LIMIT_NEG:
+      M_LIMIT_NEG = as_int16(v);
+      break;
+    default:
+      break;
   }
 }
 
 std::uint32_t ActualSignals::raw(Signal signal) const noexcept {
   switch (signal) {
-    case Signal::ZSW1: return ZSW1.value();
-    case Signal::NIST_A: return bits_of(NIST_A);
-    case Signal::NIST_B: return bits_of(NIST_B);
-    case Signal::ZSW2: return ZSW2.value();
-    case Signal::G1_ZSW: return G1_ZSW.value();
-    case Signal::G1_XIST1: return G1_XIST1;
-    case Signal::G1_XIST2: return G1_XIST2;
-    case Signal::G2_ZSW: return G2_ZSW.value();
-    case Signal::G2_XIST1: return G2_XIST1;
-    case Signal::G2_XIST2: return G2_XIST2;
-    case Signal::MELDW: return MELDW.value();
-    case Signal::ZSW2_ENC: return ZSW2_ENC.value();
-    case Signal::M_ACT: return bits_of(M_ACT);
-    default: return 0;
+    case Signal::ZSW1:
+      return ZSW1.value();
+    case Signal::NIST_A:
+      return bits_of(NIST_A);
+    case Signal::NIST_B:
+      return bits_of(NIST_B);
+    case Signal::ZSW2:
+      return ZSW2.value();
+    case Signal::G1_ZSW:
+      return G1_ZSW.value();
+    case Signal::G1_XIST1:
+      return G1_XIST1;
+    case Signal::G1_XIST2:
+      return G1_XIST2;
+    case Signal::G2_ZSW:
+      return G2_ZSW.value();
+    case Signal::G2_XIST1:
+      return G2_XIST1;
+    case Signal::G2_XIST2:
+      return G2_XIST2;
+    case Signal::MELDW:
+      return MELDW.value();
+    case Signal::ZSW2_ENC:
+      return ZSW2_ENC.value();
+    case Signal::M_ACT:
+      return bits_of(M_ACT);
+    default:
+      return 0;
   }
 }
 
 void ActualSignals::set_raw(Signal signal, std::uint32_t v) noexcept {
   switch (signal) {
-    case Signal::ZSW1: ZSW1 = Zsw1{as_uint16(v)}; break;
-    case Signal::NIST_A: NIST_A = as_int16(v); break;
-    case Signal::NIST_B: NIST_B = as_int32(v); break;
-    case Signal::ZSW2: ZSW2 = Zsw2{as_uint16(v)}; break;
-    case Signal::G1_ZSW: G1_ZSW = EncoderStatusWord{as_uint16(v)}; break;
-    case Signal::G1_XIST1: G1_XIST1 = v; break;
-    case Signal::G1_XIST2: G1_XIST2 = v; break;
-    case Signal::G2_ZSW: G2_ZSW = EncoderStatusWord{as_uint16(v)}; break;
-    case Signal::G2_XIST1: G2_XIST1 = v; break;
-    case Signal::G2_XIST2: G2_XIST2 = v; break;
-    case Signal::MELDW: MELDW = Meldw{as_uint16(v)}; break;
-    case Signal::ZSW2_ENC: ZSW2_ENC = Zsw2Enc{as_uint16(v)}; break;
-    case Signal::M_ACT: M_ACT = as_int16(v); break;
-    default: break;
+    case Signal::ZSW1:
+      ZSW1 = Zsw1{as_uint16(v)};
+      break;
+    case Signal::NIST_A:
+      NIST_A = as_int16(v);
+      break;
+    case Signal::NIST_B:
+      NIST_B = as_int32(v);
+      break;
+    case Signal::ZSW2:
+      ZSW2 = Zsw2{as_uint16(v)};
+      break;
+    case Signal::G1_ZSW:
+      G1_ZSW = EncoderStatusWord{as_uint16(v)};
+      break;
+    case Signal::G1_XIST1:
+      G1_XIST1 = v;
+      break;
+    case Signal::G1_XIST2:
+      G1_XIST2 = v;
+      break;
+    case Signal::G2_ZSW:
+      G2_ZSW = EncoderStatusWord{as_uint16(v)};
+      break;
+    case Signal::G2_XIST1:
+      G2_XIST1 = v;
+      break;
+    case Signal::G2_XIST2:
+      G2_XIST2 = v;
+      break;
+    case Signal::MELDW:
+      MELDW = Meldw{as_uint16(v)};
+      break;
+    case Signal::ZSW2_ENC:
+      ZSW2_ENC = Zsw2Enc{as_uint16(v)};
+      break;
+    case Signal::M_ACT:
+      M_ACT = as_int16(v);
+      break;
+    default:
+      break;
   }
 }
 
 // ---- named bits of the words (spec 06 §3) ----
 namespace {
 
-constexpr BitField bit(std::uint8_t n) { return BitField{n, 1}; }
+constexpr BitField bit(std::uint8_t n) {
+  return BitField{n, 1};
+}
 
 constexpr NamedField kStw1Fields[] = {
     {"On", bit(0)},
@@ -283,18 +379,28 @@ constexpr NamedField kZsw2EncFields[] = {
 
 std::span<const NamedField> word_fields(Signal signal) noexcept {
   switch (signal) {
-    case Signal::STW1: return kStw1Fields;
-    case Signal::ZSW1: return kZsw1Fields;
-    case Signal::STW2: return kStw2Fields;
-    case Signal::ZSW2: return kZsw2Fields;
-    case Signal::MELDW: return kMeldwFields;
+    case Signal::STW1:
+      return kStw1Fields;
+    case Signal::ZSW1:
+      return kZsw1Fields;
+    case Signal::STW2:
+      return kStw2Fields;
+    case Signal::ZSW2:
+      return kZsw2Fields;
+    case Signal::MELDW:
+      return kMeldwFields;
     case Signal::G1_STW:
-    case Signal::G2_STW: return kEncoderControlFields;
+    case Signal::G2_STW:
+      return kEncoderControlFields;
     case Signal::G1_ZSW:
-    case Signal::G2_ZSW: return kEncoderStatusFields;
-    case Signal::STW2_ENC: return kStw2EncFields;
-    case Signal::ZSW2_ENC: return kZsw2EncFields;
-    default: return {};
+    case Signal::G2_ZSW:
+      return kEncoderStatusFields;
+    case Signal::STW2_ENC:
+      return kStw2EncFields;
+    case Signal::ZSW2_ENC:
+      return kZsw2EncFields;
+    default:
+      return {};
   }
 }
 

@@ -36,14 +36,16 @@ CliRun tomc(const std::vector<std::string>& args) {
   // One file per process: ctest runs the test cases of this binary in parallel.
   const std::string err_file = ::testing::TempDir() + "tomc_cli_stderr_" + std::to_string(getpid()) + ".txt";
   std::string cmd = shell_quote(TOMC_BINARY);
-  for (const auto& a : args) cmd += " " + shell_quote(a);
+  for (const auto& a : args)
+    cmd += " " + shell_quote(a);
   cmd += " 2>" + shell_quote(err_file);
   CliRun run;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (pipe == nullptr) return run;
   char buf[4096];
   std::size_t n = 0;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) run.out.append(buf, n);
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0)
+    run.out.append(buf, n);
   const int status = pclose(pipe);
   run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream err(err_file);
@@ -54,7 +56,8 @@ CliRun tomc(const std::vector<std::string>& args) {
 }
 
 std::string trimmed(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' '))
+    s.pop_back();
   return s;
 }
 
@@ -64,12 +67,15 @@ struct EncodeCase {
   const char* expected_hex;
 };
 
-// spec 06 §11: every setpoint-frame vector, encoded from JSON given the way a commissioning engineer writes it.
+// spec 06 §11: every setpoint-frame vector, encoded from JSON given the way a commissioning engineer writes
+// it.
 TEST(CliEncode, SpecVectors) {
   const std::vector<EncodeCase> cases = {
-      {"TV01", {"--telegram", "1", "--reference-speed", "3000", R"({"STW1":"0x047F","NSOLL_A":{"speed":1500}})"},
+      {"TV01",
+       {"--telegram", "1", "--reference-speed", "3000", R"({"STW1":"0x047F","NSOLL_A":{"speed":1500}})"},
        "04 7F 20 00"},
-      {"TV02", {"--telegram", "1", "--reference-speed", "3000", R"({"STW1":"0x047E","NSOLL_A":{"speed":-750}})"},
+      {"TV02",
+       {"--telegram", "1", "--reference-speed", "3000", R"({"STW1":"0x047E","NSOLL_A":{"speed":-750}})"},
        "04 7E F0 00"},
       {"TV03",
        {"--telegram", "2", "--reference-speed", "3000",
@@ -79,11 +85,14 @@ TEST(CliEncode, SpecVectors) {
        {"--telegram", "3", "--reference-speed", "3000",
         R"({"STW1":"0x047F","NSOLL_B":{"speed":1500},"STW2":{"SignOfLife":5},"G1_STW":0})"},
        "04 7F 20 00 00 00 50 00 00 00"},
-      {"TV07", {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":-3000}})"},
+      {"TV07",
+       {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":-3000}})"},
        "00 00 C0 00 00 00 00 00"},
-      {"TV08 233 %", {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":7000}})"},
+      {"TV08 233 %",
+       {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":7000}})"},
        "00 00 7F FF FF FF 00 00"},
-      {"TV08 200 %", {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":6000}})"},
+      {"TV08 200 %",
+       {"--telegram", "2", "--reference-speed", "3000", R"({"NSOLL_B":{"speed":6000}})"},
        "00 00 7F FF FF FF 00 00"},
       {"TV09",
        {"--telegram", "102", "--reference-speed", "3000",
@@ -93,22 +102,30 @@ TEST(CliEncode, SpecVectors) {
        {"--telegram", "105", "--reference-speed", "3000",
         R"({"STW1":"0x047F","NSOLL_B":{"speed":1500},"STW2":{"SignOfLife":1},"MOMRED":0,"G1_STW":0,"XERR":-1234,"KPC":{"kv":500}})"},
        "04 7F 20 00 00 00 10 00 00 00 00 00 FF FF FB 2E 00 07 A1 20"},
-      {"TV11", {"--telegram", "5", R"({"KPC":{"kv":666.6666666667}})"},
+      {"TV11",
+       {"--telegram", "5", R"({"KPC":{"kv":666.6666666667}})"},
        "00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 0A 2C 2B"},
-      {"TV14", {"--telegram", "750", R"({"M_ADD1":0,"M_LIMIT_POS":"0x4000","M_LIMIT_NEG":-16384})"}, "00 00 40 00 C0 00"},
+      {"TV14",
+       {"--telegram", "750", R"({"M_ADD1":0,"M_LIMIT_POS":"0x4000","M_LIMIT_NEG":-16384})"},
+       "00 00 40 00 C0 00"},
       {"TV15",
        {"--telegram", "750", "--reference-torque", "10",
         R"({"M_ADD":{"torque":2.5},"M_LIMIT_POS":{"torque":5},"M_LIMIT_NEG":{"torque":-5}})"},
        "10 00 20 00 E0 00"},
-      {"TV17", {"--telegram", "2", R"({"STW2":{"value":"0x0100","SignOfLife":14}})"}, "00 00 00 00 00 00 E1 00"},
-      {"TV23 reference-mark search", {"--telegram", "3", R"({"G1_STW":{"Function1":true,"Command":1}})"},
+      {"TV17",
+       {"--telegram", "2", R"({"STW2":{"value":"0x0100","SignOfLife":14}})"},
+       "00 00 00 00 00 00 E1 00"},
+      {"TV23 reference-mark search",
+       {"--telegram", "3", R"({"G1_STW":{"Function1":true,"Command":1}})"},
        "00 00 00 00 00 00 00 00 00 11"},
       {"TV23 flying measurement",
        {"--telegram", "3", R"({"G1_STW":{"Function1":true,"Command":1,"MeasurementMode":true}})"},
        "00 00 00 00 00 00 00 00 00 91"},
-      {"TV23 acknowledge", {"--telegram", "3", R"({"G1_STW":{"AcknowledgeEncoderError":true}})"},
+      {"TV23 acknowledge",
+       {"--telegram", "3", R"({"G1_STW":{"AcknowledgeEncoderError":true}})"},
        "00 00 00 00 00 00 00 00 80 00"},
-      {"TV26 acknowledge word", {"--telegram", "1", R"({"STW1":{"value":"0x047E","AcknowledgeFault":true}})"},
+      {"TV26 acknowledge word",
+       {"--telegram", "1", R"({"STW1":{"value":"0x047E","AcknowledgeFault":true}})"},
        "04 FE 00 00"},
   };
   for (const auto& c : cases) {
@@ -145,15 +162,15 @@ TEST(CliDecode, TV05Telegram3Actual) {
 
 // spec 06 §11 TV06: NIST_B 0x0CCCCCCD = 0.2000000002 x 3000 rpm
 TEST(CliDecode, TV06NistB) {
-  const auto j = decode({"--telegram", "2", "--direction", "actual", "--reference-speed", "3000",
-                         "00 00 0C CC CC CD 00 00"});
+  const auto j = decode(
+      {"--telegram", "2", "--direction", "actual", "--reference-speed", "3000", "00 00 0C CC CC CD 00 00"});
   EXPECT_NEAR(j["derived"]["NIST_B"]["speed"].get<double>(), 600.0000006, 1e-7);
 }
 
 // spec 06 §11 TV08: raw 0x80000000 decodes to -6000 rpm
 TEST(CliDecode, TV08MostNegative) {
-  const auto j = decode({"--telegram", "2", "--direction", "actual", "--reference-speed", "3000",
-                         "00 00 80 00 00 00 00 00"});
+  const auto j = decode(
+      {"--telegram", "2", "--direction", "actual", "--reference-speed", "3000", "00 00 80 00 00 00 00 00"});
   EXPECT_DOUBLE_EQ(j["derived"]["NIST_B"]["speed"].get<double>(), -6000.0);
 }
 
@@ -191,7 +208,7 @@ TEST(CliDecode, TV22EncoderError) {
 // spec 06 §11 TV24: drive state from ZSW1, through the telegram 1 actual frame
 TEST(CliDecode, TV24DriveStates) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"02 70", "S1"}, {"02 31", "S2"}, {"02 33", "S3"}, {"02 37", "S4"},
+      {"02 70", "S1"},  {"02 31", "S2"},    {"02 33", "S3"}, {"02 37", "S4"},
       {"02 13", "S5b"}, {"02 48", "FAULT"}, {"00 37", "S4"}};
   for (const auto& [zsw1, state] : cases) {
     const auto j = decode({"--telegram", "1", "--direction", "actual", zsw1 + " 00 00"});
@@ -202,7 +219,8 @@ TEST(CliDecode, TV24DriveStates) {
 
 // spec 06 §11 TV25: encoder telegrams 81 and 83
 TEST(CliDecode, TV25EncoderTelegrams) {
-  const auto t81 = decode({"--telegram", "81", "--direction", "actual", "12 00 00 00 00 AB CD EF 00 00 00 00"});
+  const auto t81 =
+      decode({"--telegram", "81", "--direction", "actual", "12 00 00 00 00 AB CD EF 00 00 00 00"});
   EXPECT_EQ(t81["signals"]["ZSW2_ENC"]["bits"]["ControlRequested"], true);
   EXPECT_EQ(t81["signals"]["ZSW2_ENC"]["bits"]["SignOfLife"], 1);
   EXPECT_EQ(t81["signals"]["G1_ZSW"]["value"], 0);
@@ -225,8 +243,8 @@ TEST(CliDecode, Telegram83NistBOffset) {
 
 // Byte order per connection (spec 06 §1.1): the same TV01 frame as a little-endian gateway presents it.
 TEST(CliDecode, ByteOrderOption) {
-  const auto j = decode({"--telegram", "2", "--direction", "setpoint", "--byte-order", "little",
-                         "7F 04 00 00 00 20 00 10"});
+  const auto j = decode(
+      {"--telegram", "2", "--direction", "setpoint", "--byte-order", "little", "7F 04 00 00 00 20 00 10"});
   EXPECT_EQ(j["signals"]["STW1"]["value"], 0x047F);
   EXPECT_EQ(j["signals"]["NSOLL_B"], 0x20000000);
   EXPECT_EQ(j["signals"]["STW2"]["bits"]["SignOfLife"], 1);
@@ -246,7 +264,8 @@ TEST(CliRoundTrip, EveryTelegramAndDirection) {
         input[f["signal"].get<std::string>()] = bits == 16 ? 0x1234 + 0x111 * k : 0x01020304 + 0x01010101 * k;
         ++k;
       }
-      const CliRun enc = tomc({"telegram", "encode", "--telegram", telegram, "--direction", direction, input.dump()});
+      const CliRun enc =
+          tomc({"telegram", "encode", "--telegram", telegram, "--direction", direction, input.dump()});
       ASSERT_EQ(enc.status, 0) << telegram << " " << direction << ": " << enc.err;
       const auto j = decode({"--telegram", telegram, "--direction", direction, trimmed(enc.out)});
       for (const auto& [name, value] : input.items()) {
@@ -267,38 +286,58 @@ struct ErrorCase {
 // Bad input -> one line on stderr, exit status 2, nothing on stdout.
 TEST(CliErrors, ExitTwoWithOneLine) {
   const std::vector<ErrorCase> cases = {
-      {"unknown telegram", {"telegram", "decode", "--telegram", "7", "--direction", "actual", "0000"}, "unknown telegram"},
+      {"unknown telegram",
+       {"telegram", "decode", "--telegram", "7", "--direction", "actual", "0000"},
+       "unknown telegram"},
       {"telegram 104", {"telegram", "decode", "--telegram", "104", "--direction", "actual", "0000"}, "104"},
-      {"wrong length", {"telegram", "decode", "--telegram", "1", "--direction", "actual", "02 37 00"}, "4 bytes, got 3"},
-      {"bad hex", {"telegram", "decode", "--telegram", "1", "--direction", "actual", "02 3z 00 00"}, "bad hex"},
+      {"wrong length",
+       {"telegram", "decode", "--telegram", "1", "--direction", "actual", "02 37 00"},
+       "4 bytes, got 3"},
+      {"bad hex",
+       {"telegram", "decode", "--telegram", "1", "--direction", "actual", "02 3z 00 00"},
+       "bad hex"},
       {"odd hex", {"telegram", "decode", "--telegram", "1", "--direction", "actual", "023"}, "odd number"},
-      {"unknown signal", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW9":1})"},
+      {"unknown signal",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW9":1})"},
        "unknown signal"},
-      {"signal of other telegram", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"NSOLL_B":1})"},
+      {"signal of other telegram",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"NSOLL_B":1})"},
        "not a signal of telegram 1"},
-      {"signal of other direction", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"ZSW1":1})"},
+      {"signal of other direction",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"ZSW1":1})"},
        "not a signal of telegram 1"},
-      {"out of range", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":65536})"},
+      {"out of range",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":65536})"},
        "out of range"},
-      {"negative word", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":-1})"},
+      {"negative word",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":-1})"},
        "out of range"},
       {"bit field out of range",
        {"telegram", "encode", "--telegram", "2", "--direction", "setpoint", R"({"STW2":{"SignOfLife":16}})"},
        "out of range"},
-      {"unknown bit", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":{"Foo":true}})"},
+      {"unknown bit",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":{"Foo":true}})"},
        "unknown bit"},
       {"speed without reference",
        {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"NSOLL_A":{"speed":100}})"},
        "--reference-speed"},
-      {"malformed JSON", {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":)"}, "JSON"},
-      {"bad direction", {"telegram", "decode", "--telegram", "1", "--direction", "up", "0000"}, "--direction"},
+      {"malformed JSON",
+       {"telegram", "encode", "--telegram", "1", "--direction", "setpoint", R"({"STW1":)"},
+       "JSON"},
+      {"bad direction",
+       {"telegram", "decode", "--telegram", "1", "--direction", "up", "0000"},
+       "--direction"},
       {"missing telegram", {"telegram", "decode", "--direction", "actual", "0000"}, "--telegram"},
-      {"bad byte order", {"telegram", "decode", "--telegram", "1", "--direction", "actual", "--byte-order", "x", "00000000"},
+      {"bad byte order",
+       {"telegram", "decode", "--telegram", "1", "--direction", "actual", "--byte-order", "x", "00000000"},
        "--byte-order"},
       {"bad nist offset",
-       {"telegram", "decode", "--telegram", "83", "--direction", "actual", "--nist-b-offset", "6", "00"}, "4, 8 or 12"},
+       {"telegram", "decode", "--telegram", "83", "--direction", "actual", "--nist-b-offset", "6", "00"},
+       "4, 8 or 12"},
       {"unknown command", {"frobnicate"}, "unknown command"},
-      {"unknown action", {"telegram", "transmogrify", "--telegram", "1", "--direction", "actual"}, "unknown action"},
+      {"unknown action",
+       {"telegram", "transmogrify", "--telegram", "1", "--direction", "actual"},
+       "unknown action"},
   };
   for (const auto& c : cases) {
     const CliRun r = tomc(c.args);

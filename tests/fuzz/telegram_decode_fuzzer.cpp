@@ -32,7 +32,8 @@ void check(const tg::TelegramCodec& codec, std::span<const std::byte> frame) {
   // The interpretation helpers must accept any value, too.
   if constexpr (std::is_same_v<Values, tg::ActualSignals>) {
     (void)tg::decode_zsw1(values.ZSW1.value());
-    (void)tg::xist2_content(tg::EncoderControlWord{static_cast<std::uint16_t>(values.G1_XIST1)}, values.G1_ZSW);
+    (void)tg::xist2_content(tg::EncoderControlWord{static_cast<std::uint16_t>(values.G1_XIST1)},
+                            values.G1_ZSW);
     (void)tg::describe_encoder_error(tg::encoder_error_code(values.G1_XIST2));
     (void)tg::n4_to_speed(values.NIST_B, 3000.0);
     tg::SignOfLifeMonitor monitor;
@@ -47,7 +48,8 @@ void check(const tg::TelegramCodec& codec, std::span<const std::byte> frame) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
-  // Byte 0 picks telegram and direction, byte 1 the byte order and the telegram 83 option; the rest is the frame.
+  // Byte 0 picks telegram and direction, byte 1 the byte order and the telegram 83 option; the rest is the
+  // frame.
   const auto telegrams = tg::supported_telegrams();
   const int telegram = data[0] == 0xFF ? 104 : telegrams[data[0] % telegrams.size()];
   const auto direction = (data[0] & 0x80) != 0 ? tg::Direction::kActual : tg::Direction::kSetpoint;

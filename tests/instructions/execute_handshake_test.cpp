@@ -38,13 +38,15 @@ struct FakeAxis {
 struct Instance {
   ExecuteHandshake hs;
   void call(FakeAxis& axis, bool execute) {
-    hs.call(execute, [&] { return axis.submit(); }, [&](JobId id) { return axis.status(id); });
+    hs.call(
+        execute, [&] { return axis.submit(); }, [&](JobId id) { return axis.status(id); });
   }
   // "B A D CA Er" as 0/1 characters, for compact comparison with the §3.7 tables.
   std::string flags() const {
     const auto& o = hs.outputs();
     std::string s;
-    for (bool b : {o.Busy, o.Active, o.Done, o.CommandAborted, o.Error}) s += b ? '1' : '0';
+    for (bool b : {o.Busy, o.Active, o.Done, o.CommandAborted, o.Error})
+      s += b ? '1' : '0';
     return s;
   }
 };
@@ -93,14 +95,16 @@ TEST(ExecuteHandshake, E1_LevelDoesNotRestart) {
   Instance i;
   i.call(axis, true);
   axis.set(1, JobState::kDone);
-  for (int k = 0; k < 5; ++k) i.call(axis, true);
+  for (int k = 0; k < 5; ++k)
+    i.call(axis, true);
   EXPECT_EQ(axis.submissions, 1);
   i.call(axis, false);
   i.call(axis, true);
   EXPECT_EQ(axis.submissions, 2);
 }
 
-// T-C: instance 1 aborted by another instance; CommandAborted held while Execute 1 is TRUE, one call otherwise.
+// T-C: instance 1 aborted by another instance; CommandAborted held while Execute 1 is TRUE, one call
+// otherwise.
 TEST(ExecuteHandshake, TC_AbortedByAnotherInstance) {
   FakeAxis axis;
   Instance i1;

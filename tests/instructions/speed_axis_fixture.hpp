@@ -1,6 +1,6 @@
 #pragma once
-// A speed axis on the simulated PROFIdrive drive with a user program calling MC_* instances, as a PLC runs it:
-// one Runtime::step() = MC_Servo, MC_Interpolator, user program.
+// A speed axis on the simulated PROFIdrive drive with a user program calling MC_* instances, as a PLC runs
+// it: one Runtime::step() = MC_Servo, MC_Interpolator, user program.
 #include <functional>
 #include <memory>
 
@@ -11,8 +11,8 @@
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
-#include "tomc/instructions/mc_write_parameter.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_write_parameter.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 
@@ -48,7 +48,8 @@ struct SpeedAxisMachine {
     runtime.start();
   }
   void run(int cycles) {
-    for (int i = 0; i < cycles; ++i) runtime.step();
+    for (int i = 0; i < cycles; ++i)
+      runtime.step();
   }
   template <typename Predicate>
   int run_until(Predicate done, int limit) {

@@ -17,7 +17,8 @@ namespace {
 std::atomic<std::uint64_t> g_allocations{0};
 }
 
-// GCC sees the malloc in these replacements inlined next to std::free and warns of a mismatch that is not one.
+// GCC sees the malloc in these replacements inlined next to std::free and warns of a mismatch that is not
+// one.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t size) {
@@ -30,10 +31,18 @@ void* operator new[](std::size_t size) {
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
 #pragma GCC diagnostic pop
 
 namespace {
@@ -95,8 +104,8 @@ void random_inputs(SpeedAxisMachine& m, std::mt19937& rng) {
 }
 
 // `was_enabled`: the axis was enabled in the previous cycle too. Enabling a moving speed axis sets the speed
-// setpoint to 0 at once by definition (spec 01 §6.2: "braked by speed setpoint zero", limits inactive), so the
-// cycle of enabling is not a motion cycle.
+// setpoint to 0 at once by definition (spec 01 §6.2: "braked by speed setpoint zero", limits inactive), so
+// the cycle of enabling is not a motion cycle.
 void check(const SpeedAxisMachine& m, double previous_velocity, bool was_enabled, Violations& v) {
   const auto& d = m.axis->data();
   const double dt = 0.001;
@@ -119,7 +128,8 @@ void check(const SpeedAxisMachine& m, double previous_velocity, bool was_enabled
     if (speeding_up && std::fabs(a) > d.DynamicLimits.MaxAcceleration * (1 + 1e-9) + eps) ++v.acceleration;
   }
   // Reaction 4 takes the enable away in the cycle the alarm is raised (spec 02 §3.4).
-  if (d.ErrorDetail.Reaction == 4 && techobjects::test(d.StatusWord, techobjects::StatusWordBit::kEnable)) ++v.reaction;
+  if (d.ErrorDetail.Reaction == 4 && techobjects::test(d.StatusWord, techobjects::StatusWordBit::kEnable))
+    ++v.reaction;
 }
 
 TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
@@ -128,7 +138,8 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
   for (int i = 0; i < kAxes; ++i) {
     techobjects::SpeedAxisData data;
     data.DynamicLimits.MaxJerk = i == 0 ? 0.0 : 2000.0;  // trapezoids on one axis, jerk-limited on the others
-    machines.push_back(std::make_unique<SpeedAxisMachine>(static_cast<std::uint16_t>(i == 2 ? 105 : 2), data));
+    machines.push_back(
+        std::make_unique<SpeedAxisMachine>(static_cast<std::uint16_t>(i == 2 ? 105 : 2), data));
     machines.back()->power.Enable = true;
   }
   std::mt19937 rng(20261122);
@@ -154,7 +165,8 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
   EXPECT_EQ(allocated, 0u);
   // The sequence did exercise the axes: something moved and something faulted.
   std::size_t alarms = 0;
-  for (auto& m : machines) alarms += m->axis->alarms().log().last_sequence();
+  for (auto& m : machines)
+    alarms += m->axis->alarms().log().last_sequence();
   EXPECT_GT(alarms, 0u);
   EXPECT_GT(v.moving_cycles, kCycles * kAxes / 5) << "too few cycles with an enabled, moving axis";
 }

@@ -1,10 +1,11 @@
 // TO_SpeedAxis with MC_Power, MC_Reset, MC_MoveVelocity, MC_MoveJog, MC_Halt and MC_Stop on the simulated
-// PROFIdrive drive, cycle by cycle. Numbers: Units.VelocityUnit = 1/min, so 1500 1/min = 25 1/s; accelerations
-// in 1/s² (spec 04 §3.14). Unless a test says otherwise: MaxJerk = 0 (no jerk limit), so profiles are trapezoids.
-// Cycle accounting: a job submitted by the user program of cycle k moves from the interpolator of cycle k+1 on, so
-// a profile of n interpolator cycles is reached in the user program of cycle k+n (run count n+1 with the edge);
-// status words are written by the interpolator and show a job from the cycle after its call; instances called
-// before the instance that aborts them see CommandAborted one cycle later (spec 03 §3.6 call order).
+// PROFIdrive drive, cycle by cycle. Numbers: Units.VelocityUnit = 1/min, so 1500 1/min = 25 1/s;
+// accelerations in 1/s² (spec 04 §3.14). Unless a test says otherwise: MaxJerk = 0 (no jerk limit), so
+// profiles are trapezoids. Cycle accounting: a job submitted by the user program of cycle k moves from the
+// interpolator of cycle k+1 on, so a profile of n interpolator cycles is reached in the user program of cycle
+// k+n (run count n+1 with the edge); status words are written by the interpolator and show a job from the
+// cycle after its call; instances called before the instance that aborts them see CommandAborted one cycle
+// later (spec 03 §3.6 call order).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -227,7 +228,8 @@ TEST(SpeedAxis, DisableWithEmergencyStop) {
   const int cycles = m.run_until([&] { return !m.power.Busy && !m.power.Status; }, 1000);
   EXPECT_NEAR(cycles + 2, 126, 2);  // 25 1/s at 200 1/s²
   // Then OFF1: the drive ramps the small rest (speed-loop lag) down and reports S2.
-  EXPECT_GT(m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS2ReadyForSwitchingOn; }, 100), 0);
+  EXPECT_GT(
+      m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS2ReadyForSwitchingOn; }, 100), 0);
 }
 
 // StopMode 1: the drive brakes on its OFF3 ramp; StopMode 3: OFF2, coasting (spec 02 §3.1).
@@ -295,7 +297,8 @@ TEST(SpeedAxis, SignOfLifeFailureRaisesAnAlarm) {
   EXPECT_FALSE(m.power.Status);
 }
 
-// spec 03 §3.4: J1 jog, J4 both inputs -> 16#8007 and braking, error until both are FALSE, J2 Busy ends at rest.
+// spec 03 §3.4: J1 jog, J4 both inputs -> 16#8007 and braking, error until both are FALSE, J2 Busy ends at
+// rest.
 TEST(SpeedAxis, JogBothDirectionsIsAnError) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
@@ -313,7 +316,7 @@ TEST(SpeedAxis, JogBothDirectionsIsAnError) {
   EXPECT_EQ(m.jog.ErrorID, eid::kJogWrongDirection);
   m.run(150);
   EXPECT_DOUBLE_EQ(m.axis->data().Velocity, 0.0);  // braked with the last valid deceleration
-  EXPECT_TRUE(m.jog.Error);                          // held while an input is TRUE
+  EXPECT_TRUE(m.jog.Error);                        // held while an input is TRUE
   m.jog.JogForward = false;
   m.run(1);
   EXPECT_TRUE(m.jog.Error);
@@ -350,7 +353,8 @@ TEST(SpeedAxis, RestartAppliesStartValues) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
   ASSERT_TRUE(m.axis->write_start_value("DynamicLimits.MaxVelocity", 2000.0).ok());
-  EXPECT_TRUE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
+  EXPECT_TRUE(
+      techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
   EXPECT_DOUBLE_EQ(m.axis->data().DynamicLimits.MaxVelocity, 3000.0);
   // A restart-relevant variable cannot be written directly.
   EXPECT_FALSE(m.axis->write("DynamicLimits.MaxVelocity", 2000.0).ok());
@@ -366,7 +370,8 @@ TEST(SpeedAxis, RestartAppliesStartValues) {
   m.run(2);
   EXPECT_TRUE(m.reset.Done);
   EXPECT_DOUBLE_EQ(m.axis->data().DynamicLimits.MaxVelocity, 2000.0);
-  EXPECT_FALSE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
+  EXPECT_FALSE(
+      techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
 }
 
 // spec 01 §8.5: the velocity is limited to min(MaxVelocity, Velocity) with warning 501.
@@ -416,8 +421,8 @@ TEST(SpeedAxis, SetAxisStwWritesTheUsersBits) {
   EXPECT_EQ(m.set_stw.ErrorID, eid::kInvalidBitMask);
 }
 
-// spec 03 §4.15: 1020 RemoveEnableReaction takes effect at once (here: OFF2 instead of OFF3 on a drive fault);
-// 1010..1012 after restart; unknown numbers and values are rejected.
+// spec 03 §4.15: 1020 RemoveEnableReaction takes effect at once (here: OFF2 instead of OFF3 on a drive
+// fault); 1010..1012 after restart; unknown numbers and values are rejected.
 TEST(SpeedAxis, WriteParameter) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
@@ -460,7 +465,8 @@ TEST(SpeedAxis, WriteParameter) {
   m.run(2);
   EXPECT_TRUE(m.write_parameter.Done);
   EXPECT_DOUBLE_EQ(m.axis->communication_times().Ti, 0.0);  // after restart only
-  EXPECT_TRUE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
+  EXPECT_TRUE(
+      techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
 }
 
 // spec 02 §3.1 StopMode 2: the TO ramps with MaxDeceleration (100 1/s², MaxJerk 0 here): 25 1/s in 0.25 s.
@@ -490,7 +496,8 @@ TEST(SpeedAxis, RemoveEnableWithOff1) {
   m.drive->freeze_sign_of_life(true);  // alarm 406, reaction 4
   ASSERT_GT(m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS5aRampStop; }, 20), 0);
   // p1121 = 1 s from 6000 rpm: 1500 rpm take about 0.25 s, then the drive is ready for switching on (S2).
-  const int stopped = m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS2ReadyForSwitchingOn; }, 1000);
+  const int stopped =
+      m.run_until([&] { return m.drive->state() == telegrams::DriveState::kS2ReadyForSwitchingOn; }, 1000);
   EXPECT_NEAR(stopped, 250, 10);
   EXPECT_FALSE(m.power.Status);
   EXPECT_TRUE(m.power.Busy);

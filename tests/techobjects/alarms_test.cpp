@@ -57,7 +57,7 @@ TEST(Alarms, RaiseOnceAndAcknowledge) {
 // ErrorDetail shows the highest-priority pending alarm: strongest reaction, then the oldest.
 TEST(Alarms, ErrorDetailPriority) {
   AlarmList list;
-  list.raise(kAlarmSoftwareLimitReached, 0, 1);  // reaction 2
+  list.raise(kAlarmSoftwareLimitReached, 0, 1);     // reaction 2
   list.raise(kAlarmDynamicsLimitedVelocity, 0, 2);  // warning
   ASSERT_NE(list.error_detail(), nullptr);
   EXPECT_EQ(list.error_detail()->number, kAlarmSoftwareLimitReached);
@@ -75,7 +75,8 @@ TEST(Alarms, ErrorDetailPriority) {
 TEST(Alarms, ListCapacityIsBounded) {
   AlarmList list;
   std::size_t raised = 0;
-  for (const auto& d : alarm_definitions()) raised += list.raise(d.number, 0, 1) ? 1 : 0;
+  for (const auto& d : alarm_definitions())
+    raised += list.raise(d.number, 0, 1) ? 1 : 0;
   EXPECT_EQ(raised, std::min(alarm_definitions().size(), AlarmList::kCapacity));
 }
 
@@ -93,7 +94,8 @@ TEST(Alarms, LogKeepsTheHistoryAndCountsLosses) {
   EXPECT_EQ(list.log().copy_since(2, out), 0u);
 
   AlarmLog log;
-  for (std::uint64_t i = 0; i < AlarmLog::kCapacity + 10; ++i) log.append(AlarmEvent{0, i, AlarmEvent::Kind::kRaised, 401, 0, {}});
+  for (std::uint64_t i = 0; i < AlarmLog::kCapacity + 10; ++i)
+    log.append(AlarmEvent{0, i, AlarmEvent::Kind::kRaised, 401, 0, {}});
   EXPECT_EQ(log.last_sequence(), AlarmLog::kCapacity + 10);
   EXPECT_EQ(log.lost_before(), 11u);
   std::vector<AlarmEvent> all(AlarmLog::kCapacity + 10);

@@ -34,10 +34,18 @@ void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   return std::malloc(size == 0 ? 1 : size);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace {
 
@@ -55,7 +63,8 @@ TEST(Allocation, CountingAllocatorSeesSetUp) {
   Runtime rt(RuntimeConfig{});
   tomc::drives::DeviceConfig device;
   device.drive_telegram = 3;
-  rt.add_device(std::make_unique<tomc::drives::SimulatedDrive>(device, tomc::drives::SimulatedDriveParameters{}));
+  rt.add_device(
+      std::make_unique<tomc::drives::SimulatedDrive>(device, tomc::drives::SimulatedDriveParameters{}));
   EXPECT_GT(g_allocations.load(), before);
 }
 
@@ -68,15 +77,18 @@ TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
     tomc::drives::DeviceConfig device;
     device.drive_telegram = t;
     if (t == 105) device.supplementary_telegram = 750;
-    auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedDrive>(device, tomc::drives::SimulatedDriveParameters{}));
-    objects.push_back(&rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
+    auto& io = rt.add_device(
+        std::make_unique<tomc::drives::SimulatedDrive>(device, tomc::drives::SimulatedDriveParameters{}));
+    objects.push_back(
+        &rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
   }
   std::uint64_t user_cycles = 0;
   rt.set_user_program([&](Runtime&) { ++user_cycles; });
   rt.start();
 
   const auto before = g_allocations.load();
-  for (int i = 0; i < kCycles; ++i) rt.step();
+  for (int i = 0; i < kCycles; ++i)
+    rt.step();
   const auto allocated = g_allocations.load() - before;
 
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";

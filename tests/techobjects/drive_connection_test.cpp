@@ -48,7 +48,8 @@ struct Machine {
   }
   DriveConnection& connection() { return object->connection; }
   void run(int cycles) {
-    for (int i = 0; i < cycles; ++i) runtime.step();
+    for (int i = 0; i < cycles; ++i)
+      runtime.step();
   }
   // Runs until the predicate holds; returns the number of cycles, or -1 after `limit`.
   template <typename Predicate>
@@ -64,9 +65,9 @@ struct Machine {
   ConnectionObject* object = nullptr;
 };
 
-// spec 06 §4.3: 0x047E until S2, then 0x047F; the drive answers S0 -> S1 -> S2 -> S3 -> S4, one step per cycle.
-// In S4 the simulated drive also sets ZSW1.8 (speed setpoint/actual deviation within tolerance) as a SINAMICS
-// does, so S4 at standstill reads 0x0337 where spec 06 §4.2 shows 0x0237 with bit 8 left out.
+// spec 06 §4.3: 0x047E until S2, then 0x047F; the drive answers S0 -> S1 -> S2 -> S3 -> S4, one step per
+// cycle. In S4 the simulated drive also sets ZSW1.8 (speed setpoint/actual deviation within tolerance) as a
+// SINAMICS does, so S4 at standstill reads 0x0337 where spec 06 §4.2 shows 0x0237 with bit 8 left out.
 TEST(DriveConnection, EnableSequenceWordByWord) {
   Machine m(3);
   m.connection().request(tg::DriveRequest::kOperate);

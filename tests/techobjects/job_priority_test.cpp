@@ -33,7 +33,8 @@ std::vector<std::string> split(const std::string& row) {
   std::istringstream in(row);
   std::vector<std::string> cells;
   std::string cell;
-  while (in >> cell) cells.push_back(cell);
+  while (in >> cell)
+    cells.push_back(cell);
   return cells;
 }
 
@@ -65,7 +66,8 @@ TEST(JobPriority, AppendBehindJobsThatEnd) {
   velocity.running_job_ends_by_itself = false;
   EXPECT_EQ(resolve(NewJob::kAppendedMotion, RunningJob::kBaseMotionActive, velocity), Outcome::kRejectNew);
   // R5 x C4: at most one pending job per axis.
-  EXPECT_EQ(resolve(NewJob::kAppendedMotion, RunningJob::kBaseMotionPending, positioning), Outcome::kRejectNew);
+  EXPECT_EQ(resolve(NewJob::kAppendedMotion, RunningJob::kBaseMotionPending, positioning),
+            Outcome::kRejectNew);
 }
 
 // Legend B: a new MC_Stop aborts a running one of equal or higher weight (0 emergency > 2 max > 3 specified).
@@ -134,7 +136,7 @@ TEST(JobPriority, StopWeights) {
   EXPECT_EQ(stop_weight_of_mc_stop_mode(2), 2);
   EXPECT_EQ(stop_weight_of_reaction(2), 2);  // max dynamics
   EXPECT_EQ(stop_weight_of_mc_stop_mode(3), 1);
-  EXPECT_EQ(stop_weight_of_reaction(1), 1);  // current dynamics (the source prints 2: erratum)
+  EXPECT_EQ(stop_weight_of_reaction(1), 1);      // current dynamics (the source prints 2: erratum)
   EXPECT_EQ(stop_weight_of_mc_stop_mode(1), 0);  // Mode 1 is not allowed
   EXPECT_EQ(stop_weight_of_reaction(0), 0);
   EXPECT_EQ(stop_weight_of_reaction(5), 0);  // follow setpoint: no stop

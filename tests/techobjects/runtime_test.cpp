@@ -17,7 +17,9 @@ using tomc::drives::LinkHealth;
 using namespace tomc::techobjects;
 
 std::vector<std::string>* g_log = nullptr;
-void log(const std::string& what) { g_log->push_back(what); }
+void log(const std::string& what) {
+  g_log->push_back(what);
+}
 
 class RecordingAdapter final : public tomc::drives::DriveAdapter {
  public:
@@ -80,9 +82,9 @@ TEST(Runtime, OneCycleRunsThePhasesInOrder) {
   rt.set_user_program([](Runtime&) { log("user"); });
   rt.start();
   rt.step();
-  const std::vector<std::string> expected = {"pre-servo", "read A",  "read B",     "servo TA 0 fresh",
-                                             "servo TB 0 fresh", "write A", "write B", "post-servo",
-                                             "ipo TA 0",  "ipo TB 0", "user"};
+  const std::vector<std::string> expected = {"pre-servo",        "read A",   "read B",  "servo TA 0 fresh",
+                                             "servo TB 0 fresh", "write A",  "write B", "post-servo",
+                                             "ipo TA 0",         "ipo TB 0", "user"};
   EXPECT_EQ(guard.entries, expected);
   // The TO saw the frame read this cycle and its setpoint reached the adapter in the same cycle.
   EXPECT_EQ(ta.seen_actual, std::byte{0x42});
@@ -111,7 +113,8 @@ TEST(Runtime, InterpolatorAndUserProgramRatios) {
   int user_calls = 0;
   rt.set_user_program([&](Runtime&) { ++user_calls; });
   rt.start();
-  for (int i = 0; i < 8; ++i) rt.step();
+  for (int i = 0; i < 8; ++i)
+    rt.step();
   int servo = 0;
   int ipo = 0;
   for (const auto& e : guard.entries) {

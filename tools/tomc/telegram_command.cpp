@@ -60,7 +60,9 @@ struct Options {
   std::vector<std::string_view> operands;
 };
 
-std::string in_quotes(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string in_quotes(std::string_view s) {
+  return "'" + std::string(s) + "'";
+}
 
 std::optional<long long> parse_integer(std::string_view text) {
   std::string_view digits = text;
@@ -77,7 +79,8 @@ std::optional<long long> parse_integer(std::string_view text) {
   if (digits.empty()) return std::nullopt;
   unsigned long long magnitude = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude, base);
-  if (ec != std::errc{} || end != digits.data() + digits.size() || magnitude > (1ULL << 40)) return std::nullopt;
+  if (ec != std::errc{} || end != digits.data() + digits.size() || magnitude > (1ULL << 40))
+    return std::nullopt;
   const auto value = static_cast<long long>(magnitude);
   return negative ? -value : value;
 }
@@ -94,12 +97,14 @@ double parse_positive_number(std::string_view option, std::string_view text) {
 
 std::uint16_t parse_word(std::string_view option, std::string_view text) {
   const auto v = parse_integer(text);
-  if (!v || *v < 0 || *v > 0xFFFF) throw UsageError(std::string(option) + " needs a 16-bit word, got " + in_quotes(text));
+  if (!v || *v < 0 || *v > 0xFFFF)
+    throw UsageError(std::string(option) + " needs a 16-bit word, got " + in_quotes(text));
   return static_cast<std::uint16_t>(*v);
 }
 
 Options parse_options(std::span<const std::string_view> args) {
-  if (args.empty()) throw UsageError("telegram: missing action decode|encode|layout (try: tomc telegram --help)");
+  if (args.empty())
+    throw UsageError("telegram: missing action decode|encode|layout (try: tomc telegram --help)");
   Options o;
   o.verb = std::string(args[0]);
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -111,7 +116,8 @@ Options parse_options(std::span<const std::string_view> args) {
     if (a == "--telegram") {
       const auto text = value();
       const auto n = parse_integer(text);
-      if (!n || *n < 0 || *n > 65535) throw UsageError("--telegram needs a telegram number, got " + in_quotes(text));
+      if (!n || *n < 0 || *n > 65535)
+        throw UsageError("--telegram needs a telegram number, got " + in_quotes(text));
       o.telegram = static_cast<int>(*n);
     } else if (a == "--direction") {
       const auto text = value();
@@ -120,7 +126,9 @@ Options parse_options(std::span<const std::string_view> args) {
     } else if (a == "--byte-order") {
       const auto text = value();
       const auto order = tg::parse_byte_order(text);
-      if (!order) throw UsageError("--byte-order must be big, little-bytes, swapped-words or little, got " + in_quotes(text));
+      if (!order)
+        throw UsageError("--byte-order must be big, little-bytes, swapped-words or little, got " +
+                         in_quotes(text));
       o.codec.byte_order = *order;
     } else if (a == "--reference-speed") {
       o.reference_speed = parse_positive_number(a, value());
@@ -129,7 +137,8 @@ Options parse_options(std::span<const std::string_view> args) {
     } else if (a == "--nist-b-offset") {
       const auto text = value();
       const auto n = parse_integer(text);
-      if (!n || (*n != 4 && *n != 8 && *n != 12)) throw UsageError("--nist-b-offset must be 4, 8 or 12, got " + in_quotes(text));
+      if (!n || (*n != 4 && *n != 8 && *n != 12))
+        throw UsageError("--nist-b-offset must be 4, 8 or 12, got " + in_quotes(text));
       o.codec.telegram83_nist_b_offset = static_cast<std::uint8_t>(*n);
     } else if (a == "--g1-stw") {
       o.g1_stw = parse_word(a, value());
@@ -151,7 +160,9 @@ Options parse_options(std::span<const std::string_view> args) {
 
 tg::TelegramCodec make_codec(const Options& o) {
   auto codec = tg::TelegramCodec::create(*o.telegram, *o.direction, o.codec);
-  if (!codec) throw UsageError("telegram " + std::to_string(*o.telegram) + ": " + std::string(tg::describe(codec.error())));
+  if (!codec)
+    throw UsageError("telegram " + std::to_string(*o.telegram) + ": " +
+                     std::string(tg::describe(codec.error())));
   return codec.value();
 }
 
@@ -174,7 +185,8 @@ std::vector<std::byte> parse_hex(const std::vector<std::string_view>& parts) {
     }
   }
   if (digits.empty()) throw UsageError("bad hex: no bytes given");
-  if (digits.size() % 2 != 0) throw UsageError("bad hex: odd number of hex digits (" + std::to_string(digits.size()) + ")");
+  if (digits.size() % 2 != 0)
+    throw UsageError("bad hex: odd number of hex digits (" + std::to_string(digits.size()) + ")");
   std::vector<std::byte> bytes;
   for (std::size_t i = 0; i < digits.size(); i += 2) {
     bytes.push_back(static_cast<std::byte>(std::stoi(digits.substr(i, 2), nullptr, 16)));
@@ -200,7 +212,8 @@ std::string word_hex(std::uint32_t v, int digits) {
 }
 
 bool is_speed(tg::Signal s) {
-  return s == tg::Signal::NSOLL_A || s == tg::Signal::NSOLL_B || s == tg::Signal::NIST_A || s == tg::Signal::NIST_B;
+  return s == tg::Signal::NSOLL_A || s == tg::Signal::NSOLL_B || s == tg::Signal::NIST_A ||
+         s == tg::Signal::NIST_B;
 }
 bool is_torque(tg::Signal s) {
   return s == tg::Signal::M_ADD1 || s == tg::Signal::M_LIMIT_POS || s == tg::Signal::M_LIMIT_NEG ||
@@ -264,7 +277,8 @@ Json decode_json(const Options& o, const tg::TelegramCodec& codec, const Values&
     } else if (s == tg::Signal::MOMRED) {
       d["reduction_percent"] = static_cast<double>(raw) / tg::kN2Hundred * 100.0;
       if (o.reference_torque) {
-        d["torque_limit"] = tg::torque_limit_from_momred(static_cast<std::uint16_t>(raw), *o.reference_torque);
+        d["torque_limit"] =
+            tg::torque_limit_from_momred(static_cast<std::uint16_t>(raw), *o.reference_torque);
       }
     } else if (s == tg::Signal::KPC) {
       d["kv"] = tg::kv_from_kpc(static_cast<std::int32_t>(raw));
@@ -284,8 +298,9 @@ Json decode_json(const Options& o, const tg::TelegramCodec& codec, const Values&
       const auto content = tg::xist2_content(tg::EncoderControlWord{request.value_or(0)}, status);
       const bool value_without_request = !request && status.field(tg::kEncoderValuesAvailableField) != 0 &&
                                          !status.test(tg::EncoderStatusBit::kEncoderError);
-      d["content"] = value_without_request ? std::string("reference mark or measured value (give the G_STW sent)")
-                                           : std::string(tg::to_string(content));
+      d["content"] = value_without_request
+                         ? std::string("reference mark or measured value (give the G_STW sent)")
+                         : std::string(tg::to_string(content));
       if (content == tg::Xist2Content::kErrorCode) {
         const auto code = tg::encoder_error_code(values.raw(xist));
         d["error_code"] = word_hex(code, 4);
@@ -336,24 +351,31 @@ std::uint32_t checked_raw(tg::Signal s, long long value, const std::string& wher
 
 std::uint32_t word_from_object(tg::Signal s, const Json& obj, const std::string& where) {
   std::uint32_t word = 0;
-  if (const auto it = obj.find("value"); it != obj.end()) word = checked_raw(s, json_integer(*it, where + ".value"), where + ".value");
+  if (const auto it = obj.find("value"); it != obj.end())
+    word = checked_raw(s, json_integer(*it, where + ".value"), where + ".value");
   for (const auto& item : obj.items()) {
     const std::string key = item.key();
     const Json& v = item.value();
     if (key == "value" || key == "hex") continue;
     const auto fields = tg::word_fields(s);
-    const auto f = std::find_if(fields.begin(), fields.end(), [&](const tg::NamedField& nf) { return nf.name == key; });
-    if (f == fields.end()) throw UsageError(where + ": unknown bit " + in_quotes(key) + " of " + std::string(tg::name(s)));
+    const auto f =
+        std::find_if(fields.begin(), fields.end(), [&](const tg::NamedField& nf) { return nf.name == key; });
+    if (f == fields.end())
+      throw UsageError(where + ": unknown bit " + in_quotes(key) + " of " + std::string(tg::name(s)));
     const long long max = (1LL << f->field.width) - 1;
     const long long n = json_integer(v, where + "." + key);
-    if (n < 0 || n > max) throw UsageError(where + "." + key + ": value " + std::to_string(n) + " out of range 0.." + std::to_string(max));
-    word = (word & ~static_cast<std::uint32_t>(f->field.mask())) | (static_cast<std::uint32_t>(n) << f->field.first_bit);
+    if (n < 0 || n > max)
+      throw UsageError(where + "." + key + ": value " + std::to_string(n) + " out of range 0.." +
+                       std::to_string(max));
+    word = (word & ~static_cast<std::uint32_t>(f->field.mask())) |
+           (static_cast<std::uint32_t>(n) << f->field.first_bit);
   }
   return word;
 }
 
 std::uint32_t physical_to_raw(const Options& o, tg::Signal s, const Json& obj, const std::string& where) {
-  if (obj.size() != 1) throw UsageError(where + ": give exactly one of the physical forms (see tomc telegram --help)");
+  if (obj.size() != 1)
+    throw UsageError(where + ": give exactly one of the physical forms (see tomc telegram --help)");
   const auto first = obj.begin();
   const std::string key = first.key();
   const Json& v = first.value();
@@ -378,7 +400,8 @@ std::uint32_t physical_to_raw(const Options& o, tg::Signal s, const Json& obj, c
   }
   if (s == tg::Signal::MOMRED && key == "torque_limit") {
     if (!o.reference_torque) throw UsageError(where + ".torque_limit needs --reference-torque");
-    if (x < 0.0 || x > *o.reference_torque) throw UsageError(where + ".torque_limit must be 0..reference torque");
+    if (x < 0.0 || x > *o.reference_torque)
+      throw UsageError(where + ".torque_limit must be 0..reference torque");
     return tg::momred_from_torque_limit(x, *o.reference_torque);
   }
   if (s == tg::Signal::KPC && key == "kv") {
@@ -403,7 +426,7 @@ Values values_from_json(const Options& o, const tg::TelegramCodec& codec, const 
     std::uint32_t raw = 0;
     if (v.is_object()) {
       raw = tg::info(*signal).kind == tg::SignalKind::kWord ? word_from_object(*signal, v, where)
-                                                           : physical_to_raw(o, *signal, v, where);
+                                                            : physical_to_raw(o, *signal, v, where);
     } else {
       raw = checked_raw(*signal, json_integer(v, where), where);
     }
@@ -412,22 +435,27 @@ Values values_from_json(const Options& o, const tg::TelegramCodec& codec, const 
   return values;
 }
 
-std::string dump(const Json& j, bool pretty) { return pretty ? j.dump(2) : j.dump(); }
+std::string dump(const Json& j, bool pretty) {
+  return pretty ? j.dump(2) : j.dump();
+}
 
 int decode(const Options& o, std::ostream& out) {
   const auto codec = make_codec(o);
   const auto bytes = parse_hex(o.operands);
   if (bytes.size() != codec.frame_size()) {
-    throw UsageError("telegram " + std::to_string(codec.telegram()) + " " + std::string(tg::to_string(codec.direction())) +
-                     " frame is " + std::to_string(codec.frame_size()) + " bytes, got " + std::to_string(bytes.size()));
+    throw UsageError("telegram " + std::to_string(codec.telegram()) + " " +
+                     std::string(tg::to_string(codec.direction())) + " frame is " +
+                     std::to_string(codec.frame_size()) + " bytes, got " + std::to_string(bytes.size()));
   }
   if (codec.direction() == tg::Direction::kSetpoint) {
     tg::SetpointSignals values;
-    if (codec.decode(bytes, values) != tg::TelegramError::kNone) throw UsageError("frame could not be decoded");
+    if (codec.decode(bytes, values) != tg::TelegramError::kNone)
+      throw UsageError("frame could not be decoded");
     out << dump(decode_json(o, codec, values), o.pretty) << '\n';
   } else {
     tg::ActualSignals values;
-    if (codec.decode(bytes, values) != tg::TelegramError::kNone) throw UsageError("frame could not be decoded");
+    if (codec.decode(bytes, values) != tg::TelegramError::kNone)
+      throw UsageError("frame could not be decoded");
     out << dump(decode_json(o, codec, values), o.pretty) << '\n';
   }
   return 0;

@@ -32,8 +32,8 @@ struct DeviceFrames {
 };
 
 struct DeviceConfig {
-  std::uint16_t drive_telegram = 0;          // 1..6, 102, 103, 105, 106; 0 = encoder-only device
-  std::uint16_t supplementary_telegram = 0;  // 0 or 750
+  std::uint16_t drive_telegram = 0;                  // 1..6, 102, 103, 105, 106; 0 = encoder-only device
+  std::uint16_t supplementary_telegram = 0;          // 0 or 750
   std::array<std::uint16_t, 2> encoder_telegrams{};  // 0, 81 or 83 each
   telegrams::CodecOptions codec{};
 
@@ -47,7 +47,7 @@ std::string validate(const DeviceConfig& config);
 DeviceFrames make_frames(const DeviceConfig& config, telegrams::Direction direction);
 
 struct LinkHealth {
-  bool up = false;                     // a fresh actual frame arrived within the adapter's tolerance
+  bool up = false;                       // a fresh actual frame arrived within the adapter's tolerance
   std::uint32_t consecutive_missed = 0;  // servo cycles in a row without a fresh actual frame
   std::uint64_t missed_total = 0;
   std::uint64_t exchanges = 0;
@@ -58,8 +58,8 @@ class DriveAdapter {
   virtual ~DriveAdapter() = default;
 
   virtual const DeviceConfig& config() const noexcept = 0;
-  // Start of MC_Servo. Copies the newest actual frames into `actual` and returns true; returns false and leaves
-  // `actual` unchanged when nothing fresh arrived for this cycle.
+  // Start of MC_Servo. Copies the newest actual frames into `actual` and returns true; returns false and
+  // leaves `actual` unchanged when nothing fresh arrived for this cycle.
   virtual bool read_actual(DeviceFrames& actual) noexcept = 0;
   // End of MC_Servo: this cycle's setpoint frames.
   virtual void write_setpoint(const DeviceFrames& setpoint) noexcept = 0;

@@ -20,18 +20,19 @@ namespace tomc::drives {
 struct SimulatedEncoderParameters {
   enum class Shaft : std::uint8_t { kMotor, kLoad };
   Shaft shaft = Shaft::kMotor;
-  bool linear = false;                    // a linear scale on the load: counts from load units, not revolutions
-  double resolution = 0.001;              // linear only: load units per step (Sensor.Parameter.Resolution)
+  bool linear = false;        // a linear scale on the load: counts from load units, not revolutions
+  double resolution = 0.001;  // linear only: load units per step (Sensor.Parameter.Resolution)
   std::uint32_t steps_per_revolution = 2048;  // p979[2]
   std::uint8_t fine_resolution_xist1 = 11;    // p0418, counts = steps * 2^fine
-  std::uint8_t fine_resolution_xist2 = 9;     // p0419, absolute value / reference marks use fine1 (spec 06 §6.2)
+  std::uint8_t fine_resolution_xist2 = 9;  // p0419, absolute value / reference marks use fine1 (spec 06 §6.2)
   std::uint32_t determinable_revolutions = 4096;  // 0 = incremental, 1 = single-turn, >1 multi-turn absolute
-  std::uint8_t xist1_width_bits = 32;        // counter width of XIST1
-  std::uint32_t xist1_at_power_on = 0;       // incremental: counter value at power-on
+  std::uint8_t xist1_width_bits = 32;             // counter width of XIST1
+  std::uint32_t xist1_at_power_on = 0;            // incremental: counter value at power-on
   double reference_mark_interval_revolutions = 1.0;  // a zero mark every N revolutions of the shaft
   double reference_mark_offset_revolutions = 0.25;   // first mark at this shaft angle
-  double absolute_offset_revolutions = 0.0;  // shaft revolutions at which the absolute value reads 0
-  double nist_reference_speed = 3000.0;      // telegram 83 NIST_B: 100 % = this shaft speed in rpm (linear: load units/s)
+  double absolute_offset_revolutions = 0.0;          // shaft revolutions at which the absolute value reads 0
+  double nist_reference_speed =
+      3000.0;  // telegram 83 NIST_B: 100 % = this shaft speed in rpm (linear: load units/s)
 };
 
 // A switch or cam of the simulated machine, active while the load position is inside [from, to].
@@ -59,32 +60,32 @@ struct SimulatedDriveParameters {
   std::uint32_t substeps = 4;  // model integration steps per servo cycle (drive speed-loop clock)
 
   // Drive (SINAMICS parameter numbers in brackets)
-  double reference_speed_rpm = 3000.0;   // p2000
-  double max_speed_rpm = 6000.0;         // p1082
-  double reference_torque_nm = 4.0;      // p2003
-  double torque_limit_nm = 4.0;          // p1520/p1521 (symmetric)
-  double off1_ramp_down_time_s = 1.0;    // p1121, from max speed to 0
-  double off3_ramp_down_time_s = 0.2;    // p1135
-  double standstill_threshold_rpm = 20.0;  // p1226
+  double reference_speed_rpm = 3000.0;          // p2000
+  double max_speed_rpm = 6000.0;                // p1082
+  double reference_torque_nm = 4.0;             // p2003
+  double torque_limit_nm = 4.0;                 // p1520/p1521 (symmetric)
+  double off1_ramp_down_time_s = 1.0;           // p1121, from max speed to 0
+  double off3_ramp_down_time_s = 0.2;           // p1135
+  double standstill_threshold_rpm = 20.0;       // p1226
   double speed_deviation_tolerance_rpm = 90.0;  // p2163, ZSW1.8 / MELDW.8
   std::uint16_t sign_of_life_tolerance = 1;     // p0925; 0xFFFF = no monitoring
-  bool isochronous = true;               // generates and monitors sign-of-life (telegrams with STW2)
-  std::uint32_t setpoint_timeout_cycles = 20;  // link loss this long -> fault F08501
+  bool isochronous = true;                      // generates and monitors sign-of-life (telegrams with STW2)
+  std::uint32_t setpoint_timeout_cycles = 20;   // link loss this long -> fault F08501
   enum class FaultReaction : std::uint8_t { kOff1, kOff2, kOff3 };
   FaultReaction communication_fault_reaction = FaultReaction::kOff3;
 
   // Motor and load
   double speed_loop_time_constant_s = 0.002;  // closed speed loop as a first-order lag
   double motor_inertia_kgm2 = 1.0e-4;
-  double load_inertia_kgm2 = 2.0e-4;          // at the load shaft
+  double load_inertia_kgm2 = 2.0e-4;              // at the load shaft
   double viscous_friction_nm_per_rad_s = 1.0e-4;  // at the motor shaft
-  double coulomb_friction_nm = 0.02;          // at the motor shaft
-  double gear_motor_revolutions = 1.0;        // gear: motor revolutions ...
-  double gear_load_revolutions = 1.0;         // ... per load revolutions
-  double load_units_per_revolution = 360.0;   // degrees (rotary) or leadscrew pitch in mm (linear)
-  double initial_load_position = 0.0;         // load units
+  double coulomb_friction_nm = 0.02;              // at the motor shaft
+  double gear_motor_revolutions = 1.0;            // gear: motor revolutions ...
+  double gear_load_revolutions = 1.0;             // ... per load revolutions
+  double load_units_per_revolution = 360.0;       // degrees (rotary) or leadscrew pitch in mm (linear)
+  double initial_load_position = 0.0;             // load units
 
-  SimulatedEncoderParameters encoder1{};      // G1: motor encoder by default
+  SimulatedEncoderParameters encoder1{};  // G1: motor encoder by default
   SimulatedEncoderParameters encoder2{SimulatedEncoderParameters::Shaft::kLoad};  // G2 / separate encoder
   SimulatedMachineParameters machine{};
 };
@@ -100,7 +101,7 @@ struct MachineInputs {
 };
 
 // SINAMICS fault numbers the model raises itself.
-inline constexpr std::uint32_t kFaultSignOfLife = 1912;     // clock-cycle synchronism: sign-of-life failure
+inline constexpr std::uint32_t kFaultSignOfLife = 1912;       // clock-cycle synchronism: sign-of-life failure
 inline constexpr std::uint32_t kFaultSetpointTimeout = 8501;  // PROFINET setpoint timeout (link loss)
 inline constexpr std::uint32_t kFaultMotorEncoder = 31110;    // motor encoder error: no speed feedback
 inline constexpr std::uint32_t kFaultNoControlByPlc = 7220;   // STW1.10 dropped while switched on
@@ -141,14 +142,14 @@ class SimulatedDrive final : public DriveAdapter {
  private:
   struct EncoderState {
     bool present = false;
-    std::uint16_t control = 0;     // last Gx_STW
-    std::uint16_t status = 0;      // Gx_ZSW being reported
+    std::uint16_t control = 0;  // last Gx_STW
+    std::uint16_t status = 0;   // Gx_ZSW being reported
     std::uint32_t xist2 = 0;
-    std::uint32_t captured = 0;    // reference mark / measured value (XIST1 format)
+    std::uint32_t captured = 0;  // reference mark / measured value (XIST1 format)
     bool capture_valid = false;
     std::uint16_t error_code = 0;           // present cause (injected or detected), 0 = none
     std::uint16_t reported_error_code = 0;  // shown in XIST2 while the error bit is set
-    double revolutions_at_power_on = 0.0;  // shaft revolutions where XIST1 started counting
+    double revolutions_at_power_on = 0.0;   // shaft revolutions where XIST1 started counting
     std::uint32_t xist1_at_power_on = 0;
   };
 
@@ -156,9 +157,11 @@ class SimulatedDrive final : public DriveAdapter {
   void update_state_machine() noexcept;
   void integrate(double dt) noexcept;
   void update_encoders(double previous_load_position, double previous_motor_revolutions) noexcept;
-  void update_encoder(int index, double previous_shaft, double shaft, double previous_load, double load) noexcept;
+  void update_encoder(int index, double previous_shaft, double shaft, double previous_load,
+                      double load) noexcept;
   void encode_actuals(DeviceFrames& actual) noexcept;
-  double shaft_revolutions(const SimulatedEncoderParameters& e, double motor_revolutions, double load_position) const noexcept;
+  double shaft_revolutions(const SimulatedEncoderParameters& e, double motor_revolutions,
+                           double load_position) const noexcept;
   std::uint32_t xist1_of(int index, double shaft) const noexcept;
   void raise_fault(std::uint32_t code, SimulatedDriveParameters::FaultReaction reaction) noexcept;
   bool has_fault() const noexcept { return fault_code_ != 0; }
@@ -176,8 +179,8 @@ class SimulatedDrive final : public DriveAdapter {
   telegrams::SetpointSignals drive_sp_{};
   telegrams::SetpointSignals supplementary_sp_{};
   std::array<telegrams::SetpointSignals, 2> encoder_sp_{};
-  bool cyclic_data_ = false;          // a setpoint frame has arrived since power-on
-  bool fresh_setpoint_ = false;       // written since the last read_actual
+  bool cyclic_data_ = false;     // a setpoint frame has arrived since power-on
+  bool fresh_setpoint_ = false;  // written since the last read_actual
   std::uint32_t missed_setpoints_ = 0;
   std::uint16_t previous_stw1_ = 0;
 
@@ -196,11 +199,11 @@ class SimulatedDrive final : public DriveAdapter {
   bool link_lost_ = false;
 
   // mechanics (motor side in rad/s, load in load units)
-  double omega_ = 0.0;             // motor speed, rad/s
+  double omega_ = 0.0;  // motor speed, rad/s
   double motor_revolutions_ = 0.0;
   double load_position_ = 0.0;
-  double torque_ = 0.0;            // motor torque, Nm
-  double stall_integral_ = 0.0;    // speed-controller integral while blocked at a fixed stop
+  double torque_ = 0.0;          // motor torque, Nm
+  double stall_integral_ = 0.0;  // speed-controller integral while blocked at a fixed stop
   bool blocked_ = false;
   double external_speed_ = 0.0;
   double dsc_xist1_at_sample_ = 0.0;  // G1 counts at the cycle start (DSC reference)
@@ -218,10 +221,10 @@ class SimulatedDrive final : public DriveAdapter {
     bool g2_stw = false;
     bool dsc = false;
     bool supplementary = false;
-    double ratio = 1.0;       // motor revolutions per load revolution
-    double inertia = 0.0;     // at the motor shaft
-    double lag = 0.0;         // 1 - exp(-dt/T) of the speed loop per substep
-    double dt = 0.0;          // substep
+    double ratio = 1.0;                     // motor revolutions per load revolution
+    double inertia = 0.0;                   // at the motor shaft
+    double lag = 0.0;                       // 1 - exp(-dt/T) of the speed loop per substep
+    double dt = 0.0;                        // substep
     std::array<double, 2> xist1_scale{};    // counts per shaft revolution (linear: per step)
     std::array<double, 2> xist1_modulus{};  // 2^width
     double dsc_counts_to_motor_revolutions = 0.0;

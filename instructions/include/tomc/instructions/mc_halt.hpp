@@ -22,7 +22,10 @@ struct MC_Halt {
 
   void operator()(Axis& axis) noexcept {
     handshake_.call(
-        Execute, [&] { return axis.halt(techobjects::HaltInputs{Deceleration, Jerk, AbortAcceleration, Mode}); },
+        Execute,
+        [&] {
+          return axis.halt(techobjects::HaltInputs{Deceleration, Jerk, AbortAcceleration, Mode});
+        },
         [&](techobjects::JobId id) { return axis.job_status(id); });
     const auto& o = handshake_.outputs();
     Done = o.Done;

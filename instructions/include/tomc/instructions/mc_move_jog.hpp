@@ -32,7 +32,8 @@ struct MC_MoveJog {
     }
     if (job_ != 0) {
       const auto status = axis.job_status(job_);
-      if (status.state == techobjects::JobState::kAborted || status.state == techobjects::JobState::kUnknown) {
+      if (status.state == techobjects::JobState::kAborted ||
+          status.state == techobjects::JobState::kUnknown) {
         finish(any, true, 0);  // aborted by another job: no new jog until the inputs were released
         return;
       }
@@ -42,8 +43,8 @@ struct MC_MoveJog {
       }
       if (status.state == techobjects::JobState::kDone) job_ = 0;  // J2: at standstill after release
     }
-    const techobjects::Submission s =
-        axis.jog(job_, techobjects::JogInputs{JogForward, JogBackward, Velocity, Acceleration, Deceleration, Jerk});
+    const techobjects::Submission s = axis.jog(
+        job_, techobjects::JogInputs{JogForward, JogBackward, Velocity, Acceleration, Deceleration, Jerk});
     if (!s.accepted()) {
       job_ = 0;
       Busy = false;

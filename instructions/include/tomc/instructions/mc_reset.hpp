@@ -17,7 +17,9 @@ struct MC_Reset {
   std::uint16_t ErrorID = 0;
 
   void operator()(Axis& axis) noexcept {
-    handshake_.call(Execute, [&] { return axis.reset(Restart); }, [&](techobjects::JobId id) { return axis.job_status(id); });
+    handshake_.call(
+        Execute, [&] { return axis.reset(Restart); },
+        [&](techobjects::JobId id) { return axis.job_status(id); });
     const auto& o = handshake_.outputs();
     Done = o.Done;
     Busy = o.Busy;

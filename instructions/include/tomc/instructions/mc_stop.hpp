@@ -22,9 +22,13 @@ struct MC_Stop {
 
   void operator()(Axis& axis) noexcept {
     handshake_.call(
-        Execute, [&] { return axis.stop(techobjects::StopInputs{Mode, Deceleration, Jerk, AbortAcceleration}); },
+        Execute,
+        [&] {
+          return axis.stop(techobjects::StopInputs{Mode, Deceleration, Jerk, AbortAcceleration});
+        },
         [&](techobjects::JobId id) { return axis.job_status(id); });
-    // The lock follows the Execute level of the accepted job, also after Done (spec 03 §4.13 implementation rule).
+    // The lock follows the Execute level of the accepted job, also after Done (spec 03 §4.13 implementation
+    // rule).
     axis.stop_execute(handshake_.job(), Execute);
     const auto& o = handshake_.outputs();
     Done = o.Done;

@@ -37,12 +37,12 @@ const AlarmDefinition* find_alarm(std::uint32_t number) noexcept;
 std::span<const AlarmDefinition> alarm_definitions() noexcept;
 
 // Alarm numbers (seed-named ones and [OUR CHOICE] ones for drive communication, docs/decisions.md A1).
-inline constexpr std::uint32_t kAlarmDriveFault = 401;            // drive reports a fault (ZSW1.3)
-inline constexpr std::uint32_t kAlarmDriveNotReady = 402;         // drive dropped "control requested" / left S4
-inline constexpr std::uint32_t kAlarmDriveCommunication = 405;    // no fresh frames (link lost)
-inline constexpr std::uint32_t kAlarmDriveSignOfLife = 406;       // drive sign-of-life failed
-inline constexpr std::uint32_t kAlarmModuloTooFast = 412;         // seed L3946
-inline constexpr std::uint32_t kAlarmDriveSto = 421;              // seed L2712
+inline constexpr std::uint32_t kAlarmDriveFault = 401;          // drive reports a fault (ZSW1.3)
+inline constexpr std::uint32_t kAlarmDriveNotReady = 402;       // drive dropped "control requested" / left S4
+inline constexpr std::uint32_t kAlarmDriveCommunication = 405;  // no fresh frames (link lost)
+inline constexpr std::uint32_t kAlarmDriveSignOfLife = 406;     // drive sign-of-life failed
+inline constexpr std::uint32_t kAlarmModuloTooFast = 412;       // seed L3946
+inline constexpr std::uint32_t kAlarmDriveSto = 421;            // seed L2712
 inline constexpr std::uint32_t kAlarmDynamicsLimitedVelocity = 501;  // seed §10.3.15
 inline constexpr std::uint32_t kAlarmDynamicsLimitedAcceleration = 502;
 inline constexpr std::uint32_t kAlarmDynamicsLimitedJerk = 503;
@@ -52,7 +52,7 @@ inline constexpr std::uint32_t kAlarmHardwareLimit = 531;
 inline constexpr std::uint32_t kAlarmSoftwareLimitReached = 533;
 inline constexpr std::uint32_t kAlarmSoftwareLimitExceeded = 534;
 inline constexpr std::uint32_t kAlarmPositioning = 541;
-inline constexpr std::uint32_t kAlarmDriveSafeStop = 550;         // seed L2719
+inline constexpr std::uint32_t kAlarmDriveSafeStop = 550;  // seed L2719
 
 struct PendingAlarm {
   std::uint32_t number = 0;
@@ -73,8 +73,9 @@ struct AlarmEvent {
   AlarmReaction reaction = AlarmReaction::kNone;
 };
 
-// The last kCapacity alarm events of a TO, oldest overwritten first. Written on the cycle; read by diagnostics
-// through copy_since() on the same thread (a snapshot publisher hands it to other threads, issue 7).
+// The last kCapacity alarm events of a TO, oldest overwritten first. Written on the cycle; read by
+// diagnostics through copy_since() on the same thread (a snapshot publisher hands it to other threads, issue
+// 7).
 class AlarmLog {
  public:
   static constexpr std::size_t kCapacity = 256;
@@ -98,15 +99,16 @@ class AlarmList {
   // Raises an alarm (once: an alarm already pending with the same number keeps its first record). Returns
   // false for an unknown number or a full list (then the most severe pending reaction still governs).
   bool raise(std::uint32_t number, std::uint32_t additional_value, std::uint64_t cycle) noexcept;
-  bool raise(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction, std::uint64_t cycle) noexcept;
+  bool raise(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction,
+             std::uint64_t cycle) noexcept;
   // MC_Reset: clears W and F alarms; with restart also R alarms (spec 01 §7). Returns how many were cleared.
   std::size_t acknowledge(bool restart, std::uint64_t cycle) noexcept;
 
   bool pending(std::uint32_t number) const noexcept;
   bool any_error() const noexcept;    // F or R pending (ErrorWord side)
   bool any_warning() const noexcept;  // W pending (WarningWord side)
-  // The strongest reaction pending (remove enable 4 > emergency 3 > max 2 > current 1; follow setpoint 5 counts
-  // as remove-enable-like blocking; none 0).
+  // The strongest reaction pending (remove enable 4 > emergency 3 > max 2 > current 1; follow setpoint 5
+  // counts as remove-enable-like blocking; none 0).
   AlarmReaction strongest_reaction() const noexcept;
   // What <TO>.ErrorDetail shows: the highest-priority pending alarm (strongest reaction, then the oldest).
   const PendingAlarm* error_detail() const noexcept;

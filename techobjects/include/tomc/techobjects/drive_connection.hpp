@@ -1,7 +1,8 @@
 #pragma once
-// The PROFIdrive side of an axis technology object (spec 01 §3, §6; spec 06 §4, §5): decodes the actual frames
-// of its device, follows the drive state machine with the STW1 sequence, runs both sign-of-life directions and
-// the link supervision, and encodes the setpoint frames. The speed/positioning axes of later layers own one.
+// The PROFIdrive side of an axis technology object (spec 01 §3, §6; spec 06 §4, §5): decodes the actual
+// frames of its device, follows the drive state machine with the STW1 sequence, runs both sign-of-life
+// directions and the link supervision, and encodes the setpoint frames. The speed/positioning axes of later
+// layers own one.
 
 #include <cstdint>
 #include <string>
@@ -47,7 +48,7 @@ class DriveConnection {
   // ---- what the TO asks of the drive ----
   void request(telegrams::DriveRequest request) noexcept { request_ = request; }
   telegrams::DriveRequest requested() const noexcept { return request_; }
-  void acknowledge() noexcept;                 // one STW1.7 edge, and resets the sign-of-life supervision
+  void acknowledge() noexcept;  // one STW1.7 edge, and resets the sign-of-life supervision
   void set_speed_setpoint(double rpm) noexcept { speed_setpoint_rpm_ = rpm; }
   double speed_setpoint() const noexcept { return speed_setpoint_rpm_; }
   // Signals beyond STW1/STW2 sign-of-life/NSOLL (Gx_STW, MOMRED, XERR, KPC, telegram 750, user STW bits).
@@ -59,7 +60,9 @@ class DriveConnection {
   // ---- what the drive reports ----
   const telegrams::ActualSignals& drive_actual() const noexcept { return drive_act_; }
   const telegrams::ActualSignals& supplementary_actual() const noexcept { return supplementary_act_; }
-  const telegrams::ActualSignals& encoder_actual(int index) const noexcept { return encoder_act_[index == 0 ? 0 : 1]; }
+  const telegrams::ActualSignals& encoder_actual(int index) const noexcept {
+    return encoder_act_[index == 0 ? 0 : 1];
+  }
   const telegrams::DriveStatus& drive_status() const noexcept { return status_; }
   bool in_operation() const noexcept;  // StatusDrive.InOperation: S4 (spec 06 §4.3 [UNCONFIRMED] -> ZSW1.2)
   bool communication_ok() const noexcept { return communication_fault_ == CommunicationFault::kNone; }

@@ -10,26 +10,28 @@ namespace tomc::techobjects::error_id {
 
 inline constexpr std::uint16_t kNone = 0x0000;
 // From the manual (spec 03 §5):
-inline constexpr std::uint16_t kAbortedByAlarmReaction = 0x8001;  // a technology alarm's stop reaction ended the job
-inline constexpr std::uint16_t kJogWrongDirection = 0x8007;       // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kAbortedByAlarmReaction =
+    0x8001;  // a technology alarm's stop reaction ended the job
+inline constexpr std::uint16_t kJogWrongDirection = 0x8007;  // JogForward and JogBackward both TRUE
 // tomc's own (spec 03 §5 [IMPL]):
-inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;    // §9.19 matrix cell "N"
-inline constexpr std::uint16_t kLockedByStop = 0x8102;            // an MC_Stop with Execute = TRUE blocks motion jobs
-inline constexpr std::uint16_t kAxisNotEnabled = 0x8103;          // the TO is not enabled (MC_Power.Status = FALSE)
-inline constexpr std::uint16_t kAxisBlockedByAlarm = 0x8104;      // an alarm reaction blocks the TO
-inline constexpr std::uint16_t kInvalidVelocity = 0x8110;         // Velocity = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidAcceleration = 0x8111;     // Acceleration = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidDeceleration = 0x8112;     // Deceleration = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidJerk = 0x8113;             // Jerk not finite
-inline constexpr std::uint16_t kInvalidMode = 0x8114;             // Mode out of range (e.g. MC_Stop.Mode = 1)
-inline constexpr std::uint16_t kInvalidDirection = 0x8115;        // Direction out of range
-inline constexpr std::uint16_t kInvalidStartMode = 0x8116;        // MC_Power.StartMode not 0/1
-inline constexpr std::uint16_t kInvalidStopMode = 0x8117;         // MC_Power.StopMode not 0..3
+inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"
+inline constexpr std::uint16_t kLockedByStop = 0x8102;    // an MC_Stop with Execute = TRUE blocks motion jobs
+inline constexpr std::uint16_t kAxisNotEnabled = 0x8103;  // the TO is not enabled (MC_Power.Status = FALSE)
+inline constexpr std::uint16_t kAxisBlockedByAlarm = 0x8104;   // an alarm reaction blocks the TO
+inline constexpr std::uint16_t kInvalidVelocity = 0x8110;      // Velocity = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidAcceleration = 0x8111;  // Acceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidDeceleration = 0x8112;  // Deceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidJerk = 0x8113;          // Jerk not finite
+inline constexpr std::uint16_t kInvalidMode = 0x8114;          // Mode out of range (e.g. MC_Stop.Mode = 1)
+inline constexpr std::uint16_t kInvalidDirection = 0x8115;     // Direction out of range
+inline constexpr std::uint16_t kInvalidStartMode = 0x8116;     // MC_Power.StartMode not 0/1
+inline constexpr std::uint16_t kInvalidStopMode = 0x8117;      // MC_Power.StopMode not 0..3
 inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.Restart while enabled or busy
-inline constexpr std::uint16_t kInvalidParameterNumber = 0x8130;  // MC_WriteParameter: index not writable on this TO
-inline constexpr std::uint16_t kInvalidParameterValue = 0x8131;   // MC_WriteParameter: value not permitted
-inline constexpr std::uint16_t kInvalidBitMask = 0x8132;          // MC_SetAxisSTW: mask outside the writable bits
-inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;         // MC_SetAxisSTW on a virtual/simulated axis
+inline constexpr std::uint16_t kInvalidParameterNumber =
+    0x8130;  // MC_WriteParameter: index not writable on this TO
+inline constexpr std::uint16_t kInvalidParameterValue = 0x8131;  // MC_WriteParameter: value not permitted
+inline constexpr std::uint16_t kInvalidBitMask = 0x8132;   // MC_SetAxisSTW: mask outside the writable bits
+inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;  // MC_SetAxisSTW on a virtual/simulated axis
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

@@ -9,12 +9,12 @@ namespace tomc::techobjects {
 using JobId = std::uint32_t;  // 0 = no job
 
 enum class JobState : std::uint8_t {
-  kUnknown,   // no such job (never submitted, or its record was reused long ago)
-  kPending,   // accepted, waiting behind a running job (BufferMode 1): Busy, not Active
-  kActive,    // controls the axis: Busy, Active
-  kDone,      // completed: Done
-  kAborted,   // ended by another job: CommandAborted
-  kError,     // ended by an error (alarm reaction, invalid state): Error + ErrorID
+  kUnknown,  // no such job (never submitted, or its record was reused long ago)
+  kPending,  // accepted, waiting behind a running job (BufferMode 1): Busy, not Active
+  kActive,   // controls the axis: Busy, Active
+  kDone,     // completed: Done
+  kAborted,  // ended by another job: CommandAborted
+  kError,    // ended by an error (alarm reaction, invalid state): Error + ErrorID
 };
 
 struct JobStatus {

@@ -21,7 +21,7 @@ struct RealTimeRunnerConfig {
 
 struct RunnerStatistics {
   std::uint64_t cycles = 0;
-  std::uint64_t overruns = 0;          // cycles that ended after the next deadline (those periods are skipped)
+  std::uint64_t overruns = 0;  // cycles that ended after the next deadline (those periods are skipped)
   std::uint64_t skipped_periods = 0;
   // Wake-up latency (actual wake-up minus deadline), microseconds, at 1 us resolution up to kMaxJitterUs.
   double jitter_min_us = 0.0;

@@ -22,7 +22,7 @@ struct RuntimeConfig {
 
 // Virtual time of the runtime.
 struct CycleClock {
-  std::uint64_t servo_cycles = 0;        // completed MC_Servo runs before the current one
+  std::uint64_t servo_cycles = 0;  // completed MC_Servo runs before the current one
   std::uint64_t interpolator_cycles = 0;
   double servo_cycle_s = 0.001;
   double interpolator_cycle_s = 0.001;
@@ -42,8 +42,9 @@ class TechnologyObject {
  public:
   virtual ~TechnologyObject() = default;
   virtual std::string_view name() const noexcept = 0;
-  virtual void servo(const CycleClock& clock) noexcept = 0;        // MC_Servo: actual values, control, setpoints
-  virtual void interpolate(const CycleClock& clock) noexcept = 0;  // MC_Interpolator: jobs, profiles, monitoring
+  virtual void servo(const CycleClock& clock) noexcept = 0;  // MC_Servo: actual values, control, setpoints
+  virtual void interpolate(
+      const CycleClock& clock) noexcept = 0;  // MC_Interpolator: jobs, profiles, monitoring
 };
 
 class Runtime {

@@ -95,7 +95,8 @@ class SpeedAxis final : public TechnologyObject {
   Submission move_velocity(const MoveVelocityInputs& in) noexcept;
   Submission halt(const HaltInputs& in) noexcept;
   Submission stop(const StopInputs& in) noexcept;
-  // MC_Stop's Execute level: while TRUE for an accepted MC_Stop, new motion jobs are rejected (spec 03 §4.13).
+  // MC_Stop's Execute level: while TRUE for an accepted MC_Stop, new motion jobs are rejected (spec 03
+  // §4.13).
   void stop_execute(JobId job, bool execute) noexcept;
   // MC_MoveJog: level-class. Starts a jog job on the first call with an input set, updates it on later calls.
   Submission jog(JobId running, const JogInputs& in) noexcept;
@@ -115,7 +116,16 @@ class SpeedAxis final : public TechnologyObject {
   JobStatus job_status(JobId id) const noexcept;
 
  private:
-  enum class JobKind : std::uint8_t { kNone, kReset, kMoveVelocity, kJog, kHalt, kStop, kSetAxisStw, kWriteParameter };
+  enum class JobKind : std::uint8_t {
+    kNone,
+    kReset,
+    kMoveVelocity,
+    kJog,
+    kHalt,
+    kStop,
+    kSetAxisStw,
+    kWriteParameter
+  };
   enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
 
   struct JobRecord {
@@ -148,7 +158,7 @@ class SpeedAxis final : public TechnologyObject {
   std::optional<std::uint16_t> resolve_dynamics(double acceleration, double deceleration, double jerk,
                                                 ProfileLimits& out) noexcept;
   std::uint16_t arbitrate_motion(NewJob row) noexcept;  // 0 = accepted (aborts applied)
-  void abort_motion(std::uint16_t error_id) noexcept;     // ends the base motion (0 = CommandAborted)
+  void abort_motion(std::uint16_t error_id) noexcept;   // ends the base motion (0 = CommandAborted)
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept;
   void supervise_drive() noexcept;

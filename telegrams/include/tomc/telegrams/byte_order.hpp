@@ -1,6 +1,7 @@
 #pragma once
 // Byte order of the PZD image on one connection (spec 06 §1.1).
-// PROFINET itself is big-endian; a gateway may present the image swapped, so the order is chosen per connection.
+// PROFINET itself is big-endian; a gateway may present the image swapped, so the order is chosen per
+// connection.
 
 #include <cstddef>
 #include <cstdint>
@@ -24,7 +25,8 @@ inline std::uint16_t read_word(const std::byte* p, ByteOrder order) noexcept {
   const auto b0 = static_cast<std::uint16_t>(p[0]);
   const auto b1 = static_cast<std::uint16_t>(p[1]);
   const bool low_byte_first = order == ByteOrder::kLittleBytes || order == ByteOrder::kLittle;
-  return low_byte_first ? static_cast<std::uint16_t>(b0 | (b1 << 8)) : static_cast<std::uint16_t>((b0 << 8) | b1);
+  return low_byte_first ? static_cast<std::uint16_t>(b0 | (b1 << 8))
+                        : static_cast<std::uint16_t>((b0 << 8) | b1);
 }
 
 inline void write_word(std::byte* p, std::uint16_t value, ByteOrder order) noexcept {

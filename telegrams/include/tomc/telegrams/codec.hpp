@@ -2,8 +2,8 @@
 // Encodes and decodes one telegram of one direction into caller-provided bytes. No allocation, no
 // exceptions: every outcome is a TelegramError. Configure once (create), then call per cycle.
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 

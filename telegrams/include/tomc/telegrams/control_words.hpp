@@ -46,7 +46,7 @@ inline constexpr BitField kSignOfLifeField{12, 4};
 
 // STW1, spec 06 §3.1. The TO owns bits 0..7 and 10; 8, 9, 11..15 belong to MC_SetAxisSTW (seed §9.14.1).
 enum class Stw1Bit : std::uint8_t {
-  kOn = 0,  // 1 = ON, 0 = OFF1
+  kOn = 0,           // 1 = ON, 0 = OFF1
   kNoCoastStop = 1,  // 0 = OFF2
   kNoQuickStop = 2,  // 0 = OFF3
   kEnableOperation = 3,
@@ -65,7 +65,8 @@ enum class Stw1Bit : std::uint8_t {
 };
 using Stw1 = Word<Stw1Bit>;
 
-// ZSW1, spec 06 §3.2. Bits 11..15 differ per drive and telegram ([CONFLICT]); the state logic never uses them.
+// ZSW1, spec 06 §3.2. Bits 11..15 differ per drive and telegram ([CONFLICT]); the state logic never uses
+// them.
 enum class Zsw1Bit : std::uint8_t {
   kReadyToSwitchOn = 0,
   kReady = 1,
@@ -127,7 +128,7 @@ enum class EncoderControlBit : std::uint8_t {
   kFunction2 = 1,
   kFunction3 = 2,
   kFunction4 = 3,
-  kMeasurementMode = 7,  // 0 = reference-mark search, 1 = flying measurement
+  kMeasurementMode = 7,     // 0 = reference-mark search, 1 = flying measurement
   kHomePositionShift = 11,  // encoder profile: 0 = set, 1 = shift
   kRequestSetHomePosition = 12,
   kRequestAbsoluteValue = 13,

@@ -9,14 +9,14 @@
 namespace tomc::telegrams {
 
 enum class DriveState : std::uint8_t {
-  kS0NotReady,              // power-on / no control by PLC
+  kS0NotReady,  // power-on / no control by PLC
   kS1SwitchingOnInhibited,
   kS2ReadyForSwitchingOn,
   kS3SwitchedOn,
   kS4Operation,
-  kS5aRampStop,             // OFF1 ramp (from ZSW1 indistinguishable from S3; decode reports S3)
-  kS5bQuickStop,            // OFF3 ramp
-  kFault,                   // ZSW1.3: fault present, until acknowledged
+  kS5aRampStop,   // OFF1 ramp (from ZSW1 indistinguishable from S3; decode reports S3)
+  kS5bQuickStop,  // OFF3 ramp
+  kFault,         // ZSW1.3: fault present, until acknowledged
 };
 std::string_view to_string(DriveState state) noexcept;
 
@@ -72,7 +72,8 @@ DriveState next_drive_state(DriveState state, std::uint16_t stw1, bool standstil
 
 // Drive side, spec 06 §4.2: ZSW1 as the DevKit reports it; drive-specific bits 8, 10..15 are not set.
 // `cyclic_data` is false only before the first cyclic setpoint frame (ZSW1 = 0 then).
-std::uint16_t zsw1_for(DriveState state, std::uint16_t stw1, bool cyclic_data, bool fault, bool warning) noexcept;
+std::uint16_t zsw1_for(DriveState state, std::uint16_t stw1, bool cyclic_data, bool fault,
+                       bool warning) noexcept;
 
 // Controller side: what the controller wants the drive to do.
 enum class DriveRequest : std::uint8_t {

@@ -12,7 +12,8 @@ namespace tomc::telegrams {
 // Signed change of Gx_XIST1 between two samples of a counter `width_bits` wide (1..32). 32 is the TO default
 // (BehaviorGx_XIST1 = 1); a narrower width is evaluated modulo 2^width (BehaviorGx_XIST1 = 0, seed L2270).
 // Valid while the true movement per cycle is below 2^(width-1) counts.
-std::int64_t xist1_delta(std::uint32_t previous, std::uint32_t current, std::uint8_t width_bits = 32) noexcept;
+std::int64_t xist1_delta(std::uint32_t previous, std::uint32_t current,
+                         std::uint8_t width_bits = 32) noexcept;
 
 // Accumulates XIST1 deltas into a 64-bit count that never wraps (spec 06 §6.1 position computation).
 class IncrementalCount {
@@ -34,7 +35,8 @@ class IncrementalCount {
 // Counts per encoder revolution in Gx_XIST1 format: StepsPerRevolution * 2^FineResolutionXist1.
 inline constexpr double counts_per_revolution(std::uint32_t steps_per_revolution,
                                               std::uint8_t fine_resolution_bits) noexcept {
-  return static_cast<double>(steps_per_revolution) * static_cast<double>(std::uint64_t{1} << fine_resolution_bits);
+  return static_cast<double>(steps_per_revolution) *
+         static_cast<double>(std::uint64_t{1} << fine_resolution_bits);
 }
 
 // Gx_STW requests, spec 06 §6.3 (TV23). `functions` is the 4-bit mask of bits 0..3 (function 1 = 0x1).
@@ -52,10 +54,10 @@ std::uint16_t acknowledge_error() noexcept;                                  // 
 // What Gx_XIST2 holds, spec 06 §6.2, from the Gx_STW last sent and the Gx_ZSW received.
 enum class Xist2Content : std::uint8_t {
   kNotValid,
-  kErrorCode,        // Gx_ZSW.15: code in the low 16 bits (§6.4); the position must not be used
-  kReferenceMark,    // value available after "read value" in reference-mark mode (XIST1 format)
-  kMeasuredValue,    // value available after "read value" in flying-measurement mode (XIST1 format)
-  kAbsoluteValue,    // Gx_ZSW.13 after Gx_STW.13 (FineResolutionXist2 format)
+  kErrorCode,      // Gx_ZSW.15: code in the low 16 bits (§6.4); the position must not be used
+  kReferenceMark,  // value available after "read value" in reference-mark mode (XIST1 format)
+  kMeasuredValue,  // value available after "read value" in flying-measurement mode (XIST1 format)
+  kAbsoluteValue,  // Gx_ZSW.13 after Gx_STW.13 (FineResolutionXist2 format)
 };
 std::string_view to_string(Xist2Content content) noexcept;
 Xist2Content xist2_content(EncoderControlWord request, EncoderStatusWord status) noexcept;

@@ -10,11 +10,11 @@ namespace tomc::telegrams {
 
 enum class TelegramError : std::uint8_t {
   kNone,
-  kUnknownTelegram,         // not one of 1, 2, 3, 4, 5, 6, 81, 83, 102, 103, 105, 106, 750
-  kTelegram104NotDefined,   // spec 06 §2.9: 104 exists for no target of this project
-  kFrameLengthMismatch,     // the byte span does not have the telegram's length
-  kWrongDirection,          // e.g. setpoint signals given to an actual-value codec
-  kInvalidOption,           // a codec option out of its range (e.g. telegram 83 NIST_B offset)
+  kUnknownTelegram,        // not one of 1, 2, 3, 4, 5, 6, 81, 83, 102, 103, 105, 106, 750
+  kTelegram104NotDefined,  // spec 06 §2.9: 104 exists for no target of this project
+  kFrameLengthMismatch,    // the byte span does not have the telegram's length
+  kWrongDirection,         // e.g. setpoint signals given to an actual-value codec
+  kInvalidOption,          // a codec option out of its range (e.g. telegram 83 NIST_B offset)
 };
 
 std::string_view describe(TelegramError error) noexcept;
@@ -23,7 +23,7 @@ std::string_view describe(TelegramError error) noexcept;
 template <typename T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) noexcept : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  Result(T value) noexcept : value_(std::move(value)) {}   // NOLINT(google-explicit-constructor)
   Result(TelegramError error) noexcept : error_(error) {}  // NOLINT(google-explicit-constructor)
 
   bool ok() const noexcept { return error_ == TelegramError::kNone; }

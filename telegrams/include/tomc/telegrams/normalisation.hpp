@@ -1,8 +1,9 @@
 #pragma once
 // Physical value <-> wire value conversions (spec 06 §1.2, §7, §8, §9).
-// Rule [OUR CHOICE] spec 06 §1.2: raw = round_half_away_from_zero(value / reference * 2^n), then saturate to the
-// representable range. A non-finite value gives 0 (never a random setpoint); a reference <= 0 or non-finite
-// also gives 0: references are validated when a connection is configured, this is only the last guard.
+// Rule [OUR CHOICE] spec 06 §1.2: raw = round_half_away_from_zero(value / reference * 2^n), then saturate to
+// the representable range. A non-finite value gives 0 (never a random setpoint); a reference <= 0 or
+// non-finite also gives 0: references are validated when a connection is configured, this is only the last
+// guard.
 
 #include <cstdint>
 

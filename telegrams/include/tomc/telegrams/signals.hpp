@@ -52,10 +52,10 @@ enum class Signal : std::uint8_t {
 inline constexpr std::size_t kSignalCount = static_cast<std::size_t>(Signal::M_ACT) + 1;
 
 enum class SignalKind : std::uint8_t {
-  kWord,       // V2 bit string (control/status word); named bits in control_words.hpp
-  kNormalised, // N2/N4 signed normalised value (0x4000 / 0x40000000 = 100 %)
-  kSigned,     // I32 (XERR, KPC)
-  kUnsigned,   // U16/U32 (MOMRED, XIST1/XIST2 counts)
+  kWord,        // V2 bit string (control/status word); named bits in control_words.hpp
+  kNormalised,  // N2/N4 signed normalised value (0x4000 / 0x40000000 = 100 %)
+  kSigned,      // I32 (XERR, KPC)
+  kUnsigned,    // U16/U32 (MOMRED, XIST1/XIST2 counts)
 };
 
 struct SignalInfo {
@@ -67,7 +67,9 @@ struct SignalInfo {
 };
 
 const SignalInfo& info(Signal signal) noexcept;
-inline std::string_view name(Signal signal) noexcept { return info(signal).name; }
+inline std::string_view name(Signal signal) noexcept {
+  return info(signal).name;
+}
 // Exact identifier, case-sensitive; "M_ADD" is accepted for M_ADD1.
 std::optional<Signal> parse_signal(std::string_view text) noexcept;
 
