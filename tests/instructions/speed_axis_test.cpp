@@ -549,4 +549,45 @@ TEST(SpeedAxis, PriorityCellsOfTheSpeedAxisInstructions) {
   EXPECT_GT(m.run_until([&] { return m.stop.Done; }, 1000), 0);
 }
 
+// spec 04 §3.11 / spec 01 §5.4–§5.5: the velocity unit, the load gear (motor : load revolutions) and the drive
+// direction inversion reach the drive as the matching motor speed.
+TEST(SpeedAxis, UnitsLoadGearAndInversion) {
+  struct Case {
+    std::uint32_t unit;
+    double velocity;  // in the unit
+    std::uint32_t numerator, denominator;
+    bool inverse;
+    double motor_rpm;  // expected at the drive
+  } cases[] = {
+      {techobjects::unit_code::kPerMinute, 1500.0, 1, 1, false, 1500.0},
+      {techobjects::unit_code::kPerSecond, 25.0, 1, 1, false, 1500.0},
+      {techobjects::unit_code::kPerHour, 90000.0, 1, 1, false, 1500.0},
+      {techobjects::unit_code::kPerMinute, 750.0, 2, 1, false, 1500.0},
+      {techobjects::unit_code::kPerMinute, 1500.0, 1, 1, true, -1500.0},
+  };
+  for (const auto& c : cases) {
+    auto data = trapezoid_data();
+    data.Units.VelocityUnit = c.unit;
+    data.LoadGear.Numerator = c.numerator;
+    data.LoadGear.Denominator = c.denominator;
+    data.Actor.InverseDirection = c.inverse;
+    // Limits and defaults in the same unit (the data block is in the configured unit).
+    const double per_minute = c.unit == techobjects::unit_code::kPerSecond ? 1.0 / 60.0
+                              : c.unit == techobjects::unit_code::kPerHour ? 60.0
+                                                                           : 1.0;
+    data.DynamicLimits.MaxVelocity = 3000.0 * per_minute;
+    data.DynamicLimits.Velocity = 3000.0 * per_minute;
+    SpeedAxisMachine m(2, data);
+    ASSERT_GT(m.enable(), 0);
+    m.move.Velocity = c.velocity;
+    m.move.Acceleration = 100.0;
+    m.move.Execute = true;
+    ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 2000), 0);
+    m.run(30);
+    EXPECT_NEAR(m.drive->motor_speed_rpm(), c.motor_rpm, 1.0) << c.unit << " " << c.numerator << " " << c.inverse;
+    EXPECT_NEAR(m.axis->data().ActualSpeed, c.motor_rpm, 1.0);
+    EXPECT_DOUBLE_EQ(m.axis->data().Velocity, c.velocity);
+  }
+}
+
 }  // namespace
