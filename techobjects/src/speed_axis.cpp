@@ -383,6 +383,10 @@ Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double valu
 // ---------------------------------------------------------------------------------------------------------
 // Alarms
 
+bool SpeedAxis::inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept {
+  return alarms_.raise(number, additional_value, reaction, cycle_);
+}
+
 void SpeedAxis::raise(std::uint32_t number, std::uint32_t additional) noexcept {
   (void)alarms_.raise(number, additional, cycle_);
 }

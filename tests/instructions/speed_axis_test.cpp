@@ -590,4 +590,113 @@ TEST(SpeedAxis, UnitsLoadGearAndInversion) {
   }
 }
 
+// spec 02 §3.5: alarm reactions 1/2/3 brake with the current dynamics, the maximum dynamics or the emergency
+// ramp; the TO stays enabled but blocked; the motion job ends with 16#8001; MC_Reset unblocks.
+TEST(SpeedAxis, AlarmReactionsWithBrakingRamps) {
+  struct Case {
+    techobjects::AlarmReaction reaction;
+    int ramp_cycles;  // 25 1/s at: the job's 50 1/s², MaxDeceleration 100, EmergencyDeceleration 200
+  } cases[] = {{techobjects::AlarmReaction::kStopCurrentDynamics, 500},
+               {techobjects::AlarmReaction::kStopMaxDynamics, 250},
+               {techobjects::AlarmReaction::kStopEmergencyRamp, 125}};
+  for (const auto& c : cases) {
+    SpeedAxisMachine m(2, trapezoid_data());
+    ASSERT_GT(m.enable(), 0);
+    m.move.Velocity = 1500.0;
+    m.move.Acceleration = 100.0;
+    m.move.Deceleration = 50.0;
+    m.move.Execute = true;
+    ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+    // Raised before the cycle: the interpolator of that cycle applies the reaction (issue 4: in the same cycle).
+    ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmSoftwareLimitReached, 0, c.reaction));
+    m.run(1);
+    EXPECT_TRUE(m.move.Error);
+    EXPECT_EQ(m.move.ErrorID, eid::kAbortedByAlarmReaction);
+    EXPECT_EQ(m.axis->data().ErrorDetail.Reaction, static_cast<std::int32_t>(c.reaction));
+    EXPECT_TRUE(status_bit(m, techobjects::StatusWordBit::kDecelerating));
+    const int cycles = m.run_until([&] { return m.axis->data().Velocity == 0.0; }, 2000);
+    EXPECT_EQ(cycles + 1, c.ramp_cycles) << static_cast<int>(c.reaction);
+    // Enabled but blocked: Status stays, new jobs are refused until acknowledged.
+    EXPECT_TRUE(m.power.Status);
+    m.move.Execute = false;
+    m.run(1);
+    m.move.Execute = true;
+    m.run(1);
+    EXPECT_EQ(m.move.ErrorID, eid::kAxisBlockedByAlarm);
+    m.move.Execute = false;
+    m.reset.Execute = true;
+    m.run(2);
+    EXPECT_TRUE(m.reset.Done);
+    m.move.Execute = true;
+    m.run(1);
+    EXPECT_TRUE(m.move.Busy);
+  }
+}
+
+// seed 004 §6.9.4 example 2: MC_Stop Mode 3 is active and an alarm with reaction 2 comes: the max-dynamics stop
+// replaces it and MC_Stop reports CommandAborted (not Error).
+TEST(SpeedAxis, HeavierAlarmReactionReplacesMcStop) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  m.stop.Mode = 3;
+  m.stop.Deceleration = 10.0;
+  m.stop.Execute = true;
+  m.run(10);
+  ASSERT_TRUE(m.stop.Busy);
+  ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmSoftwareLimitReached, 0,
+                                   techobjects::AlarmReaction::kStopMaxDynamics));
+  m.run(1);
+  EXPECT_TRUE(m.stop.CommandAborted);
+  EXPECT_FALSE(m.stop.Error);
+  // The rest brakes with MaxDeceleration 100 1/s² instead of 10.
+  EXPECT_LT(m.run_until([&] { return m.axis->data().Velocity == 0.0; }, 2000), 260);
+}
+
+// seed 004 §6.9.4 example 1: an alarm with reaction 2 is active and MC_Stop Mode 0 comes: the emergency stop
+// takes over; MC_Stop is Done at standstill. A lighter MC_Stop (Mode 3) is not accepted: CommandAborted.
+TEST(SpeedAxis, HeavierMcStopReplacesAlarmReaction) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmSoftwareLimitReached, 0,
+                                   techobjects::AlarmReaction::kStopMaxDynamics));
+  m.run(2);
+  m.stop.Mode = 3;
+  m.stop.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.stop.CommandAborted);
+  m.stop.Execute = false;
+  m.run(1);
+  m.stop.Mode = 0;
+  m.stop.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.stop.Busy);
+  // 25 1/s braked from the start at 100 1/s² for 4 cycles (0.4 1/s), the rest at 200 1/s²: about 123 cycles.
+  const int cycles = m.run_until([&] { return m.stop.Done; }, 1000);
+  EXPECT_NEAR(cycles, 123, 2);
+}
+
+// spec 02 §1.1 reaction 5: the setpoint follows the actual value; no motion job runs.
+TEST(SpeedAxis, FollowSetpointReaction) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 600.0;
+  m.move.Acceleration = 100.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
+  m.run(20);
+  ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmDriveSafeStop, 0, techobjects::AlarmReaction::kFollowSetpoint));
+  m.run(1);
+  EXPECT_TRUE(m.move.Error);
+  EXPECT_NEAR(m.axis->data().Velocity, m.axis->data().ActualSpeed, 1e-6);  // load = motor here (gear 1:1)
+  EXPECT_FALSE(m.axis->inject_alarm(999, 0, techobjects::AlarmReaction::kNone));
+}
+
 }  // namespace

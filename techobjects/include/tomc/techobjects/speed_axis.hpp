@@ -86,6 +86,10 @@ class SpeedAxis final : public TechnologyObject {
   WriteResult write_start_value(std::string_view path, double value) noexcept;
   double read(std::string_view path) const noexcept;  // NaN for an unknown path; bits as "StatusWord.X5"
   const AlarmList& alarms() const noexcept { return alarms_; }
+  // Simulation and commissioning: raise a technology alarm as if its cause had occurred, with the reaction it
+  // would carry (for configurable reactions). Scenarios and tests use it to exercise every alarm reaction.
+  // False for an alarm number tomc does not define.
+  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
   const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
 
   // ---- jobs (called by instructions from the user program) ----
