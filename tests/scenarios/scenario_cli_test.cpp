@@ -1,0 +1,174 @@
+// `tomc sim` as a user runs it: exit status 0 / 1 / 2, problems on stderr naming the JSON path, the trace on
+// stdout or in --out (docs/scenarios.md "Exit status").
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct SimRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class ScenarioCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("tomc_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const auto p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  SimRun sim(const std::string& arguments) {
+    const auto out = dir_ / "stdout.txt";
+    const auto err = dir_ / "stderr.txt";
+    const std::string command =
+        std::string(TOMC_BINARY) + " sim " + arguments + " >" + out.string() + " 2>" + err.string();
+    SimRun r;
+    const int raw = std::system(command.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+  // A valid scenario with one part replaced.
+  std::string scenario(const std::string& config = "{}", const std::string& type = "TO_SpeedAxis",
+                       const std::string& instruction = "MC_Power",
+                       const std::string& trace = R"(["p.Status"])", const std::string& expect = "[]") {
+    return R"({ "cycle_time": 0.001, "cycles": 20,
+      "technology_objects": [ { "name": "Axis1", "type": ")" +
+           type + R"(", "config": )" + config + R"(, "drive": { "telegram": 2 } } ],
+      "timeline": [ { "cycle": 0, "instance": "p", "instruction": ")" +
+           instruction + R"(", "axis": "Axis1" } ],
+      "trace": )" +
+           trace + R"(, "expect": )" + expect + "}";
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(ScenarioCli, TraceOnStdoutAndExitZero) {
+  const SimRun r = sim(write("ok.json", scenario()));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(r.out.rfind("cycle,time,p.Status\n0,0,0\n1,0.001,0\n", 0), 0u) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 21);
+}
+
+TEST_F(ScenarioCli, OutFileAndSummary) {
+  const std::string csv = (dir_ / "trace.csv").string();
+  SimRun r = sim(write("ok.json", scenario()) + " --out " + csv);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("20 cycles, 0 expected values checked, 0 failed; trace in " + csv), std::string::npos)
+      << r.out;
+  EXPECT_EQ(slurp(csv).rfind("cycle,time,p.Status\n", 0), 0u);
+  r = sim(write("ok2.json", scenario()) + " --out=" + csv);
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST_F(ScenarioCli, FailedExpectationExitsOne) {
+  const SimRun r = sim(write("x.json", scenario("{}", "TO_SpeedAxis", "MC_Power", "[]",
+                                                R"([{ "cycle": 19, "values": { "p.Status": true } }])")));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("expect[0] (cycle 19): p.Status = 0, expected 1"), std::string::npos) << r.err;
+}
+
+TEST_F(ScenarioCli, MalformedJson) {
+  const SimRun r = sim(write("bad.json", "{ \"cycles\": 3,, }"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.json: malformed JSON: parse error at line 1"), std::string::npos) << r.err;
+}
+
+TEST_F(ScenarioCli, UnknownConfigPath) {
+  const SimRun r = sim(write("c.json", scenario(R"({"DynamicLimits.MaxSpeed": 1})")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(
+      r.err.find("technology_objects[0].config.DynamicLimits.MaxSpeed: unknown variable of TO_SpeedAxis"),
+      std::string::npos)
+      << r.err;
+}
+
+TEST_F(ScenarioCli, WrongType) {
+  const SimRun r = sim(write("c.json", scenario(R"({"DynamicLimits.MaxVelocity": "fast"})")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(
+      r.err.find("technology_objects[0].config.DynamicLimits.MaxVelocity: expected a number (LREAL), got a "
+                 "string"),
+      std::string::npos)
+      << r.err;
+}
+
+TEST_F(ScenarioCli, UnknownInstruction) {
+  const SimRun r = sim(write("i.json", scenario("{}", "TO_SpeedAxis", "MC_Teleport", "[]")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("timeline[0].instruction: unknown instruction 'MC_Teleport'"), std::string::npos)
+      << r.err;
+}
+
+TEST_F(ScenarioCli, UnknownTraceName) {
+  const SimRun r =
+      sim(write("t.json", scenario("{}", "TO_SpeedAxis", "MC_Power", R"(["Axis1.Temperature"])")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("trace[0]: 'Temperature' is not a variable of TO_SpeedAxis Axis1"), std::string::npos)
+      << r.err;
+}
+
+TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
+  const SimRun r = sim(write("u.json", scenario("{}", "TO_ExternalEncoder", "MC_Power", "[]")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("technology_objects[0].type: TO_ExternalEncoder is not yet supported"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(ScenarioCli, EveryProblemOnItsOwnLine) {
+  const SimRun r = sim(write("m.json", scenario(R"({"Nope": 1, "Override.Velocity": 300})")));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+  EXPECT_NE(r.err.find("config.Nope"), std::string::npos);
+  EXPECT_NE(r.err.find("config.Override.Velocity: 300 out of range 0..200"), std::string::npos);
+}
+
+TEST_F(ScenarioCli, CommandLineErrors) {
+  EXPECT_EQ(sim("").status, 2);
+  SimRun r = sim("--frobnicate");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown option '--frobnicate'"), std::string::npos);
+  r = sim("a.json b.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("one scenario file at a time"), std::string::npos);
+  r = sim(write("ok.json", scenario()) + " --out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--out needs a file name"), std::string::npos);
+  r = sim(write("ok.json", scenario()) + " --out " + (dir_ / "missing" / "t.csv").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos);
+  r = sim((dir_ / "absent.json").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("absent.json: cannot read"), std::string::npos);
+  r = sim("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("usage: tomc sim SCENARIO.json"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,593 @@
+// Every problem the scenario loader reports (docs/scenarios.md): each names its JSON path, and all problems
+// of a file are reported together. The loader is tested through the library; scenario_cli_test.cpp checks
+// that the CLI passes the lines through with exit status 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "tomc/scenario/config.hpp"
+#include "tomc/scenario/scenario.hpp"
+
+namespace {
+
+using tomc::scenario::Json;
+using tomc::scenario::Problems;
+using tomc::scenario::Scenario;
+
+// A valid one-axis scenario; tests patch one part of it.
+Json base() {
+  return Json::parse(R"({
+    "cycle_time": 0.001,
+    "cycles": 10,
+    "technology_objects": [
+      { "name": "Axis1", "type": "TO_SpeedAxis", "config": {}, "drive": { "adapter": "simulated", "telegram": 2 } }
+    ],
+    "timeline": [
+      { "cycle": 0, "instance": "power1", "instruction": "MC_Power", "axis": "Axis1", "inputs": { "Enable": true } }
+    ],
+    "trace": [ "power1.Status" ]
+  })");
+}
+
+std::vector<std::string> problems_of(const Json& document) {
+  auto result = Scenario::load(document);
+  EXPECT_EQ(result.scenario == nullptr, !result.problems.empty());
+  return result.problems;
+}
+
+// The one problem of `document`; fails if there is not exactly one.
+std::string problem_of(const Json& document) {
+  const auto problems = problems_of(document);
+  EXPECT_EQ(problems.size(), 1u) << ::testing::PrintToString(problems);
+  return problems.empty() ? std::string() : problems.front();
+}
+
+Json with_config(const char* config) {
+  Json d = base();
+  d["technology_objects"][0]["config"] = Json::parse(config);
+  return d;
+}
+
+Json with_drive(const char* drive) {
+  Json d = base();
+  d["technology_objects"][0]["drive"] = Json::parse(drive);
+  return d;
+}
+
+Json with_event(const char* event) {
+  Json d = base();
+  d["timeline"].push_back(Json::parse(event));
+  return d;
+}
+
+TEST(ScenarioLoader, ValidScenarioLoads) {
+  const auto result = Scenario::load(base());
+  ASSERT_TRUE(result.scenario) << ::testing::PrintToString(result.problems);
+  EXPECT_EQ(result.scenario->cycles(), 10u);
+  EXPECT_DOUBLE_EQ(result.scenario->cycle_time(), 0.001);
+  EXPECT_EQ(result.scenario->trace_header(), "cycle,time,power1.Status");
+}
+
+// ---- TO configuration ----
+
+TEST(ScenarioConfig, OutOfRangeNamesThePathAndTheRange) {
+  EXPECT_EQ(problem_of(with_config(R"({"DynamicLimits.MaxVelocity": 1e13})")),
+            "technology_objects[0].config.DynamicLimits.MaxVelocity: 1e13 out of range 0..1e12");
+}
+
+TEST(ScenarioConfig, UnknownPathWithSuggestion) {
+  EXPECT_EQ(problem_of(with_config(R"({"DynamicLimits.MaxVelocityy": 1})")),
+            "technology_objects[0].config.DynamicLimits.MaxVelocityy: unknown variable of TO_SpeedAxis");
+  EXPECT_EQ(problem_of(with_config(R"({"dynamiclimits.maxvelocity": 1})")),
+            "technology_objects[0].config.dynamiclimits.maxvelocity: unknown variable of TO_SpeedAxis (did "
+            "you mean "
+            "'DynamicLimits.MaxVelocity'?)");
+  EXPECT_NE(problem_of(with_config(R"({"DynamicLimits": {"MaxVelocity": 1}})"))
+                .find("keys are full data-block paths such as 'DynamicLimits.MaxVelocity'"),
+            std::string::npos);
+}
+
+TEST(ScenarioConfig, StatusVariablesAreNotConfiguration) {
+  EXPECT_EQ(problem_of(with_config(R"({"StatusWord": 1})")),
+            "technology_objects[0].config.StatusWord: cannot be configured: status variable, written by the "
+            "technology object only");
+}
+
+TEST(ScenarioConfig, WrongTypes) {
+  EXPECT_EQ(problem_of(with_config(R"({"Override.Velocity": "50"})")),
+            "technology_objects[0].config.Override.Velocity: expected a number (LREAL), got a string");
+  EXPECT_EQ(
+      problem_of(with_config(R"({"Actor.InverseDirection": 1})")),
+      "technology_objects[0].config.Actor.InverseDirection: expected true or false (BOOL), got a number");
+  EXPECT_EQ(problem_of(with_config(R"({"LoadGear.Numerator": true})")),
+            "technology_objects[0].config.LoadGear.Numerator: expected an integer (UDINT), got a boolean");
+  EXPECT_EQ(problem_of(with_config(R"({"LoadGear.Numerator": 1.5})")),
+            "technology_objects[0].config.LoadGear.Numerator: 1.5 is not an integer (UDINT)");
+  EXPECT_EQ(problem_of(with_config(R"([1])")),
+            "technology_objects[0].config: expected an object of data-block paths, got an array");
+}
+
+TEST(ScenarioConfig, PermittedValuesAndHexLiterals) {
+  EXPECT_EQ(
+      problem_of(with_config(R"({"Actor.RemoveEnableReaction": 2})")),
+      "technology_objects[0].config.Actor.RemoveEnableReaction: 2 is not a permitted value (1, 3, 5, 7)");
+  EXPECT_EQ(
+      problem_of(with_config(R"({"Actor.RemoveEnableReaction": "16#Z"})")),
+      "technology_objects[0].config.Actor.RemoveEnableReaction: '16#Z' is not a WORD literal such as 16#7 "
+      "or 0x7");
+  EXPECT_TRUE(problems_of(with_config(R"({"Actor.RemoveEnableReaction": "16#3"})")).empty());
+  EXPECT_TRUE(problems_of(with_config(R"({"Actor.RemoveEnableReaction": "0x5"})")).empty());
+}
+
+TEST(ScenarioConfig, EveryProblemIsReported) {
+  const auto problems = problems_of(with_config(
+      R"({"DynamicLimits.MaxVelocity": 1e13, "Nope": 1, "StatusWord": 0, "Override.Velocity": false})"));
+  EXPECT_EQ(problems.size(), 4u) << ::testing::PrintToString(problems);
+}
+
+TEST(ScenarioConfig, LoaderWritesStartValues) {
+  tomc::techobjects::SpeedAxisData data;
+  Problems problems;
+  tomc::scenario::load_speed_axis_config(
+      Json::parse(
+          R"({"DynamicDefaults.Velocity": 750.5, "Actor.InverseDirection": true, "Units.VelocityUnit": 1082,
+                      "comment": "ignored"})"),
+      "config", data, problems);
+  EXPECT_TRUE(problems.empty()) << ::testing::PrintToString(problems.lines());
+  EXPECT_DOUBLE_EQ(data.DynamicDefaults.Velocity, 750.5);
+  EXPECT_TRUE(data.Actor.InverseDirection);
+  EXPECT_EQ(data.Units.VelocityUnit, 1082u);
+  EXPECT_DOUBLE_EQ(data.DynamicLimits.MaxVelocity, 3000.0);  // untouched default
+}
+
+// ---- drive ----
+
+TEST(ScenarioDrive, AdapterAndTelegram) {
+  EXPECT_NE(
+      problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
+          .find(
+              "technology_objects[0].drive.adapter: 'dds' (the Fast DDS gateway adapter for real drives) is "
+              "not available yet"),
+      std::string::npos);
+  EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")).find("drive.adapter: 'analog'"),
+            std::string::npos);
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "simulated"})")),
+            "technology_objects[0].drive.telegram: missing");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 81})")),
+            "technology_objects[0].drive.telegram: 81 is not a drive telegram (1, 2, 3, 4, 5, 6, 102, 103, "
+            "105, 106)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": "2"})")),
+            "technology_objects[0].drive.telegram: expected an integer, got a string");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "supplementary_telegram": 751})")),
+            "technology_objects[0].drive.supplementary_telegram: 751 is not 0 or 750");
+  EXPECT_EQ(problem_of(with_drive(R"(3)")), "technology_objects[0].drive: expected an object, got a number");
+  EXPECT_TRUE(problems_of(with_drive(R"({"telegram": 105, "supplementary_telegram": 750})")).empty());
+}
+
+TEST(ScenarioDrive, ModelParameters) {
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"telegram": 2, "servo_cycle_s": 0.002})")),
+      "technology_objects[0].drive.servo_cycle_s: 0.002 differs from cycle_time 0.001 (the drive runs in the "
+      "MC_Servo cycle; leave it out)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "substeps": 0})")),
+            "technology_objects[0].drive.substeps: 0 out of range 1..1000");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "reference_speed_rpm": 0})")),
+            "technology_objects[0].drive.reference_speed_rpm: 0 out of range: must be greater than 0");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "coulomb_friction_nm": -1})")),
+            "technology_objects[0].drive.coulomb_friction_nm: -1 out of range: must be at least 0");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "isochronous": "yes"})")),
+            "technology_objects[0].drive.isochronous: expected true or false, got a string");
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"telegram": 2, "communication_fault_reaction": "OFF4"})")),
+      "technology_objects[0].drive.communication_fault_reaction: 'OFF4' is not one of OFF1, OFF2, OFF3");
+  EXPECT_NE(
+      problem_of(with_drive(R"({"telegram": 2, "motor_inertia": 1})"))
+          .find("technology_objects[0].drive.motor_inertia: unknown key (known here: 'adapter', 'telegram'"),
+      std::string::npos);
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "initial_load_position": null})")),
+            "technology_objects[0].drive.initial_load_position: expected a number, got null");
+}
+
+TEST(ScenarioDrive, EncodersAndMachine) {
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "encoder1": {"shaft": "gear"}})")),
+            "technology_objects[0].drive.encoder1.shaft: 'gear' is not one of motor, load");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "encoder2": {"fine_resolution_xist1": 40}})")),
+            "technology_objects[0].drive.encoder2.fine_resolution_xist1: 40 out of range 0..31");
+  EXPECT_NE(problem_of(with_drive(R"({"telegram": 3, "encoder1": {"steps": 1}})"))
+                .find("encoder1.steps: unknown key"),
+            std::string::npos);
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "encoder1": []})")),
+            "technology_objects[0].drive.encoder1: expected an object, got an array");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "machine": {"reference_cam": {"from": 5, "to": 1}}})")),
+            "technology_objects[0].drive.machine.reference_cam: from (5) is greater than to (1)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "machine": {"probe1": {"from": 5}}})")),
+            "technology_objects[0].drive.machine.probe1.to: missing");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "machine": {"probe2": 4}})")),
+            "technology_objects[0].drive.machine.probe2: expected an object, got a number");
+  EXPECT_EQ(
+      problem_of(
+          with_drive(R"({"telegram": 3, "machine": {"negative_fixed_stop": 10, "positive_fixed_stop": 0}})")),
+      "technology_objects[0].drive.machine: negative_fixed_stop (10) must be below positive_fixed_stop (0)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "machine": {"positive_limit_switch": "far"}})")),
+            "technology_objects[0].drive.machine.positive_limit_switch: expected a number, got a string");
+}
+
+TEST(ScenarioDrive, EveryFieldIsRead) {
+  tomc::scenario::DriveSettings s;
+  Problems problems;
+  tomc::scenario::load_drive(Json::parse(R"({
+      "adapter": "simulated", "telegram": 3, "supplementary_telegram": 750, "servo_cycle_s": 0.002, "substeps": 8,
+      "reference_speed_rpm": 1500, "max_speed_rpm": 3000, "reference_torque_nm": 10, "torque_limit_nm": 8,
+      "off1_ramp_down_time_s": 2, "off3_ramp_down_time_s": 0.5, "standstill_threshold_rpm": 5,
+      "speed_deviation_tolerance_rpm": 50, "sign_of_life_tolerance": "16#FFFF", "isochronous": false,
+      "setpoint_timeout_cycles": 7, "communication_fault_reaction": "OFF1", "speed_loop_time_constant_s": 0.004,
+      "motor_inertia_kgm2": 0.001, "load_inertia_kgm2": 0.01, "viscous_friction_nm_per_rad_s": 0.002,
+      "coulomb_friction_nm": 0.1, "gear_motor_revolutions": 3, "gear_load_revolutions": 1,
+      "load_units_per_revolution": 10, "initial_load_position": -4,
+      "encoder1": { "shaft": "load", "linear": true, "resolution": 0.01, "steps_per_revolution": 4096,
+                    "fine_resolution_xist1": 2, "fine_resolution_xist2": 3, "determinable_revolutions": 0,
+                    "xist1_width_bits": 16, "xist1_at_power_on": "0x100", "reference_mark_interval_revolutions": 2,
+                    "reference_mark_offset_revolutions": 0.5, "absolute_offset_revolutions": 1.5,
+                    "nist_reference_speed": 600 },
+      "encoder2": { "shaft": "motor" },
+      "machine": { "negative_limit_switch": -100, "positive_limit_switch": 100, "reference_cam": {"from": 1, "to": 2},
+                   "probe1": {"from": 3, "to": 4}, "probe2": null, "negative_fixed_stop": -200,
+                   "positive_fixed_stop": 200 }
+    })"),
+                             "drive", 0.002, s, problems);
+  ASSERT_TRUE(problems.empty()) << ::testing::PrintToString(problems.lines());
+  const auto& p = s.parameters;
+  EXPECT_EQ(s.telegram, 3);
+  EXPECT_EQ(s.supplementary_telegram, 750);
+  EXPECT_EQ(s.device_config().drive_telegram, 3);
+  EXPECT_EQ(s.device_config().supplementary_telegram, 750);
+  EXPECT_DOUBLE_EQ(p.servo_cycle_s, 0.002);
+  EXPECT_EQ(p.substeps, 8u);
+  EXPECT_DOUBLE_EQ(p.reference_speed_rpm, 1500);
+  EXPECT_DOUBLE_EQ(p.max_speed_rpm, 3000);
+  EXPECT_DOUBLE_EQ(p.reference_torque_nm, 10);
+  EXPECT_DOUBLE_EQ(p.torque_limit_nm, 8);
+  EXPECT_DOUBLE_EQ(p.off1_ramp_down_time_s, 2);
+  EXPECT_DOUBLE_EQ(p.off3_ramp_down_time_s, 0.5);
+  EXPECT_DOUBLE_EQ(p.standstill_threshold_rpm, 5);
+  EXPECT_DOUBLE_EQ(p.speed_deviation_tolerance_rpm, 50);
+  EXPECT_EQ(p.sign_of_life_tolerance, 0xFFFF);
+  EXPECT_FALSE(p.isochronous);
+  EXPECT_EQ(p.setpoint_timeout_cycles, 7u);
+  EXPECT_EQ(p.communication_fault_reaction, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff1);
+  EXPECT_DOUBLE_EQ(p.speed_loop_time_constant_s, 0.004);
+  EXPECT_DOUBLE_EQ(p.motor_inertia_kgm2, 0.001);
+  EXPECT_DOUBLE_EQ(p.load_inertia_kgm2, 0.01);
+  EXPECT_DOUBLE_EQ(p.viscous_friction_nm_per_rad_s, 0.002);
+  EXPECT_DOUBLE_EQ(p.coulomb_friction_nm, 0.1);
+  EXPECT_DOUBLE_EQ(p.gear_motor_revolutions, 3);
+  EXPECT_DOUBLE_EQ(p.gear_load_revolutions, 1);
+  EXPECT_DOUBLE_EQ(p.load_units_per_revolution, 10);
+  EXPECT_DOUBLE_EQ(p.initial_load_position, -4);
+  EXPECT_EQ(p.encoder1.shaft, tomc::drives::SimulatedEncoderParameters::Shaft::kLoad);
+  EXPECT_TRUE(p.encoder1.linear);
+  EXPECT_DOUBLE_EQ(p.encoder1.resolution, 0.01);
+  EXPECT_EQ(p.encoder1.steps_per_revolution, 4096u);
+  EXPECT_EQ(p.encoder1.fine_resolution_xist1, 2);
+  EXPECT_EQ(p.encoder1.fine_resolution_xist2, 3);
+  EXPECT_EQ(p.encoder1.determinable_revolutions, 0u);
+  EXPECT_EQ(p.encoder1.xist1_width_bits, 16);
+  EXPECT_EQ(p.encoder1.xist1_at_power_on, 0x100u);
+  EXPECT_DOUBLE_EQ(p.encoder1.reference_mark_interval_revolutions, 2);
+  EXPECT_DOUBLE_EQ(p.encoder1.reference_mark_offset_revolutions, 0.5);
+  EXPECT_DOUBLE_EQ(p.encoder1.absolute_offset_revolutions, 1.5);
+  EXPECT_DOUBLE_EQ(p.encoder1.nist_reference_speed, 600);
+  EXPECT_EQ(p.encoder2.shaft, tomc::drives::SimulatedEncoderParameters::Shaft::kMotor);
+  EXPECT_EQ(p.machine.negative_limit_switch, -100);
+  EXPECT_EQ(p.machine.positive_limit_switch, 100);
+  ASSERT_TRUE(p.machine.reference_cam);
+  EXPECT_DOUBLE_EQ(p.machine.reference_cam->to, 2);
+  ASSERT_TRUE(p.machine.probe1);
+  EXPECT_DOUBLE_EQ(p.machine.probe1->from, 3);
+  EXPECT_FALSE(p.machine.probe2);
+  EXPECT_EQ(p.machine.negative_fixed_stop, -200);
+  EXPECT_EQ(p.machine.positive_fixed_stop, 200);
+}
+
+// ---- scenario level ----
+
+TEST(ScenarioLoader, TopLevel) {
+  Json d = base();
+  d.erase("cycle_time");
+  EXPECT_EQ(problem_of(d), "cycle_time: missing");
+  d = base();
+  d["cycle_time"] = 0;
+  EXPECT_EQ(problem_of(d), "cycle_time: 0 out of range: must be greater than 0");
+  d = base();
+  d["cycles"] = 0;
+  EXPECT_EQ(problem_of(d), "cycles: 0 out of range 1..1000000000");
+  d = base();
+  d["cycles"] = 2.5;
+  EXPECT_EQ(problem_of(d), "cycles: 2.5 is not an integer");
+  d = base();
+  d["cylces"] = 3;
+  EXPECT_NE(problem_of(d).find("cylces: unknown key"), std::string::npos);
+  d = base();
+  d["comment"] = "allowed everywhere";
+  EXPECT_TRUE(problems_of(d).empty());
+  EXPECT_EQ(problem_of(Json::parse("[]")), ": expected an object, got an array");
+}
+
+TEST(ScenarioLoader, TechnologyObjects) {
+  Json d = base();
+  d["technology_objects"] = Json::array();
+  EXPECT_EQ(problem_of(d),
+            "technology_objects: expected a non-empty array of technology objects, got an empty array");
+  d = base();
+  d["technology_objects"][0]["type"] = "TO_PositioningAxis";
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].type: TO_PositioningAxis is not yet supported by tomc sim (supported: "
+            "TO_SpeedAxis)");
+  d["technology_objects"][0]["type"] = "TO_Conveyor";
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].type: unknown technology object type 'TO_Conveyor' (one of "
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
+  d = base();
+  d["technology_objects"][0]["name"] = "Axis 1";
+  EXPECT_NE(problems_of(d).front().find("technology_objects[0].name: 'Axis 1' is not a name"),
+            std::string::npos);
+  d = base();
+  d["technology_objects"].push_back(d["technology_objects"][0]);
+  EXPECT_EQ(problem_of(d), "technology_objects[1].name: 'Axis1' is defined twice");
+  d = base();
+  d["technology_objects"][0].erase("drive");
+  EXPECT_NE(problem_of(d).find("technology_objects[0].drive: missing"), std::string::npos);
+  // A virtual axis needs no drive.
+  d["technology_objects"][0]["config"]["VirtualAxis.Mode"] = 1;
+  EXPECT_TRUE(problems_of(d).empty());
+}
+
+TEST(ScenarioLoader, EventTiming) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 10, "instance": "power1"})")),
+            "timeline[1].cycle: 10 out of range 0..9");
+  Json d = base();
+  d["timeline"][0]["cycle"] = 5;
+  d["timeline"].push_back(Json::parse(R"({"cycle": 4, "instance": "power1"})"));
+  EXPECT_EQ(problem_of(d),
+            "timeline[1].cycle: 4 is before the previous event's cycle 5 (events must be in time order)");
+  EXPECT_TRUE(
+      problems_of(with_event(R"({"cycle": 0, "instance": "power1", "inputs": {"Enable": false}})")).empty());
+  EXPECT_EQ(problem_of(with_event(R"({"instance": "power1"})")), "timeline[1].cycle: missing");
+  Json t = base();
+  t["timeline"] = Json::object();
+  EXPECT_EQ(problem_of(t), "timeline: expected an array of events, got an object");
+}
+
+TEST(ScenarioLoader, EventKinds) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1})")),
+            "timeline[1]: an event needs one of 'instance', 'set', 'inject', 'clear'");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "set": {}})")),
+            "timeline[1]: an event does one thing: it has both 'instance' and 'set'");
+  EXPECT_NE(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "input": {}})"))
+                .find("timeline[1].input: unknown key"),
+            std::string::npos);
+  EXPECT_EQ(problem_of(with_event(R"(17)")), "timeline[1]: expected an object, got a number");
+}
+
+TEST(ScenarioLoader, InstanceCreation) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "move1", "axis": "Axis1"})")),
+            "timeline[1].instruction: missing (the first event of instance 'move1' must give instruction and "
+            "axis)");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "move1", "instruction": "MC_MoveVelocity"})")),
+            "timeline[1].axis: missing (the first event of instance 'move1' must give instruction and axis)");
+  EXPECT_NE(
+      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Fly", "axis": "Axis1"})"))
+          .find("timeline[1].instruction: unknown instruction 'MC_Fly' (supported: MC_Power, MC_Reset"),
+      std::string::npos);
+  EXPECT_NE(
+      problem_of(
+          with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_MoveAbsolute", "axis": "Axis1"})"))
+          .find("timeline[1].instruction: MC_MoveAbsolute is not yet supported by tomc sim"),
+      std::string::npos);
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Halt", "axis": "Axis2"})")),
+      "timeline[1].axis: unknown technology object 'Axis2' (defined: Axis1)");
+  EXPECT_EQ(problem_of(with_event(
+                R"({"cycle": 1, "instance": "Axis1", "instruction": "MC_Halt", "axis": "Axis1"})")),
+            "timeline[1].instance: 'Axis1' is already the name of a technology object");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "instruction": "MC_Halt"})")),
+            "timeline[1].instruction: instance 'power1' is an MC_Power (timeline[0]); one name denotes one "
+            "instance");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "axis": "Axis9"})")),
+            "timeline[1].axis: instance 'power1' works on Axis1 (timeline[0]), not Axis9");
+  EXPECT_NE(
+      problem_of(with_event(R"({"cycle": 1, "instance": "2x", "instruction": "MC_Halt", "axis": "Axis1"})"))
+          .find("timeline[1].instance: '2x' is not a name"),
+      std::string::npos);
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": 5})")),
+            "timeline[1].instance: expected a string, got a number");
+}
+
+TEST(ScenarioLoader, Inputs) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"Enabled": true}})")),
+            "timeline[1].inputs.Enabled: unknown input of MC_Power (inputs: Enable, StartMode, StopMode)");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"Status": true}})")),
+      "timeline[1].inputs.Status: 'Status' is an output of MC_Power (inputs: Enable, StartMode, StopMode)");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"Enable": 1}})")),
+            "timeline[1].inputs.Enable: expected true or false, got a number");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"StopMode": 40000}})")),
+            "timeline[1].inputs.StopMode: 40000 out of range -32768..32767");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"StartMode": 1e10}})")),
+            "timeline[1].inputs.StartMode: 1e10 out of range -2147483648..2147483647");
+  EXPECT_EQ(
+      problem_of(with_event(
+          R"({"cycle": 1, "instance": "v", "instruction": "MC_MoveVelocity", "axis": "Axis1", "inputs": {"Velocity": "fast"}})")),
+      "timeline[1].inputs.Velocity: expected a number, got a string");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": [true]})")),
+            "timeline[1].inputs: expected an object, got an array");
+  // WORD inputs take PLC hex literals.
+  EXPECT_TRUE(
+      problems_of(with_event(
+                      R"({"cycle": 1, "instance": "stw", "instruction": "MC_SetAxisSTW", "axis": "Axis1",
+                      "inputs": {"STW1": "16#0100", "STW1BitMask": 256, "STW2": "0x80"}})"))
+          .empty());
+  EXPECT_EQ(problem_of(
+                with_event(R"({"cycle": 1, "instance": "stw", "instruction": "MC_SetAxisSTW", "axis": "Axis1",
+                                      "inputs": {"STW2": 70000}})")),
+            "timeline[1].inputs.STW2: 70000 out of range 0..65535");
+  EXPECT_EQ(problem_of(
+                with_event(R"({"cycle": 1, "instance": "stw", "instruction": "MC_SetAxisSTW", "axis": "Axis1",
+                                      "inputs": {"STW2": "16#10000"}})")),
+            "timeline[1].inputs.STW2: 16#10000 out of range 0..65535");
+  EXPECT_EQ(problem_of(
+                with_event(R"({"cycle": 1, "instance": "stw", "instruction": "MC_SetAxisSTW", "axis": "Axis1",
+                                      "inputs": {"STW2": "high"}})")),
+            "timeline[1].inputs.STW2: 'high' is not a hex literal such as 16#7 or 0x7");
+  EXPECT_EQ(problem_of(
+                with_event(R"({"cycle": 1, "instance": "stw", "instruction": "MC_SetAxisSTW", "axis": "Axis1",
+                                      "inputs": {"STW2": -1}})")),
+            "timeline[1].inputs.STW2: -1 out of range 0..65535");
+}
+
+TEST(ScenarioLoader, SetEvents) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {"Override.Velocity": 50}})")),
+            "timeline[1].set.Override.Velocity: expected '<technology object>.<variable path>', e.g. "
+            "'Axis1.Override.Velocity'");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {"Axis1.Override.Speed": 50}})")),
+            "timeline[1].set.Axis1.Override.Speed: unknown variable of TO_SpeedAxis Axis1");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "set": {"Axis1.DynamicLimits.MaxVelocity": 50}})")),
+      "timeline[1].set.Axis1.DynamicLimits.MaxVelocity: the user program cannot write it: restart relevant "
+      "(RES): only the start value can be changed");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {"Axis1.VirtualAxis.Mode": 1}})")),
+            "timeline[1].set.Axis1.VirtualAxis.Mode: the user program cannot write it: read only (RON)");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "set": {"Axis1.Velocity": 1}})")),
+      "timeline[1].set.Axis1.Velocity: the user program cannot write it: status variable, written by the "
+      "technology object only");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {"Axis1.Override.Velocity": 250}})")),
+            "timeline[1].set.Axis1.Override.Velocity: 250 out of range 0..200");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {}})")),
+            "timeline[1].set: expected at least one '<TO>.<variable>' to write");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": 3})")),
+            "timeline[1].set: expected an object, got a number");
+}
+
+TEST(ScenarioLoader, FaultEvents) {
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis2", "fault": "drive_fault"}})")),
+            "timeline[1].inject.target: unknown technology object 'Axis2'");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1"}})")),
+            "timeline[1].inject.fault: missing");
+  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
+            "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
+            "link_loss");
+  EXPECT_EQ(problem_of(with_event(
+                R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
+            "timeline[1].inject.code: 0 out of range 1..4294967295");
+  EXPECT_EQ(
+      problem_of(with_event(
+          R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "reaction": "OFF0"}})")),
+      "timeline[1].inject.reaction: 'OFF0' is not one of OFF1, OFF2, OFF3");
+  EXPECT_EQ(problem_of(with_event(
+                R"({"cycle": 1, "clear": {"target": "Axis1", "fault": "encoder_error", "encoder": 3}})")),
+            "timeline[1].clear.encoder: 3 out of range 1..2");
+  EXPECT_NE(
+      problem_of(
+          with_event(R"({"cycle": 1, "clear": {"target": "Axis1", "fault": "drive_fault", "code": 5}})"))
+          .find("timeline[1].clear.code: unknown key"),
+      std::string::npos);
+  EXPECT_NE(
+      problem_of(
+          with_event(
+              R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "link_loss", "reaction": "OFF1"}})"))
+          .find("timeline[1].inject.reaction: unknown key"),
+      std::string::npos);
+  Json d = base();
+  d["technology_objects"][0].erase("drive");
+  d["technology_objects"][0]["config"]["VirtualAxis.Mode"] = 1;
+  d["timeline"].push_back(
+      Json::parse(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "link_loss"}})"));
+  EXPECT_EQ(problem_of(d), "timeline[1].inject.target: Axis1 has no simulated drive to inject faults into");
+}
+
+TEST(ScenarioLoader, TraceNames) {
+  auto traced = [](const char* name) {
+    Json d = base();
+    d["trace"] = Json::array({name});
+    return d;
+  };
+  EXPECT_EQ(problem_of(traced("Status")),
+            "trace[0]: 'Status' is not a trace name ('<TO>.<variable>' or '<instance>.<parameter>')");
+  EXPECT_EQ(problem_of(traced("power2.Status")),
+            "trace[0]: 'power2' is neither a technology object nor an instance of the timeline");
+  EXPECT_EQ(problem_of(traced("Axis1.Speed")), "trace[0]: 'Speed' is not a variable of TO_SpeedAxis Axis1");
+  EXPECT_EQ(problem_of(traced("Axis1.StatusWord.X32")),
+            "trace[0]: 'StatusWord.X32' is not a variable of TO_SpeedAxis Axis1");
+  EXPECT_EQ(
+      problem_of(traced("power1.Done")),
+      "trace[0]: 'Done' is not a parameter of MC_Power (Enable, StartMode, StopMode, Status, Busy, Error, "
+      "ErrorID)");
+  EXPECT_EQ(
+      problem_of(traced("Axis1.drive.temperature")),
+      "trace[0]: 'temperature' is not a drive value (state, active_fault, motor_speed_rpm, motor_torque_nm, "
+      "load_position, load_speed)");
+  EXPECT_TRUE(problems_of(traced("Axis1.StatusWord.%X5")).empty());
+  EXPECT_TRUE(problems_of(traced("power1.Enable")).empty());  // inputs can be traced too
+  Json d = base();
+  d["trace"] = Json::array({"power1.Status", "power1.Status"});
+  EXPECT_EQ(problem_of(d), "trace[1]: 'power1.Status' is traced twice");
+  d["trace"] = Json::array({3});
+  EXPECT_EQ(problem_of(d), "trace[0]: expected a string, got a number");
+  d["trace"] = "power1.Status";
+  EXPECT_EQ(problem_of(d), "trace: expected an array of trace names, got a string");
+  d = base();
+  d["technology_objects"][0].erase("drive");
+  d["technology_objects"][0]["config"]["Simulation.Mode"] = 1;
+  d["trace"] = Json::array({"Axis1.drive.state"});
+  EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no simulated drive");
+}
+
+TEST(ScenarioLoader, Expectations) {
+  auto expecting = [](const char* expect) {
+    Json d = base();
+    d["expect"] = Json::parse(expect);
+    return d;
+  };
+  EXPECT_TRUE(problems_of(expecting(R"([{"cycle": 9, "values": {"power1.Status": true, "Axis1.Velocity": 0},
+                                         "tolerance": 0.5, "comment": "x"}])"))
+                  .empty());
+  EXPECT_EQ(problem_of(expecting(R"([{"cycle": 10, "values": {"power1.Status": true}}])")),
+            "expect[0].cycle: 10 out of range 0..9");
+  EXPECT_EQ(problem_of(expecting(R"([{"cycle": 1, "values": {}}])")),
+            "expect[0].values: expected at least one trace name");
+  EXPECT_EQ(problem_of(expecting(R"([{"cycle": 1}])")), "expect[0].values: missing");
+  EXPECT_EQ(
+      problem_of(expecting(R"([{"cycle": 1, "values": {"power1.Ready": 1}}])")),
+      "expect[0].values.power1.Ready: 'Ready' is not a parameter of MC_Power (Enable, StartMode, StopMode, "
+      "Status, Busy, Error, ErrorID)");
+  EXPECT_EQ(problem_of(expecting(R"([{"cycle": 1, "values": {"power1.Status": "yes"}}])")),
+            "expect[0].values.power1.Status: expected a number, got a string");
+  EXPECT_EQ(problem_of(expecting(R"([{"cycle": 1, "values": {"power1.Status": 1}, "tolerance": -1}])")),
+            "expect[0].tolerance: -1 out of range: must be at least 0");
+  EXPECT_EQ(problem_of(expecting(R"({"cycle": 1})")),
+            "expect: expected an array of expectations, got an object");
+}
+
+TEST(ScenarioLoader, MalformedJsonAndFiles) {
+  auto result = Scenario::load_text("{\"cycles\": 3,\n  \"cycle_time\": }", "x.json");
+  ASSERT_EQ(result.problems.size(), 1u);
+  EXPECT_EQ(result.problems[0].rfind("x.json: malformed JSON: parse error at line 2", 0), 0u)
+      << result.problems[0];
+  result = Scenario::load_file("/nonexistent/scenario.json");
+  ASSERT_EQ(result.problems.size(), 1u);
+  EXPECT_EQ(result.problems[0], "/nonexistent/scenario.json: cannot read: No such file or directory");
+}
+
+TEST(ScenarioLoader, FormatNumber) {
+  using tomc::scenario::format_number;
+  EXPECT_EQ(format_number(1e13), "1e13");
+  EXPECT_EQ(format_number(2.5e-5), "2.5e-5");
+  EXPECT_EQ(format_number(0.001), "0.001");
+  EXPECT_EQ(format_number(-3), "-3");
+  EXPECT_EQ(format_number(1e100), "1e100");
+}
+
+}  // namespace

@@ -1,0 +1,66 @@
+#pragma once
+// Loading a technology object's configuration and its simulated drive from JSON, as `tomc sim` and an
+// embedding program do (docs/scenarios.md "config", "drive"). Every problem is reported with its JSON path,
+// and all of them are reported, not just the first: a commissioning engineer fixes a file in one go.
+//
+// Nothing here throws for bad input; problems are collected in a Problems list.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tomc/drives/simulated_drive.hpp"
+#include "tomc/techobjects/speed_axis_data.hpp"
+
+namespace tomc::scenario {
+
+// The loaders keep the key order of the file so that problems are listed in the order the user wrote them.
+using Json = nlohmann::ordered_json;
+
+// One line per problem: "<JSON path>: <what is wrong>".
+class Problems {
+ public:
+  void add(std::string_view path, std::string_view message);
+  bool empty() const noexcept { return lines_.empty(); }
+  std::size_t size() const noexcept { return lines_.size(); }
+  const std::vector<std::string>& lines() const noexcept { return lines_; }
+
+ private:
+  std::vector<std::string> lines_;
+};
+
+// Shortest text that reads back as the same double, with a plain exponent ("1e12", "0.001", "2.5e-05" ->
+// "2.5e-5"): messages quote numbers the way a user types them.
+std::string format_number(double value);
+
+// "a.b" + "c" -> "a.b.c"; "a" + "[2]" -> "a[2]".
+std::string join_path(std::string_view base, std::string_view key);
+
+// The `config` object of a TO_SpeedAxis: keys are exact data-block paths of the reflection table
+// (techobjects::speed_axis_variables(), e.g. "DynamicLimits.MaxVelocity"), values are start values. BOOL
+// takes true/false, integers and bit strings take a JSON integer (bit strings also "16#7" or "0x7"), LREAL
+// any number. Unknown paths, status variables, wrong types, values out of range or not permitted are problems
+// at `path`.<key>. Variables not given keep the start value already in `data`.
+void load_speed_axis_config(const Json& config, std::string_view path, techobjects::SpeedAxisData& data,
+                            Problems& problems);
+
+// The `drive` object: which adapter, which telegram(s) and, for the simulated drive, its machine model.
+struct DriveSettings {
+  std::string adapter = "simulated";
+  std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
+  std::uint16_t supplementary_telegram = 0;  // 0 or 750
+  drives::SimulatedDriveParameters parameters{};
+  drives::DeviceConfig device_config() const;
+};
+
+// Reads `drive` into `settings` (whose parameters are the defaults: a caller sets servo_cycle_s and the
+// reference speed/torque of the TO first). Every SimulatedDriveParameters field is a key under its C++ name,
+// encoder1/encoder2/machine are nested objects (docs/simulated-drive.md); `servo_cycle_s`, if given, must
+// equal `cycle_time_s` because the drive runs in the MC_Servo cycle.
+void load_drive(const Json& drive, std::string_view path, double cycle_time_s, DriveSettings& settings,
+                Problems& problems);
+
+}  // namespace tomc::scenario

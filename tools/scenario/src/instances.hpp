@@ -1,0 +1,48 @@
+#pragma once
+// Internal: MC_* instruction instances behind one interface, so the scenario can create them by name, set
+// their inputs from JSON and read any parameter for the trace. Each instruction is described once by a table
+// of its parameters (name, data type, input/output, member pointer); adding an instruction is one table.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "tomc/techobjects/speed_axis.hpp"
+
+namespace tomc::scenario::detail {
+
+// The PLC data types of instruction parameters.
+enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal };
+std::string_view to_string(ParameterType type) noexcept;
+
+struct ParameterInfo {
+  std::string_view name;
+  ParameterType type;
+  bool input;
+};
+
+class Instance {
+ public:
+  virtual ~Instance() = default;
+  virtual std::span<const ParameterInfo> parameters() const noexcept = 0;
+  // Index into parameters(); already validated values only (the loader checked type and range).
+  virtual void set(std::size_t parameter, double value) noexcept = 0;
+  virtual double get(std::size_t parameter) const noexcept = 0;
+  virtual void call(techobjects::SpeedAxis& axis) noexcept = 0;
+
+  std::optional<std::size_t> find(std::string_view name) const noexcept;
+};
+
+// Instruction names known to tomc sim for TO_SpeedAxis, in the order of the manual.
+std::span<const std::string_view> speed_axis_instructions() noexcept;
+// MC_* instructions of the manual that tomc does not implement yet (a clear "not yet supported").
+bool is_planned_instruction(std::string_view name) noexcept;
+// nullptr for a name not in speed_axis_instructions().
+std::unique_ptr<Instance> make_speed_axis_instance(std::string_view instruction);
+
+}  // namespace tomc::scenario::detail
