@@ -591,3 +591,29 @@ TEST(ScenarioLoader, FormatNumber) {
 }
 
 }  // namespace
+
+namespace {
+
+// docs/scenarios.md: a technology alarm is injected with a defined number and a reaction 0..5, and it is
+// acknowledged by MC_Reset, never "cleared".
+TEST(ScenarioLoader, TechnologyAlarmInjection) {
+  EXPECT_TRUE(
+      problems_of(
+          with_event(
+              R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "technology_alarm", "alarm": 533, "reaction": 2}})"))
+          .empty());
+  EXPECT_EQ(problem_of(with_event(
+                R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "technology_alarm", "alarm": 999}})")),
+            "timeline[1].inject.alarm: alarm 999 is not defined (docs/errors.md)");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "technology_alarm"}})")),
+      "timeline[1].inject.alarm: missing");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "clear": {"target": "Axis1", "fault": "technology_alarm"}})")),
+      "timeline[1].clear.fault: a technology alarm is acknowledged with MC_Reset, not cleared");
+  const auto out_of_range = problem_of(with_event(
+      R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "technology_alarm", "alarm": 533, "reaction": 6}})"));
+  EXPECT_NE(out_of_range.find("timeline[1].inject.reaction"), std::string::npos) << out_of_range;
+}
+
+}  // namespace

@@ -137,9 +137,15 @@ struct InstanceEntry {
   std::unique_ptr<Instance> fb;  // nullptr: unknown instruction (already reported)
 };
 
-enum class FaultKind : std::uint8_t { kDriveFault, kEncoderError, kSignOfLifeFreeze, kLinkLoss };
-constexpr std::array<std::string_view, 4> kFaultNames{"drive_fault", "encoder_error", "sign_of_life_freeze",
-                                                      "link_loss"};
+enum class FaultKind : std::uint8_t {
+  kDriveFault,
+  kEncoderError,
+  kSignOfLifeFreeze,
+  kLinkLoss,
+  kTechnologyAlarm
+};
+constexpr std::array<std::string_view, 5> kFaultNames{"drive_fault", "encoder_error", "sign_of_life_freeze",
+                                                      "link_loss", "technology_alarm"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -163,6 +169,9 @@ struct Event {
   std::uint32_t code = 0;
   Reaction reaction = Reaction::kOff2;
   int encoder = 1;
+  // kTechnologyAlarm: the alarm's reaction (0..5) and additional value
+  std::int32_t alarm_reaction = 0;
+  std::uint32_t additional_value = 0;
 };
 
 struct Column {
@@ -637,16 +646,16 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
   const std::string key = inject ? "inject" : "clear";
   ObjectReader fr(*r.get(key), r.path_of(key), problems);
   if (!fr.valid()) return;
+  bool target_found = false;
   if (const Json* v = fr.get("target", true)) {
     if (auto target = detail::read_string(*v, fr.path_of("target"), problems)) {
       const auto index = find_object(*target);
       if (!index) {
         if (!objects_broken)
           problems.add(fr.path_of("target"), "unknown technology object '" + *target + "'");
-      } else if (objects[*index].built && objects[*index].drive == nullptr) {
-        problems.add(fr.path_of("target"), *target + " has no simulated drive to inject faults into");
       } else {
         event.target = *index;
+        target_found = true;
       }
     }
   }
@@ -656,6 +665,12 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
   }
   if (fault) {
     event.fault = static_cast<FaultKind>(*fault);
+    // Every fault but a technology alarm is one of the simulated drive's.
+    if (target_found && event.fault != FaultKind::kTechnologyAlarm && objects[event.target].built &&
+        objects[event.target].drive == nullptr) {
+      problems.add(fr.path_of("target"),
+                   objects[event.target].name + " has no simulated drive to inject faults into");
+    }
     switch (event.fault) {
       case FaultKind::kDriveFault:
         if (inject) {
@@ -682,6 +697,28 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
       case FaultKind::kSignOfLifeFreeze:
       case FaultKind::kLinkLoss:
         break;
+      case FaultKind::kTechnologyAlarm: {
+        // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
+        if (!inject) {
+          problems.add(fr.path_of("fault"), "a technology alarm is acknowledged with MC_Reset, not cleared");
+          break;
+        }
+        std::int64_t number = 0;
+        fr.integer("alarm", number, 1, 4294967295LL, false, true);
+        const auto* definition = to::find_alarm(static_cast<std::uint32_t>(number));
+        if (number != 0 && definition == nullptr) {
+          problems.add(fr.path_of("alarm"),
+                       "alarm " + std::to_string(number) + " is not defined (docs/errors.md)");
+        }
+        event.code = static_cast<std::uint32_t>(number);
+        std::int64_t reaction = definition != nullptr ? static_cast<std::int64_t>(definition->reaction) : 0;
+        fr.integer("reaction", reaction, 0, 5);
+        event.alarm_reaction = static_cast<std::int32_t>(reaction);
+        std::int64_t additional = 0;
+        fr.integer("additional_value", additional, 0, 4294967295LL);
+        event.additional_value = static_cast<std::uint32_t>(additional);
+        break;
+      }
     }
   }
   fr.finish();
@@ -792,6 +829,11 @@ void Scenario::Impl::apply(const Event& event) noexcept {
       break;
     case Event::Kind::kInject:
     case Event::Kind::kClear: {
+      if (event.fault == FaultKind::kTechnologyAlarm) {
+        (void)objects[event.target].axis->inject_alarm(event.code, event.additional_value,
+                                                       static_cast<to::AlarmReaction>(event.alarm_reaction));
+        break;
+      }
       drives::SimulatedDrive& d = *objects[event.target].drive;
       const bool on = event.kind == Event::Kind::kInject;
       switch (event.fault) {
@@ -815,6 +857,8 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         case FaultKind::kLinkLoss:
           d.set_link_lost(on);
           break;
+        case FaultKind::kTechnologyAlarm:
+          break;  // handled above
       }
       break;
     }
