@@ -103,4 +103,15 @@ class ExecuteHandshake {
   bool last_execute_ = false;
 };
 
+// Copies the handshake's outputs into an instruction's output members of the same names (Done, Busy,
+// CommandAborted, Error, ErrorID): the outputs stay plain members of each instruction, as in the manual.
+template <typename Instruction>
+void show_outputs(Instruction& fb, const HandshakeOutputs& o) noexcept {
+  fb.Done = o.Done;
+  fb.Busy = o.Busy;
+  fb.CommandAborted = o.CommandAborted;
+  fb.Error = o.Error;
+  fb.ErrorID = o.ErrorID;
+}
+
 }  // namespace tomc::instructions

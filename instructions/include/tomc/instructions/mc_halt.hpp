@@ -27,12 +27,7 @@ struct MC_Halt {
           return axis.halt(techobjects::HaltInputs{Deceleration, Jerk, AbortAcceleration, Mode});
         },
         [&](techobjects::JobId id) { return axis.job_status(id); });
-    const auto& o = handshake_.outputs();
-    Done = o.Done;
-    Busy = o.Busy;
-    CommandAborted = o.CommandAborted;
-    Error = o.Error;
-    ErrorID = o.ErrorID;
+    show_outputs(*this, handshake_.outputs());
   }
 
  private:

@@ -20,12 +20,7 @@ struct MC_Reset {
     handshake_.call(
         Execute, [&] { return axis.reset(Restart); },
         [&](techobjects::JobId id) { return axis.job_status(id); });
-    const auto& o = handshake_.outputs();
-    Done = o.Done;
-    Busy = o.Busy;
-    CommandAborted = o.CommandAborted;
-    Error = o.Error;
-    ErrorID = o.ErrorID;
+    show_outputs(*this, handshake_.outputs());
   }
 
  private:

@@ -23,12 +23,7 @@ struct MC_SetAxisSTW {
     handshake_.call(
         Execute, [&] { return axis.set_axis_stw(STW1, STW1BitMask, STW2, STW2BitMask); },
         [&](techobjects::JobId id) { return axis.job_status(id); });
-    const auto& o = handshake_.outputs();
-    Done = o.Done;
-    Busy = o.Busy;
-    CommandAborted = o.CommandAborted;
-    Error = o.Error;
-    ErrorID = o.ErrorID;
+    show_outputs(*this, handshake_.outputs());
   }
 
  private:

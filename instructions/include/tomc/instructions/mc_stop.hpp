@@ -30,12 +30,7 @@ struct MC_Stop {
     // The lock follows the Execute level of the accepted job, also after Done (spec 03 §4.13 implementation
     // rule).
     axis.stop_execute(handshake_.job(), Execute);
-    const auto& o = handshake_.outputs();
-    Done = o.Done;
-    Busy = o.Busy;
-    CommandAborted = o.CommandAborted;
-    Error = o.Error;
-    ErrorID = o.ErrorID;
+    show_outputs(*this, handshake_.outputs());
   }
 
  private:
