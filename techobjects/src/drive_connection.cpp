@@ -46,6 +46,16 @@ DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& 
   has_zsw2_ = drive_actual.carries(tg::Signal::ZSW2);
 }
 
+void DriveConnection::restart(const DriveConnectionConfig& config) noexcept {
+  const auto sign_of_life = config_.sign_of_life;
+  config_ = config;
+  config_.sign_of_life = sign_of_life;  // the running monitor keeps its configuration and expectation
+  drive_sp_.STW1 = tg::Stw1{static_cast<std::uint16_t>(drive_sp_.STW1.value() & 0x04FFu)};
+  drive_sp_.STW2 = tg::Stw2{static_cast<std::uint16_t>(drive_sp_.STW2.value() & 0xF000u)};
+  request_ = tg::DriveRequest::kOff;
+  speed_setpoint_rpm_ = 0.0;
+}
+
 void DriveConnection::acknowledge() noexcept {
   sequencer_.request_acknowledge();
   slave_monitor_.reset();

@@ -726,7 +726,7 @@ void SpeedAxis::restart() noexcept {
   setpoint_ = MotionState{};
   drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_.Actor.DriveParameter.ReferenceTorque;
-  if (device_ != nullptr) drive_ = DriveConnection(*device_, drive_config_);  // no allocation: plain values
+  if (device_ != nullptr) drive_.restart(drive_config_);  // the PROFIdrive link runs on
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -372,6 +372,11 @@ TEST(SpeedAxis, RestartAppliesStartValues) {
   EXPECT_DOUBLE_EQ(m.axis->data().DynamicLimits.MaxVelocity, 2000.0);
   EXPECT_FALSE(
       techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
+  // The restart does not disturb the running PROFIdrive link: no sign-of-life fault, and the axis enables again.
+  m.run(50);
+  EXPECT_EQ(m.drive->active_fault(), 0u);
+  m.power.Enable = true;
+  EXPECT_GT(m.run_until([&] { return m.power.Status; }, 100), 0);
 }
 
 // spec 01 §8.5: the velocity is limited to min(MaxVelocity, Velocity) with warning 501.

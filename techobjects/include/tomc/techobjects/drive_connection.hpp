@@ -41,6 +41,10 @@ class DriveConnection {
   // `device` must stay alive as long as this connection (the runtime owns it).
   DriveConnection(DeviceIo& device, const DriveConnectionConfig& config);
 
+  // TO restart (MC_Reset Restart): new reference values, the user's STW bits cleared (spec 03 §4.14); the
+  // link itself (sign-of-life counters, sequencer) runs on undisturbed, as the drive's monitor expects.
+  void restart(const DriveConnectionConfig& config) noexcept;
+
   // ---- MC_Servo ----
   void read() noexcept;   // first, after the runtime read the actual frames
   void write() noexcept;  // last: compose and encode this cycle's setpoints
