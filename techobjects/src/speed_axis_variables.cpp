@@ -15,96 +15,18 @@
 #include <utility>
 
 #include "tomc/techobjects/speed_axis_data.hpp"
+#include "tomc/techobjects/variable_table_support.hpp"
 #include "tomc/techobjects/variables.hpp"
 
 namespace tomc::techobjects {
 namespace {
 
-// ---- data-type limits (spec 04 §0.2: "where a range is missing, the data-type limits apply") ----
-constexpr double kLrealMin = std::numeric_limits<double>::lowest();
-constexpr double kLrealMax = std::numeric_limits<double>::max();
-constexpr double kByteMax = 255.0;
-constexpr double kWordMax = 65535.0;
-constexpr double kUdintMax = 4294967295.0;
-constexpr double kDintMin = -2147483648.0;
-constexpr double kDintMax = 2147483647.0;
-constexpr double kIntMin = -32768.0;
-constexpr double kIntMax = 32767.0;
+using namespace detail;  // the shared table helpers
 
 // ---- ranges of the speed-axis tables (man. §10.2) ----
 constexpr double k1e12 = 1.0E12;
 constexpr double kSpeedAxisMaxAcceleration = 2.7777777777778E8;  // DynamicLimits / DynamicDefaults, S column
 constexpr double kSpeedAxisMaxJerk = 4629629.629;  // DynamicLimits.MaxJerk / DynamicDefaults.Jerk, S
-
-constexpr double type_minimum(VariableType type) {
-  switch (type) {
-    case VariableType::kInt:
-      return kIntMin;
-    case VariableType::kDint:
-      return kDintMin;
-    case VariableType::kLreal:
-      return kLrealMin;
-    default:
-      return 0.0;
-  }
-}
-constexpr double type_maximum(VariableType type) {
-  switch (type) {
-    case VariableType::kBool:
-      return 1.0;
-    case VariableType::kByte:
-      return kByteMax;
-    case VariableType::kWord:
-    case VariableType::kUint:
-    case VariableType::kDbAny:
-      return kWordMax;
-    case VariableType::kDword:
-    case VariableType::kUdint:
-      return kUdintMax;
-    case VariableType::kInt:
-      return kIntMax;
-    case VariableType::kDint:
-      return kDintMax;
-    case VariableType::kLreal:
-      return kLrealMax;
-  }
-  return 0.0;
-}
-
-// The C++ type of each data type (spec 04 §0.4).
-template <typename T>
-constexpr bool cpp_type_matches(VariableType type) {
-  switch (type) {
-    case VariableType::kBool:
-      return std::is_same_v<T, bool>;
-    case VariableType::kByte:
-      return std::is_same_v<T, std::uint8_t>;
-    case VariableType::kWord:
-    case VariableType::kUint:
-    case VariableType::kDbAny:
-      return std::is_same_v<T, std::uint16_t>;
-    case VariableType::kDword:
-    case VariableType::kUdint:
-      return std::is_same_v<T, std::uint32_t>;
-    case VariableType::kInt:
-      return std::is_same_v<T, std::int16_t>;
-    case VariableType::kDint:
-      return std::is_same_v<T, std::int32_t>;
-    case VariableType::kLreal:
-      return std::is_same_v<T, double>;
-  }
-  return false;
-}
-
-// Only called with values check_value() accepted, so the conversion is exact and in range.
-template <typename T>
-constexpr T from_double(double value) noexcept {
-  if constexpr (std::is_same_v<T, bool>) {
-    return value != 0.0;
-  } else {
-    return static_cast<T>(value);
-  }
-}
 
 // ---- permitted values ----
 // Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.2.4, spec 04 §3.3).

@@ -17,6 +17,7 @@
 
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/positioning_axis_data.hpp"
+#include "tomc/techobjects/variable_table_support.hpp"
 #include "tomc/techobjects/variables.hpp"
 
 namespace tomc::techobjects {
@@ -52,101 +53,4 @@ std::optional<ArrayElementPath> parse_array_element(std::string_view path) noexc
 // Interface"); 0 if the table has no such array (the external encoder's Sensor is a single structure).
 std::uint32_t array_upper_bound(std::span<const VariableInfo> table, std::string_view array) noexcept;
 
-// ---- building blocks of the reflection tables (also usable by other TO tables) ----
-namespace detail {
-
-// Data-type limits (spec 04 §0.2: "where a range is missing, the data-type limits apply").
-inline constexpr double kLrealMin = std::numeric_limits<double>::lowest();
-inline constexpr double kLrealMax = std::numeric_limits<double>::max();
-inline constexpr double kByteMax = 255.0;
-inline constexpr double kWordMax = 65535.0;
-inline constexpr double kUdintMax = 4294967295.0;
-inline constexpr double kDintMin = -2147483648.0;
-inline constexpr double kDintMax = 2147483647.0;
-inline constexpr double kIntMin = -32768.0;
-inline constexpr double kIntMax = 32767.0;
-
-constexpr double type_minimum(VariableType type) noexcept {
-  switch (type) {
-    case VariableType::kInt:
-      return kIntMin;
-    case VariableType::kDint:
-      return kDintMin;
-    case VariableType::kLreal:
-      return kLrealMin;
-    default:
-      return 0.0;
-  }
-}
-constexpr double type_maximum(VariableType type) noexcept {
-  switch (type) {
-    case VariableType::kBool:
-      return 1.0;
-    case VariableType::kByte:
-      return kByteMax;
-    case VariableType::kWord:
-    case VariableType::kUint:
-    case VariableType::kDbAny:
-      return kWordMax;
-    case VariableType::kDword:
-    case VariableType::kUdint:
-      return kUdintMax;
-    case VariableType::kInt:
-      return kIntMax;
-    case VariableType::kDint:
-      return kDintMax;
-    case VariableType::kLreal:
-      return kLrealMax;
-  }
-  return 0.0;
-}
-
-// The C++ type of each data type (spec 04 §0.4).
-template <typename T>
-constexpr bool cpp_type_matches(VariableType type) noexcept {
-  switch (type) {
-    case VariableType::kBool:
-      return std::is_same_v<T, bool>;
-    case VariableType::kByte:
-      return std::is_same_v<T, std::uint8_t>;
-    case VariableType::kWord:
-    case VariableType::kUint:
-    case VariableType::kDbAny:
-      return std::is_same_v<T, std::uint16_t>;
-    case VariableType::kDword:
-    case VariableType::kUdint:
-      return std::is_same_v<T, std::uint32_t>;
-    case VariableType::kInt:
-      return std::is_same_v<T, std::int16_t>;
-    case VariableType::kDint:
-      return std::is_same_v<T, std::int32_t>;
-    case VariableType::kLreal:
-      return std::is_same_v<T, double>;
-  }
-  return false;
-}
-
-// Only called with values check_value() accepted, so the conversion is exact and in range.
-template <typename T>
-constexpr T from_double(double value) noexcept {
-  if constexpr (std::is_same_v<T, bool>) {
-    return value != 0.0;
-  } else {
-    return static_cast<T>(value);
-  }
-}
-
-// Every range is non-empty, inside its data type, and every permitted value lies in the range.
-constexpr bool ranges_valid(std::span<const VariableInfo> table) noexcept {
-  for (const VariableInfo& info : table) {
-    if (!(info.minimum <= info.maximum)) return false;
-    if (info.minimum < type_minimum(info.type) || info.maximum > type_maximum(info.type)) return false;
-    for (const double v : info.allowed_values) {
-      if (!(v >= info.minimum && v <= info.maximum)) return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace detail
 }  // namespace tomc::techobjects
