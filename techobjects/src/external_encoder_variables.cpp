@@ -21,11 +21,18 @@
 namespace tomc::techobjects {
 namespace {
 
+using detail::kAny;
 using detail::kByteMax;
 using detail::kDintMax;
 using detail::kDintMin;
+using detail::kForceUnits;
+using detail::kInertiaUnits;
 using detail::kLrealMax;
 using detail::kLrealMin;
+using detail::kMassUnits;
+using detail::kRemoveEnableReactionValues;
+using detail::kTimeUnits;
+using detail::kTorqueUnits;
 using detail::kUdintMax;
 using detail::kWordMax;
 
@@ -58,12 +65,9 @@ constexpr std::array<double, 19> kVelocityUnits{unit_code::kDegreePerSecond,
                                                 unit_code::kFootPerSecond,
                                                 unit_code::kFootPerMinute,
                                                 unit_code::kMilePerHour};
-constexpr std::array<double, 1> kTimeUnits{unit_code::kSecond};
 // ErrorDetail.Reaction: 0 none, 10 remove enable (man. §10.4.17, as printed; spec 04 §14 item 7).
 constexpr std::array<double, 2> kReactionValues{static_cast<double>(ExternalEncoderReaction::kNone),
                                                 static_cast<double>(ExternalEncoderReaction::kRemoveEnable)};
-
-constexpr std::span<const double> kAny{};
 
 // One row: `path_literal` is the manual path, `member` the ExternalEncoderData member expression it names.
 #define TOMC_E_ROW(path_literal, member, data_type, access_code, variable_role, lo, hi, allowed, wp)       \

@@ -20,11 +20,18 @@
 namespace tomc::techobjects {
 namespace {
 
+using detail::kAny;
 using detail::kByteMax;
 using detail::kDintMax;
 using detail::kDintMin;
+using detail::kForceUnits;
+using detail::kInertiaUnits;
 using detail::kLrealMax;
 using detail::kLrealMin;
+using detail::kMassUnits;
+using detail::kRemoveEnableReactionValues;
+using detail::kTimeUnits;
+using detail::kTorqueUnits;
 using detail::kUdintMax;
 using detail::kWordMax;
 
@@ -41,8 +48,6 @@ constexpr double kHomingReferencingVelocityMax = 36000.0;
 // starts at 0.0.
 
 // ---- permitted values ----
-// Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.3.4, spec 04 §3.3).
-constexpr std::array<double, 4> kRemoveEnableReactionValues{0x1, 0x3, 0x5, 0x7};
 // Units.* codes of P/Y (man. §10.3.12, spec 04 §3.11).
 constexpr std::array<double, 12> kLengthUnits{
     unit_code::kMetre,     unit_code::kMillimetre, unit_code::kMillimetreHighResolution,
@@ -68,19 +73,6 @@ constexpr std::array<double, 19> kVelocityUnits{unit_code::kDegreePerSecond,
                                                 unit_code::kFootPerSecond,
                                                 unit_code::kFootPerMinute,
                                                 unit_code::kMilePerHour};
-constexpr std::array<double, 1> kTimeUnits{unit_code::kSecond};
-constexpr std::array<double, 8> kTorqueUnits{unit_code::kNewtonMetre,    unit_code::kKilonewtonMetre,
-                                             unit_code::kPoundForceInch, unit_code::kPoundForceFoot,
-                                             unit_code::kOunceForceInch, unit_code::kOunceForceFoot,
-                                             unit_code::kPoundalInch,    unit_code::kPoundalFoot};
-constexpr std::array<double, 5> kForceUnits{unit_code::kNewton, unit_code::kKilonewton,
-                                            unit_code::kPoundForce, unit_code::kOunceForce,
-                                            unit_code::kPoundal};
-constexpr std::array<double, 5> kMassUnits{unit_code::kKilogram, unit_code::kGram, unit_code::kMilligram,
-                                           unit_code::kTonne, unit_code::kPound};
-constexpr std::array<double, 2> kInertiaUnits{unit_code::kKilogramSquareMetre, unit_code::kPoundSquareFoot};
-
-constexpr std::span<const double> kAny{};
 
 // One row: `path_literal` is the manual path, `member` the PositioningAxisData member expression it names.
 #define TOMC_P_ROW(path_literal, member, data_type, access_code, variable_role, lo, hi, allowed, wp)       \

@@ -29,24 +29,9 @@ constexpr double kSpeedAxisMaxAcceleration = 2.7777777777778E8;  // DynamicLimit
 constexpr double kSpeedAxisMaxJerk = 4629629.629;  // DynamicLimits.MaxJerk / DynamicDefaults.Jerk, S
 
 // ---- permitted values ----
-// Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.2.4, spec 04 §3.3).
-constexpr std::array<double, 4> kRemoveEnableReactionValues{0x1, 0x3, 0x5, 0x7};
 // Units.* codes of the speed axis (man. §10.2.7, spec 04 §3.11).
 constexpr std::array<double, 3> kVelocityUnits{unit_code::kPerSecond, unit_code::kPerMinute,
                                                unit_code::kPerHour};
-constexpr std::array<double, 1> kTimeUnits{unit_code::kSecond};
-constexpr std::array<double, 8> kTorqueUnits{unit_code::kNewtonMetre,    unit_code::kKilonewtonMetre,
-                                             unit_code::kPoundForceInch, unit_code::kPoundForceFoot,
-                                             unit_code::kOunceForceInch, unit_code::kOunceForceFoot,
-                                             unit_code::kPoundalInch,    unit_code::kPoundalFoot};
-constexpr std::array<double, 5> kForceUnits{unit_code::kNewton, unit_code::kKilonewton,
-                                            unit_code::kPoundForce, unit_code::kOunceForce,
-                                            unit_code::kPoundal};
-constexpr std::array<double, 5> kMassUnits{unit_code::kKilogram, unit_code::kGram, unit_code::kMilligram,
-                                           unit_code::kTonne, unit_code::kPound};
-constexpr std::array<double, 2> kInertiaUnits{unit_code::kKilogramSquareMetre, unit_code::kPoundSquareFoot};
-
-constexpr std::span<const double> kAny{};
 
 // One row: `member` is the SpeedAxisData member expression and, stringized, the manual path.
 #define TOMC_SPEED_AXIS_VARIABLE(member, data_type, access_code, variable_role, lo, hi, allowed, wp)        \

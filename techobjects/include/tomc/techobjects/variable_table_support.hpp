@@ -3,11 +3,13 @@
 // data-type limits (spec 04 §0.2 "where a range is missing, the data-type limits apply"), the C++ type of
 // each data type (spec 04 §0.4), and compile-time checks of a table.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <type_traits>
 
+#include "tomc/techobjects/speed_axis_data.hpp"
 #include "tomc/techobjects/variables.hpp"
 
 namespace tomc::techobjects {
@@ -107,6 +109,23 @@ constexpr bool ranges_valid(std::span<const VariableInfo> table) noexcept {
   }
   return true;
 }
+
+// ---- permitted values the TO tables share (spec 04 §3.3, §3.11) ----
+// Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.2.4, spec 04 §3.3).
+inline constexpr std::array<double, 4> kRemoveEnableReactionValues{0x1, 0x3, 0x5, 0x7};
+inline constexpr std::array<double, 1> kTimeUnits{unit_code::kSecond};
+inline constexpr std::array<double, 8> kTorqueUnits{unit_code::kNewtonMetre,    unit_code::kKilonewtonMetre,
+                                                    unit_code::kPoundForceInch, unit_code::kPoundForceFoot,
+                                                    unit_code::kOunceForceInch, unit_code::kOunceForceFoot,
+                                                    unit_code::kPoundalInch,    unit_code::kPoundalFoot};
+inline constexpr std::array<double, 5> kForceUnits{unit_code::kNewton, unit_code::kKilonewton,
+                                                   unit_code::kPoundForce, unit_code::kOunceForce,
+                                                   unit_code::kPoundal};
+inline constexpr std::array<double, 5> kMassUnits{
+    unit_code::kKilogram, unit_code::kGram, unit_code::kMilligram, unit_code::kTonne, unit_code::kPound};
+inline constexpr std::array<double, 2> kInertiaUnits{unit_code::kKilogramSquareMetre,
+                                                     unit_code::kPoundSquareFoot};
+inline constexpr std::span<const double> kAny{};
 
 }  // namespace detail
 
