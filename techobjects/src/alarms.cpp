@@ -19,6 +19,7 @@ constexpr AlarmDefinition kAlarms[] = {
     {kAlarmModuloTooFast, C::kAcknowledge, R::kRemoveEnable,
      "modulo axis faster than Modulo.Length / servo cycle"},
     {kAlarmDriveSto, C::kAcknowledge, R::kRemoveEnable, "drive STO / autonomous OFF2"},
+    {kAlarmSensorFault, C::kAcknowledge, R::kRemoveEnable, "encoder error (Gx_ZSW.15, code in Gx_XIST2)"},
     {kAlarmDynamicsLimitedVelocity, C::kWarning, R::kNone,
      "programmed velocity limited to the dynamic limits"},
     {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone,

@@ -18,6 +18,18 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "technology object not enabled";
     case kAxisBlockedByAlarm:
       return "technology object blocked by an alarm reaction";
+    case kAxisNotHomed:
+      return "technology object not homed";
+    case kEncoderNotValid:
+      return "encoder actual value not valid";
+    case kHomingModeNotAvailable:
+      return "homing mode not available on this technology object";
+    case kInvalidPosition:
+      return "invalid Position or Distance (not finite, or outside the modulo range)";
+    case kInvalidBufferMode:
+      return "invalid BufferMode";
+    case kInvalidSensor:
+      return "invalid Sensor";
     case kInvalidVelocity:
       return "invalid Velocity";
     case kInvalidAcceleration:

@@ -43,6 +43,7 @@ inline constexpr std::uint32_t kAlarmDriveCommunication = 405;  // no fresh fram
 inline constexpr std::uint32_t kAlarmDriveSignOfLife = 406;     // drive sign-of-life failed
 inline constexpr std::uint32_t kAlarmModuloTooFast = 412;       // seed L3946
 inline constexpr std::uint32_t kAlarmDriveSto = 421;            // seed L2712
+inline constexpr std::uint32_t kAlarmSensorFault = 431;         // encoder error (Gx_ZSW.15), [OUR CHOICE]
 inline constexpr std::uint32_t kAlarmDynamicsLimitedVelocity = 501;  // seed §10.3.15
 inline constexpr std::uint32_t kAlarmDynamicsLimitedAcceleration = 502;
 inline constexpr std::uint32_t kAlarmDynamicsLimitedJerk = 503;
