@@ -36,7 +36,7 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
       start_(start_values),
       db_(start_values),
       drive_config_(drive),
-      chain_(AxisMechanics{}, EncoderMechanics{}, 0.001) {
+      encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kDriveG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
     throw std::invalid_argument(name_ + "." + std::string(path) + ": " + std::string(message));
   };
@@ -62,26 +62,20 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_.Actor.DriveParameter.ReferenceTorque;
   if (device_ != nullptr) {
-    // Which telegram carries the operative encoder (decision P3): G1/G2 of the drive telegram per
-    // Sensor[n].Interface.Number; a drive telegram without encoder (1, 2) uses the separate telegram 81/83.
+    // Which telegram carries the operative encoder (decision P3).
     const auto& cfg = device_->adapter->config();
-    const auto& sensor = start_.Sensor[op - 1];
-    if (sensor.Interface.Number == 2 && carries(cfg.drive_telegram, tg::Signal::G2_XIST1)) {
-      encoder_slot_ = 1;
-    } else if (sensor.Interface.Number != 2 && carries(cfg.drive_telegram, tg::Signal::G1_XIST1)) {
-      encoder_slot_ = 0;
-    } else if (carries(cfg.encoder_telegrams[0], tg::Signal::G1_XIST1)) {
-      encoder_slot_ = 2;
-    } else {
+    const auto source = find_encoder_source(cfg, start_.Sensor[op - 1].Interface.Number);
+    if (!source) {
       fail("Sensor[" + std::to_string(op) + "].Interface.Number",
            "the device's telegrams carry no such encoder (drive telegram " +
                std::to_string(cfg.drive_telegram) + ", encoder telegram " +
                std::to_string(cfg.encoder_telegrams[0]) + ")");
     }
+    encoder_source_ = *source;
     drive_ = DriveConnection(*device_, drive_config_);
   }
   configure_components();
-  if (const auto& p = chain_.config_problem()) fail(p->path, p->message);
+  if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
   if (start_.PositionControl.EnableDSC && device_ != nullptr &&
       !carries(device_->adapter->config().drive_telegram, tg::Signal::G1_XIST1)) {
     fail("PositionControl.EnableDSC", "DSC needs drive telegram 5, 6, 105 or 106");
@@ -102,23 +96,24 @@ void PositioningAxis::configure_components() noexcept {
   mechanics_.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
   mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
   mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
-  encoder_.Type = static_cast<EncoderType>(s.Type);
-  encoder_.System = static_cast<EncoderSystem>(s.System);
-  encoder_.MountingMode = static_cast<EncoderMounting>(s.MountingMode);
-  encoder_.InverseDirection = s.InverseDirection;
-  encoder_.MeasuringGear = GearRatio{s.MeasuringGear.Numerator, s.MeasuringGear.Denominator};
-  encoder_.Parameter.Resolution = s.Parameter.Resolution;
-  encoder_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
-  encoder_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
-  encoder_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
-  encoder_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
-  encoder_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
-  encoder_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
-  encoder_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
-  encoder_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
-  encoder_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
-  encoder_.Nist = encoder_slot_ == 2 ? NistSource::kEncoderTelegram83 : NistSource::kDriveTelegram;
-  chain_ = ActualValueChain(mechanics_, encoder_, servo_cycle_s_);
+  encoder_mechanics_.Type = static_cast<EncoderType>(s.Type);
+  encoder_mechanics_.System = static_cast<EncoderSystem>(s.System);
+  encoder_mechanics_.MountingMode = static_cast<EncoderMounting>(s.MountingMode);
+  encoder_mechanics_.InverseDirection = s.InverseDirection;
+  encoder_mechanics_.MeasuringGear = GearRatio{s.MeasuringGear.Numerator, s.MeasuringGear.Denominator};
+  encoder_mechanics_.Parameter.Resolution = s.Parameter.Resolution;
+  encoder_mechanics_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
+  encoder_mechanics_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
+  encoder_mechanics_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
+  encoder_mechanics_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
+  encoder_mechanics_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
+  encoder_mechanics_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
+  encoder_mechanics_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
+  encoder_mechanics_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
+  encoder_mechanics_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
+  encoder_mechanics_.Nist = encoder_source_ == EncoderSource::kEncoderG1 ? NistSource::kEncoderTelegram83
+                                                                         : NistSource::kDriveTelegram;
+  encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, encoder_source_);
 
   PositionControlConfig pc;
   pc.Kv = db_.PositionControl.Kv;
@@ -578,9 +573,10 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
   if (in.Mode == 11) wanted = shown_actual + (in.Position - shown_setpoint);
   double delta = 0.0;
   if (device_ != nullptr) {
-    const double before = chain_.continuous_position();
-    chain_.set_position(wanted, ModuloCycleRule::kShortestDistance);  // modulo counter: spec 01 §2.4.1
-    delta = chain_.continuous_position() - before;
+    const double before = encoder_.chain().continuous_position();
+    encoder_.chain().set_position(wanted,
+                                  ModuloCycleRule::kShortestDistance);  // modulo counter: spec 01 §2.4.1
+    delta = encoder_.chain().continuous_position() - before;
   } else if (modulo()) {
     const double start = db_.Modulo.StartValue;
     const double length = db_.Modulo.Length;

@@ -19,7 +19,6 @@ namespace {
 
 constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // as the speed axis (decision S8)
 constexpr double kStandstillEpsilon = 1e-9;          // position units / s
-constexpr std::uint32_t kEncoderAcknowledgeCycles = 10;
 
 // floor((x - start) / length): the modulo cycle index of a continuous position.
 std::int64_t cycle_index(double x, double start, double length) noexcept {
@@ -69,13 +68,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
     } else {
       request = stop_mode_ == 3 ? tg::DriveRequest::kCoastStop : tg::DriveRequest::kOff;
     }
-    // Encoder: absolute value cyclically in Gx_XIST2 for absolute encoders; acknowledge encoder errors.
-    auto& stw = encoder_slot_ == 1   ? drive_.drive_setpoint().G2_STW
-                : encoder_slot_ == 2 ? drive_.encoder_setpoint(0).G1_STW
-                                     : drive_.drive_setpoint().G1_STW;
-    stw.set(tg::EncoderControlBit::kRequestAbsoluteValue, chain_.absolute_type());
-    stw.set(tg::EncoderControlBit::kAcknowledgeEncoderError, encoder_acknowledge_cycles_ > 0);
-    if (encoder_acknowledge_cycles_ > 0) --encoder_acknowledge_cycles_;
+    encoder_.write(drive_);  // absolute value cyclically, error acknowledge
     drive_.request(request);
     drive_.write();
   }
@@ -93,35 +86,24 @@ void PositioningAxis::read_actual_values() noexcept {
                                                                 db_.Actor.DriveParameter.ReferenceTorque);
   }
 
-  const tg::ActualSignals& a = encoder_slot_ == 2 ? drive_.encoder_actual(0) : drive_.drive_actual();
-  const tg::EncoderStatusWord zsw = encoder_slot_ == 1 ? a.G2_ZSW : a.G1_ZSW;
-  const std::uint32_t xist2 = encoder_slot_ == 1 ? a.G2_XIST2 : a.G1_XIST2;
-  const bool encoder_error = zsw.test(tg::EncoderStatusBit::kEncoderError);
+  encoder_.read(drive_, device_->fresh);
+  const bool encoder_error = encoder_.error();
   auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
   sensor.CommunicationOK =
       drive_.communication_ok() || drive_.communication_fault() == CommunicationFault::kDriveFault;
   sensor.Error = encoder_error;
-  if (device_->fresh && !encoder_error) {
-    EncoderSample sample;
-    sample.xist1 = encoder_slot_ == 1 ? a.G2_XIST1 : a.G1_XIST1;
-    if (chain_.absolute_type() && zsw.test(tg::EncoderStatusBit::kAbsoluteValueTransmitted)) {
-      sample.xist2_absolute = xist2;
-    }
-    if (encoder_.VelocityMode == ActualVelocityMode::kProfidriveNist) sample.nist_b = a.NIST_B;
-    chain_.update(sample);
-  }
   const bool held_off = acknowledged_at_ != 0 && cycle_ < acknowledged_at_ + kReRaiseHoldOffCycles;
   if (encoder_error && (!encoder_fault_seen_ || !held_off)) {
-    raise(kAlarmSensorFault, xist2);  // the error code is in Gx_XIST2 (spec 06 §6.3)
+    raise(kAlarmSensorFault, encoder_.error_code());  // the code is in Gx_XIST2 (spec 06 §6.3)
     // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8).
-    if (!chain_.absolute_type()) homed_ = false;
+    if (!encoder_.chain().absolute_type()) homed_ = false;
   }
   encoder_fault_seen_ = encoder_error;
-  actual_valid_ = chain_.position_valid() && !encoder_error && drive_.communication_ok();
+  actual_valid_ = encoder_.chain().position_valid() && !encoder_error && drive_.communication_ok();
   sensor.State =
       static_cast<std::int32_t>(actual_valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
-  actual_position_ = chain_.continuous_position();
-  actual_velocity_ = chain_.velocity();
+  actual_position_ = encoder_.chain().continuous_position();
+  actual_velocity_ = encoder_.chain().velocity();
   supervise_drive();
 }
 
@@ -180,12 +162,12 @@ void PositioningAxis::control() noexcept {
     return;
   }
   const double max = db_.Actor.DriveParameter.MaxSpeed;
-  const double rpm = std::clamp(chain_.scaling().motor_speed(velocity), -max, max);
-  db_.VelocitySetpoint = chain_.scaling().load_velocity(rpm) * units_.velocity;
+  const double rpm = std::clamp(encoder_.chain().scaling().motor_speed(velocity), -max, max);
+  db_.VelocitySetpoint = encoder_.chain().scaling().load_velocity(rpm) * units_.velocity;
   drive_.set_speed_setpoint(rpm);
   auto& sp = drive_.drive_setpoint();
   if (db_.PositionControl.EnableDSC && active && position_controlled_) {
-    sp.XERR = chain_.scaling().xerr(out.dsc_position_error);
+    sp.XERR = encoder_.chain().scaling().xerr(out.dsc_position_error);
     sp.KPC = tg::kpc_from_kv(out.dsc_kpc);
   } else {
     sp.XERR = 0;
@@ -291,7 +273,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
     acknowledged_at_ = cycle_;
     if (device_ != nullptr) {
       drive_.acknowledge();
-      encoder_acknowledge_cycles_ = kEncoderAcknowledgeCycles;
+      encoder_.acknowledge();
     }
     if (restart_requested_) restart();
     set_job(reset_job_, JobState::kDone);
@@ -649,7 +631,7 @@ void PositioningAxis::update_status() noexcept {
     db_.ActualPosition = act.position;
     // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
     // the cycles between them.
-    const std::int64_t actual_cycle = device_ != nullptr ? chain_.modulo_cycle() : act.cycle;
+    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() : act.cycle;
     db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
     db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
   } else {
@@ -774,10 +756,10 @@ void PositioningAxis::restart() noexcept {
   limit_stop_ = false;
   positioning_start_pending_ = false;
   units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
-  const RetainedSensorState retained = chain_.retained_state();
+  const RetainedSensorState retained = encoder_.chain().retained_state();
   configure_components();
-  if (chain_.absolute_type()) {
-    chain_.power_up(&retained);
+  if (encoder_.chain().absolute_type()) {
+    encoder_.chain().power_up(&retained);
   } else {
     homed_ = false;
     actual_position_ = 0.0;

@@ -25,6 +25,7 @@
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
+#include "tomc/techobjects/encoder_channel.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
 #include "tomc/techobjects/job_table.hpp"
@@ -228,9 +229,9 @@ class PositioningAxis final : public TechnologyObject {
   // components
   AxisUnitFactors units_{};
   AxisMechanics mechanics_{};
-  EncoderMechanics encoder_{};
-  ActualValueChain chain_;
-  std::int32_t encoder_slot_ = 0;  // 0: G1 of the drive telegram, 1: G2, 2: separate encoder telegram
+  EncoderMechanics encoder_mechanics_{};
+  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
+  EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
   PositionController controller_;
   FollowingErrorMonitor following_error_;
   PositioningMonitor positioning_;
@@ -262,7 +263,6 @@ class PositioningAxis final : public TechnologyObject {
   bool limit_stop_ = false;  // a software-limit stop to limit_stop_position_ is in force
   double limit_stop_position_ = 0.0;
   double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
-  std::uint32_t encoder_acknowledge_cycles_ = 0;  // Gx_STW.15 held after MC_Reset (spec 06 §6.3)
   double last_actual_velocity_ = 0.0;
   double last_setpoint_acceleration_ = 0.0;
 

@@ -1,0 +1,61 @@
+#pragma once
+// One encoder of an axis or external encoder as the telegrams carry it (spec 01 §3.3–§3.9, spec 06 §6): which
+// Gx_ZSW/Gx_XIST1/Gx_XIST2 of which telegram, the actual-value chain that turns them into user units, the
+// encoder's error bit, and the Gx_STW requests (absolute value cyclically, error acknowledge). Shared by
+// TO_PositioningAxis and TO_ExternalEncoder. noexcept, no allocation after construction.
+
+#include <cstdint>
+#include <optional>
+
+#include "tomc/drives/drive_adapter.hpp"
+#include "tomc/techobjects/actual_value_chain.hpp"
+#include "tomc/techobjects/drive_connection.hpp"
+
+namespace tomc::techobjects {
+
+// Where the encoder's signals are (decision P3).
+enum class EncoderSource : std::uint8_t {
+  kDriveG1,    // G1 of the drive telegram (3, 4, 5, 6, 102, 103, 105, 106)
+  kDriveG2,    // G2 of the drive telegram (4, 6, 103, 106) — Sensor[n].Interface.Number = 2
+  kEncoderG1,  // G1 of the separate encoder telegram 81/83 (slot kEncoder1)
+};
+
+// The source of encoder `number` (Sensor[n].Interface.Number, 1 or 2) on a device: G1/G2 of the drive
+// telegram if it carries them, else the separate encoder telegram. nullopt: the device carries no such
+// encoder. Set-up only (creates codecs).
+std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number);
+
+class EncoderChannel {
+ public:
+  static constexpr std::uint32_t kAcknowledgeCycles = 10;  // Gx_STW.15 held after MC_Reset (spec 06 §6.3)
+
+  EncoderChannel(const AxisMechanics& axis, const EncoderMechanics& encoder, double servo_cycle_s,
+                 EncoderSource source) noexcept
+      : chain_(axis, encoder, servo_cycle_s),
+        source_(source),
+        velocity_from_nist_(encoder.VelocityMode == ActualVelocityMode::kProfidriveNist) {}
+
+  // MC_Servo, after DriveConnection::read(): takes this cycle's encoder values into the chain when they are
+  // fresh and the encoder reports no error.
+  void read(const DriveConnection& drive, bool fresh) noexcept;
+  // MC_Servo, before DriveConnection::write(): the Gx_STW requests.
+  void write(DriveConnection& drive) noexcept;
+  void acknowledge() noexcept { acknowledge_cycles_ = kAcknowledgeCycles; }
+
+  bool error() const noexcept { return error_; }                     // Gx_ZSW.15
+  std::uint32_t error_code() const noexcept { return error_code_; }  // Gx_XIST2 with the error bit
+  bool valid() const noexcept { return chain_.position_valid() && !error_; }
+  ActualValueChain& chain() noexcept { return chain_; }
+  const ActualValueChain& chain() const noexcept { return chain_; }
+  EncoderSource source() const noexcept { return source_; }
+
+ private:
+  ActualValueChain chain_;
+  EncoderSource source_ = EncoderSource::kDriveG1;
+  bool velocity_from_nist_ = false;
+  bool error_ = false;
+  std::uint32_t error_code_ = 0;
+  std::uint32_t acknowledge_cycles_ = 0;
+};
+
+}  // namespace tomc::techobjects

@@ -1,0 +1,56 @@
+#include "tomc/techobjects/encoder_channel.hpp"
+
+#include "tomc/telegrams/codec.hpp"
+
+namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+namespace {
+
+bool carries(std::uint16_t telegram, tg::Signal signal) {
+  if (telegram == 0) return false;
+  const auto codec = tg::TelegramCodec::create(telegram, tg::Direction::kActual);
+  return static_cast<bool>(codec) && codec->carries(signal);
+}
+
+}  // namespace
+
+std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number) {
+  if (number == 2) {
+    if (carries(device.drive_telegram, tg::Signal::G2_XIST1)) return EncoderSource::kDriveG2;
+  } else if (carries(device.drive_telegram, tg::Signal::G1_XIST1)) {
+    return EncoderSource::kDriveG1;
+  }
+  if (carries(device.encoder_telegrams[0], tg::Signal::G1_XIST1)) return EncoderSource::kEncoderG1;
+  return std::nullopt;
+}
+
+void EncoderChannel::read(const DriveConnection& drive, bool fresh) noexcept {
+  const tg::ActualSignals& a =
+      source_ == EncoderSource::kEncoderG1 ? drive.encoder_actual(0) : drive.drive_actual();
+  const bool g2 = source_ == EncoderSource::kDriveG2;
+  const tg::EncoderStatusWord zsw = g2 ? a.G2_ZSW : a.G1_ZSW;
+  const std::uint32_t xist2 = g2 ? a.G2_XIST2 : a.G1_XIST2;
+  error_ = zsw.test(tg::EncoderStatusBit::kEncoderError);
+  error_code_ = error_ ? xist2 : 0;
+  if (!fresh || error_) return;
+  EncoderSample sample;
+  sample.xist1 = g2 ? a.G2_XIST1 : a.G1_XIST1;
+  if (chain_.absolute_type() && zsw.test(tg::EncoderStatusBit::kAbsoluteValueTransmitted)) {
+    sample.xist2_absolute = xist2;
+  }
+  if (velocity_from_nist_) sample.nist_b = a.NIST_B;
+  chain_.update(sample);
+}
+
+void EncoderChannel::write(DriveConnection& drive) noexcept {
+  auto& stw = source_ == EncoderSource::kDriveG2     ? drive.drive_setpoint().G2_STW
+              : source_ == EncoderSource::kEncoderG1 ? drive.encoder_setpoint(0).G1_STW
+                                                     : drive.drive_setpoint().G1_STW;
+  stw.set(tg::EncoderControlBit::kRequestAbsoluteValue, chain_.absolute_type());
+  stw.set(tg::EncoderControlBit::kAcknowledgeEncoderError, acknowledge_cycles_ > 0);
+  if (acknowledge_cycles_ > 0) --acknowledge_cycles_;
+}
+
+}  // namespace tomc::techobjects
