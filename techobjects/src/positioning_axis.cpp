@@ -573,10 +573,7 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
   if (in.Mode == 11) wanted = shown_actual + (in.Position - shown_setpoint);
   double delta = 0.0;
   if (device_ != nullptr) {
-    const double before = encoder_.chain().continuous_position();
-    encoder_.chain().set_position(wanted,
-                                  ModuloCycleRule::kShortestDistance);  // modulo counter: spec 01 §2.4.1
-    delta = encoder_.chain().continuous_position() - before;
+    delta = encoder_.set_position(wanted);  // modulo counter: spec 01 §2.4.1
   } else if (modulo()) {
     const double start = db_.Modulo.StartValue;
     const double length = db_.Modulo.Length;

@@ -41,6 +41,13 @@ class EncoderChannel {
   // MC_Servo, before DriveConnection::write(): the Gx_STW requests.
   void write(DriveConnection& drive) noexcept;
   void acknowledge() noexcept { acknowledge_cycles_ = kAcknowledgeCycles; }
+  // Direct homing (MC_Home 0/1/11/12, spec 02 §5.7): the actual position becomes `position`, the modulo cycle
+  // counter follows the shortest way (spec 01 §2.4.1). Returns how far the continuous position moved.
+  double set_position(double position) noexcept {
+    const double before = chain_.continuous_position();
+    chain_.set_position(position, ModuloCycleRule::kShortestDistance);
+    return chain_.continuous_position() - before;
+  }
 
   bool error() const noexcept { return error_; }                     // Gx_ZSW.15
   std::uint32_t error_code() const noexcept { return error_code_; }  // Gx_XIST2 with the error bit
