@@ -134,9 +134,9 @@ TEST_F(ScenarioCli, UnknownTraceName) {
 }
 
 TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
-  const SimRun r = sim(write("u.json", scenario("{}", "TO_ExternalEncoder", "MC_Power", "[]")));
+  const SimRun r = sim(write("u.json", scenario("{}", "TO_SynchronousAxis", "MC_Power", "[]")));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("technology_objects[0].type: TO_ExternalEncoder is not yet supported"),
+  EXPECT_NE(r.err.find("technology_objects[0].type: TO_SynchronousAxis is not yet supported"),
             std::string::npos)
       << r.err;
 }
