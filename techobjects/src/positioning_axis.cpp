@@ -216,13 +216,16 @@ std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, 
   return std::nullopt;
 }
 
-std::array<RunningJob, 3> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
-  std::array<RunningJob, 3> running{};
+std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
+  std::array<RunningJob, 4> running{};
   n = 0;
   if (motion_.id != 0) {
-    running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
+    running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
+                   : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
+                                                    : RunningJob::kBaseMotionActive;
   }
   if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
+  if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
   if (stop_.id != 0 && (!stop_.done || stop_.execute)) running[n++] = RunningJob::kStop;
   return running;
 }
@@ -250,6 +253,11 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
       case RunningJob::kBaseMotionPending:
         abort_pending(0);
         break;
+      case RunningJob::kPassiveHoming:
+        set_job(passive_.id, JobState::kAborted);
+        passive_ = PassiveHomingJob{};
+        encoder_.cancel_reference_mark();
+        break;
       default:
         abort_motion(0);
         break;
@@ -260,6 +268,10 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
 
 void PositioningAxis::abort_motion(std::uint16_t error_id) noexcept {
   if (motion_.id == 0) return;
+  if (motion_.kind == JobKind::kHome) {
+    homing_.phase = HomingPhase::kIdle;
+    encoder_.cancel_reference_mark();
+  }
   set_job(motion_.id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
   motion_ = Motion{};
   positioning_.cancel();
@@ -496,6 +508,11 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   if (d.reject) return Submission::reject(error_id::kRejectedByRunningJob);
   abort_motion(0);
   abort_pending(0);
+  if (passive_.id != 0) {  // R7 x C1 = A
+    set_job(passive_.id, JobState::kAborted);
+    passive_ = PassiveHomingJob{};
+    encoder_.cancel_reference_mark();
+  }
   if (stop_.id != 0) set_job(stop_.id, JobState::kAborted);
   limit_stop_ = false;
   stop_ = StopJob{new_job(JobKind::kStop, JobState::kActive), weight, limits, true, false};
@@ -550,51 +567,6 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
   return Submission::accept(running);
 }
 
-Submission PositioningAxis::home(const HomeInputs& in) noexcept {
-  if (!finite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
-  if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
-  if (in.Sensor != 0 && static_cast<std::uint32_t>(in.Sensor) != db_.OperativeSensor) {
-    return Submission::reject(error_id::kInvalidSensor);  // S7-1500: only the operative encoder
-  }
-  // Direct homing and setting the setpoint position (spec 02 §5.7, §5.8): executed at once, in the job's
-  // MC_Interpolator; the TO need not be enabled. The encoder must deliver valid actual values.
-  const bool direct = in.Mode == 0 || in.Mode == 1 || in.Mode == 11 || in.Mode == 12;
-  if (!direct) return Submission::reject(error_id::kHomingModeNotAvailable);
-  if (!actual_valid_) return Submission::reject(error_id::kEncoderNotValid);
-  if (blocked()) return Submission::reject(error_id::kAxisBlockedByAlarm);
-  const JobId id = new_job(JobKind::kHome, JobState::kActive);
-  // The positions as the data block shows them (modulo-wrapped), as the user sees them. Every mode becomes
-  // "the actual position is set to ...": 11/12 move the setpoint and keep the following distance, so the
-  // actual position moves by the same amount (spec 02 §5.8 [Derived]).
-  const double shown_actual = db_.ActualPosition;
-  const double shown_setpoint = db_.Position;
-  double wanted = in.Position;  // Mode 0
-  if (in.Mode == 1 || in.Mode == 12) wanted = shown_actual + in.Position;
-  if (in.Mode == 11) wanted = shown_actual + (in.Position - shown_setpoint);
-  double delta = 0.0;
-  if (device_ != nullptr) {
-    delta = encoder_.set_position(wanted);  // modulo counter: spec 01 §2.4.1
-  } else if (modulo()) {
-    const double start = db_.Modulo.StartValue;
-    const double length = db_.Modulo.Length;
-    const double w = modulo_wrap(wanted, start, length).position;
-    delta = w - shown_actual + length * modulo_cycle_change(shown_actual, w, start, length);
-  } else {
-    delta = wanted - shown_actual;
-  }
-  shift_position(delta);
-  // ReferenceMarkPosition: the position that was set (the setpoint for 11/12).
-  double reference = wanted;
-  if (in.Mode == 11) reference = in.Position;
-  if (in.Mode == 12) reference = shown_setpoint + in.Position;
-  reference_mark_position_ =
-      modulo() ? modulo_wrap(reference, db_.Modulo.StartValue, db_.Modulo.Length).position : reference;
-  homed_ = true;  // modes 0, 1, 11, 12 set HomingDone but not StatusSensor.Adjusted (spec 02 §5.1)
-  set_job(id, JobState::kDone);
-  update_status();  // the data block shows the new positions from this call on
-  return Submission::accept(id);
-}
-
 Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
                                          std::uint16_t stw2_mask) noexcept {
   constexpr std::uint16_t kUserStw1 = 0xFB00;
@@ -645,6 +617,36 @@ Submission PositioningAxis::write_parameter(std::int32_t parameter_number, doubl
 
 JobStatus PositioningAxis::job_status(JobId id) const noexcept {
   return jobs_.status(id);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Retentive data
+
+bool PositioningAxis::absolute_encoder() const noexcept {
+  return db_.Sensor[db_.OperativeSensor - 1].Type !=
+         static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+}
+
+void PositioningAxis::store_adjustment() noexcept {
+  const RetainedSensorState r = encoder_.chain().retained_state();
+  retained_.valid = true;
+  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
+  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  ++retained_.sequence;
+}
+
+void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept {
+  if (!absolute_encoder() || !data.valid) return;
+  retained_ = data;
+  retained_restored_ = true;
+  homed_ = true;  // an adjusted absolute encoder is homed after power-up (spec 02 §5.12)
+  db_.StatusSensor[db_.OperativeSensor - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
+void PositioningAxis::report_adjustment_lost(std::uint32_t cause) noexcept {
+  if (!absolute_encoder()) return;
+  (void)alarms_.raise(kAlarmAdjustmentLost, cause, cycle_);
 }
 
 // ---------------------------------------------------------------------------------------------------------

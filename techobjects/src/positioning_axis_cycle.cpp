@@ -35,6 +35,14 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
     servo_cycle_s_ = clock.servo_cycle_s;
     servo_cycle_known_ = true;
     configure_components();  // the cycle time enters the chain, the controller and the monitors
+    if (retained_restored_ && retained_.valid) {
+      // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+      RetainedSensorState r;
+      r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+      r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+      r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+      encoder_.chain().power_up(&r);
+    }
   }
   if (device_ != nullptr) {
     read_actual_values();
@@ -43,6 +51,13 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   }
   control();
   servo_monitoring();
+  homing_observe();
+  if (retained_.valid && device_ != nullptr) {
+    // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
 
   // What the drive is asked to do (as the speed axis, spec 02 §3.1, §3.4).
   if (device_ != nullptr) {
@@ -213,9 +228,17 @@ void PositioningAxis::servo_monitoring() noexcept {
     hw.max_switch_input = inputs_.MaxSwitch;
     hw.position = actual_position_;
     hw.velocity = setpoint_.velocity;
+    // Active homing with AutoReversal: the limit switches are reversal cams, no alarm 531 (spec 02 §4.2).
+    hw.homing_reversal =
+        motion_.kind == JobKind::kHome && db_.Homing.AutoReversal && homing_.phase != HomingPhase::kToHome;
     const auto r = hardware_limits_.update(hw);
     if (r.alarm.raised())
       raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    // The monitor reports a reversal cam while the switch is active; homing reacts to reaching it.
+    if (r.reversal_cam != limits::LimitSide::kNone && r.reversal_cam != reversal_cam_seen_) {
+      reversal_cam_ = r.reversal_cam;
+    }
+    reversal_cam_seen_ = r.reversal_cam;
   }
 
   // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
@@ -281,6 +304,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
 
   apply_alarm_reactions();
   update_power_phase();
+  run_homing();
   update_live_motion();
   generate_setpoint();
   monitor_software_limits();
@@ -313,6 +337,11 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
                                       db_.DynamicDefaults.Jerk / units_.acceleration};
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
+  if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
+    set_job(passive_.id, JobState::kError, error_id::kAbortedByAlarmReaction);
+    passive_ = PassiveHomingJob{};
+    encoder_.cancel_reference_mark();
+  }
   const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
   const bool stop_keeps_control =
       stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint && !limit_stop_;
@@ -379,6 +408,11 @@ void PositioningAxis::update_power_phase() noexcept {
     // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
     abort_motion(0);
     abort_pending(0);
+    if (passive_.id != 0) {
+      set_job(passive_.id, JobState::kAborted);
+      passive_ = PassiveHomingJob{};
+      encoder_.cancel_reference_mark();
+    }
     if (stop_.id != 0) {
       set_job(stop_.id, JobState::kAborted);
       stop_ = StopJob{};
@@ -494,8 +528,10 @@ void PositioningAxis::generate_setpoint() noexcept {
         setpoint_ = MotionState{
             position_profile_.at(position_profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
-        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative) {
-          if (!motion_.interpolation_done && motion_.planned_velocity > 0.0) {
+        const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
+        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
+            homing_to_home) {
+          if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
             motion_.interpolation_done = true;
             positioning_target_ = setpoint_.position;
             positioning_start_pending_ = true;
@@ -560,6 +596,7 @@ void PositioningAxis::complete_jobs() noexcept {
   const PositioningOutcome outcome = positioning_.status().outcome;
   if (motion_.id != 0) {
     switch (motion_.kind) {
+      case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
       case JobKind::kMoveAbsolute:
       case JobKind::kMoveRelative:
         // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
@@ -666,6 +703,8 @@ void PositioningAxis::update_status() noexcept {
   const bool settled = generator_ == Generator::kIdle;
   const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
   const bool job_running = motion_.id != 0 || pending_.id != 0 || (stop_.id != 0 && !stop_.done);
+  db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
+      retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   const PositioningOutcome outcome = positioning_.status().outcome;
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
@@ -676,6 +715,7 @@ void PositioningAxis::update_status() noexcept {
              outcome != PositioningOutcome::kFault && !positioning_start_pending_);
   assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
   assign(sw, StatusWordBit::kPositioningCommand, positioning);
+  assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
@@ -719,6 +759,10 @@ void PositioningAxis::update_status() noexcept {
         break;
       case kAlarmModuloTooFast:
         assign(ew, ErrorWordBit::kDynamicError, true);
+        break;
+      case kAlarmHomingFailed:
+      case kAlarmAdjustmentLost:
+        assign(ew, ErrorWordBit::kHomingError, true);
         break;
       case kAlarmFollowingErrorWarning:
         assign(ww, WarningWordBit::kFollowingErrorWarning, true);

@@ -118,6 +118,24 @@ class PositioningAxis final : public TechnologyObject {
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
+  // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
+  // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
+  // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
+  struct RetainedEncoderData {
+    bool valid = false;
+    double AbsEncoderOffset = 0.0;
+    std::int64_t MeasuringRangeCount = 0;  // cyclic absolute encoder
+    std::uint32_t LastAbsoluteValue = 0;
+    std::uint64_t sequence = 0;
+  };
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  // Before Runtime::start(): the retained data could not be restored (1 backup missing, 2 corrupt, 3 no
+  // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
@@ -167,6 +185,44 @@ class PositioningAxis final : public TechnologyObject {
     bool done = false;
   };
 
+  // homing (positioning_axis_homing.cpp)
+  enum class HomingPhase : std::uint8_t {
+    kIdle,
+    kApproach,       // towards the reference cam / digital input at ApproachVelocity (ActiveHoming.Mode 1, 2)
+    kLeaveInput,     // digital input: back off it, against the homing direction, to meet the mark edge
+    kSearchEdge,     // digital input: towards the mark edge in the homing direction at ReferencingVelocity
+    kSearchCamExit,  // cam + zero mark: leaving the cam in the homing direction arms the zero-mark search
+    kSearchMark,     // zero mark armed, in the homing direction at ReferencingVelocity
+    kToHome,         // homed: to the home position at ApproachVelocity
+  };
+  struct ActiveHomingJob {
+    HomingPhase phase = HomingPhase::kIdle;
+    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+    double home_position = 0.0;     // MC_Home.Position (3) or Homing.HomePosition (5)
+    double mark_value = 0.0;        // home position - HomePositionOffset
+    double direction = 1.0;         // homing direction (ActiveHoming.Direction)
+    double travel_direction = 1.0;  // the direction of the present search motion
+    bool mark_on_entering = false;  // digital input: the mark is the edge onto the input
+    int limit_reversals = 0;
+  };
+  struct PassiveHomingJob {
+    JobId id = 0;
+    std::int32_t method = 0;  // Sensor[n].PassiveHoming.Mode
+    double value = 0.0;       // position assigned at the mark
+    std::int32_t direction = 2;
+    bool cam_seen = false;  // cam + zero mark: the cam was detected in the homing direction
+    bool cam_left = false;  // ... and left: the zero-mark search is armed
+  };
+  void start_active_homing(JobId id, double home_position) noexcept;
+  void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
+  void run_homing() noexcept;      // MC_Interpolator
+  void run_passive_homing() noexcept;
+  void homing_move(double direction, double velocity) noexcept;
+  void assign_reference(double mark_position, double value) noexcept;
+  void fail_homing(std::uint32_t cause) noexcept;
+  bool input_active() const noexcept;
+  void store_adjustment() noexcept;
+
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
@@ -179,7 +235,7 @@ class PositioningAxis final : public TechnologyObject {
   std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
                                                 double jerk, ProfileLimits& out) noexcept;
   std::uint16_t arbitrate_motion(NewJob row, bool& queue) noexcept;
-  std::array<RunningJob, 3> running_jobs(std::size_t& n) const noexcept;
+  std::array<RunningJob, 4> running_jobs(std::size_t& n) const noexcept;
   void abort_motion(std::uint16_t error_id) noexcept;
   void abort_pending(std::uint16_t error_id) noexcept;
   std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
@@ -265,6 +321,19 @@ class PositioningAxis final : public TechnologyObject {
   double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
   double last_actual_velocity_ = 0.0;
   double last_setpoint_acceleration_ = 0.0;
+
+  // homing
+  ActiveHomingJob homing_{};
+  PassiveHomingJob passive_{};
+  bool input_was_active_ = false;
+  bool input_entered_ = false;  // edges of the homing digital input / cam, latched by MC_Servo
+  bool input_left_ = false;
+  double input_edge_position_ = 0.0;
+  std::optional<double> mark_position_;                        // a reference mark captured by MC_Servo
+  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
+  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
 
   // actual values (continuous position units)
   double actual_position_ = 0.0;
