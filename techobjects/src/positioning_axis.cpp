@@ -254,9 +254,7 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
         abort_pending(0);
         break;
       case RunningJob::kPassiveHoming:
-        set_job(passive_.id, JobState::kAborted);
-        passive_ = PassiveHomingJob{};
-        encoder_.cancel_reference_mark();
+        end_passive_homing(JobState::kAborted);
         break;
       default:
         abort_motion(0);
@@ -509,9 +507,7 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   abort_motion(0);
   abort_pending(0);
   if (passive_.id != 0) {  // R7 x C1 = A
-    set_job(passive_.id, JobState::kAborted);
-    passive_ = PassiveHomingJob{};
-    encoder_.cancel_reference_mark();
+    end_passive_homing(JobState::kAborted);
   }
   if (stop_.id != 0) set_job(stop_.id, JobState::kAborted);
   limit_stop_ = false;

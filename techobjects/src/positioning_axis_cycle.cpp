@@ -338,9 +338,7 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
   if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
-    set_job(passive_.id, JobState::kError, error_id::kAbortedByAlarmReaction);
-    passive_ = PassiveHomingJob{};
-    encoder_.cancel_reference_mark();
+    end_passive_homing(JobState::kError, error_id::kAbortedByAlarmReaction);
   }
   const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
   const bool stop_keeps_control =
@@ -409,9 +407,7 @@ void PositioningAxis::update_power_phase() noexcept {
     abort_motion(0);
     abort_pending(0);
     if (passive_.id != 0) {
-      set_job(passive_.id, JobState::kAborted);
-      passive_ = PassiveHomingJob{};
-      encoder_.cancel_reference_mark();
+      end_passive_homing(JobState::kAborted);
     }
     if (stop_.id != 0) {
       set_job(stop_.id, JobState::kAborted);

@@ -23,6 +23,12 @@ constexpr std::uint32_t kHomingLimitDuringSearch = 2;  // a limit switch reached
 
 }  // namespace
 
+void PositioningAxis::end_passive_homing(JobState state, std::uint16_t error_id) noexcept {
+  set_job(passive_.id, state, error_id);
+  passive_ = PassiveHomingJob{};
+  passive_search_.stop(encoder_);
+}
+
 bool PositioningAxis::input_active() const noexcept {
   const auto& s = db_.Sensor[db_.OperativeSensor - 1];
   const bool level = passive_.id != 0 && motion_.kind != JobKind::kHome ? s.PassiveHoming.SwitchLevel
@@ -32,12 +38,7 @@ bool PositioningAxis::input_active() const noexcept {
 
 // MC_Servo: what the homing sequences react to, latched for the interpolator.
 void PositioningAxis::homing_observe() noexcept {
-  const bool active = input_active();
-  if (active != input_was_active_) {
-    (active ? input_entered_ : input_left_) = true;
-    input_edge_position_ = actual_position_;
-  }
-  input_was_active_ = active;
+  input_edges_.observe(input_active(), actual_position_);
   if (const auto mark = encoder_.take_reference_mark()) mark_position_ = *mark;
 }
 
@@ -98,7 +99,7 @@ void PositioningAxis::start_active_homing(JobId id, double home_position) noexce
   positioning_start_pending_ = false;
   // An incremental encoder is not homed from the start of active homing until the mark (spec 02 §5.12).
   if (!encoder_.chain().absolute_type()) homed_ = false;
-  input_entered_ = input_left_ = false;
+  input_edges_.clear();
   mark_position_.reset();
   const double approach = db_.Homing.ApproachDirection ? -1.0 : 1.0;
   const bool on_input = input_active();
@@ -150,7 +151,7 @@ void PositioningAxis::run_homing() noexcept {
     }
     switch (homing_.phase) {
       case HomingPhase::kApproach:
-        if (input_entered_ || input_active()) {
+        if (input_edges_.entered || input_active()) {
           if (homing_.method ==
               static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegramAndReferenceCam)) {
             // The cam: on to its far side in the homing direction (reversing if that is the other way).
@@ -170,9 +171,9 @@ void PositioningAxis::run_homing() noexcept {
         }
         break;
       case HomingPhase::kSearchEdge: {
-        const bool edge = homing_.mark_on_entering ? input_entered_ : input_left_;
+        const bool edge = homing_.mark_on_entering ? input_edges_.entered : input_edges_.left;
         if (edge && in_homing_direction) {
-          assign_reference(input_edge_position_, homing_.mark_value);
+          assign_reference(input_edges_.position, homing_.mark_value);
           homing_.phase = HomingPhase::kToHome;
         }
         break;
@@ -180,7 +181,7 @@ void PositioningAxis::run_homing() noexcept {
       case HomingPhase::kSearchCamExit:
         // The zero mark counts only after the cam was left in the homing direction (spec 02 §5.3; §10 item
         // 6).
-        if (input_left_ && in_homing_direction) {
+        if (input_edges_.left && in_homing_direction) {
           homing_.phase = HomingPhase::kSearchMark;
           encoder_.arm_reference_mark();
         }
@@ -214,49 +215,14 @@ void PositioningAxis::run_homing() noexcept {
     }
   }
   if (passive_.id != 0) run_passive_homing();
-  input_entered_ = input_left_ = false;
+  input_edges_.clear();
   mark_position_.reset();
 }
 
-// Passive homing (spec 02 §5.6): detection is armed only while the axis moves in the homing direction.
+// Passive homing (spec 02 §5.6), the search shared with the external encoder.
 void PositioningAxis::run_passive_homing() noexcept {
-  const double threshold = db_.StandstillSignal.VelocityThreshold / units_.velocity;
-  const double sign = passive_.direction == 0 ? 1.0 : passive_.direction == 1 ? -1.0 : 0.0;
-  const bool moving = std::fabs(actual_velocity_) > threshold;
-  const bool in_direction = moving && (sign == 0.0 || actual_velocity_ * sign > 0.0);
-  const double travel = actual_velocity_ > 0.0 ? 1.0 : -1.0;
-  const auto& s = db_.Sensor[db_.OperativeSensor - 1];
-  std::optional<double> mark;
-  switch (passive_.method) {
-    case static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegram):
-      if (in_direction) {
-        encoder_.arm_reference_mark();
-        mark = mark_position_;
-      } else if (moving) {
-        encoder_.cancel_reference_mark();
-      }
-      break;
-    case static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegramAndReferenceCam):
-      if (moving && !in_direction) {
-        // Reversed after the cam: the cam must be detected again (spec 02 §5.6).
-        passive_.cam_seen = passive_.cam_left = false;
-        encoder_.cancel_reference_mark();
-      }
-      if (in_direction && input_entered_) passive_.cam_seen = true;
-      if (in_direction && passive_.cam_seen && input_left_) {
-        passive_.cam_left = true;
-        encoder_.arm_reference_mark();
-      }
-      if (passive_.cam_left) mark = mark_position_;
-      break;
-    default: {  // digital input: the configured side (spec 02 §5.4 table)
-      const bool entering_is_mark = travel > 0.0 ? !s.PassiveHoming.SideInput : s.PassiveHoming.SideInput;
-      if (in_direction && (entering_is_mark ? input_entered_ : input_left_)) mark = input_edge_position_;
-      break;
-    }
-  }
+  const auto mark = passive_search_.step(actual_velocity_, input_edges_, mark_position_, encoder_);
   if (mark) {
-    encoder_.cancel_reference_mark();
     assign_reference(*mark, passive_.value);
     set_job(passive_.id, JobState::kDone);
     passive_ = PassiveHomingJob{};
@@ -278,9 +244,7 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
     case 9: {
       // Abort passive homing (spec 02 §5.6): the passive job ends with CommandAborted; Mode 9 is Done.
       if (passive_.id != 0 && !homed()) {
-        set_job(passive_.id, JobState::kAborted);
-        passive_ = PassiveHomingJob{};
-        encoder_.cancel_reference_mark();
+        end_passive_homing(JobState::kAborted);
       }
       return Submission::accept(new_job(JobKind::kHome, JobState::kDone));
     }
@@ -321,9 +285,11 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
         update_status();
         return Submission::accept(id);
       }
-      passive_ = PassiveHomingJob{
-          id, sensor_config.PassiveHoming.Mode, value, sensor_config.PassiveHoming.Direction, false, false};
-      input_was_active_ = input_active();
+      passive_ = PassiveHomingJob{id, value};
+      passive_search_.start(PassiveHomingSearch::Config{
+          sensor_config.PassiveHoming.Mode, sensor_config.PassiveHoming.Direction,
+          sensor_config.PassiveHoming.SideInput, db_.StandstillSignal.VelocityThreshold / units_.velocity});
+      input_edges_.was_active = input_active();
       return Submission::accept(id);
     }
     case 6:

@@ -18,8 +18,10 @@
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime.hpp"
 
 namespace tomc::techobjects {
@@ -44,6 +46,8 @@ class ExternalEncoder final : public TechnologyObject {
   const AlarmList& alarms() const noexcept { return alarms_; }
   bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
   const DriveConnection& connection() const noexcept { return connection_; }
+  // The homing digital input (AxisDigitalInputs::HomingInput), written before MC_Servo.
+  AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
 
   // ---- jobs ----
   // MC_Power: Status once the encoder delivers valid values; StartMode/StopMode are ignored (spec 03 §4.1).
@@ -55,6 +59,12 @@ class ExternalEncoder final : public TechnologyObject {
   JobStatus job_status(JobId id) const noexcept { return jobs_.status(id); }
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
+  // Retentive data of an absolute encoder, as on the positioning axis (positioning_axis.hpp).
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
   // Continuous actual position (before the modulo wrap) and velocity, position units: the leading value.
   double continuous_position() const noexcept { return encoder_.chain().continuous_position(); }
   double velocity() const noexcept { return velocity_; }
@@ -65,6 +75,8 @@ class ExternalEncoder final : public TechnologyObject {
 
   void configure() noexcept;
   void update_status() noexcept;
+  void assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept;
+  void store_adjustment() noexcept;
 
   std::string name_;
   DeviceIo* device_ = nullptr;
@@ -95,6 +107,15 @@ class ExternalEncoder final : public TechnologyObject {
   double velocity_ = 0.0;
   double last_velocity_ = 0.0;
   double reference_mark_position_ = 0.0;
+  AxisDigitalInputs inputs_{};
+  InputEdges input_edges_{};
+  PassiveHomingSearch passive_search_{};
+  JobId passive_job_ = 0;
+  double passive_value_ = 0.0;
+  std::optional<double> mark_position_;
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
+  bool power_up_done_ = false;
 };
 
 }  // namespace tomc::techobjects

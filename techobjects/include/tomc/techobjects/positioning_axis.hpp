@@ -30,10 +30,12 @@
 #include "tomc/techobjects/job_priority.hpp"
 #include "tomc/techobjects/job_table.hpp"
 #include "tomc/techobjects/limit_switches.hpp"
+#include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_control.hpp"
 #include "tomc/techobjects/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis_data.hpp"
 #include "tomc/techobjects/profiles.hpp"
+#include "tomc/techobjects/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 
@@ -121,13 +123,7 @@ class PositioningAxis final : public TechnologyObject {
   // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
   // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
   // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
-  struct RetainedEncoderData {
-    bool valid = false;
-    double AbsEncoderOffset = 0.0;
-    std::int64_t MeasuringRangeCount = 0;  // cyclic absolute encoder
-    std::uint32_t LastAbsoluteValue = 0;
-    std::uint64_t sequence = 0;
-  };
+  using RetainedEncoderData = techobjects::RetainedEncoderData;
   const RetainedEncoderData& retained() const noexcept { return retained_; }
   bool absolute_encoder() const noexcept;
   // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
@@ -207,16 +203,13 @@ class PositioningAxis final : public TechnologyObject {
   };
   struct PassiveHomingJob {
     JobId id = 0;
-    std::int32_t method = 0;  // Sensor[n].PassiveHoming.Mode
-    double value = 0.0;       // position assigned at the mark
-    std::int32_t direction = 2;
-    bool cam_seen = false;  // cam + zero mark: the cam was detected in the homing direction
-    bool cam_left = false;  // ... and left: the zero-mark search is armed
+    double value = 0.0;  // position assigned at the mark
   };
   void start_active_homing(JobId id, double home_position) noexcept;
   void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
   void run_homing() noexcept;      // MC_Interpolator
   void run_passive_homing() noexcept;
+  void end_passive_homing(JobState state, std::uint16_t error_id = 0) noexcept;
   void homing_move(double direction, double velocity) noexcept;
   void assign_reference(double mark_position, double value) noexcept;
   void fail_homing(std::uint32_t cause) noexcept;
@@ -325,11 +318,9 @@ class PositioningAxis final : public TechnologyObject {
   // homing
   ActiveHomingJob homing_{};
   PassiveHomingJob passive_{};
-  bool input_was_active_ = false;
-  bool input_entered_ = false;  // edges of the homing digital input / cam, latched by MC_Servo
-  bool input_left_ = false;
-  double input_edge_position_ = 0.0;
-  std::optional<double> mark_position_;                        // a reference mark captured by MC_Servo
+  PassiveHomingSearch passive_search_{};
+  InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
+  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
   limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
   limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
   RetainedEncoderData retained_{};
