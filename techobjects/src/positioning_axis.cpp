@@ -127,8 +127,30 @@ void PositioningAxis::configure_components() noexcept {
   pc.Tdc = communication_times_.Tdc;
   (void)controller_.configure(pc);
   configure_monitoring();
+  configure_extrapolation();
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
   hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
+}
+
+// Extrapolation of the actual value as a leading value (spec 07 §1.4): T_ext = leading-axis part (T_i + T_ipo
+// + position filter, unless SystemDefinedExtrapolation = 0) + FollowingAxisDependentTime.
+void PositioningAxis::configure_extrapolation() noexcept {
+  const auto& e = db_.Extrapolation;
+  ExtrapolationConfig c;
+  c.position_t1 = e.PositionFilter.T1;
+  c.position_t2 = e.PositionFilter.T2;
+  c.velocity_t1 = e.VelocityFilter.T1;
+  c.velocity_t2 = e.VelocityFilter.T2;
+  c.tolerance_range = e.VelocityTolerance.Range / units_.velocity;
+  c.hysteresis = e.Hysteresis.Value;
+  c.velocity_mode = e.Settings.ExtrapolatedVelocityMode;
+  c.cycle = ipo_cycle_s_;
+  const bool system = e.Settings.SystemDefinedExtrapolation != 0;
+  db_.Extrapolation.LeadingAxisDependentTime =
+      system ? communication_times_.Ti + ipo_cycle_s_ + c.position_t1 + c.position_t2 : 0.0;
+  if (!system) c.position_t1 = c.position_t2 = 0.0;  // the position filter goes with the system part
+  c.time = db_.Extrapolation.LeadingAxisDependentTime + e.FollowingAxisDependentTime;
+  extrapolation_.configure(c);
 }
 
 // The monitors' DIR variables (positions in position units, velocities converted from the data block's
@@ -219,7 +241,8 @@ std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, 
 std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
   std::array<RunningJob, 4> running{};
   n = 0;
-  if (motion_.id != 0) {
+  // A running synchronous job is a column of §9.19.2, not of §9.19.1 (arbitrate_synchronous).
+  if (motion_.id != 0 && !synchronous_kind(motion_.kind)) {
     running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
                    : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
                                                     : RunningJob::kBaseMotionActive;
@@ -242,6 +265,7 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
   ctx.running_stop_weight = stop_.weight;
   const Decision d = arbitrate(row, std::span<const RunningJob>(running.data(), n), ctx);
   if (d.reject) return error_id::kRejectedByRunningJob;
+  if (const std::uint16_t e = arbitrate_synchronous(row)) return e;  // §9.19.2 on a synchronous axis
   queue = d.queue;
   for (std::size_t i = 0; i < n; ++i) {
     if ((d.abort_mask & (1u << i)) == 0) continue;
@@ -266,6 +290,10 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
 
 void PositioningAxis::abort_motion(std::uint16_t error_id) noexcept {
   if (motion_.id == 0) return;
+  if (synchronous_kind(motion_.kind)) {
+    abort_synchronous(error_id);  // the synchronous axis ends its job and its state
+    return;
+  }
   if (motion_.kind == JobKind::kHome) {
     homing_.phase = HomingPhase::kIdle;
     encoder_.cancel_reference_mark();
@@ -504,6 +532,7 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   ctx.running_stop_weight = stop_.weight;
   const Decision d = arbitrate(NewJob::kStop, std::span<const RunningJob>(running.data(), n), ctx);
   if (d.reject) return Submission::reject(error_id::kRejectedByRunningJob);
+  abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
   abort_motion(0);
   abort_pending(0);
   if (passive_.id != 0) {  // R7 x C1 = A
@@ -616,6 +645,30 @@ JobStatus PositioningAxis::job_status(JobId id) const noexcept {
 }
 
 // ---------------------------------------------------------------------------------------------------------
+// As a leading value
+
+LeadingValue PositioningAxis::leading_value(LeadingValueCoupling coupling) const noexcept {
+  LeadingValue v;
+  v.position_controlled = phase_ == PowerPhase::kEnabled && position_controlled_ && !follows_actual();
+  if (coupling == LeadingValueCoupling::kSetpoint) {
+    v.position = setpoint_.position;
+    v.velocity = setpoint_.velocity;
+    v.acceleration = setpoint_.acceleration;
+    v.valid = true;
+  } else {
+    v.position = extrapolation_.position();
+    v.velocity = extrapolation_.velocity();
+    v.acceleration = extrapolation_.acceleration();
+    v.valid = actual_valid_;
+  }
+  return v;
+}
+
+ModuloRange PositioningAxis::leading_value_modulo() const noexcept {
+  return ModuloRange{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+}
+
+// ---------------------------------------------------------------------------------------------------------
 // Retentive data
 
 bool PositioningAxis::absolute_encoder() const noexcept {
@@ -676,6 +729,7 @@ WriteResult PositioningAxis::write(std::string_view path, double value) noexcept
     // DIR values take effect from the next MC_Servo (spec 04 §0.2): the components are re-read. The state of
     // the monitors survives: only what changed is re-configured.
     configure_monitoring();
+    if (path.starts_with("Extrapolation.")) configure_extrapolation();
     if (path.starts_with("PositionLimits_SW.")) {
       software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
     }

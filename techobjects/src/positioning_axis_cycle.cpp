@@ -286,7 +286,19 @@ void PositioningAxis::shift_position(double delta) noexcept {
 
 void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   cycle_ = clock.interpolator_cycles + 1;
-  ipo_cycle_s_ = clock.interpolator_cycle_s;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    configure_extrapolation();
+  }
+  // The actual value as a leading value, once per interpolator cycle (spec 07 §1.4).
+  extrapolation_.update(actual_position_, actual_velocity_);
+  {
+    auto& st = db_.StatusExtrapolation;
+    st.FilteredPosition = extrapolation_.filtered_position();
+    st.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+    st.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+    st.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
+  }
 
   if (reset_pending_) {
     reset_pending_ = false;
@@ -305,6 +317,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   apply_alarm_reactions();
   update_power_phase();
   run_homing();
+  run_synchronous();
   update_live_motion();
   generate_setpoint();
   monitor_software_limits();
@@ -335,6 +348,7 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
                       : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Jerk / units_.acceleration};
+  abort_synchronous(error_id::kAbortedByAlarmReaction);
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
   if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
@@ -404,6 +418,7 @@ void PositioningAxis::update_power_phase() noexcept {
   }
   if (phase_ == PowerPhase::kEnabled && !enable_) {
     // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
+    abort_synchronous(0);
     abort_motion(0);
     abort_pending(0);
     if (passive_.id != 0) {
@@ -543,6 +558,9 @@ void PositioningAxis::generate_setpoint() noexcept {
       setpoint_.position += setpoint_.velocity * ipo_cycle_s_;
       setpoint_.acceleration = 0.0;
       break;
+    case Generator::kSynchronous:
+      setpoint_ = synchronous_setpoint();
+      break;
   }
   // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
   // setpoint goes to the drive directly.
@@ -563,6 +581,7 @@ void PositioningAxis::monitor_software_limits() noexcept {
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
   in.homed = homed();
+  in.following_axis = following_in_synchronous_operation();
   if (reaction == limits::kReactionStopMaxDynamics) {
     in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
     in.stop_jerk = l.MaxJerk / units_.acceleration;
@@ -777,6 +796,7 @@ void PositioningAxis::update_status() noexcept {
   const PendingAlarm* top = alarms_.error_detail();
   db_.ErrorDetail.Number = top == nullptr ? 0 : top->number;
   db_.ErrorDetail.Reaction = static_cast<std::int32_t>(top == nullptr ? AlarmReaction::kNone : top->reaction);
+  update_synchronous_status();
 }
 
 void PositioningAxis::restart() noexcept {
@@ -784,6 +804,7 @@ void PositioningAxis::restart() noexcept {
   // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
+  abort_synchronous(0);
   db_ = start_;
   communication_times_ = communication_times_start_;
   assign(db_.StatusWord, changed, false);

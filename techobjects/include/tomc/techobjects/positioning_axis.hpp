@@ -22,6 +22,7 @@
 #include <string_view>
 
 #include "tomc/techobjects/actual_value_chain.hpp"
+#include "tomc/techobjects/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
@@ -29,6 +30,7 @@
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
 #include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/leading_value.hpp"
 #include "tomc/techobjects/limit_switches.hpp"
 #include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_control.hpp"
@@ -76,7 +78,7 @@ struct AxisDigitalInputs {
   bool HomingInput = false;  // level of Sensor[n].ActiveHoming/PassiveHoming.DigitalInputAddress
 };
 
-class PositioningAxis final : public TechnologyObject {
+class PositioningAxis : public TechnologyObject, public LeadingValueSource {
  public:
   // `device` is the drive (and its encoders); nullptr for a virtual axis. Throws std::invalid_argument for
   // start values the data block does not permit, or mechanics/units that do not fit together, naming the
@@ -132,6 +134,10 @@ class PositioningAxis final : public TechnologyObject {
   // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
   void report_adjustment_lost(std::uint32_t cause) noexcept;
 
+  // ---- as a leading value (spec 07 §1.3, §1.4) ----
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override;
+
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
@@ -140,7 +146,7 @@ class PositioningAxis final : public TechnologyObject {
   const AxisUnitFactors& units() const noexcept { return units_; }
   const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
 
- private:
+ protected:
   enum class JobKind : std::uint8_t {
     kNone,
     kReset,
@@ -152,11 +158,15 @@ class PositioningAxis final : public TechnologyObject {
     kHalt,
     kStop,
     kSetAxisStw,
-    kWriteParameter
+    kWriteParameter,
+    kGearIn,          // synchronous axis (synchronous_axis.hpp): MC_GearIn
+    kGearInPos,       // MC_GearInPos, once synchronization started
+    kGearInVelocity,  // MC_GearInVelocity
+    kGearOut,         // MC_GearOut, once desynchronization started
   };
   enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
   // What drives the setpoint this cycle.
-  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition };
+  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
 
   struct Motion {  // a base motion job (running or appended)
     JobId id = 0;
@@ -216,9 +226,32 @@ class PositioningAxis final : public TechnologyObject {
   bool input_active() const noexcept;
   void store_adjustment() noexcept;
 
+  static constexpr bool synchronous_kind(JobKind k) noexcept {
+    return k == JobKind::kGearIn || k == JobKind::kGearInPos || k == JobKind::kGearInVelocity ||
+           k == JobKind::kGearOut;
+  }
+
+  // ---- hooks of the synchronous axis (no-ops on a positioning axis) ----
+  // The §9.19.2 row of a new job against the running synchronous jobs: 0 = proceed (aborts applied), else the
+  // ErrorID that rejects the new job. Called after the §9.19.1 check passed.
+  virtual std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
+    (void)row;
+    return 0;
+  }
+  // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
+  virtual void abort_synchronous(std::uint16_t error_id) noexcept { (void)error_id; }
+  // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
+  virtual void run_synchronous() noexcept {}
+  // The setpoint of Generator::kSynchronous for this cycle.
+  virtual MotionState synchronous_setpoint() noexcept { return setpoint_; }
+  // A following axis in synchronous operation stops at a software limit with maximum dynamics (spec 02 §4.5).
+  virtual bool following_in_synchronous_operation() const noexcept { return false; }
+  virtual void update_synchronous_status() noexcept {}
+
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
+  void configure_extrapolation() noexcept;
   // jobs
   JobId new_job(JobKind kind, JobState state) noexcept { return jobs_.create(kind, state); }
   void set_job(JobId id, JobState state, std::uint16_t error_id = 0) noexcept {
@@ -288,6 +321,7 @@ class PositioningAxis final : public TechnologyObject {
   limits::SoftwareLimitMonitor software_limits_;
   limits::HardwareLimitMonitor hardware_limits_;
   SetpointDelayLine simulation_delay_{};
+  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
 
   // power
   PowerPhase phase_ = PowerPhase::kDisabled;
