@@ -35,6 +35,12 @@ constexpr AlarmDefinition kAlarms[] = {
     {kAlarmPositioning, C::kAcknowledge, R::kRemoveEnable, "positioning monitoring"},
     {kAlarmDriveSafeStop, C::kAcknowledge, R::kFollowSetpoint, "drive-autonomous SS1/SS2 OFF3 braking"},
     {kAlarmHomingFailed, C::kAcknowledge, R::kStopMaxDynamics, "homing could not be completed"},
+    {kAlarmLeadingAxisDefective, C::kAcknowledge, R::kStopMaxDynamics,
+     "leading axis not assigned (not a configured leading value) or defective"},
+    {kAlarmLeaderNotPositionControlled, C::kAcknowledge, R::kRemoveEnable,
+     "leading axis not position-controlled (setpoint coupling)"},
+    {kAlarmSynchronizationError, C::kAcknowledge, R::kStopMaxDynamics,
+     "error during synchronization / desynchronization: the leading value reversed"},
 };
 
 }  // namespace

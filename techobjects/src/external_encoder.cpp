@@ -130,8 +130,42 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
   connection_.write();
 }
 
+LeadingValue ExternalEncoder::leading_value(LeadingValueCoupling) const noexcept {
+  LeadingValue v;
+  v.position = extrapolation_.position();
+  v.velocity = extrapolation_.velocity();
+  v.acceleration = extrapolation_.acceleration();
+  v.valid = valid_;
+  v.position_controlled = true;  // an encoder has no position control to lose (spec 07 §1.4)
+  return v;
+}
+
 void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
   cycle_ = clock.interpolator_cycles + 1;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    // The extrapolation of the leading value (spec 07 §1.4), as on the positioning axis.
+    const auto& e = db_.Extrapolation;
+    ExtrapolationConfig c;
+    c.position_t1 = e.PositionFilter.T1;
+    c.position_t2 = e.PositionFilter.T2;
+    c.velocity_t1 = e.VelocityFilter.T1;
+    c.velocity_t2 = e.VelocityFilter.T2;
+    c.tolerance_range = e.VelocityTolerance.Range / units_.velocity;
+    c.hysteresis = e.Hysteresis.Value;
+    c.velocity_mode = e.Settings.ExtrapolatedVelocityMode;
+    c.cycle = ipo_cycle_s_;
+    const bool system = e.Settings.SystemDefinedExtrapolation != 0;
+    db_.Extrapolation.LeadingAxisDependentTime = system ? ipo_cycle_s_ + c.position_t1 + c.position_t2 : 0.0;
+    if (!system) c.position_t1 = c.position_t2 = 0.0;
+    c.time = db_.Extrapolation.LeadingAxisDependentTime + e.FollowingAxisDependentTime;
+    extrapolation_.configure(c);
+  }
+  extrapolation_.update(encoder_.chain().continuous_position(), velocity_);
+  db_.StatusExtrapolation.FilteredPosition = extrapolation_.filtered_position();
+  db_.StatusExtrapolation.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+  db_.StatusExtrapolation.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+  db_.StatusExtrapolation.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
   if (reset_pending_) {
     reset_pending_ = false;
     (void)alarms_.acknowledge(restart_requested_, cycle_);

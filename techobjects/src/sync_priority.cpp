@@ -58,7 +58,8 @@ std::string_view to_string(SyncCell cell) noexcept {
 Outcome resolve(NewSyncRow row, RunningSyncJob column, const SyncContext& context) noexcept {
   const bool desync_row = row == NewSyncRow::kSyncOutPending || row == NewSyncRow::kSyncOutActive;
   const bool gear_column = column == RunningSyncJob::kGearIn || column == RunningSyncJob::kSyncInPending ||
-                           column == RunningSyncJob::kSyncInActive || column == RunningSyncJob::kSyncOutPending;
+                           column == RunningSyncJob::kSyncInActive ||
+                           column == RunningSyncJob::kSyncOutPending;
   SyncCell cell = sync_priority_cell(row, column);
   // Footnote 7: MC_GearOut affects only MC_Gear... jobs, MC_CamOut only MC_Cam... jobs.
   if (desync_row && gear_column && !context.same_family) cell = SyncCell::kNoEffect;

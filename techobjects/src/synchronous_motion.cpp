@@ -15,17 +15,27 @@ SynchronizationStep synchronization_step(const MotionState& f, double vT, double
     s.locked = true;
     return s;
   }
+  if (l.jerk > 0.0) {
+    // Jerk-limited: the time-optimal velocity profile to vT from the present state, one cycle of it (the
+    // profile brings the acceleration to 0 exactly at vT, never exceeding the jerk).
+    VelocityProfile p;
+    ProfileLimits pl = l;
+    pl.velocity = 0.0;  // no clamp: the caller limited vT already
+    if (p.plan(f, vT, pl)) {
+      if (p.duration() <= T + 1e-12) {
+        s.state = MotionState{p.at(p.duration()).position + vT * (T - p.duration()), vT, aT};
+        s.locked = std::fabs(aT) <= 1e-6 * std::max(1.0, std::fabs(vT));
+        if (!s.locked) s.state.acceleration = 0.0;
+        return s;
+      }
+      s.state = p.at(T);
+      return s;
+    }
+  }
   // |v| grows when the step goes away from zero (acceleration limit), shrinks otherwise (deceleration).
   const bool grows = f.velocity == 0.0 ? true : (dv > 0.0) == (f.velocity > 0.0);
   const double lim = grows ? l.acceleration : l.deceleration;
   double a = std::clamp(dv / T, -lim, lim);
-  if (l.jerk > 0.0) {
-    // Jerk-limited: the acceleration changes by at most jerk·T, and is taken back in time to meet vT with
-    // a = 0 (the braking distance of the acceleration, a²/(2j), must not exceed the remaining dv).
-    const double a_max_for_dv = std::sqrt(2.0 * l.jerk * std::fabs(dv));
-    a = std::clamp(a, -a_max_for_dv, a_max_for_dv);
-    a = std::clamp(a, f.acceleration - l.jerk * T, f.acceleration + l.jerk * T);
-  }
   double v = f.velocity + a * T;
   // Do not pass the target: the last step lands on it.
   if ((dv > 0.0 && v > vT) || (dv < 0.0 && v < vT)) {
@@ -33,7 +43,7 @@ SynchronizationStep synchronization_step(const MotionState& f, double vT, double
     a = (v - f.velocity) / T;
   }
   s.state = MotionState{f.position + (f.velocity + v) * 0.5 * T, v, a};
-  s.locked = std::fabs(v - vT) <= eps_v && (l.jerk <= 0.0 || std::fabs(a - aT) <= 1e-6 * std::max(1.0, std::fabs(aT)));
+  s.locked = std::fabs(v - vT) <= eps_v;
   if (s.locked) s.state.acceleration = aT;
   return s;
 }

@@ -10,13 +10,13 @@
 namespace tomc::techobjects {
 
 struct ExtrapolationConfig {
-  double position_t1 = 0.0;  // Extrapolation.PositionFilter.T1 [s] (0: no filter stage)
-  double position_t2 = 0.0;  // .T2
-  double velocity_t1 = 0.0;  // Extrapolation.VelocityFilter.T1
-  double velocity_t2 = 0.0;  // .T2
-  double tolerance_range = 0.0;  // Extrapolation.VelocityTolerance.Range (velocity units)
-  double hysteresis = 0.0;       // Extrapolation.Hysteresis.Value (position units)
-  double time = 0.0;             // T_ext = leading-axis part + Extrapolation.FollowingAxisDependentTime [s]
+  double position_t1 = 0.0;        // Extrapolation.PositionFilter.T1 [s] (0: no filter stage)
+  double position_t2 = 0.0;        // .T2
+  double velocity_t1 = 0.0;        // Extrapolation.VelocityFilter.T1
+  double velocity_t2 = 0.0;        // .T2
+  double tolerance_range = 0.0;    // Extrapolation.VelocityTolerance.Range (velocity units)
+  double hysteresis = 0.0;         // Extrapolation.Hysteresis.Value (position units)
+  double time = 0.0;               // T_ext = leading-axis part + Extrapolation.FollowingAxisDependentTime [s]
   std::int32_t velocity_mode = 0;  // Extrapolation.Settings.ExtrapolatedVelocityMode (0, 1, 2)
   double cycle = 0.001;            // interpolator cycle [s]
 };

@@ -56,6 +56,9 @@ inline constexpr std::uint32_t kAlarmSoftwareLimitExceeded = 534;
 inline constexpr std::uint32_t kAlarmPositioning = 541;
 inline constexpr std::uint32_t kAlarmDriveSafeStop = 550;  // seed L2719
 inline constexpr std::uint32_t kAlarmHomingFailed = 560;   // homing could not be completed, [OUR CHOICE]
+inline constexpr std::uint32_t kAlarmLeadingAxisDefective = 601;         // spec 07 §1.10 (ALM8)
+inline constexpr std::uint32_t kAlarmLeaderNotPositionControlled = 603;  // spec 07 §1.10
+inline constexpr std::uint32_t kAlarmSynchronizationError = 608;  // leading value reversed, spec 07 §1.10
 
 struct PendingAlarm {
   std::uint32_t number = 0;

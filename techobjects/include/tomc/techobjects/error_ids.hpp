@@ -13,6 +13,16 @@ inline constexpr std::uint16_t kNone = 0x0000;
 inline constexpr std::uint16_t kAbortedByAlarmReaction =
     0x8001;  // a technology alarm's stop reaction ended the job
 inline constexpr std::uint16_t kJogWrongDirection = 0x8007;  // JogForward and JogBackward both TRUE
+// Synchronous operation, numbered as in the manual's error list (spec 07 §1.10, ALM8):
+inline constexpr std::uint16_t kInvalidRatioNumerator = 0x8017;    // RatioNumerator = 0
+inline constexpr std::uint16_t kInvalidRatioDenominator = 0x8018;  // RatioDenominator < 1
+inline constexpr std::uint16_t kRecursiveLeadingValue = 0x8019;    // the follower leads its own leader
+inline constexpr std::uint16_t kInvalidMasterStartDistance =
+    0x8026;  // MasterStartDistance / MasterStopDistance
+inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
+inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
+inline constexpr std::uint16_t kNoGearing = 0x8077;              // MC_GearOut without MC_GearIn/GearInPos
+inline constexpr std::uint16_t kHomingDuringGearInPos = 0x80A1;  // MC_Home while MC_GearInPos is active
 // tomc's own (spec 03 §5 [IMPL]):
 inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"
 inline constexpr std::uint16_t kLockedByStop = 0x8102;    // an MC_Stop with Execute = TRUE blocks motion jobs

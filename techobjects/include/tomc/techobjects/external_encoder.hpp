@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "tomc/techobjects/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
@@ -18,6 +19,7 @@
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/leading_value.hpp"
 #include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
@@ -26,7 +28,7 @@
 
 namespace tomc::techobjects {
 
-class ExternalEncoder final : public TechnologyObject {
+class ExternalEncoder final : public TechnologyObject, public LeadingValueSource {
  public:
   // `device` carries encoder telegram 81 or 83 (an encoder-only device, drive_telegram 0). Throws
   // std::invalid_argument for start values the data block does not permit or a device without it.
@@ -65,7 +67,13 @@ class ExternalEncoder final : public TechnologyObject {
   void restore_retained(const RetainedEncoderData& data) noexcept;
   void report_adjustment_lost(std::uint32_t cause) noexcept;
 
-  // Continuous actual position (before the modulo wrap) and velocity, position units: the leading value.
+  // As a leading value (spec 07 §1.4): the extrapolated actual value, whatever the coupling type says.
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override {
+    return ModuloRange{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+  }
+
+  // Continuous actual position (before the modulo wrap) and velocity, position units.
   double continuous_position() const noexcept { return encoder_.chain().continuous_position(); }
   double velocity() const noexcept { return velocity_; }
   bool valid() const noexcept { return valid_; }
@@ -116,6 +124,8 @@ class ExternalEncoder final : public TechnologyObject {
   RetainedEncoderData retained_{};
   bool retained_restored_ = false;
   bool power_up_done_ = false;
+  ActualValueExtrapolation extrapolation_{};
+  double ipo_cycle_s_ = 0.0;
 };
 
 }  // namespace tomc::techobjects

@@ -12,15 +12,15 @@ namespace tomc::techobjects {
 
 // Columns: a running synchronous job (spec 07 §5.1).
 enum class RunningSyncJob : std::uint8_t {
-  kGearIn,              // S1 MC_GearIn
-  kGearInVelocity,      // S2 MC_GearInVelocity
-  kSyncInPending,       // S3 MC_GearInPos / MC_CamIn pending (Busy, not StartSync, not InSync)
-  kSyncInActive,        // S4 MC_GearInPos / MC_CamIn active
-  kPhasing,             // S5 MC_Phasing*
-  kOffset,              // S6 MC_Offset*
+  kGearIn,                // S1 MC_GearIn
+  kGearInVelocity,        // S2 MC_GearInVelocity
+  kSyncInPending,         // S3 MC_GearInPos / MC_CamIn pending (Busy, not StartSync, not InSync)
+  kSyncInActive,          // S4 MC_GearInPos / MC_CamIn active
+  kPhasing,               // S5 MC_Phasing*
+  kOffset,                // S6 MC_Offset*
   kLeadingValueAdditive,  // S7
-  kSyncOutPending,      // S8 MC_GearOut / MC_CamOut pending
-  kSyncOutActive,       // S9 MC_GearOut / MC_CamOut active
+  kSyncOutPending,        // S8 MC_GearOut / MC_CamOut pending
+  kSyncOutActive,         // S9 MC_GearOut / MC_CamOut active
 };
 inline constexpr std::size_t kRunningSyncJobCount = 9;
 
