@@ -134,10 +134,9 @@ TEST_F(ScenarioCli, UnknownTraceName) {
 }
 
 TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
-  const SimRun r = sim(write("u.json", scenario("{}", "TO_SynchronousAxis", "MC_Power", "[]")));
+  const SimRun r = sim(write("u.json", scenario("{}", "TO_Kinematics", "MC_Power", "[]")));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("technology_objects[0].type: TO_SynchronousAxis is not yet supported"),
-            std::string::npos)
+  EXPECT_NE(r.err.find("technology_objects[0].type: TO_Kinematics is not yet supported"), std::string::npos)
       << r.err;
 }
 

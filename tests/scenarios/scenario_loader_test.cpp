@@ -321,10 +321,14 @@ TEST(ScenarioLoader, TechnologyObjects) {
   EXPECT_EQ(problem_of(d),
             "technology_objects: expected a non-empty array of technology objects, got an empty array");
   d = base();
-  d["technology_objects"][0]["type"] = "TO_SynchronousAxis";
+  d["technology_objects"][0]["type"] = "TO_OutputCam";
   EXPECT_EQ(problem_of(d),
-            "technology_objects[0].type: TO_SynchronousAxis is not yet supported by tomc sim (supported: "
-            "TO_SpeedAxis, TO_PositioningAxis, TO_ExternalEncoder)");
+            "technology_objects[0].type: TO_OutputCam is not yet supported by tomc (supported: "
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
+  d["technology_objects"][0]["type"] = "TO_Spindle";
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].type: unknown technology object type 'TO_Spindle' (one of "
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
   // A positioning axis needs an encoder: telegram 2 carries none (spec 01 §3.3), named by the TO's path.
   d["technology_objects"][0]["type"] = "TO_PositioningAxis";
   EXPECT_EQ(problem_of(d),
@@ -405,8 +409,8 @@ TEST(ScenarioLoader, InstanceCreation) {
               "§1.3; its instructions: MC_Power, MC_Reset"),
       std::string::npos);
   EXPECT_NE(
-      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_GearIn", "axis": "Axis1"})"))
-          .find("timeline[1].instruction: MC_GearIn is not yet supported by tomc sim"),
+      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_CamIn", "axis": "Axis1"})"))
+          .find("timeline[1].instruction: MC_CamIn is not yet supported by tomc sim"),
       std::string::npos);
   EXPECT_EQ(
       problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Halt", "axis": "Axis2"})")),

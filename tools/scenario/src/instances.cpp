@@ -3,8 +3,13 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <type_traits>
 
+#include "tomc/instructions/mc_gear_in.hpp"
+#include "tomc/instructions/mc_gear_in_pos.hpp"
+#include "tomc/instructions/mc_gear_in_velocity.hpp"
+#include "tomc/instructions/mc_gear_out.hpp"
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
@@ -25,6 +30,8 @@ namespace {
 using techobjects::ExternalEncoder;
 using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
+using techobjects::SynchronousAxis;
+using Source = const techobjects::LeadingValueSource*;
 
 // The axis type an instruction class works on: MC_Power<SpeedAxis> -> SpeedAxis.
 template <typename FB>
@@ -35,8 +42,8 @@ struct axis_of<Instruction<Axis>> {
 };
 
 template <typename FB>
-using Member =
-    std::variant<bool FB::*, std::int16_t FB::*, std::int32_t FB::*, std::uint16_t FB::*, double FB::*>;
+using Member = std::variant<bool FB::*, std::int16_t FB::*, std::int32_t FB::*, std::uint16_t FB::*,
+                            double FB::*, Source FB::*>;
 
 template <typename FB>
 struct Parameter {
@@ -54,6 +61,8 @@ constexpr ParameterType type_of() {
     return ParameterType::kDint;
   } else if constexpr (std::is_same_v<T, std::uint16_t>) {
     return ParameterType::kWord;
+  } else if constexpr (std::is_same_v<T, Source>) {
+    return ParameterType::kTechnologyObject;
   } else {
     static_assert(std::is_same_v<T, double>);
     return ParameterType::kLreal;
@@ -84,6 +93,8 @@ class InstanceOf final : public Instance {
           using T = std::remove_reference_t<decltype(fb_.*member)>;
           if constexpr (std::is_same_v<T, bool>) {
             fb_.*member = value != 0.0;
+          } else if constexpr (std::is_same_v<T, Source>) {
+            // set_object() sets these
           } else {
             fb_.*member = static_cast<T>(value);
           }
@@ -91,8 +102,19 @@ class InstanceOf final : public Instance {
         table_[parameter].member);
   }
   double get(std::size_t parameter) const noexcept override {
-    return std::visit([&](auto member) { return static_cast<double>(fb_.*member); },
-                      table_[parameter].member);
+    return std::visit(
+        [&](auto member) {
+          using T = std::remove_cv_t<std::remove_reference_t<decltype(fb_.*member)>>;
+          if constexpr (std::is_same_v<T, Source>) {
+            return std::numeric_limits<double>::quiet_NaN();
+          } else {
+            return static_cast<double>(fb_.*member);
+          }
+        },
+        table_[parameter].member);
+  }
+  void set_object(std::size_t parameter, Source object) noexcept override {
+    if (auto* member = std::get_if<Source FB::*>(&table_[parameter].member)) fb_.** member = object;
   }
   // The loader creates an instance only for a TO of the instruction's axis type.
   void call(techobjects::TechnologyObject& object) noexcept override {
@@ -291,6 +313,82 @@ const auto kHome = std::to_array<Parameter<Home<Axis>>>({
     out("ErrorID", &Home<Axis>::ErrorID),
 });
 
+using GearIn = instructions::MC_GearIn<SynchronousAxis>;
+const auto kGearIn = std::to_array<Parameter<GearIn>>({
+    in("Master", &GearIn::Master),
+    in("Execute", &GearIn::Execute),
+    in("RatioNumerator", &GearIn::RatioNumerator),
+    in("RatioDenominator", &GearIn::RatioDenominator),
+    in("Acceleration", &GearIn::Acceleration),
+    in("Deceleration", &GearIn::Deceleration),
+    in("Jerk", &GearIn::Jerk),
+    out("InGear", &GearIn::InGear),
+    out("Busy", &GearIn::Busy),
+    out("CommandAborted", &GearIn::CommandAborted),
+    out("Error", &GearIn::Error),
+    out("ErrorID", &GearIn::ErrorID),
+});
+
+using GearInPos = instructions::MC_GearInPos<SynchronousAxis>;
+const auto kGearInPos = std::to_array<Parameter<GearInPos>>({
+    in("Master", &GearInPos::Master),
+    in("Execute", &GearInPos::Execute),
+    in("RatioNumerator", &GearInPos::RatioNumerator),
+    in("RatioDenominator", &GearInPos::RatioDenominator),
+    in("MasterSyncPosition", &GearInPos::MasterSyncPosition),
+    in("SlaveSyncPosition", &GearInPos::SlaveSyncPosition),
+    in("SyncProfileReference", &GearInPos::SyncProfileReference),
+    in("MasterStartDistance", &GearInPos::MasterStartDistance),
+    in("Velocity", &GearInPos::Velocity),
+    in("Acceleration", &GearInPos::Acceleration),
+    in("Deceleration", &GearInPos::Deceleration),
+    in("Jerk", &GearInPos::Jerk),
+    in("SyncDirection", &GearInPos::SyncDirection),
+    out("StartSync", &GearInPos::StartSync),
+    out("InSync", &GearInPos::InSync),
+    out("Busy", &GearInPos::Busy),
+    out("CommandAborted", &GearInPos::CommandAborted),
+    out("Error", &GearInPos::Error),
+    out("ErrorID", &GearInPos::ErrorID),
+});
+
+using GearInVelocity = instructions::MC_GearInVelocity<SynchronousAxis>;
+const auto kGearInVelocity = std::to_array<Parameter<GearInVelocity>>({
+    in("Master", &GearInVelocity::Master),
+    in("Execute", &GearInVelocity::Execute),
+    in("ContinuousUpdate", &GearInVelocity::ContinuousUpdate),
+    in("RatioNumerator", &GearInVelocity::RatioNumerator),
+    in("RatioDenominator", &GearInVelocity::RatioDenominator),
+    in("Acceleration", &GearInVelocity::Acceleration),
+    in("Deceleration", &GearInVelocity::Deceleration),
+    in("Jerk", &GearInVelocity::Jerk),
+    in("PositionControlled", &GearInVelocity::PositionControlled),
+    out("StartSync", &GearInVelocity::StartSync),
+    out("InSync", &GearInVelocity::InSync),
+    out("ContinuousUpdateActive", &GearInVelocity::ContinuousUpdateActive),
+    out("Busy", &GearInVelocity::Busy),
+    out("CommandAborted", &GearInVelocity::CommandAborted),
+    out("Error", &GearInVelocity::Error),
+    out("ErrorID", &GearInVelocity::ErrorID),
+});
+
+using GearOut = instructions::MC_GearOut<SynchronousAxis>;
+const auto kGearOut = std::to_array<Parameter<GearOut>>({
+    in("Execute", &GearOut::Execute),
+    in("SlavePosition", &GearOut::SlavePosition),
+    in("SyncProfileReference", &GearOut::SyncProfileReference),
+    in("MasterStopDistance", &GearOut::MasterStopDistance),
+    in("Deceleration", &GearOut::Deceleration),
+    in("Jerk", &GearOut::Jerk),
+    in("SyncOutDirection", &GearOut::SyncOutDirection),
+    out("StartSyncOut", &GearOut::StartSyncOut),
+    out("Done", &GearOut::Done),
+    out("Busy", &GearOut::Busy),
+    out("CommandAborted", &GearOut::CommandAborted),
+    out("Error", &GearOut::Error),
+    out("ErrorID", &GearOut::ErrorID),
+});
+
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
 constexpr std::array<std::string_view, 8> kSpeedAxisInstructions{
     "MC_Power", "MC_Reset", "MC_MoveVelocity", "MC_MoveJog",
@@ -300,20 +398,21 @@ constexpr std::array<std::string_view, 11> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
     "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter",
 };
+constexpr std::array<std::string_view, 15> kSynchronousAxisInstructions{
+    "MC_Power",          "MC_Reset",        "MC_Home",      "MC_Halt",           "MC_MoveAbsolute",
+    "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",   "MC_Stop",           "MC_SetAxisSTW",
+    "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos", "MC_GearInVelocity", "MC_GearOut",
+};
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 23> kPlannedInstructions{
+constexpr std::array<std::string_view, 19> kPlannedInstructions{
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
     "MC_TorqueLimiting",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
-    "MC_GearIn",
-    "MC_GearInPos",
-    "MC_GearInVelocity",
-    "MC_GearOut",
     "MC_CamIn",
     "MC_CamOut",
     "MC_PhasingAbsolute",
@@ -344,6 +443,8 @@ std::string_view to_string(ParameterType type) noexcept {
       return "WORD";
     case ParameterType::kLreal:
       return "LREAL";
+    case ParameterType::kTechnologyObject:
+      return "TO";
   }
   return "?";
 }
@@ -361,6 +462,8 @@ std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) no
       return kSpeedAxisInstructions;
     case TechnologyObjectKind::kPositioningAxis:
       return kPositioningAxisInstructions;
+    case TechnologyObjectKind::kSynchronousAxis:
+      return kSynchronousAxisInstructions;
     case TechnologyObjectKind::kExternalEncoder:
       return kExternalEncoderInstructions;
   }
@@ -404,6 +507,15 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
       if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
       return make_motion<PositioningAxis>(instruction);
+    case TechnologyObjectKind::kSynchronousAxis:
+      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<SynchronousAxis>);
+      if (instruction == "MC_MoveRelative") return make(kMoveRelative<SynchronousAxis>);
+      if (instruction == "MC_Home") return make(kHome<SynchronousAxis>);
+      if (instruction == "MC_GearIn") return make(kGearIn);
+      if (instruction == "MC_GearInPos") return make(kGearInPos);
+      if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
+      if (instruction == "MC_GearOut") return make(kGearOut);
+      return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);
       return make_common<ExternalEncoder>(instruction);

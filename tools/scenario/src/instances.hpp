@@ -12,12 +12,15 @@
 #include <variant>
 #include <vector>
 
+#include "tomc/scenario/machine.hpp"
+#include "tomc/techobjects/leading_value.hpp"
 #include "tomc/techobjects/runtime.hpp"
 
 namespace tomc::scenario::detail {
 
 // The PLC data types of instruction parameters.
-enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal };
+// kTechnologyObject: an input naming a TO (MC_GearIn.Master), given in JSON as its name.
+enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal, kTechnologyObject };
 std::string_view to_string(ParameterType type) noexcept;
 
 struct ParameterInfo {
@@ -32,15 +35,15 @@ class Instance {
   virtual std::span<const ParameterInfo> parameters() const noexcept = 0;
   // Index into parameters(); already validated values only (the loader checked type and range).
   virtual void set(std::size_t parameter, double value) noexcept = 0;
-  virtual double get(std::size_t parameter) const noexcept = 0;
+  virtual double get(std::size_t parameter) const noexcept = 0;  // NaN for a kTechnologyObject parameter
+  virtual void set_object(std::size_t parameter, const techobjects::LeadingValueSource* object) noexcept = 0;
   // `object` is of the TO type the instance was made for (make_instance).
   virtual void call(techobjects::TechnologyObject& object) noexcept = 0;
 
   std::optional<std::size_t> find(std::string_view name) const noexcept;
 };
 
-// The TO types tomc sim builds (TO_SynchronousAxis comes with the synchronous axis).
-enum class TechnologyObjectKind : std::uint8_t { kSpeedAxis, kPositioningAxis, kExternalEncoder };
+using scenario::TechnologyObjectKind;
 
 // Instruction names known to tomc sim for a TO type, in the order of the manual (spec 01 §1.3).
 std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) noexcept;

@@ -19,6 +19,7 @@
 #include "instances.hpp"
 #include "json_reader.hpp"
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/scenario/machine.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
@@ -34,18 +35,10 @@ namespace {
 namespace to = tomc::techobjects;
 using detail::Instance;
 using detail::ObjectReader;
-using detail::TechnologyObjectKind;
 using Reaction = drives::SimulatedDriveParameters::FaultReaction;
 
 constexpr std::int64_t kMaxCycles = 1'000'000'000;  // 11.6 days at 1 ms: far beyond any test, still finite
 constexpr double kDefaultTolerance = 1e-9;
-
-// Names appear in trace names "<name>.<path>", so they must not contain dots or CSV separators.
-bool is_identifier(std::string_view name) {
-  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
-  return std::all_of(name.begin(), name.end(),
-                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
 
 std::string list_of(const std::vector<std::string>& names) {
   std::string s;
@@ -85,6 +78,7 @@ Format format_of(detail::ParameterType type) {
     case detail::ParameterType::kInt:
     case detail::ParameterType::kDint:
     case detail::ParameterType::kWord:
+    case detail::ParameterType::kTechnologyObject:
       break;
   }
   return Format::kInteger;
@@ -123,74 +117,7 @@ constexpr std::array<DriveObservable, 6> kDriveObservables{{
     {"load_speed", Format::kReal, [](const drives::SimulatedDrive& d) noexcept { return d.load_speed(); }},
 }};
 
-enum class ToType : std::uint8_t { kSpeedAxis, kPositioningAxis, kSynchronousAxis, kExternalEncoder };
-constexpr std::array<std::string_view, 4> kToTypeNames{"TO_SpeedAxis", "TO_PositioningAxis",
-                                                       "TO_SynchronousAxis", "TO_ExternalEncoder"};
-
-struct TechnologyObjectEntry {
-  std::string name;
-  bool built = false;  // false: its definition had problems; names still resolve to avoid follow-up noise
-  TechnologyObjectKind kind = TechnologyObjectKind::kSpeedAxis;
-  to::TechnologyObject* object = nullptr;  // the one of the three below that is set
-  to::SpeedAxis* speed_axis = nullptr;
-  to::PositioningAxis* positioning_axis = nullptr;
-  to::ExternalEncoder* external_encoder = nullptr;
-  drives::SimulatedDrive* drive = nullptr;
-
-  std::string_view type_name() const noexcept {
-    return kind == TechnologyObjectKind::kSpeedAxis         ? "TO_SpeedAxis"
-           : kind == TechnologyObjectKind::kPositioningAxis ? "TO_PositioningAxis"
-                                                            : "TO_ExternalEncoder";
-  }
-  const to::VariableInfo* find_variable(std::string_view path) const noexcept {
-    switch (kind) {
-      case TechnologyObjectKind::kSpeedAxis:
-        return to::find_speed_axis_variable(path);
-      case TechnologyObjectKind::kPositioningAxis:
-        return to::find_positioning_axis_variable(path);
-      case TechnologyObjectKind::kExternalEncoder:
-        return to::find_external_encoder_variable(path);
-    }
-    return nullptr;
-  }
-  std::optional<to::BitReference> find_bit(std::string_view path) const noexcept {
-    switch (kind) {
-      case TechnologyObjectKind::kSpeedAxis:
-        return to::find_speed_axis_bit(path);
-      case TechnologyObjectKind::kPositioningAxis:
-        return to::find_positioning_axis_bit(path);
-      case TechnologyObjectKind::kExternalEncoder:
-        return to::find_external_encoder_bit(path);
-    }
-    return std::nullopt;
-  }
-  // Reads a variable (or one bit of a word) of this TO's data block, for traces and expectations.
-  std::function<double()> reader(const to::VariableInfo* info, std::optional<to::BitReference> bit) const {
-    const auto read = [info, bit](const auto& data) {
-      return bit ? (bit->read(data) ? 1.0 : 0.0) : info->read(data);
-    };
-    switch (kind) {
-      case TechnologyObjectKind::kSpeedAxis:
-        return [a = speed_axis, read] { return read(a->data()); };
-      case TechnologyObjectKind::kPositioningAxis:
-        return [a = positioning_axis, read] { return read(a->data()); };
-      case TechnologyObjectKind::kExternalEncoder:
-        return [a = external_encoder, read] { return read(a->data()); };
-    }
-    return [] { return std::numeric_limits<double>::quiet_NaN(); };
-  }
-  to::WriteResult write(std::string_view variable, double value) const noexcept {
-    if (speed_axis != nullptr) return speed_axis->write(variable, value);
-    if (positioning_axis != nullptr) return positioning_axis->write(variable, value);
-    return external_encoder->write(variable, value);
-  }
-  bool inject_alarm(std::uint32_t number, std::uint32_t additional,
-                    to::AlarmReaction reaction) const noexcept {
-    if (speed_axis != nullptr) return speed_axis->inject_alarm(number, additional, reaction);
-    if (positioning_axis != nullptr) return positioning_axis->inject_alarm(number, additional, reaction);
-    return external_encoder->inject_alarm(number, additional, reaction);
-  }
-};
+using TechnologyObjectEntry = MachineObject;
 
 struct InstanceEntry {
   std::string name;
@@ -225,6 +152,7 @@ struct Event {
   // kInstance
   std::size_t instance = 0;
   std::vector<std::pair<std::size_t, double>> inputs;
+  std::vector<std::pair<std::size_t, std::size_t>> object_inputs;  // (parameter, technology object index)
   // kSet
   std::vector<SetItem> sets;
   // kInject, kClear
@@ -282,7 +210,6 @@ struct Scenario::Impl {
   // ---- loading ----
   void load(const Json& document);
   void load_technology_object(const Json& value, const std::string& path);
-  void wire_machine_inputs();
   void load_event(const Json& value, const std::string& path, std::optional<std::uint64_t>& previous_cycle);
   void load_instance_event(ObjectReader& r, Event& event);
   void load_set_event(ObjectReader& r, Event& event);
@@ -442,144 +369,9 @@ void Scenario::Impl::load(const Json& document) {
 }
 
 void Scenario::Impl::load_technology_object(const Json& value, const std::string& path) {
-  ObjectReader r(value, path, problems);
-  if (!r.valid()) return;
-  TechnologyObjectEntry entry;
-  if (const Json* v = r.get("name", true)) {
-    if (auto name = detail::read_string(*v, r.path_of("name"), problems)) {
-      if (!is_identifier(*name)) {
-        problems.add(r.path_of("name"),
-                     "'" + *name + "' is not a name (letters, digits, _; not starting with a digit)");
-      } else if (find_object(*name)) {
-        problems.add(r.path_of("name"), "'" + *name + "' is defined twice");
-      } else {
-        entry.name = *name;
-      }
-    }
+  if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems)) {
+    objects.push_back(std::move(*entry));
   }
-  std::optional<ToType> type;
-  if (const Json* v = r.get("type", true)) {
-    if (auto t = detail::read_string(*v, r.path_of("type"), problems)) {
-      const auto it = std::find(kToTypeNames.begin(), kToTypeNames.end(), *t);
-      if (it == kToTypeNames.end()) {
-        problems.add(r.path_of("type"), "unknown technology object type '" + *t + "' (one of " +
-                                            list_of(std::span<const std::string_view>(kToTypeNames)) + ")");
-      } else if (static_cast<ToType>(it - kToTypeNames.begin()) == ToType::kSynchronousAxis) {
-        problems.add(r.path_of("type"), *t + " is not yet supported by tomc sim (supported: TO_SpeedAxis, "
-                                             "TO_PositioningAxis, TO_ExternalEncoder)");
-      } else {
-        type = static_cast<ToType>(it - kToTypeNames.begin());
-      }
-    }
-  }
-  const std::size_t before = problems.size();
-  to::SpeedAxisData speed_data;
-  to::PositioningAxisData positioning_data;
-  to::ExternalEncoderData encoder_data;
-  DriveSettings drive;
-  bool has_drive = false;
-  if (type) {
-    bool needs_drive = true;
-    std::string_view type_name = kToTypeNames[static_cast<std::size_t>(*type)];
-    const Json* config = r.get("config");
-    // The simulated drive is parameterised like the TO unless the file says otherwise (p2000 =
-    // ReferenceSpeed, p2003 = ReferenceTorque, the mechanics of the load), as automatic data adaption would
-    // do; a mismatch must be asked for explicitly.
-    auto& p = drive.parameters;
-    switch (*type) {
-      case ToType::kSpeedAxis:
-        if (config != nullptr) load_speed_axis_config(*config, r.path_of("config"), speed_data, problems);
-        p.reference_speed_rpm = speed_data.Actor.DriveParameter.ReferenceSpeed;
-        p.reference_torque_nm = speed_data.Actor.DriveParameter.ReferenceTorque;
-        needs_drive = speed_data.VirtualAxis.Mode != to::kModeOn && speed_data.Simulation.Mode != to::kModeOn;
-        break;
-      case ToType::kPositioningAxis: {
-        if (config != nullptr)
-          load_positioning_axis_config(*config, r.path_of("config"), positioning_data, problems);
-        const auto& d = positioning_data;
-        p.reference_speed_rpm = d.Actor.DriveParameter.ReferenceSpeed;
-        p.reference_torque_nm = d.Actor.DriveParameter.ReferenceTorque;
-        p.gear_motor_revolutions = d.LoadGear.Numerator;
-        p.gear_load_revolutions = d.LoadGear.Denominator;
-        const auto units = to::axis_unit_factors(d.Units.LengthUnit, d.Units.VelocityUnit);
-        p.load_units_per_revolution = d.Properties.MotionType == 0 ? d.Mechanics.LeadScrew * units.leadscrew
-                                                                   : units.units_per_revolution;
-        const auto& s1 = d.Sensor[0];
-        p.encoder1.steps_per_revolution = s1.Parameter.StepsPerRevolution;
-        p.encoder1.fine_resolution_xist1 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist1);
-        p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist2);
-        needs_drive = d.VirtualAxis.Mode != to::kModeOn && d.Simulation.Mode != to::kModeOn;
-        break;
-      }
-      case ToType::kExternalEncoder: {
-        if (config != nullptr)
-          load_external_encoder_config(*config, r.path_of("config"), encoder_data, problems);
-        const auto& d = encoder_data;
-        p.gear_motor_revolutions = d.LoadGear.Numerator;
-        p.gear_load_revolutions = d.LoadGear.Denominator;
-        const auto units = to::axis_unit_factors(d.Units.LengthUnit, d.Units.VelocityUnit);
-        p.load_units_per_revolution = d.Properties.MotionType == 0 ? d.Mechanics.LeadScrew * units.leadscrew
-                                                                   : units.units_per_revolution;
-        p.encoder1.steps_per_revolution = d.Sensor.Parameter.StepsPerRevolution;
-        p.encoder1.fine_resolution_xist1 = static_cast<std::uint8_t>(d.Sensor.Parameter.FineResolutionXist1);
-        p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(d.Sensor.Parameter.FineResolutionXist2);
-        drive.encoder_telegram = 81;  // an encoder-only device unless the file says otherwise
-        break;
-      }
-      case ToType::kSynchronousAxis:
-        break;
-    }
-    if (const Json* v = r.get("drive")) {
-      load_drive(*v, r.path_of("drive"), cycle_time, drive, problems);
-      has_drive = true;
-    } else if (needs_drive) {
-      problems.add(r.path_of("drive"),
-                   "missing (a " + std::string(type_name) +
-                       (*type == ToType::kExternalEncoder ? " needs a device with encoder telegram 81 or 83)"
-                                                          : " needs a drive unless VirtualAxis.Mode or "
-                                                            "Simulation.Mode is 1)"));
-    }
-  } else {
-    // The type is unusable, so its config cannot be checked; still accept the keys to avoid noise.
-    r.get("config");
-    r.get("drive");
-  }
-  r.finish();
-  if (!entry.name.empty() && type && problems.size() == before) {
-    drives::SimulatedDrive* drive_ptr = nullptr;
-    to::DeviceIo* io = nullptr;
-    if (has_drive) {
-      auto owned = std::make_unique<drives::SimulatedDrive>(drive.device_config(), drive.parameters);
-      drive_ptr = owned.get();
-      io = &runtime->add_device(std::move(owned));
-    }
-    try {
-      switch (*type) {
-        case ToType::kSpeedAxis:
-          entry.kind = TechnologyObjectKind::kSpeedAxis;
-          entry.speed_axis = &runtime->emplace<to::SpeedAxis>(entry.name, io, speed_data);
-          entry.object = entry.speed_axis;
-          break;
-        case ToType::kPositioningAxis:
-          entry.kind = TechnologyObjectKind::kPositioningAxis;
-          entry.positioning_axis = &runtime->emplace<to::PositioningAxis>(entry.name, io, positioning_data);
-          entry.object = entry.positioning_axis;
-          break;
-        case ToType::kExternalEncoder:
-        case ToType::kSynchronousAxis:
-          entry.kind = TechnologyObjectKind::kExternalEncoder;
-          entry.external_encoder = &runtime->emplace<to::ExternalEncoder>(entry.name, io, encoder_data);
-          entry.object = entry.external_encoder;
-          break;
-      }
-      entry.drive = drive_ptr;
-      entry.built = true;
-    } catch (const std::invalid_argument& e) {
-      // Cross-checks of the TO (units against the motion type, the encoder's telegram, ...), named by path.
-      problems.add(r.path_of("config"), e.what());
-    }
-  }
-  if (!entry.name.empty()) objects.push_back(std::move(entry));
 }
 
 void Scenario::Impl::load_event(const Json& value, const std::string& path,
@@ -687,7 +479,7 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
         const std::string supported = list_of(detail::instructions_for(object.kind));
         bool other_type = false;
         for (auto kind : {TechnologyObjectKind::kSpeedAxis, TechnologyObjectKind::kPositioningAxis,
-                          TechnologyObjectKind::kExternalEncoder}) {
+                          TechnologyObjectKind::kSynchronousAxis, TechnologyObjectKind::kExternalEncoder}) {
           const auto names = detail::instructions_for(kind);
           other_type = other_type || std::find(names.begin(), names.end(), *instruction) != names.end();
         }
@@ -760,6 +552,21 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
       case detail::ParameterType::kLreal:
         number = detail::read_number(value, path, problems);
         break;
+      case detail::ParameterType::kTechnologyObject: {
+        // A TO by name (MC_GearIn.Master): a leading value of the scenario (spec 07 §1.2).
+        if (auto target = detail::read_string(value, path, problems)) {
+          const auto index = find_object(*target);
+          if (!index) {
+            if (!objects_broken) problems.add(path, "unknown technology object '" + *target + "'");
+          } else if (objects[*index].built && objects[*index].leading_value_source() == nullptr) {
+            problems.add(path, "'" + *target + "' is a " + std::string(objects[*index].type_name()) +
+                                   ", which cannot be a leading value");
+          } else {
+            event.object_inputs.emplace_back(*parameter, *index);
+          }
+        }
+        break;
+      }
     }
     if (number) event.inputs.emplace_back(*parameter, *number);
   }
@@ -941,6 +748,10 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       return std::nullopt;
     }
     const Instance* fb = entry.fb.get();
+    if (fb->parameters()[*parameter].type == detail::ParameterType::kTechnologyObject) {
+      problems.add(path, "'" + std::string(rest) + "' names a technology object; it cannot be traced");
+      return std::nullopt;
+    }
     column.format = format_of(fb->parameters()[*parameter].type);
     column.read = [fb, p = *parameter] { return fb->get(p); };
     return column;
@@ -965,6 +776,8 @@ void Scenario::Impl::apply(const Event& event) noexcept {
       Instance& fb = *instances[event.instance].fb;
       for (const auto& [parameter, value] : event.inputs)
         fb.set(parameter, value);
+      for (const auto& [parameter, object] : event.object_inputs)
+        fb.set_object(parameter, objects[object].leading_value_source());
       break;
     }
     case Event::Kind::kSet:
@@ -1023,26 +836,6 @@ void Scenario::Impl::apply(const Event& event) noexcept {
   }
 }
 
-// The simulated machine's position switches reach a positioning axis as a PLC's servo process image would
-// (spec 02 §4.4 "TPA OB Servo"): before MC_Servo, at the level the switch is wired for (*SwitchLevel).
-void Scenario::Impl::wire_machine_inputs() {
-  std::vector<std::pair<to::PositioningAxis*, const drives::SimulatedDrive*>> wired;
-  for (const auto& o : objects) {
-    if (o.positioning_axis != nullptr && o.drive != nullptr) wired.emplace_back(o.positioning_axis, o.drive);
-  }
-  if (wired.empty()) return;
-  runtime->set_pre_servo([wired = std::move(wired)](to::Runtime&) {
-    for (const auto& [axis, drive] : wired) {
-      const drives::MachineInputs in = drive->machine_inputs();
-      const auto& hw = axis->data().PositionLimits_HW;
-      auto& image = axis->digital_inputs();
-      image.MinSwitch = in.negative_limit_switch == hw.MinSwitchLevel;
-      image.MaxSwitch = in.positive_limit_switch == hw.MaxSwitchLevel;
-      image.HomingInput = in.reference_cam;
-    }
-  });
-}
-
 void Scenario::Impl::user_program() noexcept {
   // Events of this cycle first ("just before the user program"), then every created instance once, in
   // creation order, on its axis — the order in which a PLC program would call its FB instances.
@@ -1069,7 +862,7 @@ LoadResult Scenario::load(const Json& document) {
   impl->created.reserve(impl->instances.size());
   Impl* self = impl.get();
   impl->runtime->set_user_program([self](to::Runtime&) { self->user_program(); });
-  impl->wire_machine_inputs();
+  wire_machine_inputs(*impl->runtime, impl->objects);
   if (impl->retain) {
     for (const auto& o : impl->objects) {
       if (o.positioning_axis != nullptr) impl->retain->attach(*o.positioning_axis);
