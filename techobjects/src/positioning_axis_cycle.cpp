@@ -438,7 +438,7 @@ void PositioningAxis::update_live_motion() noexcept {
     case JobKind::kMoveAbsolute:
     case JobKind::kMoveRelative: {
       if (motion_.interpolation_done) break;
-      const double v = motion_.limits.velocity * ovr;
+      const double v = positioning_velocity(motion_);
       if (std::fabs(v - motion_.planned_velocity) > 1e-12) {
         motion_.planned_velocity = v;
         if (v > 0.0) {

@@ -147,7 +147,7 @@ class PositioningAxis final : public TechnologyObject {
     JobId id = 0;
     JobKind kind = JobKind::kNone;
     ProfileLimits limits{};        // resolved (position units), velocity before override
-    double command_velocity = 0;   // MoveVelocity/Jog: signed, before override
+    double command_velocity = 0;   // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp
     double target = 0;             // positioning: continuous target position
     double distance = 0;           // appended positioning: target relative to the end of the running job
     bool relative_to_end = false;  // appended MoveRelative: Distance counts from the running job's target
@@ -187,7 +187,8 @@ class PositioningAxis final : public TechnologyObject {
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   void plan_position(double target, const ProfileLimits& limits) noexcept;
   double override_factor() const noexcept;
-  double velocity_limit() const noexcept;  // position units / s
+  double velocity_limit() const noexcept;                            // position units / s
+  double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept;
   void raise_with(std::uint32_t number, std::uint32_t additional, std::int32_t reaction) noexcept;
   void apply_alarm_reactions() noexcept;
