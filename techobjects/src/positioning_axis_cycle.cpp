@@ -478,7 +478,17 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 }
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
-  if (position_profile_.plan(setpoint_, target, limits)) {
+  // The velocity limit wins over the job's jerk (decision S4): an acceleration that pushes |v| outward would
+  // add a0²/(2j) before it can turn; the jerk is raised so that |v| just reaches min(MaxVelocity, Velocity).
+  ProfileLimits l = limits;
+  const double v0 = setpoint_.velocity;
+  const double a0 = setpoint_.acceleration;
+  if (l.jerk > 0.0 && a0 * v0 > 0.0) {
+    const double margin = velocity_limit() - std::fabs(v0);
+    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
+    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
+  }
+  if (position_profile_.plan(setpoint_, target, l)) {
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
