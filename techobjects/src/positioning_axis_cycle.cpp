@@ -21,6 +21,29 @@ constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // as the speed axis (decis
 constexpr double kStandstillEpsilon = 1e-9;          // position units / s
 constexpr std::uint32_t kEncoderAcknowledgeCycles = 10;
 
+// The jerk to plan a replacement with (spec 01 §8.8: the acceleration a0 moves to the new job's through the
+// new job's jerk j, changing the velocity by a0²/(2j) on the way). Two things win over the job's jerk:
+//  * decision S4: |v| stays within v_limit, outward (a0·v0 >= 0: |v0| + a0²/(2j)) and after a zero crossing
+//    (a0·v0 < 0: a0²/(2j) − |v0| on the other side);
+//  * decision R1: a ramp to standstill (MC_Halt, MC_Stop, stop reactions, override 0 %) never reverses: if a0
+//    already carries v through zero, the jerk becomes a0²/(2|v0|) so that v and a reach 0 together.
+// Returns the raised jerk (0 = none, the acceleration steps) or `jerk` unchanged.
+double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept {
+  if (!(jerk > 0.0) || a0 == 0.0) return jerk;
+  const double inf = std::numeric_limits<double>::infinity();
+  double needed = 0.0;
+  if (a0 * v0 >= 0.0) {
+    const double margin = v_limit - std::fabs(v0);
+    needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : inf;
+  } else if (to_standstill) {
+    needed = a0 * a0 / (2.0 * std::fabs(v0));
+  } else {
+    needed = a0 * a0 / (2.0 * (v_limit + std::fabs(v0)));
+  }
+  if (needed <= jerk) return jerk;
+  return std::isfinite(needed) ? needed : 0.0;
+}
+
 // floor((x - start) / length): the modulo cycle index of a continuous position.
 std::int64_t cycle_index(double x, double start, double length) noexcept {
   return static_cast<std::int64_t>(std::floor((x - start) / length));
@@ -462,14 +485,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   if (abort_acceleration) start.acceleration = 0.0;
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  // The velocity limit wins over the job's jerk (decision S4).
-  const double v0 = start.velocity;
-  const double a0 = start.acceleration;
-  if (l.jerk > 0.0 && std::isfinite(l.velocity) && a0 * v0 > 0.0) {
-    const double margin = l.velocity - std::fabs(v0);
-    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
-    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
-  }
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
   if (velocity_profile_.plan(start, target, l)) {
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
@@ -478,16 +494,8 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 }
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
-  // The velocity limit wins over the job's jerk (decision S4): an acceleration that pushes |v| outward would
-  // add a0²/(2j) before it can turn; the jerk is raised so that |v| just reaches min(MaxVelocity, Velocity).
   ProfileLimits l = limits;
-  const double v0 = setpoint_.velocity;
-  const double a0 = setpoint_.acceleration;
-  if (l.jerk > 0.0 && a0 * v0 > 0.0) {
-    const double margin = velocity_limit() - std::fabs(v0);
-    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
-    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
-  }
+  l.jerk = replanning_jerk(setpoint_.velocity, setpoint_.acceleration, l.jerk, velocity_limit(), false);
   if (position_profile_.plan(setpoint_, target, l)) {
     profile_time_ = 0.0;
     profile_offset_ = 0.0;

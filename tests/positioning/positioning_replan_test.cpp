@@ -50,3 +50,69 @@ TEST(PositioningReplan, ASofterJerkDoesNotCarryTheVelocityPastTheLimit) {
 }
 
 }  // namespace
+
+namespace {
+
+// A braking state: MC_Halt with 5000 mm/s² and a steep jerk from 400 mm/s, taken when v <= 100 mm/s; the
+// deceleration is still 5000 mm/s², enough to carry v through zero with any jerk below a0²/(2 v0).
+void brake_hard_to_100(PositioningAxisMachine& m) {
+  ASSERT_GT(m.enable(), 0);
+  m.move_velocity.Velocity = 400.0;
+  m.move_velocity.Acceleration = 5000.0;
+  m.move_velocity.Execute = true;
+  m.run(500);
+  m.halt.Deceleration = 5000.0;
+  m.halt.Jerk = 1.0e6;
+  m.halt.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.db().Velocity <= 100.0; }, 1000), 0);
+  m.halt.Execute = false;
+  m.run(1);
+  ASSERT_GT(m.db().Velocity, 50.0);
+  ASSERT_LT(m.db().Acceleration, -4999.0);
+}
+
+// spec 02 §3.6, spec 01 §8.8, decision R1: a new MC_Halt with a jerk of 1000 mm/s³ from v0 = 92.5 mm/s and
+// a0 = -5000 mm/s² would take a0²/(2j) = 12500 mm/s off the velocity before the deceleration is gone: the
+// axis would reverse to beyond -500 mm/s (and trip 521). A stop to standstill does not reverse: the jerk is
+// raised to a0²/(2 v0) so that v and a reach 0 together.
+TEST(PositioningReplan, AHaltWithASofterJerkDoesNotReverse) {
+  PositioningAxisMachine m;
+  brake_hard_to_100(m);
+  m.halt.Jerk = 1000.0;
+  m.halt.Execute = true;
+  double lowest = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  lowest = std::min(lowest, m.db().Velocity);
+                  return m.halt.Done;
+                },
+                2000),
+            0);
+  EXPECT_GE(lowest, -1e-9);
+  EXPECT_FALSE(m.axis->alarms().pending(tomc::techobjects::kAlarmFollowingError));
+}
+
+// Decision S4 on the other side of zero: a reversing MC_MoveVelocity (to -200 mm/s) with that soft jerk from
+// the same braking state must not carry the velocity past -500 mm/s on the way.
+TEST(PositioningReplan, AReversalWithASofterJerkStaysWithinTheLimit) {
+  PositioningAxisMachine m;
+  brake_hard_to_100(m);
+  m.move_velocity.Execute = false;
+  m.run(1);
+  m.move_velocity.Velocity = -200.0;
+  m.move_velocity.Jerk = 1000.0;
+  m.move_velocity.Execute = true;
+  double fastest = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  fastest = std::max(fastest, std::fabs(m.db().Velocity));
+                  return m.move_velocity.InVelocity;
+                },
+                20000),
+            0);
+  EXPECT_LE(fastest, 500.0 + 1e-9);
+  EXPECT_NEAR(m.db().Velocity, -200.0, 1e-9);
+  EXPECT_FALSE(m.axis->alarms().pending(tomc::techobjects::kAlarmFollowingError));
+}
+
+}  // namespace
