@@ -323,8 +323,9 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   apply_alarm_reactions();
   update_power_phase();
   update_live_motion();
+  const double previous_position = setpoint_.position;
   generate_setpoint();
-  monitor_software_limits();
+  monitor_software_limits(previous_position);
   complete_jobs();
   update_status();
 }
@@ -554,7 +555,7 @@ void PositioningAxis::generate_setpoint() noexcept {
 }
 
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
-void PositioningAxis::monitor_software_limits() noexcept {
+void PositioningAxis::monitor_software_limits(double previous_position) noexcept {
   if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
   const std::int32_t reaction =
       limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
@@ -563,7 +564,22 @@ void PositioningAxis::monitor_software_limits() noexcept {
   const double start = db_.Modulo.StartValue;
   const double length = db_.Modulo.Length;
   const std::int64_t k = modulo() ? cycle_index(setpoint_.position, start, length) : 0;
-  in.position = modulo() ? setpoint_.position - static_cast<double>(k) * length : setpoint_.position;
+  const double shift = modulo() ? static_cast<double>(k) * length : 0.0;
+  in.position = setpoint_.position - shift;
+  // The look-ahead knows a job from its first setpoint on: a motion that starts within one step of a limit
+  // has passed it in this setpoint already. The monitor sees it at the limit (it raises 533 for the approach,
+  // not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at the limit).
+  const auto& limits = software_limits_.effective_limits();
+  const double previous = previous_position - shift;
+  double crossed = std::numeric_limits<double>::quiet_NaN();
+  if (homed() && limits.monitored) {
+    const double hi = limits.max_position;
+    const double lo = limits.min_position;
+    const double tolerance = 1e-9 * std::max({1.0, std::fabs(hi), std::fabs(lo)});  // as the monitor's
+    if (previous <= hi + tolerance && in.position > hi + tolerance) crossed = hi;
+    if (previous >= lo - tolerance && in.position < lo - tolerance) crossed = lo;
+    if (!std::isnan(crossed)) in.position = crossed;
+  }
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
   in.homed = homed();
@@ -580,6 +596,7 @@ void PositioningAxis::monitor_software_limits() noexcept {
   }
   in.cycle_time = ipo_cycle_s_;
   const auto r = software_limits_.update(in);
+  if (!std::isnan(crossed)) setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
   if (r.stop_now) {
     limit_stop_ = true;
     limit_stop_position_ = r.stop_position + static_cast<double>(k) * (modulo() ? length : 0.0);

@@ -195,7 +195,7 @@ class PositioningAxis final : public TechnologyObject {
   void update_power_phase() noexcept;
   void update_live_motion() noexcept;
   void generate_setpoint() noexcept;
-  void monitor_software_limits() noexcept;
+  void monitor_software_limits(double previous_position) noexcept;
   void complete_jobs() noexcept;
   void update_status() noexcept;
   void restart() noexcept;
