@@ -554,6 +554,32 @@ void PositioningAxis::generate_setpoint() noexcept {
   if (!position_controlled_) setpoint_.position = actual_position_;
 }
 
+// The setpoint the generator will give `dt` after the present one unless a job changes it (as
+// generate_setpoint() evaluates the profiles).
+MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
+  const double t = profile_time_ + dt;
+  MotionState s{setpoint_.position + setpoint_.velocity * dt, setpoint_.velocity, 0.0};
+  if (generator_ == Generator::kVelocity) {
+    const double end = velocity_profile_.duration();
+    if (t >= end - 1e-9) {
+      const MotionState e = velocity_profile_.at(end);
+      s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
+    } else {
+      s = velocity_profile_.at(t);
+      s.position += profile_offset_;
+    }
+  } else if (generator_ == Generator::kPosition) {
+    const double end = position_profile_.duration();
+    if (t >= end - 1e-9) {
+      s = MotionState{position_profile_.at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+    } else {
+      s = position_profile_.at(t);
+      s.position += profile_offset_;
+    }
+  }
+  return s;
+}
+
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
 void PositioningAxis::monitor_software_limits(double previous_position) noexcept {
   if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
@@ -595,6 +621,13 @@ void PositioningAxis::monitor_software_limits(double previous_position) noexcept
     in.stop_jerk = cur.jerk;
   }
   in.cycle_time = ipo_cycle_s_;
+  if (std::isnan(crossed)) {
+    const MotionState next = predicted_setpoint(ipo_cycle_s_);
+    in.next_known = true;
+    in.next_position = next.position - shift;
+    in.next_velocity = next.velocity;
+    in.next_acceleration = next.acceleration;
+  }
   const auto r = software_limits_.update(in);
   if (!std::isnan(crossed)) setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
   if (r.stop_now) {

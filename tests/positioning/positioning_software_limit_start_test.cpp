@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "positioning_axis_fixture.hpp"
 #include "tomc/techobjects/alarms.hpp"
@@ -33,6 +34,10 @@ PositioningAxisMachine& at_the_limit(PositioningAxisMachine& m) {
   m.run(1);
   EXPECT_EQ(m.db().ErrorWord, 0u);
   return m;
+}
+
+bool techobjects_enabled(const PositioningAxisMachine& m) {
+  return tomc::techobjects::test(m.db().StatusWord, tomc::techobjects::StatusWordBit::kEnable);
 }
 
 tomc::techobjects::PositioningAxisData limited(double max_jerk) {
@@ -80,6 +85,46 @@ TEST(PositioningSoftwareLimit, MovingClearFromTheLimitStillWorks) {
   ASSERT_GT(m.run_until([&] { return m.move_relative.Done; }, 2000), 0);
   EXPECT_NEAR(m.db().ActualPosition, 190.0, m.db().PositioningMonitoring.Window);
   EXPECT_EQ(m.db().ErrorWord, 0u);
+}
+
+}  // namespace
+
+namespace {
+
+// spec 02 §4.5 with a jerk-limited profile: the look-ahead has to foresee the next setpoint as the profile
+// produces it. Extrapolated with constant acceleration, a rising acceleration (jerk 1e5 mm/s³, +100 mm/s²
+// per cycle) was missed by one cycle: the stop began too late and the setpoint passed MaxPosition (by
+// 0.23 mm from 179.46 mm towards 266 mm). From start positions across the whole acceleration phase, every
+// approach stops at the limit with the setpoint continuous (|dv/dt| <= MaxDeceleration) and no 534.
+TEST(PositioningSoftwareLimit, AJerkLimitedApproachStopsAtTheLimit) {
+  for (double start = 170.0; start < 190.0; start += 0.37) {
+    PositioningAxisMachine m(limited(100000.0));
+    ASSERT_GT(m.enable(), 0);
+    ASSERT_TRUE(m.home_at(start));
+    m.run(20);
+    m.move_absolute.Position = 266.0;
+    m.move_absolute.Velocity = 500.0;
+    m.move_absolute.Acceleration = 4887.67;
+    m.move_absolute.Execute = true;
+    double highest = m.axis->setpoint().position;
+    double steepest = 0.0;
+    double v_before = m.db().Velocity;
+    m.run_until(
+        [&] {
+          highest = std::max(highest, m.axis->setpoint().position);
+          steepest = std::max(steepest, std::fabs(m.db().Velocity - v_before) / 0.001);
+          v_before = m.db().Velocity;
+          return m.axis->alarms().pending(tomc::techobjects::kAlarmSoftwareLimitReached) &&
+                 m.db().Velocity == 0.0;
+        },
+        2000);
+    EXPECT_LE(highest, 200.0 + 1e-9) << "from " << start;
+    EXPECT_LE(steepest, 5000.0 * (1 + 1e-9)) << "from " << start;
+    EXPECT_TRUE(m.axis->alarms().pending(tomc::techobjects::kAlarmSoftwareLimitReached)) << "from " << start;
+    EXPECT_FALSE(m.axis->alarms().pending(tomc::techobjects::kAlarmSoftwareLimitExceeded))
+        << "from " << start;
+    EXPECT_TRUE(techobjects_enabled(m)) << "from " << start;
+  }
 }
 
 }  // namespace
