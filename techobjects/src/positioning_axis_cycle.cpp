@@ -323,9 +323,9 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   apply_alarm_reactions();
   update_power_phase();
   update_live_motion();
-  const double previous_position = setpoint_.position;
+  const MotionState previous = setpoint_;
   generate_setpoint();
-  monitor_software_limits(previous_position);
+  monitor_software_limits(previous);
   complete_jobs();
   update_status();
 }
@@ -581,7 +581,7 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
 }
 
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
-void PositioningAxis::monitor_software_limits(double previous_position) noexcept {
+void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoint) noexcept {
   if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
   const std::int32_t reaction =
       limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
@@ -592,13 +592,15 @@ void PositioningAxis::monitor_software_limits(double previous_position) noexcept
   const std::int64_t k = modulo() ? cycle_index(setpoint_.position, start, length) : 0;
   const double shift = modulo() ? static_cast<double>(k) * length : 0.0;
   in.position = setpoint_.position - shift;
-  // The look-ahead knows a job from its first setpoint on: a motion that starts within one step of a limit
-  // has passed it in this setpoint already. The monitor sees it at the limit (it raises 533 for the approach,
-  // not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at the limit).
+  // The look-ahead knows a job from its first setpoint on: a motion that starts from standstill within one
+  // step of a limit has passed it in this setpoint already. The monitor sees it at the limit (it raises 533
+  // for the approach, not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at
+  // the limit). A moving setpoint is the look-ahead's job.
   const auto& limits = software_limits_.effective_limits();
-  const double previous = previous_position - shift;
+  const double previous = previous_setpoint.position - shift;
+  const bool from_standstill = previous_setpoint.velocity == 0.0 && previous_setpoint.acceleration == 0.0;
   double crossed = std::numeric_limits<double>::quiet_NaN();
-  if (homed() && limits.monitored) {
+  if (homed() && limits.monitored && from_standstill) {
     const double hi = limits.max_position;
     const double lo = limits.min_position;
     const double tolerance = 1e-9 * std::max({1.0, std::fabs(hi), std::fabs(lo)});  // as the monitor's

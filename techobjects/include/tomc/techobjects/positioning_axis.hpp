@@ -195,7 +195,7 @@ class PositioningAxis final : public TechnologyObject {
   void update_power_phase() noexcept;
   void update_live_motion() noexcept;
   void generate_setpoint() noexcept;
-  void monitor_software_limits(double previous_position) noexcept;
+  void monitor_software_limits(const MotionState& previous_setpoint) noexcept;
   MotionState predicted_setpoint(double dt) const noexcept;  // the generator dt ahead, no job changes
   void complete_jobs() noexcept;
   void update_status() noexcept;
