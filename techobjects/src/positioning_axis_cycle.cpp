@@ -152,7 +152,12 @@ void PositioningAxis::read_actual_values() noexcept {
 // Simulation (§2.6): delayed by T_t of the simulated control loop.
 void PositioningAxis::simulate_actual_values() noexcept {
   const double previous = actual_position_;
-  if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
+  if (follows_actual()) {
+    // Following the actual value (disabled, StopMode 1/3, remove enable) nothing moves a virtual or
+    // simulated axis: it stands where it is.
+    simulation_delay_.fill(actual_position_);
+    actual_velocity_ = 0.0;
+  } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
     const auto& pc = db_.PositionControl;
     const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
     const double tt = pc.Kpc > 0.0
