@@ -588,6 +588,14 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
 void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoint) noexcept {
   if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
+  const auto& limits = software_limits_.effective_limits();
+  if (!limits.monitored || !homed()) {
+    // Not effective (not active, or not homed): the monitor only resets its state; no look-ahead to prepare.
+    limits::SoftwareLimitInput idle;
+    idle.homed = homed();
+    (void)software_limits_.update(idle);
+    return;
+  }
   const std::int32_t reaction =
       limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
   const auto& l = db_.DynamicLimits;
@@ -601,11 +609,10 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
   // step of a limit has passed it in this setpoint already. The monitor sees it at the limit (it raises 533
   // for the approach, not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at
   // the limit). A moving setpoint is the look-ahead's job.
-  const auto& limits = software_limits_.effective_limits();
   const double previous = previous_setpoint.position - shift;
   const bool from_standstill = previous_setpoint.velocity == 0.0 && previous_setpoint.acceleration == 0.0;
   double crossed = std::numeric_limits<double>::quiet_NaN();
-  if (homed() && limits.monitored && from_standstill) {
+  if (from_standstill) {
     const double hi = limits.max_position;
     const double lo = limits.min_position;
     const double tolerance = 1e-9 * std::max({1.0, std::fabs(hi), std::fabs(lo)});  // as the monitor's
@@ -615,7 +622,7 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
   }
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
-  in.homed = homed();
+  in.homed = true;
   if (reaction == limits::kReactionStopMaxDynamics) {
     in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
     in.stop_jerk = l.MaxJerk / units_.acceleration;
