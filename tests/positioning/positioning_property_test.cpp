@@ -82,7 +82,7 @@ using techobjects::StatusWordBit;
 using tomc::testing::PositioningAxisMachine;
 
 #ifdef TOMC_SANITIZED_BUILD
-constexpr int kCycles = 15'000;  // per seed and scenario; the sanitizers run the same code 10-50x slower
+constexpr int kCycles = 50'000;  // per seed and scenario; the sanitizers run the same code 10-50x slower
 constexpr int kSeeds = 2;
 #else
 constexpr int kCycles = 200'000;
