@@ -24,6 +24,12 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "encoder actual value not valid";
     case kHomingModeNotAvailable:
       return "homing mode not available on this technology object";
+    case kNotPositionControlled:
+      return "the job needs position-controlled operation";
+    case kBusy:
+      return "a backup of the absolute-encoder adjustment is still being written";
+    case kBackupFailed:
+      return "the absolute-encoder backup could not be written";
     case kInvalidPosition:
       return "invalid Position or Distance (not finite, or outside the modulo range)";
     case kInvalidBufferMode:

@@ -19,7 +19,6 @@ namespace {
 
 constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // as the speed axis (decision S8)
 constexpr double kStandstillEpsilon = 1e-9;          // position units / s
-constexpr std::uint32_t kEncoderAcknowledgeCycles = 10;
 
 // The jerk to plan a replacement with (spec 01 §8.8: the acceleration a0 moves to the new job's through the
 // new job's jerk j, changing the velocity by a0²/(2j) on the way). Two things win over the job's jerk:
@@ -59,6 +58,14 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
     servo_cycle_s_ = clock.servo_cycle_s;
     servo_cycle_known_ = true;
     configure_components();  // the cycle time enters the chain, the controller and the monitors
+    if (retained_restored_ && retained_.valid) {
+      // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+      RetainedSensorState r;
+      r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+      r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+      r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+      encoder_.chain().power_up(&r);
+    }
   }
   if (device_ != nullptr) {
     read_actual_values();
@@ -67,6 +74,13 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   }
   control();
   servo_monitoring();
+  homing_observe();
+  if (retained_.valid && device_ != nullptr) {
+    // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
 
   // What the drive is asked to do (as the speed axis, spec 02 §3.1, §3.4).
   if (device_ != nullptr) {
@@ -92,13 +106,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
     } else {
       request = stop_mode_ == 3 ? tg::DriveRequest::kCoastStop : tg::DriveRequest::kOff;
     }
-    // Encoder: absolute value cyclically in Gx_XIST2 for absolute encoders; acknowledge encoder errors.
-    auto& stw = encoder_slot_ == 1   ? drive_.drive_setpoint().G2_STW
-                : encoder_slot_ == 2 ? drive_.encoder_setpoint(0).G1_STW
-                                     : drive_.drive_setpoint().G1_STW;
-    stw.set(tg::EncoderControlBit::kRequestAbsoluteValue, chain_.absolute_type());
-    stw.set(tg::EncoderControlBit::kAcknowledgeEncoderError, encoder_acknowledge_cycles_ > 0);
-    if (encoder_acknowledge_cycles_ > 0) --encoder_acknowledge_cycles_;
+    encoder_.write(drive_);  // absolute value cyclically, error acknowledge
     drive_.request(request);
     drive_.write();
   }
@@ -116,35 +124,24 @@ void PositioningAxis::read_actual_values() noexcept {
                                                                 db_.Actor.DriveParameter.ReferenceTorque);
   }
 
-  const tg::ActualSignals& a = encoder_slot_ == 2 ? drive_.encoder_actual(0) : drive_.drive_actual();
-  const tg::EncoderStatusWord zsw = encoder_slot_ == 1 ? a.G2_ZSW : a.G1_ZSW;
-  const std::uint32_t xist2 = encoder_slot_ == 1 ? a.G2_XIST2 : a.G1_XIST2;
-  const bool encoder_error = zsw.test(tg::EncoderStatusBit::kEncoderError);
+  encoder_.read(drive_, device_->fresh);
+  const bool encoder_error = encoder_.error();
   auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
   sensor.CommunicationOK =
       drive_.communication_ok() || drive_.communication_fault() == CommunicationFault::kDriveFault;
   sensor.Error = encoder_error;
-  if (device_->fresh && !encoder_error) {
-    EncoderSample sample;
-    sample.xist1 = encoder_slot_ == 1 ? a.G2_XIST1 : a.G1_XIST1;
-    if (chain_.absolute_type() && zsw.test(tg::EncoderStatusBit::kAbsoluteValueTransmitted)) {
-      sample.xist2_absolute = xist2;
-    }
-    if (encoder_.VelocityMode == ActualVelocityMode::kProfidriveNist) sample.nist_b = a.NIST_B;
-    chain_.update(sample);
-  }
   const bool held_off = acknowledged_at_ != 0 && cycle_ < acknowledged_at_ + kReRaiseHoldOffCycles;
   if (encoder_error && (!encoder_fault_seen_ || !held_off)) {
-    raise(kAlarmSensorFault, xist2);  // the error code is in Gx_XIST2 (spec 06 §6.3)
+    raise(kAlarmSensorFault, encoder_.error_code());  // the code is in Gx_XIST2 (spec 06 §6.3)
     // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8).
-    if (!chain_.absolute_type()) homed_ = false;
+    if (!encoder_.chain().absolute_type()) homed_ = false;
   }
   encoder_fault_seen_ = encoder_error;
-  actual_valid_ = chain_.position_valid() && !encoder_error && drive_.communication_ok();
+  actual_valid_ = encoder_.chain().position_valid() && !encoder_error && drive_.communication_ok();
   sensor.State =
       static_cast<std::int32_t>(actual_valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
-  actual_position_ = chain_.continuous_position();
-  actual_velocity_ = chain_.velocity();
+  actual_position_ = encoder_.chain().continuous_position();
+  actual_velocity_ = encoder_.chain().velocity();
   supervise_drive();
 }
 
@@ -208,12 +205,12 @@ void PositioningAxis::control() noexcept {
     return;
   }
   const double max = db_.Actor.DriveParameter.MaxSpeed;
-  const double rpm = std::clamp(chain_.scaling().motor_speed(velocity), -max, max);
-  db_.VelocitySetpoint = chain_.scaling().load_velocity(rpm) * units_.velocity;
+  const double rpm = std::clamp(encoder_.chain().scaling().motor_speed(velocity), -max, max);
+  db_.VelocitySetpoint = encoder_.chain().scaling().load_velocity(rpm) * units_.velocity;
   drive_.set_speed_setpoint(rpm);
   auto& sp = drive_.drive_setpoint();
   if (db_.PositionControl.EnableDSC && active && position_controlled_) {
-    sp.XERR = chain_.scaling().xerr(out.dsc_position_error);
+    sp.XERR = encoder_.chain().scaling().xerr(out.dsc_position_error);
     sp.KPC = tg::kpc_from_kv(out.dsc_kpc);
   } else {
     sp.XERR = 0;
@@ -259,9 +256,17 @@ void PositioningAxis::servo_monitoring() noexcept {
     hw.max_switch_input = inputs_.MaxSwitch;
     hw.position = actual_position_;
     hw.velocity = setpoint_.velocity;
+    // Active homing with AutoReversal: the limit switches are reversal cams, no alarm 531 (spec 02 §4.2).
+    hw.homing_reversal =
+        motion_.kind == JobKind::kHome && db_.Homing.AutoReversal && homing_.phase != HomingPhase::kToHome;
     const auto r = hardware_limits_.update(hw);
     if (r.alarm.raised())
       raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    // The monitor reports a reversal cam while the switch is active; homing reacts to reaching it.
+    if (r.reversal_cam != limits::LimitSide::kNone && r.reversal_cam != reversal_cam_seen_) {
+      reversal_cam_ = r.reversal_cam;
+    }
+    reversal_cam_seen_ = r.reversal_cam;
   }
 
   // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
@@ -309,7 +314,19 @@ void PositioningAxis::shift_position(double delta) noexcept {
 
 void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   cycle_ = clock.interpolator_cycles + 1;
-  ipo_cycle_s_ = clock.interpolator_cycle_s;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    configure_extrapolation();
+  }
+  // The actual value as a leading value, once per interpolator cycle (spec 07 §1.4).
+  extrapolation_.update(actual_position_, actual_velocity_);
+  {
+    auto& st = db_.StatusExtrapolation;
+    st.FilteredPosition = extrapolation_.filtered_position();
+    st.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+    st.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+    st.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
+  }
 
   if (reset_pending_) {
     reset_pending_ = false;
@@ -319,7 +336,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
     acknowledged_at_ = cycle_;
     if (device_ != nullptr) {
       drive_.acknowledge();
-      encoder_acknowledge_cycles_ = kEncoderAcknowledgeCycles;
+      encoder_.acknowledge();
     }
     if (restart_requested_) restart();
     set_job(reset_job_, JobState::kDone);
@@ -327,6 +344,8 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
 
   apply_alarm_reactions();
   update_power_phase();
+  run_homing();
+  run_synchronous();
   update_live_motion();
   const MotionState previous = setpoint_;
   generate_setpoint();
@@ -358,8 +377,12 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
                       : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Jerk / units_.acceleration};
+  abort_synchronous(error_id::kAbortedByAlarmReaction);
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
+  if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
+    end_passive_homing(JobState::kError, error_id::kAbortedByAlarmReaction);
+  }
   const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
   const bool stop_keeps_control =
       stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint && !limit_stop_;
@@ -424,8 +447,12 @@ void PositioningAxis::update_power_phase() noexcept {
   }
   if (phase_ == PowerPhase::kEnabled && !enable_) {
     // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
+    abort_synchronous(0);
     abort_motion(0);
     abort_pending(0);
+    if (passive_.id != 0) {
+      end_passive_homing(JobState::kAborted);
+    }
     if (stop_.id != 0) {
       set_job(stop_.id, JobState::kAborted);
       stop_ = StopJob{};
@@ -536,8 +563,10 @@ void PositioningAxis::generate_setpoint() noexcept {
         setpoint_ = MotionState{
             position_profile_.at(position_profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
-        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative) {
-          if (!motion_.interpolation_done && motion_.planned_velocity > 0.0) {
+        const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
+        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
+            homing_to_home) {
+          if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
             motion_.interpolation_done = true;
             positioning_target_ = setpoint_.position;
             positioning_start_pending_ = true;
@@ -552,6 +581,9 @@ void PositioningAxis::generate_setpoint() noexcept {
     case Generator::kIdle:
       setpoint_.position += setpoint_.velocity * ipo_cycle_s_;
       setpoint_.acceleration = 0.0;
+      break;
+    case Generator::kSynchronous:
+      setpoint_ = synchronous_setpoint();
       break;
   }
   // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
@@ -623,6 +655,7 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
   in.homed = true;
+  in.following_axis = following_in_synchronous_operation();
   if (reaction == limits::kReactionStopMaxDynamics) {
     in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
     in.stop_jerk = l.MaxJerk / units_.acceleration;
@@ -635,7 +668,9 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
     in.stop_jerk = cur.jerk;
   }
   in.cycle_time = ipo_cycle_s_;
-  if (std::isnan(crossed)) {
+  // The next setpoint as the profile will produce it; a synchronous axis' depends on its leader (the monitor
+  // then extrapolates with constant acceleration).
+  if (std::isnan(crossed) && generator_ != Generator::kSynchronous) {
     const MotionState next = predicted_setpoint(ipo_cycle_s_);
     in.next_known = true;
     in.next_position = next.position - shift;
@@ -660,6 +695,7 @@ void PositioningAxis::complete_jobs() noexcept {
   const PositioningOutcome outcome = positioning_.status().outcome;
   if (motion_.id != 0) {
     switch (motion_.kind) {
+      case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
       case JobKind::kMoveAbsolute:
       case JobKind::kMoveRelative:
         // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
@@ -731,7 +767,7 @@ void PositioningAxis::update_status() noexcept {
     db_.ActualPosition = act.position;
     // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
     // the cycles between them.
-    const std::int64_t actual_cycle = device_ != nullptr ? chain_.modulo_cycle() : act.cycle;
+    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() : act.cycle;
     db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
     db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
   } else {
@@ -766,6 +802,8 @@ void PositioningAxis::update_status() noexcept {
   const bool settled = generator_ == Generator::kIdle;
   const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
   const bool job_running = motion_.id != 0 || pending_.id != 0 || (stop_.id != 0 && !stop_.done);
+  db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
+      retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   const PositioningOutcome outcome = positioning_.status().outcome;
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
@@ -776,6 +814,7 @@ void PositioningAxis::update_status() noexcept {
              outcome != PositioningOutcome::kFault && !positioning_start_pending_);
   assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
   assign(sw, StatusWordBit::kPositioningCommand, positioning);
+  assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
@@ -820,6 +859,10 @@ void PositioningAxis::update_status() noexcept {
       case kAlarmModuloTooFast:
         assign(ew, ErrorWordBit::kDynamicError, true);
         break;
+      case kAlarmHomingFailed:
+      case kAlarmAdjustmentLost:
+        assign(ew, ErrorWordBit::kHomingError, true);
+        break;
       case kAlarmFollowingErrorWarning:
         assign(ww, WarningWordBit::kFollowingErrorWarning, true);
         break;
@@ -837,6 +880,7 @@ void PositioningAxis::update_status() noexcept {
   const PendingAlarm* top = alarms_.error_detail();
   db_.ErrorDetail.Number = top == nullptr ? 0 : top->number;
   db_.ErrorDetail.Reaction = static_cast<std::int32_t>(top == nullptr ? AlarmReaction::kNone : top->reaction);
+  update_synchronous_status();
 }
 
 void PositioningAxis::restart() noexcept {
@@ -844,6 +888,7 @@ void PositioningAxis::restart() noexcept {
   // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
+  abort_synchronous(0);
   db_ = start_;
   communication_times_ = communication_times_start_;
   assign(db_.StatusWord, changed, false);
@@ -856,10 +901,10 @@ void PositioningAxis::restart() noexcept {
   limit_stop_ = false;
   positioning_start_pending_ = false;
   units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
-  const RetainedSensorState retained = chain_.retained_state();
+  const RetainedSensorState retained = encoder_.chain().retained_state();
   configure_components();
-  if (chain_.absolute_type()) {
-    chain_.power_up(&retained);
+  if (encoder_.chain().absolute_type()) {
+    encoder_.chain().power_up(&retained);
   } else {
     homed_ = false;
     actual_position_ = 0.0;

@@ -21,14 +21,19 @@ inline constexpr std::uint16_t kAxisBlockedByAlarm = 0x8104;      // an alarm re
 inline constexpr std::uint16_t kAxisNotHomed = 0x8105;            // MC_MoveAbsolute needs a homed axis
 inline constexpr std::uint16_t kEncoderNotValid = 0x8106;         // the encoder's actual value is not valid
 inline constexpr std::uint16_t kHomingModeNotAvailable = 0x8107;  // MC_Home mode not available on this TO
-inline constexpr std::uint16_t kInvalidVelocity = 0x8110;         // Velocity = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidAcceleration = 0x8111;     // Acceleration = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidDeceleration = 0x8112;     // Deceleration = 0.0 or not finite
-inline constexpr std::uint16_t kInvalidJerk = 0x8113;             // Jerk not finite
-inline constexpr std::uint16_t kInvalidMode = 0x8114;             // Mode out of range (e.g. MC_Stop.Mode = 1)
-inline constexpr std::uint16_t kInvalidDirection = 0x8115;        // Direction out of range
-inline constexpr std::uint16_t kInvalidStartMode = 0x8116;        // MC_Power.StartMode not 0/1
-inline constexpr std::uint16_t kInvalidStopMode = 0x8117;         // MC_Power.StopMode not 0..3
+inline constexpr std::uint16_t kNotPositionControlled =
+    0x8108;                                     // the job needs position-controlled operation
+inline constexpr std::uint16_t kBusy = 0x8109;  // MC_SaveAbsoluteEncoderData: a backup is still being written
+inline constexpr std::uint16_t kBackupFailed =
+    0x810A;  // MC_SaveAbsoluteEncoderData: the file could not be written
+inline constexpr std::uint16_t kInvalidVelocity = 0x8110;      // Velocity = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidAcceleration = 0x8111;  // Acceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidDeceleration = 0x8112;  // Deceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidJerk = 0x8113;          // Jerk not finite
+inline constexpr std::uint16_t kInvalidMode = 0x8114;          // Mode out of range (e.g. MC_Stop.Mode = 1)
+inline constexpr std::uint16_t kInvalidDirection = 0x8115;     // Direction out of range
+inline constexpr std::uint16_t kInvalidStartMode = 0x8116;     // MC_Power.StartMode not 0/1
+inline constexpr std::uint16_t kInvalidStopMode = 0x8117;      // MC_Power.StopMode not 0..3
 inline constexpr std::uint16_t kInvalidPosition =
     0x8118;  // Position/Distance not finite, or outside the modulo range
 inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;         // BufferMode not 0/1
