@@ -20,29 +20,6 @@ namespace {
 constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // as the speed axis (decision S8)
 constexpr double kStandstillEpsilon = 1e-9;          // position units / s
 
-// The jerk to plan a replacement with (spec 01 §8.8: the acceleration a0 moves to the new job's through the
-// new job's jerk j, changing the velocity by a0²/(2j) on the way). Two things win over the job's jerk:
-//  * decision S4: |v| stays within v_limit, outward (a0·v0 >= 0: |v0| + a0²/(2j)) and after a zero crossing
-//    (a0·v0 < 0: a0²/(2j) − |v0| on the other side);
-//  * decision R1: a ramp to standstill (MC_Halt, MC_Stop, stop reactions, override 0 %) never reverses: if a0
-//    already carries v through zero, the jerk becomes a0²/(2|v0|) so that v and a reach 0 together.
-// Returns the raised jerk (0 = none, the acceleration steps) or `jerk` unchanged.
-double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept {
-  if (!(jerk > 0.0) || a0 == 0.0) return jerk;
-  const double inf = std::numeric_limits<double>::infinity();
-  double needed = 0.0;
-  if (a0 * v0 >= 0.0) {
-    const double margin = v_limit - std::fabs(v0);
-    needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : inf;
-  } else if (to_standstill) {
-    needed = a0 * a0 / (2.0 * std::fabs(v0));
-  } else {
-    needed = a0 * a0 / (2.0 * (v_limit + std::fabs(v0)));
-  }
-  if (needed <= jerk) return jerk;
-  return std::isfinite(needed) ? needed : 0.0;
-}
-
 // floor((x - start) / length): the modulo cycle index of a continuous position.
 std::int64_t cycle_index(double x, double start, double length) noexcept {
   return static_cast<std::int64_t>(std::floor((x - start) / length));
