@@ -89,6 +89,15 @@ double braking_distance(double speed, double acceleration, double deceleration, 
 
 StopLookAhead stop_at_limit_look_ahead(double position, double velocity, double acceleration, double limit,
                                        double deceleration, double jerk, double cycle_time) noexcept {
+  const double t = std::max(cycle_time, 0.0);
+  return stop_at_limit_look_ahead(position, velocity, acceleration,
+                                  position + velocity * t + acceleration * t * t / 2.0,
+                                  velocity + acceleration * t, acceleration, limit, deceleration, jerk);
+}
+
+StopLookAhead stop_at_limit_look_ahead(double position, double velocity, double acceleration,
+                                       double next_position, double next_velocity, double next_acceleration,
+                                       double limit, double deceleration, double jerk) noexcept {
   StopLookAhead r;
   const double direction = velocity > 0.0       ? 1.0
                            : velocity < 0.0     ? -1.0
@@ -99,12 +108,9 @@ StopLookAhead stop_at_limit_look_ahead(double position, double velocity, double 
     r.remaining_distance = std::fabs(limit - position);
     return r;
   }
-  const double t = std::max(cycle_time, 0.0);
-  const double next_position = position + velocity * t + acceleration * t * t / 2.0;
-  const double next_speed = direction * (velocity + acceleration * t);
   r.remaining_distance = direction * (limit - position);
-  r.braking_distance =
-      braking_distance(std::max(next_speed, 0.0), direction * acceleration, deceleration, jerk);
+  r.braking_distance = braking_distance(std::max(direction * next_velocity, 0.0),
+                                        direction * next_acceleration, deceleration, jerk);
   const double remaining_next = direction * (limit - next_position);
   r.stop_now = remaining_next + tolerance(limit) < r.braking_distance;
   return r;
@@ -282,8 +288,13 @@ SoftwareLimitResult SoftwareLimitMonitor::update(const SoftwareLimitInput& in) n
       }
       const bool stopping = side_ == ahead && pending_;  // the reaction of this side is running
       if (!stopping) {
-        const StopLookAhead la = stop_at_limit_look_ahead(x, in.velocity, in.acceleration, limit,
-                                                          in.stop_deceleration, in.stop_jerk, in.cycle_time);
+        const StopLookAhead la =
+            in.next_known
+                ? stop_at_limit_look_ahead(x, in.velocity, in.acceleration,
+                                           x + (in.next_position - in.position), in.next_velocity,
+                                           in.next_acceleration, limit, in.stop_deceleration, in.stop_jerk)
+                : stop_at_limit_look_ahead(x, in.velocity, in.acceleration, limit, in.stop_deceleration,
+                                           in.stop_jerk, in.cycle_time);
         if (la.stop_now) {
           raise(kAlarmSwLimitReached, ahead, Kind::kReached, limit);
           r.stop_now = true;

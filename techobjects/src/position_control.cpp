@@ -33,9 +33,18 @@ double SetpointDelayLine::at(std::size_t age) const noexcept {
 }
 
 double SetpointDelayLine::delayed(double delay_cycles) const noexcept {
+  return delayed(tap(delay_cycles));
+}
+
+SetpointDelayLine::Tap SetpointDelayLine::tap(double delay_cycles) noexcept {
   const double d = std::clamp(std::isfinite(delay_cycles) ? delay_cycles : 0.0, 0.0, kMaxDelayCycles);
   const auto n = static_cast<std::size_t>(std::floor(d));
-  const double r = d - static_cast<double>(n);
+  return Tap{n, d - static_cast<double>(n)};
+}
+
+double SetpointDelayLine::delayed(const Tap& tap) const noexcept {
+  const std::size_t n = tap.samples;
+  const double r = tap.fraction;
   if (n >= kMaxSetpointDelayCycles - 1 || r == 0.0) return at(n);
   return (1.0 - r) * at(n) + r * at(n + 1);
 }
@@ -70,6 +79,8 @@ PositionControlConfigResult PositionController::configure(const PositionControlC
   delay_clamped_ = control > kMaxDelayCycles || fe > kMaxDelayCycles;
   control_delay_cycles_ = std::min(control, kMaxDelayCycles);
   fe_delay_cycles_ = std::min(fe, kMaxDelayCycles);
+  control_tap_ = SetpointDelayLine::tap(control_delay_cycles_);
+  fe_tap_ = SetpointDelayLine::tap(fe_delay_cycles_);
   reset();
   return delay_clamped_ ? PositionControlConfigResult::kDelayClamped : PositionControlConfigResult::kOk;
 }
@@ -90,7 +101,7 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
     fe_line_.push(in.interpolator_position);
   }
 
-  const double x_d = control_line_.delayed(control_delay_cycles_);
+  const double x_d = control_line_.delayed(control_tap_);
   symmetry_state_ += symmetry_gain_ * (x_d - symmetry_state_);
   const double x_sym = kpc_ * symmetry_state_ + (1.0 - kpc_) * x_d;
   const double e = x_sym - in.actual_position;
@@ -99,7 +110,7 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
   PositionControlOutput out;
   out.balanced_position = x_sym;
   out.control_difference = e;
-  out.following_error = fe_line_.delayed(fe_delay_cycles_) - in.actual_position;
+  out.following_error = fe_line_.delayed(fe_tap_) - in.actual_position;
   if (config_.EnableDSC) {
     out.velocity_setpoint = precontrol;
     out.dsc_position_error = e;

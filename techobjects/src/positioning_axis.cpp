@@ -178,6 +178,11 @@ double PositioningAxis::velocity_limit() const noexcept {
   return std::min(db_.DynamicLimits.MaxVelocity, db_.DynamicLimits.Velocity) / units_.velocity;
 }
 
+// spec 01 §8.5: v_eff = min(v_cmd · Override, v_limit) — the override applies before the limit clamp.
+double PositioningAxis::positioning_velocity(const Motion& motion) const noexcept {
+  return std::min(motion.command_velocity * override_factor(), velocity_limit());
+}
+
 bool PositioningAxis::homed() const noexcept {
   return homed_;
 }
@@ -348,7 +353,7 @@ void PositioningAxis::start_positioning(Motion motion) noexcept {
   set_job(motion_.id, JobState::kActive);
   positioning_.cancel();
   positioning_start_pending_ = false;
-  const double v = motion_.limits.velocity * override_factor();
+  const double v = positioning_velocity(motion_);
   motion_.planned_velocity = v;
   if (v > 0.0) {
     ProfileLimits l = motion_.limits;
@@ -411,6 +416,7 @@ Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept
   Motion m;
   m.kind = JobKind::kMoveAbsolute;
   m.limits = limits;
+  m.command_velocity = (in.Velocity < 0.0 ? db_.DynamicDefaults.Velocity : in.Velocity) / units_.velocity;
   m.absolute_position = in.Position;
   m.direction = in.Direction;
   m.target = in.Position;
@@ -438,6 +444,7 @@ Submission PositioningAxis::move_relative(const MoveRelativeInputs& in) noexcept
   Motion m;
   m.kind = JobKind::kMoveRelative;
   m.limits = limits;
+  m.command_velocity = (in.Velocity < 0.0 ? db_.DynamicDefaults.Velocity : in.Velocity) / units_.velocity;
   m.distance = in.Distance;
   // The start position is the setpoint when the job starts (spec 02 §2.2): now, or the end of the running
   // job for an appended one.

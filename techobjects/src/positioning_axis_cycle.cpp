@@ -126,7 +126,12 @@ void PositioningAxis::read_actual_values() noexcept {
 // Simulation (§2.6): delayed by T_t of the simulated control loop.
 void PositioningAxis::simulate_actual_values() noexcept {
   const double previous = actual_position_;
-  if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
+  if (follows_actual()) {
+    // Following the actual value (disabled, StopMode 1/3, remove enable) nothing moves a virtual or
+    // simulated axis: it stands where it is.
+    simulation_delay_.fill(actual_position_);
+    actual_velocity_ = 0.0;
+  } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
     const auto& pc = db_.PositionControl;
     const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
     const double tt = pc.Kpc > 0.0
@@ -319,8 +324,9 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   run_homing();
   run_synchronous();
   update_live_motion();
+  const MotionState previous = setpoint_;
   generate_setpoint();
-  monitor_software_limits();
+  monitor_software_limits(previous);
   complete_jobs();
   update_status();
 }
@@ -465,7 +471,7 @@ void PositioningAxis::update_live_motion() noexcept {
     case JobKind::kMoveAbsolute:
     case JobKind::kMoveRelative: {
       if (motion_.interpolation_done) break;
-      const double v = motion_.limits.velocity * ovr;
+      const double v = positioning_velocity(motion_);
       if (std::fabs(v - motion_.planned_velocity) > 1e-12) {
         motion_.planned_velocity = v;
         if (v > 0.0) {
@@ -489,14 +495,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   if (abort_acceleration) start.acceleration = 0.0;
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  // The velocity limit wins over the job's jerk (decision S4).
-  const double v0 = start.velocity;
-  const double a0 = start.acceleration;
-  if (l.jerk > 0.0 && std::isfinite(l.velocity) && a0 * v0 > 0.0) {
-    const double margin = l.velocity - std::fabs(v0);
-    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
-    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
-  }
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
   if (velocity_profile_.plan(start, target, l)) {
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
@@ -505,7 +504,9 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 }
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
-  if (position_profile_.plan(setpoint_, target, limits)) {
+  ProfileLimits l = limits;
+  l.jerk = replanning_jerk(setpoint_.velocity, setpoint_.acceleration, l.jerk, velocity_limit(), false);
+  if (position_profile_.plan(setpoint_, target, l)) {
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
@@ -567,9 +568,43 @@ void PositioningAxis::generate_setpoint() noexcept {
   if (!position_controlled_) setpoint_.position = actual_position_;
 }
 
+// The setpoint the generator will give `dt` after the present one unless a job changes it (as
+// generate_setpoint() evaluates the profiles).
+MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
+  const double t = profile_time_ + dt;
+  MotionState s{setpoint_.position + setpoint_.velocity * dt, setpoint_.velocity, 0.0};
+  if (generator_ == Generator::kVelocity) {
+    const double end = velocity_profile_.duration();
+    if (t >= end - 1e-9) {
+      const MotionState e = velocity_profile_.at(end);
+      s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
+    } else {
+      s = velocity_profile_.at(t);
+      s.position += profile_offset_;
+    }
+  } else if (generator_ == Generator::kPosition) {
+    const double end = position_profile_.duration();
+    if (t >= end - 1e-9) {
+      s = MotionState{position_profile_.at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+    } else {
+      s = position_profile_.at(t);
+      s.position += profile_offset_;
+    }
+  }
+  return s;
+}
+
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
-void PositioningAxis::monitor_software_limits() noexcept {
+void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoint) noexcept {
   if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
+  const auto& limits = software_limits_.effective_limits();
+  if (!limits.monitored || !homed()) {
+    // Not effective (not active, or not homed): the monitor only resets its state; no look-ahead to prepare.
+    limits::SoftwareLimitInput idle;
+    idle.homed = homed();
+    (void)software_limits_.update(idle);
+    return;
+  }
   const std::int32_t reaction =
       limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
   const auto& l = db_.DynamicLimits;
@@ -577,10 +612,26 @@ void PositioningAxis::monitor_software_limits() noexcept {
   const double start = db_.Modulo.StartValue;
   const double length = db_.Modulo.Length;
   const std::int64_t k = modulo() ? cycle_index(setpoint_.position, start, length) : 0;
-  in.position = modulo() ? setpoint_.position - static_cast<double>(k) * length : setpoint_.position;
+  const double shift = modulo() ? static_cast<double>(k) * length : 0.0;
+  in.position = setpoint_.position - shift;
+  // The look-ahead knows a job from its first setpoint on: a motion that starts from standstill within one
+  // step of a limit has passed it in this setpoint already. The monitor sees it at the limit (it raises 533
+  // for the approach, not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at
+  // the limit). A moving setpoint is the look-ahead's job.
+  const double previous = previous_setpoint.position - shift;
+  const bool from_standstill = previous_setpoint.velocity == 0.0 && previous_setpoint.acceleration == 0.0;
+  double crossed = std::numeric_limits<double>::quiet_NaN();
+  if (from_standstill) {
+    const double hi = limits.max_position;
+    const double lo = limits.min_position;
+    const double tolerance = 1e-9 * std::max({1.0, std::fabs(hi), std::fabs(lo)});  // as the monitor's
+    if (previous <= hi + tolerance && in.position > hi + tolerance) crossed = hi;
+    if (previous >= lo - tolerance && in.position < lo - tolerance) crossed = lo;
+    if (!std::isnan(crossed)) in.position = crossed;
+  }
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
-  in.homed = homed();
+  in.homed = true;
   in.following_axis = following_in_synchronous_operation();
   if (reaction == limits::kReactionStopMaxDynamics) {
     in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
@@ -594,7 +645,17 @@ void PositioningAxis::monitor_software_limits() noexcept {
     in.stop_jerk = cur.jerk;
   }
   in.cycle_time = ipo_cycle_s_;
+  // The next setpoint as the profile will produce it; a synchronous axis' depends on its leader (the monitor
+  // then extrapolates with constant acceleration).
+  if (std::isnan(crossed) && generator_ != Generator::kSynchronous) {
+    const MotionState next = predicted_setpoint(ipo_cycle_s_);
+    in.next_known = true;
+    in.next_position = next.position - shift;
+    in.next_velocity = next.velocity;
+    in.next_acceleration = next.acceleration;
+  }
   const auto r = software_limits_.update(in);
+  if (!std::isnan(crossed)) setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
   if (r.stop_now) {
     limit_stop_ = true;
     limit_stop_position_ = r.stop_position + static_cast<double>(k) * (modulo() ? length : 0.0);

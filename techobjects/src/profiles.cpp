@@ -339,4 +339,20 @@ bool PositionProfile::plan(const MotionState& start, double target_position,
   return true;
 }
 
+double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept {
+  if (!(jerk > 0.0) || a0 == 0.0) return jerk;
+  const double inf = std::numeric_limits<double>::infinity();
+  double needed = 0.0;
+  if (a0 * v0 >= 0.0) {
+    const double margin = v_limit - std::fabs(v0);
+    needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : inf;
+  } else if (to_standstill) {
+    needed = a0 * a0 / (2.0 * std::fabs(v0));
+  } else {
+    needed = a0 * a0 / (2.0 * (v_limit + std::fabs(v0)));
+  }
+  if (needed <= jerk) return jerk;
+  return std::isfinite(needed) ? needed : 0.0;
+}
+
 }  // namespace tomc::techobjects

@@ -166,16 +166,9 @@ void SpeedAxis::plan_velocity(double target, const ProfileLimits& limits, bool a
   if (abort_acceleration) start.acceleration = 0.0;  // MC_Halt/MC_Stop.AbortAcceleration (spec 03 §4.4)
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  // A jerk-limited replan while accelerating outward carries the velocity on by a0²/(2j) before the
-  // acceleration is gone. Where that would pass the velocity limit, the limit wins: the acceleration is taken
-  // back with the jerk that just reaches it (docs/decisions.md S4).
-  const double v0 = start.velocity;
-  const double a0 = start.acceleration;
-  if (l.jerk > 0.0 && std::isfinite(l.velocity) && a0 * v0 > 0.0) {
-    const double margin = l.velocity - std::fabs(v0);
-    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
-    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
-  }
+  // A jerk-limited replan carries the velocity on by a0²/(2j) before the acceleration is gone: the velocity
+  // limit wins over the job's jerk (docs/decisions.md S4), and a ramp to standstill does not reverse (R1).
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
   if (profile_.plan(start, target, l)) {
     profile_time_ = 0.0;
     generator_active_ = true;

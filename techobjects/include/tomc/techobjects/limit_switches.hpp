@@ -90,6 +90,12 @@ struct StopLookAhead {
 // `deceleration` to end exactly at `limit`.
 StopLookAhead stop_at_limit_look_ahead(double position, double velocity, double acceleration, double limit,
                                        double deceleration, double jerk, double cycle_time) noexcept;
+// The same decision on the next cycle's setpoint as the caller's profile will produce it. Exact for a
+// jerk-limited profile, whose acceleration changes within the cycle: extrapolated with constant acceleration,
+// a rising acceleration is seen one cycle late and the stop can no longer end at the limit.
+StopLookAhead stop_at_limit_look_ahead(double position, double velocity, double acceleration,
+                                       double next_position, double next_velocity, double next_acceleration,
+                                       double limit, double deceleration, double jerk) noexcept;
 
 // ---------------------------------------------------------------------------------------------------
 // Software limit switches (spec 02 §4.5, spec 04 §3.16, §8 rule 5).
@@ -131,6 +137,12 @@ struct SoftwareLimitInput {
   double stop_deceleration = 0.0;  // deceleration of the 533 stop (see sw_limit_reached_reaction)
   double stop_jerk = 0.0;          // jerk of the 533 stop (<= 0: none)
   double cycle_time = 0.0;         // look-ahead horizon (interpolator cycle)
+  // The setpoint one cycle ahead, when the caller knows it from its profile (same coordinate as position);
+  // otherwise the look-ahead extrapolates with constant acceleration.
+  bool next_known = false;
+  double next_position = 0.0;
+  double next_velocity = 0.0;
+  double next_acceleration = 0.0;
 };
 
 struct SoftwareLimitResult {

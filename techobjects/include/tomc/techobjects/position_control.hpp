@@ -90,6 +90,14 @@ class SetpointDelayLine {
   // Value delay_cycles ago (0 = the last pushed value); 0 <= delay_cycles <= kMaxSetpointDelayCycles − 1,
   // clamped otherwise. Linear interpolation between neighbouring samples.
   double delayed(double delay_cycles) const noexcept;
+  // A delay resolved once (sample index and interpolation weight) for a delay that stays the same over many
+  // cycles: delayed(tap(d)) == delayed(d).
+  struct Tap {
+    std::size_t samples = 0;
+    double fraction = 0.0;
+  };
+  static Tap tap(double delay_cycles) noexcept;
+  double delayed(const Tap& tap) const noexcept;
 
  private:
   double at(std::size_t age) const noexcept;
@@ -121,6 +129,8 @@ class PositionController {
   double symmetry_gain_ = 1.0;  // Ts/(T_vtc + Ts)
   double control_delay_cycles_ = 1.0;
   double fe_delay_cycles_ = 1.0;
+  SetpointDelayLine::Tap control_tap_ = SetpointDelayLine::tap(1.0);  // resolved in configure()
+  SetpointDelayLine::Tap fe_tap_ = SetpointDelayLine::tap(1.0);
   bool delay_clamped_ = false;
   bool started_ = false;
   double symmetry_state_ = 0.0;

@@ -172,7 +172,7 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
     JobId id = 0;
     JobKind kind = JobKind::kNone;
     ProfileLimits limits{};        // resolved (position units), velocity before override
-    double command_velocity = 0;   // MoveVelocity/Jog: signed, before override
+    double command_velocity = 0;   // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp
     double target = 0;             // positioning: continuous target position
     double distance = 0;           // appended positioning: target relative to the end of the running job
     bool relative_to_end = false;  // appended MoveRelative: Distance counts from the running job's target
@@ -270,14 +270,16 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   void plan_position(double target, const ProfileLimits& limits) noexcept;
   double override_factor() const noexcept;
-  double velocity_limit() const noexcept;  // position units / s
+  double velocity_limit() const noexcept;                            // position units / s
+  double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept;
   void raise_with(std::uint32_t number, std::uint32_t additional, std::int32_t reaction) noexcept;
   void apply_alarm_reactions() noexcept;
   void update_power_phase() noexcept;
   void update_live_motion() noexcept;
   void generate_setpoint() noexcept;
-  void monitor_software_limits() noexcept;
+  void monitor_software_limits(const MotionState& previous_setpoint) noexcept;
+  MotionState predicted_setpoint(double dt) const noexcept;  // the generator dt ahead, no job changes
   void complete_jobs() noexcept;
   void update_status() noexcept;
   void restart() noexcept;

@@ -121,4 +121,14 @@ class PositionProfile {
   int iterations_ = 0;
 };
 
+// The jerk to plan a replacing profile with (spec 01 §8.8: the acceleration a0 moves to the new job's through
+// the new job's jerk j, changing the velocity by a0²/(2j) on the way). Two things win over the job's jerk:
+//  * decision S4: |v| stays within v_limit, outward (a0·v0 >= 0: |v0| + a0²/(2j)) and after a zero crossing
+//    (a0·v0 < 0: a0²/(2j) − |v0| on the other side);
+//  * decision R1: a ramp to standstill (to_standstill: MC_Halt, MC_Stop, stop reactions, override 0 %) never
+//    reverses: if a0 already carries v through zero, the jerk becomes a0²/(2|v0|) so that v and a reach 0
+//    together.
+// Returns the raised jerk (0 = none: the acceleration steps) or `jerk` unchanged (also for jerk 0).
+double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept;
+
 }  // namespace tomc::techobjects

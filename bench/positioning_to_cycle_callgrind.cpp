@@ -1,0 +1,23 @@
+// Fixed workload for callgrind: MC_Servo + MC_Interpolator of one TO_PositioningAxis on its simulated drive
+// (telegram 3, codec included) in steady motion (a long MC_MoveAbsolute at its cruise velocity). The drive
+// model and the user program run outside the counted function. scripts/bench: instructions per axis-cycle.
+#include <cstdio>
+
+#include "positioning_machine.hpp"
+
+constexpr int kCycles = 20000;
+constexpr int kAxes = 1;
+
+extern "C" __attribute__((noinline, noipa)) void positioning_to_cycle(
+    tomc::bench::AxisGroup& group, const tomc::techobjects::CycleClock& clock, int phase) {
+  group.run(clock, phase);
+}
+
+int main() {
+  tomc::bench::PositioningMachine m(kAxes, true, 0);
+  m.group().hook = positioning_to_cycle;
+  for (int i = 0; i < kCycles; ++i)
+    m.step();
+  std::printf("cycles=%d units=%d velocity=%g\n", kCycles, kAxes, m.group().axes[0]->data().Velocity);
+  return 0;
+}
