@@ -24,7 +24,9 @@
 #include "tomc/techobjects/actual_value_chain.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
+#include "tomc/techobjects/backlash.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
+#include "tomc/techobjects/dynamic_filter.hpp"
 #include "tomc/techobjects/encoder_channel.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
@@ -121,6 +123,10 @@ class PositioningAxis final : public TechnologyObject {
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
+  // The same after the dynamic filter, as the position controller used it in the last servo cycle.
+  const MotionState& filtered_setpoint() const noexcept { return filtered_; }
+  const BacklashCompensation& backlash() const noexcept { return backlash_; }
+  const DynamicFilter& dynamic_filter() const noexcept { return dynamic_filter_; }
   double continuous_actual_position() const noexcept { return actual_position_; }
   bool position_controlled() const noexcept { return position_controlled_; }
   const AxisUnitFactors& units() const noexcept { return units_; }
@@ -170,6 +176,7 @@ class PositioningAxis final : public TechnologyObject {
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
+  void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
   // jobs
   JobId new_job(JobKind kind, JobState state) noexcept { return jobs_.create(kind, state); }
   void set_job(JobId id, JobState state, std::uint16_t error_id = 0) noexcept {
@@ -239,6 +246,10 @@ class PositioningAxis final : public TechnologyObject {
   limits::SoftwareLimitMonitor software_limits_;
   limits::HardwareLimitMonitor hardware_limits_;
   SetpointDelayLine simulation_delay_{};
+  // ---- backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6) ----
+  BacklashCompensation backlash_;
+  DynamicFilter dynamic_filter_;
+  MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
 
   // power
   PowerPhase phase_ = PowerPhase::kDisabled;
