@@ -113,16 +113,17 @@ double BacklashCompensation::update(const BacklashInput& in) noexcept {
   }
   if (!passing_) return 0.0;
   const double contact = direction_ > 0 ? size : 0.0;
+  if (applied_ == contact && std::fabs(gap_ - contact) <= kCrossedFraction * size) {
+    passing_ = false;  // spec 01 §5.9 ②: crossed; from now on ActualPosition follows again
+    held_ = 0.0;
+    return 0.0;
+  }
   const double step = config_.Velocity > 0.0 ? config_.Velocity * config_.ServoCycle : size;
   double next = applied_ < contact ? std::min(applied_ + step, contact) : std::max(applied_ - step, contact);
   if (std::fabs(contact - next) <= 1e-9 * size) next = contact;  // no rounding crumb as an extra cycle
   const double correction = -(next - applied_);
   applied_ = next;
   held_ += motion + correction;  // the actual value changes by both; ActualPosition does not (X2)
-  if (applied_ == contact && std::fabs(gap_ - contact) <= kCrossedFraction * size) {
-    passing_ = false;  // spec 01 §5.9 ②: crossed; from now on ActualPosition follows again
-    held_ = 0.0;
-  }
   return correction;
 }
 
