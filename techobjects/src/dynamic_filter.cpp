@@ -25,8 +25,9 @@ void DynamicFilter::History::fill(double v) noexcept {
 }
 
 void DynamicFilter::History::push(double v) noexcept {
-  head_ = (head_ + 1) % kDynamicFilterHistory;
+  head_ = head_ == 0 ? kDynamicFilterHistory - 1 : head_ - 1;
   values_[head_] = v;
+  values_[head_ + kDynamicFilterHistory] = v;
 }
 
 void DynamicFilter::History::shift(double delta) noexcept {
@@ -34,8 +35,12 @@ void DynamicFilter::History::shift(double delta) noexcept {
     v += delta;
 }
 
-double DynamicFilter::History::at(std::size_t age) const noexcept {
-  return values_[(head_ + kDynamicFilterHistory - age) % kDynamicFilterHistory];
+double DynamicFilter::History::sum(std::size_t n) const noexcept {
+  const double* p = &values_[head_];
+  double s = 0.0;
+  for (std::size_t age = 0; age <= n; ++age)
+    s += p[age];
+  return s;
 }
 
 // ---- DynamicFilter ----
@@ -65,11 +70,16 @@ bool DynamicFilter::configure(const DynamicFilterConfig& config) noexcept {
       c.n = static_cast<std::size_t>(whole);
       c.residual = c.n >= kDynamicFilterMaxCycles ? 0.0 : std::max(0.0, cycles - whole);
       if (c.residual < kWholeCycleTolerance) c.residual = 0.0;
+      c.scale = 1.0 / (static_cast<double>(c.n) + 1.0 + c.residual);
     } else {
       c.gain = ts / (times[i] + ts);
     }
   }
   delay_cycles_ = std::min(tt_ / ts, kMaxCycles);
+  delay_whole_ = static_cast<std::size_t>(std::floor(delay_cycles_));
+  delay_fraction_ =
+      delay_whole_ >= kDynamicFilterMaxCycles ? 0.0 : delay_cycles_ - static_cast<double>(delay_whole_);
+  moving_average_ = moving_average;
   return true;
 }
 
@@ -95,31 +105,24 @@ void DynamicFilter::fill(Channel& c, double v) noexcept {
 // One sample through the stages of one channel. The moving-average histories and the PT1 states are updated;
 // `const` on the coefficients only.
 double DynamicFilter::step(Channel& c, double u) const noexcept {
-  const bool moving_average =
-      config_.Mode == static_cast<std::int32_t>(DynamicFilterKind::kMovingAverageDeadTime);
   double x = u;
   for (std::size_t i = 0; i < 2; ++i) {
     Stage& s = c.stages[i];
     const StageCoefficients& k = coefficients_[i];
-    if (moving_average) {
+    if (moving_average_) {
       s.input.push(x);
       if (k.n == 0 && k.residual == 0.0) continue;  // T = 0: the stage drops out
-      double sum = 0.0;
-      for (std::size_t age = 0; age <= k.n; ++age)
-        sum += s.input.at(age);
+      double sum = s.input.sum(k.n);
       if (k.residual > 0.0) sum += k.residual * s.input.at(k.n + 1);
-      x = sum / (static_cast<double>(k.n) + 1.0 + k.residual);
+      x = sum * k.scale;
     } else {
       s.state += k.gain * (x - s.state);
       x = s.state;
     }
   }
   c.delay.push(x);
-  if (delay_cycles_ == 0.0) return x;
-  const auto n = static_cast<std::size_t>(std::floor(delay_cycles_));
-  const double r = delay_cycles_ - static_cast<double>(n);
-  if (n >= kDynamicFilterMaxCycles || r == 0.0) return c.delay.at(n);
-  return (1.0 - r) * c.delay.at(n) + r * c.delay.at(n + 1);
+  if (delay_fraction_ == 0.0) return c.delay.at(delay_whole_);
+  return (1.0 - delay_fraction_) * c.delay.at(delay_whole_) + delay_fraction_ * c.delay.at(delay_whole_ + 1);
 }
 
 MotionState DynamicFilter::update(const MotionState& in, bool run) noexcept {

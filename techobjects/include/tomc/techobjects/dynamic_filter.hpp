@@ -87,15 +87,19 @@ class DynamicFilter {
   double effective_delay() const noexcept;
 
  private:
-  // The last kDynamicFilterHistory values of one signal.
+  // The last kDynamicFilterHistory values of one signal, newest first and stored twice, so that every window
+  // of ages is contiguous (no index wrap in the averaging loop).
   class History {
    public:
     void fill(double v) noexcept;
     void push(double v) noexcept;
     void shift(double delta) noexcept;
-    double at(std::size_t age) const noexcept;  // 0 = newest
+    double at(std::size_t age) const noexcept { return values_[head_ + age]; }  // 0 = newest
+    // Sum of the ages 0 ... n (n < kDynamicFilterHistory).
+    double sum(std::size_t n) const noexcept;
+
    private:
-    std::array<double, kDynamicFilterHistory> values_{};
+    std::array<double, 2 * kDynamicFilterHistory> values_{};
     std::size_t head_ = 0;
   };
   // One filter stage (PT1 or moving average) of one signal.
@@ -112,6 +116,7 @@ class DynamicFilter {
     double gain = 1.0;      // PT1: T_s/(T + T_s); 1 = pass
     std::size_t n = 0;      // moving average: full-weight samples besides the current one
     double residual = 0.0;  // moving average: weight of the sample n + 1 cycles old
+    double scale = 1.0;     // moving average: 1 / (n + 1 + residual)
   };
 
   void fill(Channel& c, double v) noexcept;
@@ -124,7 +129,10 @@ class DynamicFilter {
   double t2_ = 0.0;
   double tt_ = 0.0;
   std::array<StageCoefficients, 2> coefficients_{};
-  double delay_cycles_ = 0.0;  // Tt / T_s
+  double delay_cycles_ = 0.0;    // Tt / T_s
+  std::size_t delay_whole_ = 0;  // its whole cycles
+  double delay_fraction_ = 0.0;  // and the fraction (linear interpolation to the next older sample)
+  bool moving_average_ = false;
   std::array<Channel, 3> channels_{};
 };
 
