@@ -10,6 +10,22 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "job aborted by the stop reaction of a technology alarm";
     case kJogWrongDirection:
       return "wrong direction specification: JogForward and JogBackward both TRUE";
+    case kInvalidRatioNumerator:
+      return "RatioNumerator 0 is not allowed";
+    case kInvalidRatioDenominator:
+      return "RatioDenominator must be 1 or more";
+    case kRecursiveLeadingValue:
+      return "the following axis would be the origin of its own leading value";
+    case kInvalidMasterStartDistance:
+      return "invalid MasterStartDistance / MasterStopDistance";
+    case kInvalidMasterSyncPosition:
+      return "invalid MasterSyncPosition (the leader is already past the start of synchronization)";
+    case kInvalidSyncProfileReference:
+      return "invalid SyncProfileReference";
+    case kNoGearing:
+      return "no MC_GearIn / MC_GearInPos pending or active";
+    case kHomingDuringGearInPos:
+      return "MC_Home is not possible while MC_GearInPos is active";
     case kRejectedByRunningJob:
       return "rejected by a running job (override matrix cell N)";
     case kLockedByStop:
@@ -24,6 +40,12 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "encoder actual value not valid";
     case kHomingModeNotAvailable:
       return "homing mode not available on this technology object";
+    case kNotPositionControlled:
+      return "the job needs position-controlled operation";
+    case kBusy:
+      return "a backup of the absolute-encoder adjustment is still being written";
+    case kBackupFailed:
+      return "the absolute-encoder backup could not be written";
     case kInvalidPosition:
       return "invalid Position or Distance (not finite, or outside the modulo range)";
     case kInvalidBufferMode:

@@ -86,6 +86,15 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
     servo_cycle_known_ = true;
     configure();
   }
+  if (retained_restored_ && retained_.valid && !power_up_done_) {
+    // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+    RetainedSensorState r;
+    r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+    r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+    r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+    encoder_.chain().power_up(&r);
+  }
+  power_up_done_ = true;
   connection_.read();
   encoder_.read(connection_, device_->fresh);
   const bool error = encoder_.error();
@@ -108,13 +117,55 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
   db_.StatusSensor.State =
       static_cast<std::int32_t>(valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
   db_.StatusSensor.Control = enabled_;
+  input_edges_.observe(inputs_.HomingInput == db_.Sensor.PassiveHoming.SwitchLevel,
+                       encoder_.chain().continuous_position());
+  if (const auto mark = encoder_.take_reference_mark()) mark_position_ = *mark;
+  if (retained_.valid) {
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
   encoder_.write(connection_);
   connection_.request(telegrams::DriveRequest::kOff);  // encoder-only: no drive state machine to run
   connection_.write();
 }
 
+LeadingValue ExternalEncoder::leading_value(LeadingValueCoupling) const noexcept {
+  LeadingValue v;
+  v.position = extrapolation_.position();
+  v.velocity = extrapolation_.velocity();
+  v.acceleration = extrapolation_.acceleration();
+  v.valid = valid_;
+  v.position_controlled = true;  // an encoder has no position control to lose (spec 07 §1.4)
+  return v;
+}
+
 void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
   cycle_ = clock.interpolator_cycles + 1;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    // The extrapolation of the leading value (spec 07 §1.4), as on the positioning axis.
+    const auto& e = db_.Extrapolation;
+    ExtrapolationConfig c;
+    c.position_t1 = e.PositionFilter.T1;
+    c.position_t2 = e.PositionFilter.T2;
+    c.velocity_t1 = e.VelocityFilter.T1;
+    c.velocity_t2 = e.VelocityFilter.T2;
+    c.tolerance_range = e.VelocityTolerance.Range / units_.velocity;
+    c.hysteresis = e.Hysteresis.Value;
+    c.velocity_mode = e.Settings.ExtrapolatedVelocityMode;
+    c.cycle = ipo_cycle_s_;
+    const bool system = e.Settings.SystemDefinedExtrapolation != 0;
+    db_.Extrapolation.LeadingAxisDependentTime = system ? ipo_cycle_s_ + c.position_t1 + c.position_t2 : 0.0;
+    if (!system) c.position_t1 = c.position_t2 = 0.0;
+    c.time = db_.Extrapolation.LeadingAxisDependentTime + e.FollowingAxisDependentTime;
+    extrapolation_.configure(c);
+  }
+  extrapolation_.update(encoder_.chain().continuous_position(), velocity_);
+  db_.StatusExtrapolation.FilteredPosition = extrapolation_.filtered_position();
+  db_.StatusExtrapolation.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+  db_.StatusExtrapolation.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+  db_.StatusExtrapolation.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
   if (reset_pending_) {
     reset_pending_ = false;
     (void)alarms_.acknowledge(restart_requested_, cycle_);
@@ -135,6 +186,20 @@ void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
   }
   // Enabled while the encoder delivers valid values and no alarm is pending (reaction 10 "remove enable").
   enabled_ = enable_ && valid_ && alarms_.strongest_reaction() != AlarmReaction::kRemoveEnable;
+  // Passive homing (spec 02 §5.6) needs the enabled encoder; it ends with an alarm or the disable.
+  if (passive_job_ != 0) {
+    if (!enabled_) {
+      jobs_.set(passive_job_, JobState::kError, error_id::kAbortedByAlarmReaction);
+      passive_job_ = 0;
+      passive_search_.stop(encoder_);
+    } else if (const auto mark = passive_search_.step(velocity_, input_edges_, mark_position_, encoder_)) {
+      assign_reference(*mark, passive_value_, ModuloCycleRule::kHomePositionHalf);
+      jobs_.set(passive_job_, JobState::kDone);
+      passive_job_ = 0;
+    }
+  }
+  input_edges_.clear();
+  mark_position_.reset();
   update_status();
 }
 
@@ -146,18 +211,20 @@ void ExternalEncoder::update_status() noexcept {
   db_.StatusSensor.Position = db_.ActualPosition;
   db_.StatusSensor.Velocity = db_.ActualVelocity;
   db_.StatusSensor.ModuloCycle = db_.ActualModuloCycle;
-  db_.StatusSensor.AbsEncoderOffset = chain.abs_encoder_offset();
+  db_.StatusSensor.AbsEncoderOffset = retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
   assign(sw, StatusWordBit::kEnable, enabled_);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
   assign(sw, StatusWordBit::kHomingDone, homed_);
-  assign(sw, StatusWordBit::kDone, true);  // E: no job except MC_Power (spec 04 §5.1)
+  assign(sw, StatusWordBit::kDone, passive_job_ == 0);  // E: no job except MC_Power (spec 04 §5.1)
+  assign(sw, StatusWordBit::kHomingCommand, passive_job_ != 0);
   assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
   db_.StatusWord = sw;
   std::uint32_t ew = 0;
   for (const auto& a : alarms_.alarms()) {
     if (a.number == kAlarmSensorFault) assign(ew, ErrorWordBit::kSensorFault, true);
     if (a.number == kAlarmDriveCommunication) assign(ew, ErrorWordBit::kCommunicationFault, true);
+    if (a.number == kAlarmAdjustmentLost) assign(ew, ErrorWordBit::kHomingError, true);
   }
   db_.ErrorWord = ew;
   db_.WarningWord = 0;
@@ -185,23 +252,95 @@ Submission ExternalEncoder::reset(bool restart) noexcept {
   return Submission::accept(reset_job_);
 }
 
+// MC_Home on the external encoder (spec 02 §5.1: modes 0, 1, 2, 6, 7, 8, 9, 10, 11, 12, 13; no active
+// homing).
 Submission ExternalEncoder::home(const HomeInputs& in) noexcept {
   if (!std::isfinite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
   if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
   if (in.Mode == 3 || in.Mode == 5)
     return Submission::reject(error_id::kHomingModeNotAvailable);  // active: axes
   if (in.Sensor != 0 && in.Sensor != 1) return Submission::reject(error_id::kInvalidSensor);
-  const bool direct = in.Mode == 0 || in.Mode == 1 || in.Mode == 11 || in.Mode == 12;
-  if (!direct) return Submission::reject(error_id::kHomingModeNotAvailable);
+  const bool absolute = absolute_encoder();
+  if ((in.Mode == 6 || in.Mode == 7) && !absolute)
+    return Submission::reject(error_id::kHomingModeNotAvailable);
+  if (in.Mode == 13 && absolute) return Submission::reject(error_id::kHomingModeNotAvailable);
+  if (in.Mode == 9) {
+    if (passive_job_ != 0 && !homed_) {
+      jobs_.set(passive_job_, JobState::kAborted);
+      passive_job_ = 0;
+      passive_search_.stop(encoder_);
+    }
+    return Submission::accept(jobs_.create(JobKind::kHome, JobState::kDone));
+  }
+  if (in.Mode == 2 || in.Mode == 8 || in.Mode == 10) {
+    if (!enabled_) return Submission::reject(error_id::kAxisNotEnabled);  // spec 02 §5.6
+    if (passive_job_ != 0) {
+      jobs_.set(passive_job_, JobState::kAborted);
+      passive_search_.stop(encoder_);
+    }
+    if (in.Mode != 2 && !absolute) homed_ = false;
+    passive_job_ = jobs_.create(JobKind::kHome, JobState::kActive);
+    passive_value_ = in.Mode == 10 ? db_.Homing.HomePosition : in.Position;
+    const auto& p = db_.Sensor.PassiveHoming;
+    passive_search_.start(PassiveHomingSearch::Config{
+        p.Mode, p.Direction, p.SideInput, db_.StandstillSignal.VelocityThreshold / units_.velocity});
+    input_edges_.was_active = inputs_.HomingInput == p.SwitchLevel;
+    return Submission::accept(passive_job_);
+  }
   if (!valid_) return Submission::reject(error_id::kEncoderNotValid);
+  if (in.Mode == 13 && alarms_.any_error()) return Submission::reject(error_id::kAxisBlockedByAlarm);
   // An external encoder has no setpoint: 11/12 set/shift its actual value like 0/1 (spec 02 §5.1 table).
   const double shown = db_.ActualPosition;
-  const double wanted = (in.Mode == 0 || in.Mode == 11) ? in.Position : shown + in.Position;
-  (void)encoder_.set_position(wanted);
-  reference_mark_position_ = encoder_.chain().position();
-  homed_ = true;
+  const bool relative = in.Mode == 1 || in.Mode == 6 || in.Mode == 12;
+  const double wanted = relative ? shown + in.Position : in.Position;
+  const double now = encoder_.chain().continuous_position();
+  assign_reference(now, wanted, in.Mode == 7 ? ModuloCycleRule::kZero : ModuloCycleRule::kShortestDistance);
+  if (in.Mode == 6 || in.Mode == 7) store_adjustment();  // retentive (spec 02 §5.9)
+  if (in.Mode != 6 && in.Mode != 7 && in.Mode != 13) {
+    // 0, 1, 11, 12 set HomingDone, not Adjusted (spec 02 §5.1)
+  } else {
+    db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+  }
   update_status();
   return Submission::accept(jobs_.create(JobKind::kHome, JobState::kDone));
+}
+
+// The position at the mark becomes `value`; the present position is `value` plus the travel since the mark.
+void ExternalEncoder::assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept {
+  const double now = value + (encoder_.chain().continuous_position() - mark_position);
+  (void)encoder_.set_position(now, rule);
+  homed_ = true;
+  if (rule == ModuloCycleRule::kHomePositionHalf) {  // passive homing: referenced (spec 02 §5.1)
+    if (absolute_encoder() && db_.StatusSensor.Adjusted == 0) store_adjustment();
+    db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+  }
+  reference_mark_position_ =
+      db_.Modulo.Enable ? modulo_wrap(value, db_.Modulo.StartValue, db_.Modulo.Length).position : value;
+}
+
+bool ExternalEncoder::absolute_encoder() const noexcept {
+  return db_.Sensor.Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+}
+
+void ExternalEncoder::store_adjustment() noexcept {
+  const RetainedSensorState r = encoder_.chain().retained_state();
+  retained_.valid = true;
+  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
+  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  ++retained_.sequence;
+}
+
+void ExternalEncoder::restore_retained(const RetainedEncoderData& data) noexcept {
+  if (!absolute_encoder() || !data.valid) return;
+  retained_ = data;
+  retained_restored_ = true;
+  homed_ = true;
+  db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
+void ExternalEncoder::report_adjustment_lost(std::uint32_t cause) noexcept {
+  if (absolute_encoder()) (void)alarms_.raise(kAlarmAdjustmentLost, cause, cycle_);
 }
 
 Submission ExternalEncoder::write_parameter(std::int32_t parameter_number, double value) noexcept {

@@ -133,6 +133,7 @@ void PositioningAxis::configure_components() noexcept {
   pc.Tdc = communication_times_.Tdc;
   (void)controller_.configure(pc);
   configure_monitoring();
+  configure_extrapolation();
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
   hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
   configure_backlash_and_filter();
@@ -148,6 +149,27 @@ void PositioningAxis::configure_backlash_and_filter() noexcept {
                                            servo_cycle_s_});
   const auto& f = db_.SetpointFilter.DynamicFilter;
   (void)dynamic_filter_.configure(DynamicFilterConfig{f.Mode, f.T1, f.T2, f.Tt, servo_cycle_s_});
+}
+
+// Extrapolation of the actual value as a leading value (spec 07 §1.4): T_ext = leading-axis part (T_i + T_ipo
+// + position filter, unless SystemDefinedExtrapolation = 0) + FollowingAxisDependentTime.
+void PositioningAxis::configure_extrapolation() noexcept {
+  const auto& e = db_.Extrapolation;
+  ExtrapolationConfig c;
+  c.position_t1 = e.PositionFilter.T1;
+  c.position_t2 = e.PositionFilter.T2;
+  c.velocity_t1 = e.VelocityFilter.T1;
+  c.velocity_t2 = e.VelocityFilter.T2;
+  c.tolerance_range = e.VelocityTolerance.Range / units_.velocity;
+  c.hysteresis = e.Hysteresis.Value;
+  c.velocity_mode = e.Settings.ExtrapolatedVelocityMode;
+  c.cycle = ipo_cycle_s_;
+  const bool system = e.Settings.SystemDefinedExtrapolation != 0;
+  db_.Extrapolation.LeadingAxisDependentTime =
+      system ? communication_times_.Ti + ipo_cycle_s_ + c.position_t1 + c.position_t2 : 0.0;
+  if (!system) c.position_t1 = c.position_t2 = 0.0;  // the position filter goes with the system part
+  c.time = db_.Extrapolation.LeadingAxisDependentTime + e.FollowingAxisDependentTime;
+  extrapolation_.configure(c);
 }
 
 // The monitors' DIR variables (positions in position units, velocities converted from the data block's
@@ -235,13 +257,17 @@ std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, 
   return std::nullopt;
 }
 
-std::array<RunningJob, 3> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
-  std::array<RunningJob, 3> running{};
+std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
+  std::array<RunningJob, 4> running{};
   n = 0;
-  if (motion_.id != 0) {
-    running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
+  // A running synchronous job is a column of §9.19.2, not of §9.19.1 (arbitrate_synchronous).
+  if (motion_.id != 0 && !synchronous_kind(motion_.kind)) {
+    running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
+                   : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
+                                                    : RunningJob::kBaseMotionActive;
   }
   if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
+  if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
   if (stop_.id != 0 && (!stop_.done || stop_.execute)) running[n++] = RunningJob::kStop;
   return running;
 }
@@ -258,6 +284,7 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
   ctx.running_stop_weight = stop_.weight;
   const Decision d = arbitrate(row, std::span<const RunningJob>(running.data(), n), ctx);
   if (d.reject) return error_id::kRejectedByRunningJob;
+  if (const std::uint16_t e = arbitrate_synchronous(row)) return e;  // §9.19.2 on a synchronous axis
   queue = d.queue;
   for (std::size_t i = 0; i < n; ++i) {
     if ((d.abort_mask & (1u << i)) == 0) continue;
@@ -269,6 +296,9 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
       case RunningJob::kBaseMotionPending:
         abort_pending(0);
         break;
+      case RunningJob::kPassiveHoming:
+        end_passive_homing(JobState::kAborted);
+        break;
       default:
         abort_motion(0);
         break;
@@ -279,6 +309,14 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
 
 void PositioningAxis::abort_motion(std::uint16_t error_id) noexcept {
   if (motion_.id == 0) return;
+  if (synchronous_kind(motion_.kind)) {
+    abort_synchronous(error_id);  // the synchronous axis ends its job and its state
+    return;
+  }
+  if (motion_.kind == JobKind::kHome) {
+    homing_.phase = HomingPhase::kIdle;
+    encoder_.cancel_reference_mark();
+  }
   set_job(motion_.id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
   motion_ = Motion{};
   positioning_.cancel();
@@ -513,8 +551,12 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   ctx.running_stop_weight = stop_.weight;
   const Decision d = arbitrate(NewJob::kStop, std::span<const RunningJob>(running.data(), n), ctx);
   if (d.reject) return Submission::reject(error_id::kRejectedByRunningJob);
+  abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
   abort_motion(0);
   abort_pending(0);
+  if (passive_.id != 0) {  // R7 x C1 = A
+    end_passive_homing(JobState::kAborted);
+  }
   if (stop_.id != 0) set_job(stop_.id, JobState::kAborted);
   limit_stop_ = false;
   stop_ = StopJob{new_job(JobKind::kStop, JobState::kActive), weight, limits, true, false};
@@ -567,51 +609,6 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
   motion_.jog_stopping = !any;
   motion_.command_velocity = any ? (in.JogForward ? magnitude : -magnitude) : 0.0;
   return Submission::accept(running);
-}
-
-Submission PositioningAxis::home(const HomeInputs& in) noexcept {
-  if (!finite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
-  if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
-  if (in.Sensor != 0 && static_cast<std::uint32_t>(in.Sensor) != db_.OperativeSensor) {
-    return Submission::reject(error_id::kInvalidSensor);  // S7-1500: only the operative encoder
-  }
-  // Direct homing and setting the setpoint position (spec 02 §5.7, §5.8): executed at once, in the job's
-  // MC_Interpolator; the TO need not be enabled. The encoder must deliver valid actual values.
-  const bool direct = in.Mode == 0 || in.Mode == 1 || in.Mode == 11 || in.Mode == 12;
-  if (!direct) return Submission::reject(error_id::kHomingModeNotAvailable);
-  if (!actual_valid_) return Submission::reject(error_id::kEncoderNotValid);
-  if (blocked()) return Submission::reject(error_id::kAxisBlockedByAlarm);
-  const JobId id = new_job(JobKind::kHome, JobState::kActive);
-  // The positions as the data block shows them (modulo-wrapped), as the user sees them. Every mode becomes
-  // "the actual position is set to ...": 11/12 move the setpoint and keep the following distance, so the
-  // actual position moves by the same amount (spec 02 §5.8 [Derived]).
-  const double shown_actual = db_.ActualPosition;
-  const double shown_setpoint = db_.Position;
-  double wanted = in.Position;  // Mode 0
-  if (in.Mode == 1 || in.Mode == 12) wanted = shown_actual + in.Position;
-  if (in.Mode == 11) wanted = shown_actual + (in.Position - shown_setpoint);
-  double delta = 0.0;
-  if (device_ != nullptr) {
-    delta = encoder_.set_position(wanted);  // modulo counter: spec 01 §2.4.1
-  } else if (modulo()) {
-    const double start = db_.Modulo.StartValue;
-    const double length = db_.Modulo.Length;
-    const double w = modulo_wrap(wanted, start, length).position;
-    delta = w - shown_actual + length * modulo_cycle_change(shown_actual, w, start, length);
-  } else {
-    delta = wanted - shown_actual;
-  }
-  shift_position(delta);
-  // ReferenceMarkPosition: the position that was set (the setpoint for 11/12).
-  double reference = wanted;
-  if (in.Mode == 11) reference = in.Position;
-  if (in.Mode == 12) reference = shown_setpoint + in.Position;
-  reference_mark_position_ =
-      modulo() ? modulo_wrap(reference, db_.Modulo.StartValue, db_.Modulo.Length).position : reference;
-  homed_ = true;  // modes 0, 1, 11, 12 set HomingDone but not StatusSensor.Adjusted (spec 02 §5.1)
-  set_job(id, JobState::kDone);
-  update_status();  // the data block shows the new positions from this call on
-  return Submission::accept(id);
 }
 
 Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
@@ -667,6 +664,60 @@ JobStatus PositioningAxis::job_status(JobId id) const noexcept {
 }
 
 // ---------------------------------------------------------------------------------------------------------
+// As a leading value
+
+LeadingValue PositioningAxis::leading_value(LeadingValueCoupling coupling) const noexcept {
+  LeadingValue v;
+  v.position_controlled = phase_ == PowerPhase::kEnabled && position_controlled_ && !follows_actual();
+  if (coupling == LeadingValueCoupling::kSetpoint) {
+    v.position = setpoint_.position;
+    v.velocity = setpoint_.velocity;
+    v.acceleration = setpoint_.acceleration;
+    v.valid = true;
+  } else {
+    v.position = extrapolation_.position();
+    v.velocity = extrapolation_.velocity();
+    v.acceleration = extrapolation_.acceleration();
+    v.valid = actual_valid_;
+  }
+  return v;
+}
+
+ModuloRange PositioningAxis::leading_value_modulo() const noexcept {
+  return ModuloRange{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Retentive data
+
+bool PositioningAxis::absolute_encoder() const noexcept {
+  return db_.Sensor[db_.OperativeSensor - 1].Type !=
+         static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+}
+
+void PositioningAxis::store_adjustment() noexcept {
+  const RetainedSensorState r = encoder_.chain().retained_state();
+  retained_.valid = true;
+  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
+  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  ++retained_.sequence;
+}
+
+void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept {
+  if (!absolute_encoder() || !data.valid) return;
+  retained_ = data;
+  retained_restored_ = true;
+  homed_ = true;  // an adjusted absolute encoder is homed after power-up (spec 02 §5.12)
+  db_.StatusSensor[db_.OperativeSensor - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
+void PositioningAxis::report_adjustment_lost(std::uint32_t cause) noexcept {
+  if (!absolute_encoder()) return;
+  (void)alarms_.raise(kAlarmAdjustmentLost, cause, cycle_);
+}
+
+// ---------------------------------------------------------------------------------------------------------
 // Alarms
 
 bool PositioningAxis::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
@@ -697,6 +748,7 @@ WriteResult PositioningAxis::write(std::string_view path, double value) noexcept
     // DIR values take effect from the next MC_Servo (spec 04 §0.2): the components are re-read. The state of
     // the monitors survives: only what changed is re-configured.
     configure_monitoring();
+    if (path.starts_with("Extrapolation.")) configure_extrapolation();
     if (path.starts_with("PositionLimits_SW.")) {
       software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
     }

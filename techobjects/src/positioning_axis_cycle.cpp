@@ -35,6 +35,14 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
     servo_cycle_s_ = clock.servo_cycle_s;
     servo_cycle_known_ = true;
     configure_components();  // the cycle time enters the chain, the controller and the monitors
+    if (retained_restored_ && retained_.valid) {
+      // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+      RetainedSensorState r;
+      r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+      r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+      r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+      encoder_.chain().power_up(&r);
+    }
   }
   // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
   // virtual axis takes from x_f.
@@ -49,6 +57,13 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   }
   control();
   servo_monitoring();
+  homing_observe();
+  if (retained_.valid && device_ != nullptr) {
+    // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
 
   // What the drive is asked to do (as the speed axis, spec 02 §3.1, §3.4).
   if (device_ != nullptr) {
@@ -219,9 +234,17 @@ void PositioningAxis::servo_monitoring() noexcept {
     hw.max_switch_input = inputs_.MaxSwitch;
     hw.position = actual_position_;
     hw.velocity = setpoint_.velocity;
+    // Active homing with AutoReversal: the limit switches are reversal cams, no alarm 531 (spec 02 §4.2).
+    hw.homing_reversal =
+        motion_.kind == JobKind::kHome && db_.Homing.AutoReversal && homing_.phase != HomingPhase::kToHome;
     const auto r = hardware_limits_.update(hw);
     if (r.alarm.raised())
       raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    // The monitor reports a reversal cam while the switch is active; homing reacts to reaching it.
+    if (r.reversal_cam != limits::LimitSide::kNone && r.reversal_cam != reversal_cam_seen_) {
+      reversal_cam_ = r.reversal_cam;
+    }
+    reversal_cam_seen_ = r.reversal_cam;
   }
 
   // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
@@ -270,7 +293,19 @@ void PositioningAxis::shift_position(double delta) noexcept {
 
 void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   cycle_ = clock.interpolator_cycles + 1;
-  ipo_cycle_s_ = clock.interpolator_cycle_s;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    configure_extrapolation();
+  }
+  // The actual value as a leading value, once per interpolator cycle (spec 07 §1.4).
+  extrapolation_.update(actual_position_, actual_velocity_);
+  {
+    auto& st = db_.StatusExtrapolation;
+    st.FilteredPosition = extrapolation_.filtered_position();
+    st.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+    st.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+    st.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
+  }
 
   if (reset_pending_) {
     reset_pending_ = false;
@@ -288,6 +323,8 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
 
   apply_alarm_reactions();
   update_power_phase();
+  run_homing();
+  run_synchronous();
   update_live_motion();
   generate_setpoint();
   monitor_software_limits();
@@ -318,8 +355,12 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
                       : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Deceleration / units_.acceleration,
                                       db_.DynamicDefaults.Jerk / units_.acceleration};
+  abort_synchronous(error_id::kAbortedByAlarmReaction);
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
+  if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
+    end_passive_homing(JobState::kError, error_id::kAbortedByAlarmReaction);
+  }
   const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
   const bool stop_keeps_control =
       stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint && !limit_stop_;
@@ -384,8 +425,12 @@ void PositioningAxis::update_power_phase() noexcept {
   }
   if (phase_ == PowerPhase::kEnabled && !enable_) {
     // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
+    abort_synchronous(0);
     abort_motion(0);
     abort_pending(0);
+    if (passive_.id != 0) {
+      end_passive_homing(JobState::kAborted);
+    }
     if (stop_.id != 0) {
       set_job(stop_.id, JobState::kAborted);
       stop_ = StopJob{};
@@ -501,8 +546,10 @@ void PositioningAxis::generate_setpoint() noexcept {
         setpoint_ = MotionState{
             position_profile_.at(position_profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
-        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative) {
-          if (!motion_.interpolation_done && motion_.planned_velocity > 0.0) {
+        const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
+        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
+            homing_to_home) {
+          if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
             motion_.interpolation_done = true;
             positioning_target_ = setpoint_.position;
             positioning_start_pending_ = true;
@@ -517,6 +564,9 @@ void PositioningAxis::generate_setpoint() noexcept {
     case Generator::kIdle:
       setpoint_.position += setpoint_.velocity * ipo_cycle_s_;
       setpoint_.acceleration = 0.0;
+      break;
+    case Generator::kSynchronous:
+      setpoint_ = synchronous_setpoint();
       break;
   }
   // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
@@ -538,6 +588,7 @@ void PositioningAxis::monitor_software_limits() noexcept {
   in.velocity = setpoint_.velocity;
   in.acceleration = setpoint_.acceleration;
   in.homed = homed();
+  in.following_axis = following_in_synchronous_operation();
   if (reaction == limits::kReactionStopMaxDynamics) {
     in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
     in.stop_jerk = l.MaxJerk / units_.acceleration;
@@ -567,6 +618,7 @@ void PositioningAxis::complete_jobs() noexcept {
   const PositioningOutcome outcome = positioning_.status().outcome;
   if (motion_.id != 0) {
     switch (motion_.kind) {
+      case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
       case JobKind::kMoveAbsolute:
       case JobKind::kMoveRelative:
         // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
@@ -677,6 +729,8 @@ void PositioningAxis::update_status() noexcept {
   const bool settled = generator_ == Generator::kIdle;
   const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
   const bool job_running = motion_.id != 0 || pending_.id != 0 || (stop_.id != 0 && !stop_.done);
+  db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
+      retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   const PositioningOutcome outcome = positioning_.status().outcome;
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
@@ -687,6 +741,7 @@ void PositioningAxis::update_status() noexcept {
              outcome != PositioningOutcome::kFault && !positioning_start_pending_);
   assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
   assign(sw, StatusWordBit::kPositioningCommand, positioning);
+  assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
@@ -732,6 +787,10 @@ void PositioningAxis::update_status() noexcept {
       case kAlarmModuloTooFast:
         assign(ew, ErrorWordBit::kDynamicError, true);
         break;
+      case kAlarmHomingFailed:
+      case kAlarmAdjustmentLost:
+        assign(ew, ErrorWordBit::kHomingError, true);
+        break;
       case kAlarmFollowingErrorWarning:
         assign(ww, WarningWordBit::kFollowingErrorWarning, true);
         break;
@@ -749,6 +808,7 @@ void PositioningAxis::update_status() noexcept {
   const PendingAlarm* top = alarms_.error_detail();
   db_.ErrorDetail.Number = top == nullptr ? 0 : top->number;
   db_.ErrorDetail.Reaction = static_cast<std::int32_t>(top == nullptr ? AlarmReaction::kNone : top->reaction);
+  update_synchronous_status();
 }
 
 void PositioningAxis::restart() noexcept {
@@ -756,6 +816,7 @@ void PositioningAxis::restart() noexcept {
   // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
+  abort_synchronous(0);
   db_ = start_;
   communication_times_ = communication_times_start_;
   assign(db_.StatusWord, changed, false);

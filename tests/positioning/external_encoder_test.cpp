@@ -182,3 +182,95 @@ TEST(ExternalEncoder, DeviceWithoutEncoderTelegramIsRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tomc;
+using techobjects::StatusWordBit;
+
+// spec 02 §5.6, §5.1 (EE: passive modes 2, 8, 10): the shaft turns at 90 °/s; the encoder's zero mark is at
+// 0.25 rev = 90° of each turn. Mode 10 assigns Homing.HomePosition (30°) at the mark while the user's motion
+// turns the shaft; X11 while searching, X5 and Done at the mark.
+TEST(ExternalEncoderHoming, PassiveZeroMark) {
+  techobjects::ExternalEncoderData d;
+  d.Homing.HomePosition = 30.0;
+  d.Sensor.PassiveHoming.Direction = 0;  // positive
+  EncoderMachine m(81, d);
+  m.power.Enable = true;
+  m.run(10);
+  m.home.Mode = 10;
+  m.home.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.home.Busy);
+  EXPECT_TRUE(techobjects::test(m.db().StatusWord, StatusWordBit::kHomingCommand));
+  m.drive->set_external_speed(90.0);
+  int cycles = 0;
+  for (; cycles < 3000 && !m.home.Done; ++cycles)
+    m.run(1);
+  ASSERT_TRUE(m.home.Done);
+  EXPECT_NEAR(cycles, 1000, 5);  // 90° at 90 °/s
+  // The position at the mark (90° of the shaft) is 30°: now 30° + the travel since.
+  EXPECT_NEAR(m.db().ActualPosition - (m.drive->load_position() - 90.0), 30.0, 0.2);
+  EXPECT_TRUE(techobjects::test(m.db().StatusWord, StatusWordBit::kHomingDone));
+  EXPECT_EQ(m.db().StatusSensor.Adjusted, 1);
+}
+
+// spec 02 §5.6: passive homing needs an enabled encoder.
+TEST(ExternalEncoderHoming, PassiveNeedsEnable) {
+  EncoderMachine m;
+  m.run(10);
+  m.home.Mode = 8;
+  m.home.Execute = true;
+  m.run(1);
+  EXPECT_EQ(m.home.ErrorID, techobjects::error_id::kAxisNotEnabled);
+}
+
+// spec 02 §5.9: Mode 7 on an absolute external encoder is retentive: a new runtime restoring the data shows
+// the same position; Mode 13 is for incremental encoders only.
+TEST(ExternalEncoderHoming, AbsoluteAdjustmentIsRetentive) {
+  techobjects::ExternalEncoderData d;
+  d.Sensor.Type = static_cast<std::int32_t>(techobjects::SensorEncoderType::ABSOLUTE);
+  d.Sensor.Parameter.DeterminableRevolutions = 4096;
+  d.Modulo.Enable = false;
+  techobjects::RetainedEncoderData retained;
+  {
+    EncoderMachine m(81, d);
+    m.run(10);
+    m.drive->set_external_speed(36.0);
+    m.run(1000);
+    m.drive->set_external_speed(0.0);
+    m.run(5);
+    m.home.Mode = 7;
+    m.home.Position = 1000.0;
+    m.home.Execute = true;
+    m.run(1);
+    ASSERT_TRUE(m.home.Done);
+    EXPECT_DOUBLE_EQ(m.db().ActualPosition, 1000.0);
+    retained = m.encoder->retained();
+    ASSERT_TRUE(retained.valid);
+    m.home.Execute = false;
+    m.run(1);
+    m.home.Mode = 13;
+    m.home.Execute = true;
+    m.run(1);
+    EXPECT_EQ(m.home.ErrorID, techobjects::error_id::kHomingModeNotAvailable);
+  }
+  // The same shaft position (36°) after a restart: a device whose shaft starts there.
+  techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
+  drives::DeviceConfig device;
+  device.encoder_telegrams[0] = 81;
+  drives::SimulatedDriveParameters p;
+  p.load_units_per_revolution = 360.0;
+  p.encoder1.shaft = drives::SimulatedEncoderParameters::Shaft::kLoad;
+  p.initial_load_position = 36.0;
+  auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, p));
+  auto& e = runtime.emplace<ExternalEncoder>("Encoder1", &io, d);
+  e.restore_retained(retained);
+  runtime.start();
+  for (int i = 0; i < 20; ++i)
+    runtime.step();
+  EXPECT_NEAR(e.data().ActualPosition, 1000.0, 0.01);
+  EXPECT_TRUE(techobjects::test(e.data().StatusWord, StatusWordBit::kHomingDone));
+}
+
+}  // namespace

@@ -23,6 +23,7 @@
 #include "tomc/techobjects/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
 #include "tomc/techobjects/positioning_variables.hpp"
+#include "tomc/techobjects/retentive_store.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 #include "tomc/techobjects/variables.hpp"
@@ -260,7 +261,9 @@ struct Scenario::Impl {
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
   std::vector<Column> trace;
-  std::vector<Expectation> expectations;  // sorted by cycle
+  std::vector<Expectation> expectations;       // sorted by cycle
+  std::unique_ptr<to::RetentiveStore> retain;  // "retain_file": absolute-encoder adjustments across runs
+  std::string retain_report;                   // what restoring it found (for the CLI's summary)
   Problems problems;
   // A broken technology_objects or timeline array makes every later reference to its names fail; those
   // follow-up problems would only bury the real one, so they are not reported.
@@ -380,6 +383,18 @@ void Scenario::Impl::load(const Json& document) {
           continue;
         }
         if (auto column = resolve(*name, path)) trace.push_back(std::move(*column));
+      }
+    }
+  }
+
+  // The retentive memory of absolute-encoder adjustments (spec 02 §5.9): restored before the first cycle,
+  // written whenever an adjustment changes (docs/scenarios.md "retain_file").
+  if (const Json* v = root.get("retain_file")) {
+    if (auto path = detail::read_string(*v, "retain_file", problems)) {
+      if (path->empty()) {
+        problems.add("retain_file", "expected a file name");
+      } else {
+        retain = std::make_unique<to::RetentiveStore>(*path);
       }
     }
   }
@@ -1055,6 +1070,17 @@ LoadResult Scenario::load(const Json& document) {
   Impl* self = impl.get();
   impl->runtime->set_user_program([self](to::Runtime&) { self->user_program(); });
   impl->wire_machine_inputs();
+  if (impl->retain) {
+    for (const auto& o : impl->objects) {
+      if (o.positioning_axis != nullptr) impl->retain->attach(*o.positioning_axis);
+      if (o.external_encoder != nullptr) impl->retain->attach(*o.external_encoder);
+    }
+    const to::RetainFile file = impl->retain->restore();
+    impl->retain_report = std::string(impl->retain->file().string()) + ": " +
+                          std::string(to::to_string(file.status)) +
+                          (file.message.empty() ? "" : " (" + file.message + ")");
+    impl->runtime->set_post_servo([store = impl->retain.get()](to::Runtime&) { store->cycle(); });
+  }
   impl->runtime->start();
   result.scenario.reset(new Scenario(std::move(impl)));
   return result;
@@ -1118,6 +1144,8 @@ RunResult Scenario::run(std::ostream* trace) {
   for (s.cycle = 0; s.cycle < s.cycles; ++s.cycle) {
     s.runtime->step();
     ++result.cycles_run;
+    // Single-threaded: the store writes a pending snapshot between cycles, outside Runtime::step().
+    if (s.retain) (void)s.retain->service();
     if (trace != nullptr) {
       // The time column in its shortest exact form: 0.003, not 0.0030000000000000001.
       row = std::to_string(s.cycle) + "," + format_number(static_cast<double>(s.cycle) * s.cycle_time);
@@ -1141,6 +1169,11 @@ RunResult Scenario::run(std::ostream* trace) {
       }
     }
     if (s.aborted) break;
+  }
+  if (s.retain) {
+    // The end of the run is a power-down: what the retentive memory holds reaches the file.
+    s.retain->cycle();
+    (void)s.retain->service();
   }
   result.runtime_errors.insert(result.runtime_errors.end(), s.runtime_errors.begin(), s.runtime_errors.end());
   return result;

@@ -43,10 +43,23 @@ class EncoderChannel {
   void acknowledge() noexcept { acknowledge_cycles_ = kAcknowledgeCycles; }
   // Direct homing (MC_Home 0/1/11/12, spec 02 §5.7): the actual position becomes `position`, the modulo cycle
   // counter follows the shortest way (spec 01 §2.4.1). Returns how far the continuous position moved.
-  double set_position(double position) noexcept {
+  double set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance) noexcept {
     const double before = chain_.continuous_position();
-    chain_.set_position(position, ModuloCycleRule::kShortestDistance);
+    chain_.set_position(position, rule);
     return chain_.continuous_position() - before;
+  }
+
+  // Reference-mark search through Gx_STW/Gx_ZSW (spec 06 §6.3, TV23; spec 02 §5.3): armed, the drive captures
+  // Gx_XIST1 at the next zero mark (function 1, command 1), the channel reads the value (command 2) and turns
+  // it into the continuous position at the mark, which take_reference_mark() hands out once.
+  void arm_reference_mark() noexcept {
+    if (mark_ == MarkState::kIdle || mark_ == MarkState::kCaptured) mark_ = MarkState::kArmed;
+  }
+  void cancel_reference_mark() noexcept { mark_ = MarkState::kIdle; }
+  std::optional<double> take_reference_mark() noexcept {
+    if (mark_ != MarkState::kCaptured) return std::nullopt;
+    mark_ = MarkState::kIdle;
+    return mark_position_;
   }
 
   bool error() const noexcept { return error_; }                     // Gx_ZSW.15
@@ -57,8 +70,13 @@ class EncoderChannel {
   EncoderSource source() const noexcept { return source_; }
 
  private:
+  enum class MarkState : std::uint8_t { kIdle, kArmed, kReading, kCaptured };
+
   ActualValueChain chain_;
   EncoderSource source_ = EncoderSource::kDriveG1;
+  MarkState mark_ = MarkState::kIdle;
+  bool read_sent_ = false;
+  double mark_position_ = 0.0;
   bool velocity_from_nist_ = false;
   bool error_ = false;
   std::uint32_t error_code_ = 0;

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "tomc/techobjects/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
@@ -18,13 +19,16 @@
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/leading_value.hpp"
+#include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime.hpp"
 
 namespace tomc::techobjects {
 
-class ExternalEncoder final : public TechnologyObject {
+class ExternalEncoder final : public TechnologyObject, public LeadingValueSource {
  public:
   // `device` carries encoder telegram 81 or 83 (an encoder-only device, drive_telegram 0). Throws
   // std::invalid_argument for start values the data block does not permit or a device without it.
@@ -44,6 +48,8 @@ class ExternalEncoder final : public TechnologyObject {
   const AlarmList& alarms() const noexcept { return alarms_; }
   bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
   const DriveConnection& connection() const noexcept { return connection_; }
+  // The homing digital input (AxisDigitalInputs::HomingInput), written before MC_Servo.
+  AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
 
   // ---- jobs ----
   // MC_Power: Status once the encoder delivers valid values; StartMode/StopMode are ignored (spec 03 §4.1).
@@ -55,7 +61,19 @@ class ExternalEncoder final : public TechnologyObject {
   JobStatus job_status(JobId id) const noexcept { return jobs_.status(id); }
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
-  // Continuous actual position (before the modulo wrap) and velocity, position units: the leading value.
+  // Retentive data of an absolute encoder, as on the positioning axis (positioning_axis.hpp).
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
+  // As a leading value (spec 07 §1.4): the extrapolated actual value, whatever the coupling type says.
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override {
+    return ModuloRange{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+  }
+
+  // Continuous actual position (before the modulo wrap) and velocity, position units.
   double continuous_position() const noexcept { return encoder_.chain().continuous_position(); }
   double velocity() const noexcept { return velocity_; }
   bool valid() const noexcept { return valid_; }
@@ -65,6 +83,8 @@ class ExternalEncoder final : public TechnologyObject {
 
   void configure() noexcept;
   void update_status() noexcept;
+  void assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept;
+  void store_adjustment() noexcept;
 
   std::string name_;
   DeviceIo* device_ = nullptr;
@@ -95,6 +115,17 @@ class ExternalEncoder final : public TechnologyObject {
   double velocity_ = 0.0;
   double last_velocity_ = 0.0;
   double reference_mark_position_ = 0.0;
+  AxisDigitalInputs inputs_{};
+  InputEdges input_edges_{};
+  PassiveHomingSearch passive_search_{};
+  JobId passive_job_ = 0;
+  double passive_value_ = 0.0;
+  std::optional<double> mark_position_;
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
+  bool power_up_done_ = false;
+  ActualValueExtrapolation extrapolation_{};
+  double ipo_cycle_s_ = 0.0;
 };
 
 }  // namespace tomc::techobjects

@@ -22,6 +22,7 @@
 #include <string_view>
 
 #include "tomc/techobjects/actual_value_chain.hpp"
+#include "tomc/techobjects/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/backlash.hpp"
@@ -31,11 +32,14 @@
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
 #include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/leading_value.hpp"
 #include "tomc/techobjects/limit_switches.hpp"
+#include "tomc/techobjects/passive_homing.hpp"
 #include "tomc/techobjects/position_control.hpp"
 #include "tomc/techobjects/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis_data.hpp"
 #include "tomc/techobjects/profiles.hpp"
+#include "tomc/techobjects/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 
@@ -76,7 +80,7 @@ struct AxisDigitalInputs {
   bool HomingInput = false;  // level of Sensor[n].ActiveHoming/PassiveHoming.DigitalInputAddress
 };
 
-class PositioningAxis final : public TechnologyObject {
+class PositioningAxis : public TechnologyObject, public LeadingValueSource {
  public:
   // `device` is the drive (and its encoders); nullptr for a virtual axis. Throws std::invalid_argument for
   // start values the data block does not permit, or mechanics/units that do not fit together, naming the
@@ -120,6 +124,22 @@ class PositioningAxis final : public TechnologyObject {
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
+  // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
+  // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
+  // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
+  using RetainedEncoderData = techobjects::RetainedEncoderData;
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  // Before Runtime::start(): the retained data could not be restored (1 backup missing, 2 corrupt, 3 no
+  // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
+  // ---- as a leading value (spec 07 §1.3, §1.4) ----
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override;
+
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
@@ -132,7 +152,7 @@ class PositioningAxis final : public TechnologyObject {
   const AxisUnitFactors& units() const noexcept { return units_; }
   const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
 
- private:
+ protected:
   enum class JobKind : std::uint8_t {
     kNone,
     kReset,
@@ -144,11 +164,15 @@ class PositioningAxis final : public TechnologyObject {
     kHalt,
     kStop,
     kSetAxisStw,
-    kWriteParameter
+    kWriteParameter,
+    kGearIn,          // synchronous axis (synchronous_axis.hpp): MC_GearIn
+    kGearInPos,       // MC_GearInPos, once synchronization started
+    kGearInVelocity,  // MC_GearInVelocity
+    kGearOut,         // MC_GearOut, once desynchronization started
   };
   enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
   // What drives the setpoint this cycle.
-  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition };
+  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
 
   struct Motion {  // a base motion job (running or appended)
     JobId id = 0;
@@ -173,10 +197,68 @@ class PositioningAxis final : public TechnologyObject {
     bool done = false;
   };
 
+  // homing (positioning_axis_homing.cpp)
+  enum class HomingPhase : std::uint8_t {
+    kIdle,
+    kApproach,       // towards the reference cam / digital input at ApproachVelocity (ActiveHoming.Mode 1, 2)
+    kLeaveInput,     // digital input: back off it, against the homing direction, to meet the mark edge
+    kSearchEdge,     // digital input: towards the mark edge in the homing direction at ReferencingVelocity
+    kSearchCamExit,  // cam + zero mark: leaving the cam in the homing direction arms the zero-mark search
+    kSearchMark,     // zero mark armed, in the homing direction at ReferencingVelocity
+    kToHome,         // homed: to the home position at ApproachVelocity
+  };
+  struct ActiveHomingJob {
+    HomingPhase phase = HomingPhase::kIdle;
+    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+    double home_position = 0.0;     // MC_Home.Position (3) or Homing.HomePosition (5)
+    double mark_value = 0.0;        // home position - HomePositionOffset
+    double direction = 1.0;         // homing direction (ActiveHoming.Direction)
+    double travel_direction = 1.0;  // the direction of the present search motion
+    bool mark_on_entering = false;  // digital input: the mark is the edge onto the input
+    int limit_reversals = 0;
+  };
+  struct PassiveHomingJob {
+    JobId id = 0;
+    double value = 0.0;  // position assigned at the mark
+  };
+  void start_active_homing(JobId id, double home_position) noexcept;
+  void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
+  void run_homing() noexcept;      // MC_Interpolator
+  void run_passive_homing() noexcept;
+  void end_passive_homing(JobState state, std::uint16_t error_id = 0) noexcept;
+  void homing_move(double direction, double velocity) noexcept;
+  void assign_reference(double mark_position, double value) noexcept;
+  void fail_homing(std::uint32_t cause) noexcept;
+  bool input_active() const noexcept;
+  void store_adjustment() noexcept;
+
+  static constexpr bool synchronous_kind(JobKind k) noexcept {
+    return k == JobKind::kGearIn || k == JobKind::kGearInPos || k == JobKind::kGearInVelocity ||
+           k == JobKind::kGearOut;
+  }
+
+  // ---- hooks of the synchronous axis (no-ops on a positioning axis) ----
+  // The §9.19.2 row of a new job against the running synchronous jobs: 0 = proceed (aborts applied), else the
+  // ErrorID that rejects the new job. Called after the §9.19.1 check passed.
+  virtual std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
+    (void)row;
+    return 0;
+  }
+  // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
+  virtual void abort_synchronous(std::uint16_t error_id) noexcept { (void)error_id; }
+  // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
+  virtual void run_synchronous() noexcept {}
+  // The setpoint of Generator::kSynchronous for this cycle.
+  virtual MotionState synchronous_setpoint() noexcept { return setpoint_; }
+  // A following axis in synchronous operation stops at a software limit with maximum dynamics (spec 02 §4.5).
+  virtual bool following_in_synchronous_operation() const noexcept { return false; }
+  virtual void update_synchronous_status() noexcept {}
+
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
   void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
+  void configure_extrapolation() noexcept;
   // jobs
   JobId new_job(JobKind kind, JobState state) noexcept { return jobs_.create(kind, state); }
   void set_job(JobId id, JobState state, std::uint16_t error_id = 0) noexcept {
@@ -186,7 +268,7 @@ class PositioningAxis final : public TechnologyObject {
   std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
                                                 double jerk, ProfileLimits& out) noexcept;
   std::uint16_t arbitrate_motion(NewJob row, bool& queue) noexcept;
-  std::array<RunningJob, 3> running_jobs(std::size_t& n) const noexcept;
+  std::array<RunningJob, 4> running_jobs(std::size_t& n) const noexcept;
   void abort_motion(std::uint16_t error_id) noexcept;
   void abort_pending(std::uint16_t error_id) noexcept;
   std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
@@ -250,6 +332,7 @@ class PositioningAxis final : public TechnologyObject {
   BacklashCompensation backlash_;
   DynamicFilter dynamic_filter_;
   MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
+  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
 
   // power
   PowerPhase phase_ = PowerPhase::kDisabled;
@@ -276,6 +359,17 @@ class PositioningAxis final : public TechnologyObject {
   double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
   double last_actual_velocity_ = 0.0;
   double last_setpoint_acceleration_ = 0.0;
+
+  // homing
+  ActiveHomingJob homing_{};
+  PassiveHomingJob passive_{};
+  PassiveHomingSearch passive_search_{};
+  InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
+  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
+  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
+  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
 
   // actual values (continuous position units)
   double actual_position_ = 0.0;
