@@ -98,8 +98,10 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
         (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
   }
   load_position_ = p_.initial_load_position;
-  motor_revolutions_ =
-      load_position_ / p_.load_units_per_revolution * (p_.gear_motor_revolutions / p_.gear_load_revolutions);
+  const double half_gap = std::max(0.0, 0.5 * p_.backlash);
+  gap_ = std::clamp(p_.initial_backlash_offset, -half_gap, half_gap);
+  motor_revolutions_ = (load_position_ + gap_) / p_.load_units_per_revolution *
+                       (p_.gear_motor_revolutions / p_.gear_load_revolutions);
   power_cycle();
 }
 

@@ -279,6 +279,90 @@ TEST(BacklashAxis, ModuloAxisReversingAtTheRangeEnd) {
   EXPECT_NEAR(m.drive->load_position() - load_at_home, 358.8 - 359.5, 0.05);
 }
 
+// spec 02 §5.11 (homing with backlash compensation, Mode 3): active homing approaches the zero mark in the
+// homing direction, so the gap is crossed before the mark; the compensation needs no homing hook (its
+// correction lives in the actual-value chain's offset, which homing sets). Afterwards every move, in either
+// direction, moves the load exactly as far as ActualPosition says — for both homing directions.
+TEST(BacklashAxis, ActiveHomingWithBacklash) {
+  for (const std::int32_t direction : {0, 1}) {
+    auto d = compensated();
+    d.Sensor[0].ActiveHoming.Mode =
+        static_cast<std::int32_t>(techobjects::SensorHomingMode::kZeroMarkViaTelegram);
+    d.Sensor[0].ActiveHoming.Direction = direction;
+    d.Homing.ApproachVelocity = 20.0;
+    d.Homing.ReferencingVelocity = 5.0;
+    auto p = drive_with_backlash();
+    p.initial_load_position = 30.0;
+    PositioningAxisMachine m(d, p);
+    ASSERT_GT(m.enable(), 0);
+    m.home.Mode = 3;
+    m.home.Position = 100.0;
+    m.home.Execute = true;
+    ASSERT_GT(m.run_until([&] { return m.home.Done; }, 20000), 0) << direction;
+    m.home.Execute = false;
+    m.run(300);
+    EXPECT_NEAR(m.db().ActualPosition, 100.0, 0.01);
+    for (const double distance : {-5.0, 5.0, 3.0, -7.0}) {
+      const MoveRecord r = move_relative(m, distance);
+      ASSERT_GT(r.done_at, 0);
+      EXPECT_NEAR(m.db().ActualPosition - r.actual_start, distance, 0.01);
+      EXPECT_NEAR(m.drive->load_position() - r.load_start, m.db().ActualPosition - r.actual_start, 1e-3)
+          << "direction " << direction << ", move " << distance;
+    }
+  }
+}
+
+// spec 02 §5.11 Mode 6/7, spec 01 §5.9: an absolute encoder adjusted after positive travel
+// (Backlash.DirectionAbsoluteHoming = 0) shows the right position after a power-up with the mechanics
+// unchanged, and the gap's side is known at once: the first motion, negative, is compensated ("the axis
+// traverses the backlash if the first motion is opposite to DirectionAbsoluteHoming"). With the wrong
+// direction configured (1), the TO assumes the other side and the same first motion misses by the backlash.
+TEST(BacklashAxis, AbsoluteEncoderPowerUpTakesTheSideOfTheAdjustment) {
+  auto d = compensated();
+  d.Sensor[0].Type = static_cast<std::int32_t>(techobjects::SensorEncoderType::ABSOLUTE);
+  d.Sensor[0].Parameter.DeterminableRevolutions = 4096;  // the simulated encoder's multi-turn range
+  techobjects::PositioningAxis::RetainedEncoderData retained;
+  auto p = drive_with_backlash();
+  {
+    PositioningAxisMachine m(d, p);
+    ASSERT_GT(m.enable(), 0);
+    ASSERT_GT(move_relative(m, 10.0).done_at, 0);  // travel positive before the adjustment
+    m.home.Mode = 7;
+    m.home.Position = 250.0;
+    m.home.Execute = true;
+    m.run(1);
+    ASSERT_TRUE(m.home.Done);
+    m.home.Execute = false;
+    ASSERT_GT(move_relative(m, 5.0).done_at, 0);
+    EXPECT_NEAR(m.db().ActualPosition, 255.0, 0.01);
+    retained = m.axis->retained();
+    ASSERT_TRUE(retained.valid);
+    p.initial_load_position = m.drive->load_position();
+    p.initial_backlash_offset = m.drive->backlash_offset();  // the mechanics keep their state
+    EXPECT_NEAR(p.initial_backlash_offset, 0.5 * kBacklash, 1e-12);
+  }
+  for (const std::int32_t direction : {0, 1}) {
+    d.Sensor[0].Backlash.DirectionAbsoluteHoming = direction;
+    PositioningAxisMachine n(d, p);
+    n.axis->restore_retained(retained);
+    n.run(20);
+    EXPECT_TRUE(techobjects::test(n.db().StatusWord, StatusWordBit::kHomingDone));
+    EXPECT_NEAR(n.db().ActualPosition, 255.0, 0.01);
+    EXPECT_EQ(n.axis->backlash().contact(), direction == 0 ? 1 : -1);
+    ASSERT_GT(n.enable(), 0);
+    const MoveRecord first = move_relative(n, -5.0);
+    ASSERT_GT(first.done_at, 0);
+    EXPECT_NEAR(n.db().ActualPosition, 250.0, 0.01);
+    if (direction == 0) {
+      EXPECT_EQ(first.passing_from, 3);
+      EXPECT_NEAR(n.drive->load_position() - first.load_start, -5.0, 0.01);
+    } else {
+      EXPECT_EQ(first.passing_from, -1);
+      EXPECT_NEAR(n.drive->load_position() - first.load_start, -5.0 + kBacklash, 0.01);
+    }
+  }
+}
+
 // spec 01 §5.2, §5.9, spec 04 §3.6: only an encoder on the motor shaft has backlash compensation; a load-side
 // encoder with Backlash.Enable is a configuration error naming the variable.
 TEST(BacklashAxis, LoadSideEncoderWithBacklashIsRejected) {

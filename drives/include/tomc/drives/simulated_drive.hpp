@@ -85,8 +85,11 @@ struct SimulatedDriveParameters {
   double load_units_per_revolution = 360.0;       // degrees (rotary) or leadscrew pitch in mm (linear)
   double initial_load_position = 0.0;             // load units
   // Backlash between motor and load (load units, >= 0): after a reversal the motor crosses this dead band
-  // before the load moves. At power-on the motor stands in the middle of it.
+  // before the load moves.
   double backlash = 0.0;
+  // Where the motor stands in it at power-on: motor − load in load units, limited to ±backlash/2 (0: middle,
+  // +backlash/2: in contact pushing positive).
+  double initial_backlash_offset = 0.0;
 
   SimulatedEncoderParameters encoder1{};  // G1: motor encoder by default
   SimulatedEncoderParameters encoder2{SimulatedEncoderParameters::Shaft::kLoad};  // G2 / separate encoder

@@ -28,7 +28,7 @@
 //
 // Homing needs no hook: the correction is added to the offset of the actual-value chain, so homing (which
 // sets the chain's position) includes it, and reference marks are captured in the compensated coordinate.
-// After the power-up of an adjusted absolute encoder the side is the one of the adjustment:
+// After the power-up of an adjusted absolute encoder the side is the one of the adjustment: the axis calls
 // assume_contact(Backlash.DirectionAbsoluteHoming) (spec 02 §5.11 Mode 6/7).
 //
 // Real time: noexcept, no allocation, O(1) per cycle.
