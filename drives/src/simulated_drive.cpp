@@ -98,8 +98,10 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
         (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
   }
   load_position_ = p_.initial_load_position;
-  motor_revolutions_ =
-      load_position_ / p_.load_units_per_revolution * (p_.gear_motor_revolutions / p_.gear_load_revolutions);
+  const double half_gap = std::max(0.0, 0.5 * p_.backlash);
+  gap_ = std::clamp(p_.initial_backlash_offset, -half_gap, half_gap);
+  motor_revolutions_ = (load_position_ + gap_) / p_.load_units_per_revolution *
+                       (p_.gear_motor_revolutions / p_.gear_load_revolutions);
   power_cycle();
 }
 
@@ -318,7 +320,13 @@ double SimulatedDrive::torque_limit_negative() const noexcept {
 
 void SimulatedDrive::integrate(double dt) noexcept {
   const double ratio = r_.ratio;  // motor rev per load rev
-  const double inertia = r_.inertia;
+  // With backlash the motor drives the load only in contact and moving into it; inside the gap it turns
+  // alone.
+  const double half_gap = 0.5 * p_.backlash;
+  const double drive_direction = omega_ != 0.0 ? omega_ : cycle_speed_setpoint_rpm_;
+  const bool coupled = half_gap <= 0.0 || (gap_ >= half_gap && drive_direction > 0.0) ||
+                       (gap_ <= -half_gap && drive_direction < 0.0);
+  const double inertia = coupled ? r_.inertia : p_.motor_inertia_kgm2;
 
   if (config_.drive_telegram == 0) {  // encoder-only device: the shaft moves as told
     load_position_ += external_speed_ * dt;
@@ -397,15 +405,31 @@ void SimulatedDrive::integrate(double dt) noexcept {
   const double delta_motor_revolutions = 0.5 * (omega_ + omega_next) * dt / kTwoPi;
   omega_ = omega_next;
   motor_revolutions_ += delta_motor_revolutions;
-  load_position_ += delta_motor_revolutions / ratio * p_.load_units_per_revolution;
+  const double motor_travel = delta_motor_revolutions / ratio * p_.load_units_per_revolution;
+  if (half_gap > 0.0) {
+    // Dead band (play): the load moves only by what the motor travels beyond the gap.
+    const double before = load_position_;
+    gap_ += motor_travel;
+    if (gap_ > half_gap) {
+      load_position_ += gap_ - half_gap;
+      gap_ = half_gap;
+    } else if (gap_ < -half_gap) {
+      load_position_ += gap_ + half_gap;
+      gap_ = -half_gap;
+    }
+    load_speed_ = (load_position_ - before) / dt;
+  } else {
+    load_position_ += motor_travel;
+  }
 
   // Mechanical end stops: the load cannot pass; the motor shaft (rigid coupling) stops with it.
   const auto& m = p_.machine;
   blocked_ = false;
   auto stop_at = [&](double stop) {
     load_position_ = stop;
-    motor_revolutions_ = stop / p_.load_units_per_revolution * ratio;
+    motor_revolutions_ = (stop + gap_) / p_.load_units_per_revolution * ratio;
     omega_ = 0.0;
+    load_speed_ = 0.0;
     blocked_ = true;
   };
   if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0)
@@ -420,6 +444,7 @@ double SimulatedDrive::motor_speed_rpm() const noexcept {
 
 double SimulatedDrive::load_speed() const noexcept {
   if (config_.drive_telegram == 0) return external_speed_;
+  if (p_.backlash > 0.0) return load_speed_;
   const double ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;
   return omega_ / kTwoPi / ratio * p_.load_units_per_revolution;
 }

@@ -446,6 +446,15 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule) noexcept
   }
 }
 
+void ActualValueChain::shift_offset(double delta) noexcept {
+  if (problem_ || !std::isfinite(delta) || delta == 0.0) return;
+  offset_ += delta;
+  if (!axis_.Modulo.Enable) return;
+  const std::int64_t k = cycle_index(continuous_position());
+  add_cycles(k - cycle_index_);
+  cycle_index_ = k;
+}
+
 double ActualValueChain::continuous_position() const noexcept {
   return static_cast<double>(tracker_.counts()) * units_per_count_ + offset_;
 }

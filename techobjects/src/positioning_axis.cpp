@@ -76,6 +76,12 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   }
   configure_components();
   if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
+  // Backlash compensation exists for motor-shaft encoders only (spec 01 §5.2, §5.9, spec 04 §3.6).
+  if (start_.Sensor[op - 1].Backlash.Enable &&
+      start_.Sensor[op - 1].MountingMode != static_cast<std::int32_t>(EncoderMounting::kMotorShaft)) {
+    fail("Sensor[" + std::to_string(op) + "].Backlash.Enable",
+         "backlash compensation needs the encoder on the motor shaft (MountingMode 0)");
+  }
   if (start_.PositionControl.EnableDSC && device_ != nullptr &&
       !carries(device_->adapter->config().drive_telegram, tg::Signal::G1_XIST1)) {
     fail("PositionControl.EnableDSC", "DSC needs drive telegram 5, 6, 105 or 106");
@@ -130,6 +136,19 @@ void PositioningAxis::configure_components() noexcept {
   configure_extrapolation();
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
   hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
+  configure_backlash_and_filter();
+}
+
+// Backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6): DIR variables, re-read after a
+// user-program write; both keep their state unless Backlash.Enable/Size change (which needs re-homing).
+void PositioningAxis::configure_backlash_and_filter() noexcept {
+  const auto& s = db_.Sensor[db_.PositionControl.InitialOperativeSensor - 1];
+  const bool motor_shaft = s.MountingMode == static_cast<std::int32_t>(EncoderMounting::kMotorShaft);
+  (void)backlash_.configure(BacklashConfig{s.Backlash.Enable && motor_shaft && device_ != nullptr,
+                                           s.Backlash.Size, s.Backlash.Velocity / units_.velocity,
+                                           servo_cycle_s_});
+  const auto& f = db_.SetpointFilter.DynamicFilter;
+  (void)dynamic_filter_.configure(DynamicFilterConfig{f.Mode, f.T1, f.T2, f.Tt, servo_cycle_s_});
 }
 
 // Extrapolation of the actual value as a leading value (spec 07 §1.4): T_ext = leading-axis part (T_i + T_ipo
@@ -740,6 +759,7 @@ WriteResult PositioningAxis::write(std::string_view path, double value) noexcept
     if (path.starts_with("PositionLimits_SW.")) {
       software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
     }
+    if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
     if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
         path.starts_with("FollowingError.")) {
       PositionControlConfig pc = controller_.config();

@@ -42,10 +42,19 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
       r.MeasuringRangeCount = retained_.MeasuringRangeCount;
       r.LastAbsoluteValue = retained_.LastAbsoluteValue;
       encoder_.chain().power_up(&r);
+      // The backlash was crossed in DirectionAbsoluteHoming before the adjustment (spec 02 §5.11 Mode 6/7).
+      backlash_.assume_contact(
+          db_.Sensor[db_.OperativeSensor - 1].Backlash.DirectionAbsoluteHoming == 0 ? 1 : -1);
     }
   }
+  // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
+  // virtual axis takes from x_f.
+  filtered_ = dynamic_filter_.update(setpoint_, !follows_actual() && position_controlled_);
   if (device_ != nullptr) {
     read_actual_values();
+    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value.
+    actual_position_ += backlash_.compensate(encoder_.chain(), actual_valid_,
+                                             !follows_actual() && position_controlled_, filtered_.velocity);
   } else {
     simulate_actual_values();
   }
@@ -137,12 +146,12 @@ void PositioningAxis::simulate_actual_values() noexcept {
     const double tt = pc.Kpc > 0.0
                           ? ipo_cycle_s_ + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
                           : ipo_cycle_s_ + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
-    simulation_delay_.push(setpoint_.position);
+    simulation_delay_.push(filtered_.position);
     actual_position_ = simulation_delay_.delayed(tt / servo_cycle_s_);
     actual_velocity_ = (actual_position_ - previous) / servo_cycle_s_;
   } else {
-    actual_position_ = setpoint_.position;
-    actual_velocity_ = setpoint_.velocity;
+    actual_position_ = filtered_.position;  // x_f: "the dynamic filter is active" (seed 004 §6.1.5)
+    actual_velocity_ = filtered_.velocity;
   }
   actual_valid_ = true;
   db_.StatusDrive.InOperation = phase_ == PowerPhase::kEnabled;
@@ -164,10 +173,10 @@ void PositioningAxis::control() noexcept {
     // simulated delay leaves (0 on a virtual axis, whose actual value is the setpoint of the cycle before).
     controller_.reset();
     out.following_error = db_.VirtualAxis.Mode == kModeOn ? 0.0 : setpoint_.position - actual_position_;
-    velocity = setpoint_.velocity;
+    velocity = filtered_.velocity;
   } else if (active && position_controlled_) {
     out = controller_.update(
-        PositionControlInput{setpoint_.position, setpoint_.position, setpoint_.velocity, actual_position_});
+        PositionControlInput{setpoint_.position, filtered_.position, filtered_.velocity, actual_position_});
     velocity = out.velocity_setpoint;
   } else {
     controller_.reset();
@@ -175,7 +184,7 @@ void PositioningAxis::control() noexcept {
   }
   db_.StatusServo.BalancedPosition = active && position_controlled_ ? out.balanced_position : 0.0;
   db_.StatusServo.ControlDifference = out.control_difference;
-  db_.StatusServo.PositionAfterDynamicFilter = setpoint_.position;
+  db_.StatusServo.PositionAfterDynamicFilter = filtered_.position;
   db_.StatusPositioning.FollowingError = active && position_controlled_ ? out.following_error : 0.0;
   if (device_ == nullptr) {
     db_.VelocitySetpoint = 0.0;  // spec 01 §2.5 table
@@ -282,6 +291,7 @@ void PositioningAxis::shift_position(double delta) noexcept {
   positioning_target_ += delta;
   limit_stop_position_ += delta;
   controller_.reset();  // the delay lines refill with the shifted setpoint: no following-error step
+  dynamic_filter_.shift(delta);
   simulation_delay_.fill(setpoint_.position);
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
 }
@@ -737,19 +747,23 @@ void PositioningAxis::update_status() noexcept {
   const double start = db_.Modulo.StartValue;
   const double length = db_.Modulo.Length;
   // Setpoints and actual values as the data block shows them (spec 04 §2): modulo-wrapped, data units.
+  // While the backlash is crossed, ActualPosition keeps its value (spec 04 §5.2 StatusWord2.X2).
+  const double shown_actual = actual_position_ - backlash_.held_travel();
   if (modulo()) {
     const ModuloPosition sp = modulo_wrap(setpoint_.position, start, length);
-    const ModuloPosition act = modulo_wrap(actual_position_, start, length);
+    const ModuloPosition act = modulo_wrap(shown_actual, start, length);
     db_.Position = sp.position;
     db_.ActualPosition = act.position;
     // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
     // the cycles between them.
-    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() : act.cycle;
+    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() + act.cycle -
+                                                               cycle_index(actual_position_, start, length)
+                                                         : act.cycle;
     db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
     db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
   } else {
     db_.Position = setpoint_.position;
-    db_.ActualPosition = actual_position_;
+    db_.ActualPosition = shown_actual;
     db_.ModuloCycle = 0;
     db_.ActualModuloCycle = 0;
   }
@@ -809,6 +823,7 @@ void PositioningAxis::update_status() noexcept {
   db_.StatusWord = sw;
   db_.StatusWord2 = 0;
   assign(db_.StatusWord2, StatusWord2Bit::kStopCommand, stop_.id != 0);
+  assign(db_.StatusWord2, StatusWord2Bit::kPassingBacklash, backlash_.passing());
 
   std::uint32_t ew = limit_bits.error_word();
   std::uint32_t ww = limit_bits.warning_word();
@@ -885,6 +900,7 @@ void PositioningAxis::restart() noexcept {
   } else {
     homed_ = false;
     actual_position_ = 0.0;
+    backlash_.reset();  // not homed: the first motion is not compensated (spec 01 §5.9)
   }
   setpoint_ = MotionState{actual_position_, 0.0, 0.0};
   drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;

@@ -175,5 +175,58 @@ TEST(MachineSim, LinkLossSetpointTimeoutAndRecovery) {
   EXPECT_EQ(h.drive.active_fault(), 0u);
 }
 
+// Backlash between motor and load (docs/simulated-drive.md, the machine spec 01 §5.9 compensates): 2° of
+// play, the motor starting in the middle of it. Motor position from G1_XIST1 (motor encoder, 2^22 counts per
+// revolution, 8.6e-5° each), load position from the model. The load stands until the motor has crossed half
+// the play, then follows 1° behind; after a reversal it stands while the motor crosses the whole play (its
+// speed is 0 meanwhile) and then follows 1° ahead.
+TEST(MachineSim, BacklashIsADeadBandBetweenMotorAndLoad) {
+  SimulatedDriveParameters p;
+  p.backlash = 2.0;
+  Harness h(drive_config(3), p);
+  h.power_up_to_s4();
+  const double count = 360.0 / 4194304.0;
+  auto motor = [&] { return static_cast<double>(h.actual.G1_XIST1) * count; };
+  h.speed_rpm(30.0);  // 180°/s
+  const int started = h.run_until([&] { return h.drive.load_position() > 0.0; }, 200);
+  ASSERT_LE(started, 200);
+  EXPECT_NEAR(motor() - h.drive.load_position(), 1.0, 2 * count);
+  EXPECT_NEAR(h.drive.backlash_offset(), 1.0, 1e-12);
+  h.run(200);
+  EXPECT_NEAR(motor() - h.drive.load_position(), 1.0, 2 * count);
+  EXPECT_NEAR(h.drive.load_speed(), 180.0, 0.5);
+
+  h.speed_rpm(-30.0);
+  h.run_until([&] { return h.nist_rpm() < 0.0; }, 100);  // the motor has turned round
+  const double load = h.drive.load_position();
+  int standing = 0;
+  while (motor() > load - 1.0 + 2 * count && standing < 100) {
+    EXPECT_EQ(h.drive.load_position(), load);
+    EXPECT_EQ(h.drive.load_speed(), 0.0);
+    h.cycle();
+    ++standing;
+  }
+  // 2° at 180°/s = 11 ms, the motor still accelerating from the reversal: 12 ± 3 cycles.
+  EXPECT_NEAR(standing, 12, 3);
+  h.run(50);
+  EXPECT_NEAR(h.drive.load_position() - motor(), 1.0, 2 * count);
+  EXPECT_NEAR(h.drive.load_speed(), -180.0, 0.5);
+}
+
+// A fixed stop with backlash: the load stops at the stop, the motor half the play beyond it.
+TEST(MachineSim, FixedStopWithBacklash) {
+  SimulatedDriveParameters p;
+  p.backlash = 2.0;
+  p.machine.positive_fixed_stop = 10.0;
+  Harness h(drive_config(3), p);
+  h.power_up_to_s4();
+  h.speed_rpm(30.0);
+  ASSERT_LE(h.run_until([&] { return h.drive.machine_inputs().at_fixed_stop; }, 500), 500);
+  h.run(5);
+  EXPECT_EQ(h.drive.load_position(), 10.0);
+  EXPECT_NEAR(static_cast<double>(h.actual.G1_XIST1) * 360.0 / 4194304.0, 11.0, 2 * 360.0 / 4194304.0);
+  EXPECT_EQ(h.drive.load_speed(), 0.0);
+}
+
 }  // namespace
 }  // namespace tomc::drives::test

@@ -188,6 +188,8 @@ TEST(ScenarioDrive, ModelParameters) {
             std::string::npos);
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "initial_load_position": null})")),
             "technology_objects[0].drive.initial_load_position: expected a number, got null");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "backlash": -0.1})")),
+            "technology_objects[0].drive.backlash: -0.1 out of range: must be at least 0");
 }
 
 TEST(ScenarioDrive, EncodersAndMachine) {
@@ -225,7 +227,8 @@ TEST(ScenarioDrive, EveryFieldIsRead) {
       "setpoint_timeout_cycles": 7, "communication_fault_reaction": "OFF1", "speed_loop_time_constant_s": 0.004,
       "motor_inertia_kgm2": 0.001, "load_inertia_kgm2": 0.01, "viscous_friction_nm_per_rad_s": 0.002,
       "coulomb_friction_nm": 0.1, "gear_motor_revolutions": 3, "gear_load_revolutions": 1,
-      "load_units_per_revolution": 10, "initial_load_position": -4,
+      "load_units_per_revolution": 10, "initial_load_position": -4, "backlash": 0.05,
+      "initial_backlash_offset": -0.025,
       "encoder1": { "shaft": "load", "linear": true, "resolution": 0.01, "steps_per_revolution": 4096,
                     "fine_resolution_xist1": 2, "fine_resolution_xist2": 3, "determinable_revolutions": 0,
                     "xist1_width_bits": 16, "xist1_at_power_on": "0x100", "reference_mark_interval_revolutions": 2,
@@ -266,6 +269,8 @@ TEST(ScenarioDrive, EveryFieldIsRead) {
   EXPECT_DOUBLE_EQ(p.gear_load_revolutions, 1);
   EXPECT_DOUBLE_EQ(p.load_units_per_revolution, 10);
   EXPECT_DOUBLE_EQ(p.initial_load_position, -4);
+  EXPECT_DOUBLE_EQ(p.backlash, 0.05);
+  EXPECT_DOUBLE_EQ(p.initial_backlash_offset, -0.025);
   EXPECT_EQ(p.encoder1.shaft, tomc::drives::SimulatedEncoderParameters::Shaft::kLoad);
   EXPECT_TRUE(p.encoder1.linear);
   EXPECT_DOUBLE_EQ(p.encoder1.resolution, 0.01);

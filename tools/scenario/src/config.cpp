@@ -330,6 +330,8 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
   r.real("gear_load_revolutions", p.gear_load_revolutions, detail::kPositive);
   r.real("load_units_per_revolution", p.load_units_per_revolution, detail::kPositive);
   r.real("initial_load_position", p.initial_load_position);
+  r.real("backlash", p.backlash, detail::kNonNegative);
+  r.real("initial_backlash_offset", p.initial_backlash_offset);
   if (const Json* v = r.get("encoder1")) load_encoder(*v, r.path_of("encoder1"), p.encoder1, problems);
   if (const Json* v = r.get("encoder2")) load_encoder(*v, r.path_of("encoder2"), p.encoder2, problems);
   if (const Json* v = r.get("machine")) load_machine(*v, r.path_of("machine"), p.machine, problems);

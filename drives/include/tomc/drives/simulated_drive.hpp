@@ -84,6 +84,12 @@ struct SimulatedDriveParameters {
   double gear_load_revolutions = 1.0;             // ... per load revolutions
   double load_units_per_revolution = 360.0;       // degrees (rotary) or leadscrew pitch in mm (linear)
   double initial_load_position = 0.0;             // load units
+  // Backlash between motor and load (load units, >= 0): after a reversal the motor crosses this dead band
+  // before the load moves.
+  double backlash = 0.0;
+  // Where the motor stands in it at power-on: motor − load in load units, limited to ±backlash/2 (0: middle,
+  // +backlash/2: in contact pushing positive).
+  double initial_backlash_offset = 0.0;
 
   SimulatedEncoderParameters encoder1{};  // G1: motor encoder by default
   SimulatedEncoderParameters encoder2{SimulatedEncoderParameters::Shaft::kLoad};  // G2 / separate encoder
@@ -135,6 +141,9 @@ class SimulatedDrive final : public DriveAdapter {
   double motor_speed_rpm() const noexcept;
   double motor_torque_nm() const noexcept { return torque_; }
   double load_position() const noexcept { return load_position_; }
+  // Backlash: where the motor stands relative to the load, −backlash/2 ... +backlash/2 (+: in contact pushing
+  // positive). 0 without backlash.
+  double backlash_offset() const noexcept { return gap_; }
   double load_speed() const noexcept;  // load units per second
   MachineInputs machine_inputs() const noexcept;
   const SimulatedDriveParameters& parameters() const noexcept { return p_; }
@@ -204,6 +213,8 @@ class SimulatedDrive final : public DriveAdapter {
   double load_position_ = 0.0;
   double torque_ = 0.0;          // motor torque, Nm
   double stall_integral_ = 0.0;  // speed-controller integral while blocked at a fixed stop
+  double gap_ = 0.0;             // backlash: motor position − load position (load units), ±backlash/2
+  double load_speed_ = 0.0;      // with backlash: the load's speed in the last substep (load units/s)
   bool blocked_ = false;
   double external_speed_ = 0.0;
   double dsc_xist1_at_sample_ = 0.0;  // G1 counts at the cycle start (DSC reference)

@@ -5,7 +5,7 @@
 //
 // Spec 01 §2.3–§2.4.1 (units, modulo, modulo cycle counter), §3.6–§3.9 (reference speed, encoder types and
 // parameters, BehaviorGx_XIST1, NIST_B), §5.2–§5.8 (mechanics), spec 06 §6 (XIST1/XIST2), §7 (XERR).
-// Backlash (spec 01 §5.9) is not part of this module.
+// Backlash (spec 01 §5.9) is a separate component (backlash.hpp) that shifts this chain's offset.
 //
 // Units: positions are in the axis' position unit, which this module takes to be mm (linear) or ° (rotary);
 // LeadScrew is in mm/rev (spec 01 §2.3 leadscrew table for mm), Modulo and DistancePerRevolution are in the
@@ -233,6 +233,9 @@ class ActualValueChain {
   // Homing / absolute encoder adjustment: the actual position becomes `position` (direct set). Incremental:
   // homing offset; absolute types: new AbsEncoderOffset.
   void set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance) noexcept;
+  // Backlash compensation (backlash.hpp): the position moves by `delta` without motion of the encoder; the
+  // modulo cycle counter follows a crossed range boundary like a motion.
+  void shift_offset(double delta) noexcept;
 
   // MC_Reset(Restart = TRUE), spec 01 §2.4.1: incremental as power-up (position 0, counter 0); absolute
   // encoders keep counter and offset; the next Gx_XIST2 re-anchors the position.

@@ -25,7 +25,9 @@
 #include "tomc/techobjects/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
+#include "tomc/techobjects/backlash.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
+#include "tomc/techobjects/dynamic_filter.hpp"
 #include "tomc/techobjects/encoder_channel.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
@@ -141,6 +143,10 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
+  // The same after the dynamic filter, as the position controller used it in the last servo cycle.
+  const MotionState& filtered_setpoint() const noexcept { return filtered_; }
+  const BacklashCompensation& backlash() const noexcept { return backlash_; }
+  const DynamicFilter& dynamic_filter() const noexcept { return dynamic_filter_; }
   double continuous_actual_position() const noexcept { return actual_position_; }
   bool position_controlled() const noexcept { return position_controlled_; }
   const AxisUnitFactors& units() const noexcept { return units_; }
@@ -251,6 +257,7 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
+  void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
   void configure_extrapolation() noexcept;
   // jobs
   JobId new_job(JobKind kind, JobState state) noexcept { return jobs_.create(kind, state); }
@@ -323,6 +330,10 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   limits::SoftwareLimitMonitor software_limits_;
   limits::HardwareLimitMonitor hardware_limits_;
   SetpointDelayLine simulation_delay_{};
+  // ---- backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6) ----
+  BacklashCompensation backlash_;
+  DynamicFilter dynamic_filter_;
+  MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
   ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
 
   // power
