@@ -560,6 +560,15 @@ TEST(ScenarioLoader, TraceNames) {
       problem_of(traced("Axis1.drive.temperature")),
       "trace[0]: 'temperature' is not a drive value (state, active_fault, motor_speed_rpm, motor_torque_nm, "
       "load_position, load_speed)");
+  EXPECT_EQ(problem_of(traced("Axis1.alarm.999")), "trace[0]: alarm 999 is not defined (docs/errors.md)");
+  EXPECT_EQ(problem_of(traced("Axis1.alarm.560.additional")),
+            "trace[0]: 'alarm.560.additional' is not an alarm trace name ('alarm.<number>' or "
+            "'alarm.<number>.additional_value')");
+  EXPECT_EQ(problem_of(traced("Axis1.alarm.")),
+            "trace[0]: 'alarm.' is not an alarm trace name ('alarm.<number>' or "
+            "'alarm.<number>.additional_value')");
+  EXPECT_TRUE(problems_of(traced("Axis1.alarm.401")).empty());
+  EXPECT_TRUE(problems_of(traced("Axis1.alarm.401.additional_value")).empty());
   EXPECT_TRUE(problems_of(traced("Axis1.StatusWord.%X5")).empty());
   EXPECT_TRUE(problems_of(traced("power1.Enable")).empty());  // inputs can be traced too
   Json d = base();

@@ -132,6 +132,22 @@ TEST(ScenarioRun, EncoderErrorOfTheMotorEncoderFaultsTheDrive) {
   EXPECT_TRUE(s->run(nullptr).ok());
 }
 
+TEST(ScenarioRun, AlarmTraceNamesShowPendingAndAdditionalValue) {
+  // "<TO>.alarm.<n>" and "<TO>.alarm.<n>.additional_value": raised in cycle 50, acknowledged by MC_Reset.
+  auto s = enabled_axis_with(
+      R"({ "cycle": 50, "inject": { "target": "Axis1", "fault": "technology_alarm", "alarm": 501,
+                                    "additional_value": 7 } },
+         { "cycle": 60, "instance": "r", "instruction": "MC_Reset", "axis": "Axis1", "inputs": { "Execute": true } })",
+      R"([{ "cycle": 49, "values": { "Axis1.alarm.501": false, "Axis1.alarm.501.additional_value": 0 } },
+          { "cycle": 55, "values": { "Axis1.alarm.501": true, "Axis1.alarm.501.additional_value": 7,
+                                     "Axis1.alarm.401": false } },
+          { "cycle": 70, "values": { "Axis1.alarm.501": false, "Axis1.alarm.501.additional_value": 0 } }])");
+  ASSERT_TRUE(s);
+  const auto result = s->run(nullptr);
+  EXPECT_TRUE(result.ok()) << ::testing::PrintToString(result.failed_expectations);
+  EXPECT_EQ(result.expectations_checked, 7u);
+}
+
 TEST(ScenarioRun, SignOfLifeFreezeAndLinkLoss) {
   auto s = enabled_axis_with(
       R"({ "cycle": 50, "inject": { "target": "Axis1", "fault": "sign_of_life_freeze" } },

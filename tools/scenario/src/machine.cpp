@@ -170,6 +170,12 @@ bool MachineObject::inject_alarm(std::uint32_t number, std::uint32_t additional,
   return external_encoder->inject_alarm(number, additional, reaction);
 }
 
+const to::AlarmList& MachineObject::alarms() const noexcept {
+  if (speed_axis != nullptr) return speed_axis->alarms();
+  if (positioning_axis != nullptr) return positioning_axis->alarms();
+  return external_encoder->alarms();
+}
+
 const to::LeadingValueSource* MachineObject::leading_value_source() const noexcept {
   if (positioning_axis != nullptr) return positioning_axis;
   if (external_encoder != nullptr) return external_encoder;

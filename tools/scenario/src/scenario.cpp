@@ -217,6 +217,8 @@ struct Scenario::Impl {
   std::optional<std::size_t> find_object(std::string_view name) const;
   std::optional<std::size_t> find_instance(std::string_view name) const;
   std::optional<Column> resolve(std::string_view name, const std::string& path);
+  std::optional<Column> resolve_alarm(const TechnologyObjectEntry& entry, std::string_view alarm,
+                                      const std::string& path, Column column);
   std::optional<std::uint64_t> read_cycle(ObjectReader& r);
 
   // ---- running ----
@@ -689,6 +691,45 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
   fr.finish();
 }
 
+// "<TO>.alarm.<number>": 1 while that technology alarm is pending on the TO, else 0; "<TO>.alarm.<number>.
+// additional_value": its additional value (0 while not pending) — what the data block's ErrorDetail does not
+// show (e.g. the cause of alarm 560, decision H3).
+std::optional<Column> Scenario::Impl::resolve_alarm(const TechnologyObjectEntry& entry,
+                                                    std::string_view alarm, const std::string& path,
+                                                    Column column) {
+  constexpr std::string_view kAdditional = ".additional_value";
+  const bool additional = alarm.ends_with(kAdditional);
+  const std::string_view digits = additional ? alarm.substr(0, alarm.size() - kAdditional.size()) : alarm;
+  std::uint32_t number = 0;
+  const bool numeric = !digits.empty() && digits.size() <= 9 &&
+                       std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (numeric) {
+    for (char c : digits)
+      number = number * 10 + static_cast<std::uint32_t>(c - '0');
+  }
+  if (!numeric || to::find_alarm(number) == nullptr) {
+    problems.add(path, numeric ? "alarm " + std::string(digits) + " is not defined (docs/errors.md)"
+                               : "'alarm." + std::string(alarm) +
+                                     "' is not an alarm trace name ('alarm.<number>' or "
+                                     "'alarm.<number>.additional_value')");
+    return std::nullopt;
+  }
+  const to::AlarmList* list = &entry.alarms();
+  if (additional) {
+    column.format = Format::kInteger;
+    column.read = [list, number] {
+      for (const auto& a : list->alarms()) {
+        if (a.number == number) return static_cast<double>(a.additional_value);
+      }
+      return 0.0;
+    };
+  } else {
+    column.format = Format::kBool;
+    column.read = [list, number] { return list->pending(number) ? 1.0 : 0.0; };
+  }
+  return column;
+}
+
 std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::string& path) {
   const auto dot = name.find('.');
   if (dot == std::string_view::npos) {
@@ -721,6 +762,7 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       column.read = [drive, read = it->read] { return read(*drive); };
       return column;
     }
+    if (rest.starts_with("alarm.")) return resolve_alarm(entry, rest.substr(6), path, std::move(column));
     if (const to::VariableInfo* info = entry.find_variable(rest)) {
       column.format = format_of(info->type);
       column.read = entry.reader(info, std::nullopt);

@@ -53,6 +53,8 @@ struct MachineObject {
   techobjects::WriteResult write(std::string_view variable, double value) const noexcept;
   bool inject_alarm(std::uint32_t number, std::uint32_t additional,
                     techobjects::AlarmReaction reaction) const noexcept;
+  // The technology alarms of the TO (pending and history).
+  const techobjects::AlarmList& alarms() const noexcept;
   // The TO as a leading value (positioning/synchronous axis, external encoder); nullptr for a speed axis.
   const techobjects::LeadingValueSource* leading_value_source() const noexcept;
 };
