@@ -207,10 +207,13 @@ std::vector<DeviceReport> GatewayLink::connect(std::chrono::milliseconds timeout
     if (impl_->core->wait_until_heard(std::chrono::milliseconds(5))) break;
     // Stop waiting early when every silent device has a definite reason that waiting will not change.
     const auto reports = diagnose();
-    const bool settled = std::all_of(reports.begin(), reports.end(), [](const DeviceReport& r) {
-      return r.diagnosis == DeviceDiagnosis::kAnswering || r.diagnosis == DeviceDiagnosis::kNotServed ||
-             r.diagnosis == DeviceDiagnosis::kConfigMismatch;
-    });
+    // A gateway's status must be there too, so the reasons come from what it announces.
+    const bool settled = !gateways().empty() &&
+                         std::all_of(reports.begin(), reports.end(), [](const DeviceReport& r) {
+                           return r.diagnosis == DeviceDiagnosis::kAnswering ||
+                                  r.diagnosis == DeviceDiagnosis::kNotServed ||
+                                  r.diagnosis == DeviceDiagnosis::kConfigMismatch;
+                         });
     if (settled || std::chrono::steady_clock::now() >= deadline) break;
   }
   return diagnose();
@@ -330,8 +333,12 @@ std::vector<GatewayLink::GatewayInfo> GatewayLink::gateways() const {
     g.incarnation = s.incarnation();
     g.controller = s.controller();
     g.command_number = s.command_number();
-    for (const auto& d : s.devices())
-      g.devices.push_back(d.device().to_string());
+    for (const auto& d : s.devices()) {
+      static constexpr const char* kStates[] = {"connected", "faulted", "disconnected", "configuration mismatch"};
+      const auto state = static_cast<std::size_t>(d.state());
+      g.devices.push_back(GatewayDevice{d.device().to_string(), state < 4 ? kStates[state] : "invalid", d.fault(),
+                                        d.detail().to_string()});
+    }
     out.push_back(std::move(g));
   }
   return out;

@@ -23,6 +23,13 @@ namespace {
 
 constexpr const char* kLoopback = "127.0.0.1";
 
+// Reliable writers announce their samples every 50 ms instead of Fast DDS's 3 s: a status or command sample
+// lost before the reader had fully matched is repaired within a few cycles of the watchdog, not seconds later
+// (TOOLCHAIN §11.6).
+void fast_repair(fdds::DataWriterQos& qos) {
+  qos.reliable_writer_qos().times.heartbeatPeriod = eprosima::fastrtps::Duration_t(0, 50'000'000);
+}
+
 // A UDPv4 locator that is "any address" (the transport then uses its whitelisted interfaces) or on 127/8.
 bool is_loopback_or_any(const Locator_t& l) {
   if (l.kind != LOCATOR_KIND_UDPv4) return false;
@@ -124,6 +131,7 @@ fdds::DataWriterQos status_writer_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 1;
   qos.data_sharing().off();
+  fast_repair(qos);
   return qos;
 }
 
@@ -144,6 +152,7 @@ fdds::DataWriterQos command_writer_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 16;
   qos.data_sharing().off();
+  fast_repair(qos);
   return qos;
 }
 

@@ -90,8 +90,19 @@ GatewayCommander::~GatewayCommander() {
   impl_->participant.reset();
 }
 
-bool GatewayCommander::send(const std::string& gateway, Command command, std::uint64_t value,
-                            const std::string& device, std::chrono::milliseconds timeout) {
+bool GatewayCommander::wait_matched(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    fdds::PublicationMatchedStatus matched;
+    impl_->writer->get_publication_matched_status(matched);
+    if (matched.current_count > 0) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+std::uint64_t GatewayCommander::post(const std::string& gateway, Command command, std::uint64_t value,
+                                     const std::string& device, std::chrono::milliseconds timeout) {
   Impl& m = *impl_;
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   // The command topic is volatile: wait until a simulator's reader has matched, or the command is lost.
@@ -99,7 +110,7 @@ bool GatewayCommander::send(const std::string& gateway, Command command, std::ui
     fdds::PublicationMatchedStatus matched;
     m.writer->get_publication_matched_status(matched);
     if (matched.current_count > 0) break;
-    if (std::chrono::steady_clock::now() >= deadline) return false;
+    if (std::chrono::steady_clock::now() >= deadline) return 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   gw::GatewayCommand c;
@@ -108,11 +119,27 @@ bool GatewayCommander::send(const std::string& gateway, Command command, std::ui
   c.kind(static_cast<gw::CommandKind>(command));
   c.value(value);
   c.device(device);
-  if (!m.writer->write(&c)) return false;
+  return m.writer->write(&c) ? c.number() : 0;
+}
+
+bool GatewayCommander::applied(std::uint64_t number, const std::string& gateway) const {
+  std::lock_guard<std::mutex> lock(impl_->listener.mutex);
+  for (const auto& [name, n] : impl_->listener.applied) {
+    if (n == number && (gateway.empty() || name == gateway)) return true;
+  }
+  return false;
+}
+
+bool GatewayCommander::send(const std::string& gateway, Command command, std::uint64_t value,
+                            const std::string& device, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  const std::uint64_t number = post(gateway, command, value, device, timeout);
+  if (number == 0) return false;
+  Impl& m = *impl_;
   std::unique_lock<std::mutex> lock(m.listener.mutex);
   return m.listener.cv.wait_until(lock, deadline, [&] {
-    for (const auto& [name, number] : m.listener.applied) {
-      if (number == c.number() && (gateway.empty() || name == gateway)) return true;
+    for (const auto& [name, n] : m.listener.applied) {
+      if (n == number && (gateway.empty() || name == gateway)) return true;
     }
     return false;
   });

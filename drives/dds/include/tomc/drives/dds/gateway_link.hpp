@@ -83,12 +83,18 @@ class GatewayLink : public std::enable_shared_from_this<GatewayLink> {
   std::uint64_t controller_id() const noexcept;
   ExchangeCore& core() noexcept;
   // Gateways whose status was received: name, incarnation, served device names (for diagnostics and tests).
+  struct GatewayDevice {
+    std::string name;
+    std::string state;  // "connected", "faulted", "disconnected", "configuration mismatch"
+    std::uint32_t fault = 0;
+    std::string detail;
+  };
   struct GatewayInfo {
     std::string name;
     std::uint64_t incarnation = 0;
     std::uint64_t controller = 0;
     std::uint64_t command_number = 0;
-    std::vector<std::string> devices;
+    std::vector<GatewayDevice> devices;
   };
   std::vector<GatewayInfo> gateways() const;
 
