@@ -10,6 +10,7 @@
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/exchange_core.hpp"
 #include "tomc/drives/dds/latest_value.hpp"
+#include "tomc/drives/dds/type_support.hpp"
 #include "tomc/telegrams/layout.hpp"
 
 namespace {
@@ -357,6 +358,33 @@ TEST(ExchangeCore, SetUpErrors) {
   EXPECT_THROW(ExchangeCore(ExchangeOptions{0, 1, 1}), std::invalid_argument);
   ExchangeCore empty(ExchangeOptions{kController, 1'000'000, 1});
   EXPECT_THROW(empty.freeze(), std::invalid_argument);
+}
+
+// Found by the fuzzer: the generated type support let Fast CDR's BadParamException (a malformed encapsulation)
+// escape into the listener thread. The checked type support returns false and leaves a default sample, which
+// route() rejects (contract version 0).
+TEST(ExchangeCore, MalformedPayloadIsRejectedNotThrown) {
+  Fixture f(1);
+  ActualCycleType type;
+  gw::ActualCycle sample = f.gateway.answer(f.core, 0, false, 0, 1);
+  eprosima::fastrtps::rtps::SerializedPayload_t payload(64);
+  std::memset(payload.data, 0x0A, 64);  // encapsulation byte 0x0A: not CDR
+  payload.length = 64;
+  bool ok = true;
+  EXPECT_NO_THROW(ok = type.deserialize(&payload, &sample));
+  EXPECT_FALSE(ok);
+  EXPECT_EQ(sample.contract_version(), 0u);
+  f.core.route(sample, 0);
+  EXPECT_EQ(f.core.statistics().samples_rejected, 1u);
+
+  // And a well-formed payload still reads back.
+  const gw::ActualCycle good = f.gateway.answer(f.core, 0, false, 0, 0x42);
+  eprosima::fastrtps::rtps::SerializedPayload_t buffer(type.getSerializedSizeProvider(const_cast<gw::ActualCycle*>(&good))());
+  ASSERT_TRUE(type.serialize(const_cast<gw::ActualCycle*>(&good), &buffer));
+  ASSERT_TRUE(type.deserialize(&buffer, &sample));
+  f.core.route(sample, 0);
+  EXPECT_TRUE(f.cycle());
+  EXPECT_EQ(f.first_actual_byte(), 0x42);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@
 
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
-#include "tomc_gatewayPubSubTypes.h"
+#include "tomc/drives/dds/type_support.hpp"
 
 namespace tomc::drives::dds {
 
@@ -114,9 +114,9 @@ struct GatewayLink::Impl {
   std::unique_ptr<ActualListener> actual_listener;
   StatusListener status_listener;
   std::unique_ptr<Participant> participant;
-  fdds::TypeSupport setpoint_type{new gateway::SetpointCyclePubSubType()};
-  fdds::TypeSupport actual_type{new gateway::ActualCyclePubSubType()};
-  fdds::TypeSupport status_type{new gateway::GatewayStatusPubSubType()};
+  fdds::TypeSupport setpoint_type{new SetpointCycleType()};
+  fdds::TypeSupport actual_type{new ActualCycleType()};
+  fdds::TypeSupport status_type{new GatewayStatusType()};
   fdds::DataWriter* setpoint_writer = nullptr;
   fdds::DataReader* actual_reader = nullptr;
   fdds::DataReader* status_reader = nullptr;

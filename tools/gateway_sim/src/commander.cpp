@@ -13,8 +13,9 @@
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
 
+#include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
-#include "tomc_gatewayPubSubTypes.h"
+#include "tomc/drives/dds/type_support.hpp"
 
 namespace tomc::gateway_sim {
 
@@ -33,7 +34,7 @@ class StatusListener final : public fdds::DataReaderListener {
     gw::GatewayStatus status;
     fdds::SampleInfo info;
     while (reader->take_next_sample(&status, &info) == ReturnCode_t::RETCODE_OK) {
-      if (!info.valid_data) continue;
+      if (!info.valid_data || status.contract_version() != dds::kContractVersion) continue;
       {
         std::lock_guard<std::mutex> lock(mutex);
         applied.emplace_back(status.gateway().to_string(), status.command_number());
@@ -63,8 +64,8 @@ std::string_view to_string(Command command) noexcept {
 struct GatewayCommander::Impl {
   StatusListener listener;  // before the participant: destroyed after it
   std::unique_ptr<dds::Participant> participant;
-  fdds::TypeSupport command_type{new gw::GatewayCommandPubSubType()};
-  fdds::TypeSupport status_type{new gw::GatewayStatusPubSubType()};
+  fdds::TypeSupport command_type{new dds::GatewayCommandType()};
+  fdds::TypeSupport status_type{new dds::GatewayStatusType()};
   fdds::DataWriter* writer = nullptr;
   std::uint64_t next_number = 0;
 };

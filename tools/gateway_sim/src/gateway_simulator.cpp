@@ -24,7 +24,7 @@
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
 #include "tomc/drives/simulated_drive.hpp"
-#include "tomc_gatewayPubSubTypes.h"
+#include "tomc/drives/dds/type_support.hpp"
 
 namespace tomc::gateway_sim {
 
@@ -89,10 +89,10 @@ struct GatewaySimulator::Impl {
   std::unique_ptr<fdds::DataReaderListener> setpoint_listener;
   std::unique_ptr<fdds::DataReaderListener> command_listener;
   std::unique_ptr<dds::Participant> participant;
-  fdds::TypeSupport setpoint_type{new gw::SetpointCyclePubSubType()};
-  fdds::TypeSupport actual_type{new gw::ActualCyclePubSubType()};
-  fdds::TypeSupport status_type{new gw::GatewayStatusPubSubType()};
-  fdds::TypeSupport command_type{new gw::GatewayCommandPubSubType()};
+  fdds::TypeSupport setpoint_type{new dds::SetpointCycleType()};
+  fdds::TypeSupport actual_type{new dds::ActualCycleType()};
+  fdds::TypeSupport status_type{new dds::GatewayStatusType()};
+  fdds::TypeSupport command_type{new dds::GatewayCommandType()};
   fdds::DataWriter* actual_writer = nullptr;
   fdds::DataWriter* status_writer = nullptr;
 
@@ -293,6 +293,7 @@ struct GatewaySimulator::Impl {
 
   void on_command(const gw::GatewayCommand& command) {
     if (stop.load()) return;
+    if (command.number() == 0) return;  // malformed (type_support.hpp) or not from a commander
     if (command.gateway().size() != 0 && !(command.gateway() == config.gateway)) return;
     std::lock_guard<std::mutex> lock(mutex);
     const Clock::time_point now = Clock::now();
