@@ -296,6 +296,14 @@ std::string ExchangeCore::last_mismatch(std::size_t device) const {
   return devices_.at(device)->mismatch;
 }
 
+void ExchangeCore::reset_round_trips() noexcept {
+  if (!round_trip_histogram_) return;
+  for (auto& b : *round_trip_histogram_)
+    b.store(0, std::memory_order_relaxed);
+  round_trips_.store(0, std::memory_order_relaxed);
+  round_trip_max_ns_.store(0, std::memory_order_relaxed);
+}
+
 ExchangeStatistics ExchangeCore::statistics() const {
   ExchangeStatistics s;
   s.cycles_sent = cycles_sent();

@@ -113,6 +113,8 @@ class ExchangeCore {
   // The newest mismatch the listener found for the device ("slot drive: telegram 2, expected 3"), or "".
   std::string last_mismatch(std::size_t device) const;
   ExchangeStatistics statistics() const;
+  // Starts the round-trip statistics afresh (e.g. after a warm-up); the other counters keep counting.
+  void reset_round_trips() noexcept;
 
  private:
   // The newest answer for one device, as the listener hands it to the cyclic thread.
