@@ -1,9 +1,9 @@
 // The Fast DDS gateway exchange (issue 8, docs/performance.md): a `tomc gateway-sim` process with 1, 16 or 64
 // simulated drives (telegram 105 + 750) and this process as the controller, on loopback.
 //
-// Per cycle the benchmark runs the adapters' cyclic part — read_actual() and write_setpoint() of every device,
-// what Runtime::step() calls — and times only that (manual time: the cost on the cyclic thread). Then it waits
-// for the gateway's answer. Counters:
+// Per cycle the benchmark runs the adapters' cyclic part — read_actual() and write_setpoint() of every
+// device, what Runtime::step() calls — and times only that (manual time: the cost on the cyclic thread). Then
+// it waits for the gateway's answer. Counters:
 //   rtt_*_us   round trip of one cycle's exchange: from the cyclic thread publishing the cycle's setpoints to
 //              the listener having routed the last device's answer (ExchangeCore's histogram, 1 us buckets)
 //   missed     cycles whose answer did not arrive within 50 ms

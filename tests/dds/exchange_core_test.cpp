@@ -172,7 +172,7 @@ TEST(ExchangeCore, AnswerAgeLimit) {
   Fixture f(1);
   f.core.route(f.gateway.answer(f.core, 0, false, 0, 1), 0);
   for (int i = 0; i < 5; ++i)
-    f.cycle();  // cycles 0..4 sent
+    f.cycle();                                                         // cycles 0..4 sent
   f.core.route(f.gateway.answer(f.core, kController, true, 3, 2), 0);  // answers cycle 3 = one late
   EXPECT_TRUE(f.cycle());                                              // cycle 5
   f.core.route(f.gateway.answer(f.core, kController, true, 3, 3), 0);  // cycle 3 again, now two late
@@ -360,9 +360,9 @@ TEST(ExchangeCore, SetUpErrors) {
   EXPECT_THROW(empty.freeze(), std::invalid_argument);
 }
 
-// Found by the fuzzer: the generated type support let Fast CDR's BadParamException (a malformed encapsulation)
-// escape into the listener thread. The checked type support returns false and leaves a default sample, which
-// route() rejects (contract version 0).
+// Found by the fuzzer: the generated type support let Fast CDR's BadParamException (a malformed
+// encapsulation) escape into the listener thread. The checked type support returns false and leaves a default
+// sample, which route() rejects (contract version 0).
 TEST(ExchangeCore, MalformedPayloadIsRejectedNotThrown) {
   Fixture f(1);
   ActualCycleType type;
@@ -379,7 +379,8 @@ TEST(ExchangeCore, MalformedPayloadIsRejectedNotThrown) {
 
   // And a well-formed payload still reads back.
   const gw::ActualCycle good = f.gateway.answer(f.core, 0, false, 0, 0x42);
-  eprosima::fastrtps::rtps::SerializedPayload_t buffer(type.getSerializedSizeProvider(const_cast<gw::ActualCycle*>(&good))());
+  eprosima::fastrtps::rtps::SerializedPayload_t buffer(
+      type.getSerializedSizeProvider(const_cast<gw::ActualCycle*>(&good))());
   ASSERT_TRUE(type.serialize(const_cast<gw::ActualCycle*>(&good), &buffer));
   ASSERT_TRUE(type.deserialize(&buffer, &sample));
   f.core.route(sample, 0);

@@ -21,8 +21,8 @@
 
 namespace {
 
-using tomc::testing::GatewayProcess;
 using tomc::testing::gateway_config;
+using tomc::testing::GatewayProcess;
 using tomc::testing::test_directory;
 using tomc::testing::test_partition;
 
@@ -40,7 +40,8 @@ std::string slurp(const std::filesystem::path& p) {
 CliRun tomc_cli(const std::filesystem::path& dir, const std::string& arguments) {
   const auto out = dir / "stdout.txt";
   const auto err = dir / "stderr.txt";
-  const std::string command = std::string(TOMC_BINARY) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+  const std::string command =
+      std::string(TOMC_BINARY) + " " + arguments + " >" + out.string() + " 2>" + err.string();
   CliRun r;
   const int raw = std::system(command.c_str());
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -60,16 +61,19 @@ TEST(GatewayCli, ScenarioThroughTheGatewayGivesTheEmbeddedTrace) {
   auto& drive = doc["technology_objects"][0]["drive"];
   // The one change: the adapter. The answer timeout is generous so that a loaded CI machine cannot turn a
   // slow answer into a missed cycle (which would be a different, correct, trace).
-  drive["adapter"] = {{"type", "dds_gateway"}, {"domain", domain}, {"device", "axis1"},
-                      {"partition", test_partition()}, {"answer_timeout_s", 2.0}};
+  drive["adapter"] = {{"type", "dds_gateway"},
+                      {"domain", domain},
+                      {"device", "axis1"},
+                      {"partition", test_partition()},
+                      {"answer_timeout_s", 2.0}};
   std::ofstream(dir / "gateway_scenario.json") << doc.dump(2);
   const int telegram = drive["telegram"].get<int>();
   GatewayProcess gateway(dir, gateway_config(domain, {{"axis1", telegram}}));
 
   const CliRun embedded = tomc_cli(dir, "sim " + source + " --out " + (dir / "embedded.csv").string());
   ASSERT_EQ(embedded.status, 0) << embedded.err;
-  const CliRun through = tomc_cli(dir, "sim " + (dir / "gateway_scenario.json").string() + " --out " +
-                                        (dir / "gateway.csv").string());
+  const CliRun through = tomc_cli(
+      dir, "sim " + (dir / "gateway_scenario.json").string() + " --out " + (dir / "gateway.csv").string());
   ASSERT_EQ(through.status, 0) << through.err << gateway.log();
   EXPECT_EQ(through.err, "");  // no warning: the device answered
   const std::string a = slurp(dir / "embedded.csv");
@@ -85,7 +89,9 @@ TEST(GatewayCli, ScenarioWithoutAGatewayWarnsAndRaisesTheLinkAlarm) {
   const std::string scenario = R"({ "cycle_time": 0.001, "cycles": 10,
     "technology_objects": [ { "name": "Axis1", "type": "TO_SpeedAxis",
       "drive": { "telegram": 2, "adapter": { "type": "dds_gateway", "domain": 153, "device": "axis1",
-                 "partition": ")" + test_partition() + R"(", "connect_timeout_s": 0.3, "answer_timeout_s": 0.001 } } } ],
+                 "partition": ")" +
+                               test_partition() +
+                               R"(", "connect_timeout_s": 0.3, "answer_timeout_s": 0.001 } } } ],
     "expect": [ { "cycle": 9, "values": { "Axis1.ErrorDetail.Number": 405, "Axis1.StatusDrive.CommunicationOK": false } } ] })";
   std::ofstream(dir / "s.json") << scenario;
   const CliRun r = tomc_cli(dir, "sim " + (dir / "s.json").string());
@@ -142,7 +148,8 @@ TEST(GatewayCli, AdapterObjectProblemsNameTheirPaths) {
       "technology_objects[0].drive.adapter.byte_order: 'middle' is not one of big, little-bytes, "
       "swapped-words, little",
       "technology_objects[0].drive.adapter.x: unknown key",
-      "technology_objects[0].drive.motor_inertia_kgm2: a parameter of the simulated drive; with the dds_gateway "
+      "technology_objects[0].drive.motor_inertia_kgm2: a parameter of the simulated drive; with the "
+      "dds_gateway "
       "adapter the drive is the gateway's (for the gateway simulator: its --config file)",
       "technology_objects[1].drive.adapter: the gateway adapter is an object: {\"type\": \"dds_gateway\", "
       "\"domain\": 0, \"device\": \"<name at the gateway>\"}",

@@ -1,7 +1,7 @@
 #pragma once
 // Two-process test support: runs `tomc gateway-sim` as a child process (the binary comes from CMake as
-// TOMC_BINARY), records its PID, stops it by that PID — SIGTERM for a clean stop, SIGKILL to simulate a crash —
-// and makes sure it dies with the test (PR_SET_PDEATHSIG), so no simulator outlives a failed test.
+// TOMC_BINARY), records its PID, stops it by that PID — SIGTERM for a clean stop, SIGKILL to simulate a crash
+// — and makes sure it dies with the test (PR_SET_PDEATHSIG), so no simulator outlives a failed test.
 //
 // Every test uses its own DDS domain (TOOLCHAIN §8) and a partition unique to this process, so that two test
 // runs on the same machine (two build directories) do not talk to each other either.
@@ -46,8 +46,8 @@ inline std::string gateway_config(int domain, const std::vector<std::pair<std::s
   if (!extra.empty()) s << extra << ", ";
   s << "\"devices\": [";
   for (std::size_t i = 0; i < devices.size(); ++i) {
-    s << (i ? ", " : "") << "{ \"name\": \"" << devices[i].first << "\", \"drive\": { \"telegram\": "
-      << devices[i].second << " } }";
+    s << (i ? ", " : "") << "{ \"name\": \"" << devices[i].first
+      << "\", \"drive\": { \"telegram\": " << devices[i].second << " } }";
   }
   s << "] }";
   return s.str();
@@ -60,8 +60,8 @@ class GatewayProcess {
     config_ = directory / "gateway.json";
     log_ = directory / "gateway.log";
     std::ofstream(config_) << config_text;
-    std::vector<std::string> args = {TOMC_BINARY, "gateway-sim", "--config", config_.string(), "--partition",
-                                     test_partition()};
+    std::vector<std::string> args = {TOMC_BINARY,      "gateway-sim", "--config",
+                                     config_.string(), "--partition", test_partition()};
     args.insert(args.end(), extra_arguments.begin(), extra_arguments.end());
     std::vector<char*> argv;
     for (auto& a : args)

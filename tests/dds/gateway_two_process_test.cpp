@@ -1,7 +1,7 @@
 // Two-process tests of the gateway contract on loopback (issue 8): a speed axis in this process drives the
-// simulated drive of a `tomc gateway-sim` child process through Fast DDS. The runtime runs in lock-step: after
-// each cycle it waits (bounded) for the gateway's answer, so cycle counts are deterministic; a missing answer
-// is a missed cycle for the TO exactly as on a real-time link.
+// simulated drive of a `tomc gateway-sim` child process through Fast DDS. The runtime runs in lock-step:
+// after each cycle it waits (bounded) for the gateway's answer, so cycle counts are deterministic; a missing
+// answer is a missed cycle for the TO exactly as on a real-time link.
 //
 // The link supervision under test (seed L11468, docs/decisions.md R9, docs/gateway.md): no fresh answer for
 // more than link_loss_tolerance_cycles (3) -> StatusDrive.CommunicationOK = FALSE and alarm 405 with reaction
@@ -27,11 +27,11 @@ namespace {
 using namespace tomc;
 using drives::dds::DeviceDiagnosis;
 using gateway_sim::Command;
-using tomc::testing::GatewayProcess;
+using techobjects::SpeedAxis;
 using tomc::testing::gateway_config;
+using tomc::testing::GatewayProcess;
 using tomc::testing::test_directory;
 using tomc::testing::test_partition;
-using techobjects::SpeedAxis;
 
 constexpr auto kConnectTimeout = std::chrono::seconds(10);
 constexpr std::uint32_t kTolerance = 3;  // DriveConnectionConfig::link_loss_tolerance_cycles default
@@ -114,8 +114,7 @@ struct GatewayAxis {
   bool command(gateway_sim::GatewayCommander& commander, Command kind, std::uint64_t value = 0,
                const std::string& device = {}) {
     const std::uint64_t number = commander.post("gw1", kind, value, device);
-    return number != 0 &&
-           run_for([&] { return commander.applied(number, "gw1"); }, std::chrono::seconds(5));
+    return number != 0 && run_for([&] { return commander.applied(number, "gw1"); }, std::chrono::seconds(5));
   }
   // Enable and accelerate to `velocity`; true when in velocity.
   bool enable_and_move(double velocity) {
@@ -154,7 +153,8 @@ TEST(GatewayTwoProcess, PowerMoveStop) {
   m.power.Enable = true;
   const int enabled = m.run_until([&] { return m.power.Status; }, 50);
   EXPECT_GT(enabled, 0);
-  EXPECT_LE(enabled, 8);  // as with the embedded drive (speed_axis_test PowerEnablesThroughTheDriveStateMachine)
+  EXPECT_LE(enabled,
+            8);  // as with the embedded drive (speed_axis_test PowerEnablesThroughTheDriveStateMachine)
   EXPECT_TRUE(m.link_ok());
   m.move.Velocity = 1500.0;
   m.move.Acceleration = 100.0;
@@ -205,7 +205,8 @@ TEST(GatewayTwoProcess, KillRaisesTheLinkAlarmWithinToleranceAndARestartRecovers
   ASSERT_GT(alarm_cycle, 0) << "no alarm 405 after the gateway died";
   // The answer to the cycle sent just before the kill may still have arrived (at most one).
   EXPECT_LE(m.fresh_total() - fresh_before, 1u);
-  EXPECT_EQ(alarm_cycle - first_missed, static_cast<int>(kTolerance)) << "405 in the cycle after the tolerance";
+  EXPECT_EQ(alarm_cycle - first_missed, static_cast<int>(kTolerance))
+      << "405 in the cycle after the tolerance";
   EXPECT_FALSE(m.link_ok());
   EXPECT_EQ(m.axis->data().ErrorDetail.Reaction, 4);  // remove enable (docs/errors.md)
   m.step();
@@ -256,7 +257,8 @@ TEST(GatewayTwoProcess, DelayedAnswers) {
   const int alarmed = m.run_until([&] { return m.alarm() == techobjects::kAlarmDriveCommunication; }, 30);
   EXPECT_GT(alarmed, 0);
   m.run(20);  // 100 ms: the 30 ms late answers arrive meanwhile, each one cycle after it was due or later
-  EXPECT_GT(m.adapter->counters().stale, stale_before) << "late answers must be recognised as stale, not used";
+  EXPECT_GT(m.adapter->counters().stale, stale_before)
+      << "late answers must be recognised as stale, not used";
   ASSERT_TRUE(m.command(commander, Command::kDelayAnswers, 0));
   m.answer_timeout = std::chrono::milliseconds(40);
   m.run(20);
@@ -351,7 +353,8 @@ TEST(GatewayTwoProcess, GatewayRestartIsALinkLossEvenWhenQuick) {
 // drive's fault is acknowledged through the telegram and the axis enables again.
 TEST(GatewayTwoProcess, HungGatewayAndResume) {
   const int domain = 146;
-  GatewayProcess gateway(test_directory("stop"), gateway_config(domain, {{"axis1", 2}}, "gw1", "\"watchdog\": 0.02"));
+  GatewayProcess gateway(test_directory("stop"),
+                         gateway_config(domain, {{"axis1", 2}}, "gw1", "\"watchdog\": 0.02"));
   gateway_sim::GatewayCommander commander(domain, test_partition());
   ASSERT_TRUE(commander.wait_matched(kConnectTimeout));
   GatewayAxis m(domain, "axis1", 2, std::chrono::milliseconds(5));
@@ -359,8 +362,8 @@ TEST(GatewayTwoProcess, HungGatewayAndResume) {
   ASSERT_TRUE(m.enable_and_move(300.0));
   const std::uint64_t stop = commander.post("gw1", Command::kStop);
   ASSERT_NE(stop, 0u);
-  EXPECT_TRUE(m.run_for([&] { return m.pending(techobjects::kAlarmDriveCommunication); },
-                       std::chrono::seconds(5)))
+  EXPECT_TRUE(
+      m.run_for([&] { return m.pending(techobjects::kAlarmDriveCommunication); }, std::chrono::seconds(5)))
       << "alarm " << m.alarm() << ", stop applied " << commander.applied(stop) << ", missed "
       << m.adapter->link_health().missed_total << ", gateway: " << m.gateway_view();
   // 20 ms watchdog + 20 setpoint-timeout cycles of 1 ms: the drive has faulted well within 200 ms.

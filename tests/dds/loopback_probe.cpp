@@ -1,5 +1,6 @@
-// loopback_probe: the capture half of the loopback check (loopback_test.cpp, docs/gateway.md "Loopback only").
-// It must run in a fresh network namespace (the test forks, unshare(CLONE_NEWNET)s and execs it), where it
+// loopback_probe: the capture half of the loopback check (loopback_test.cpp, docs/gateway.md "Loopback
+// only"). It must run in a fresh network namespace (the test forks, unshare(CLONE_NEWNET)s and execs it),
+// where it
 //   1. sets up lo and a veth pair with IPv4 addresses and a multicast route — a stand-in for eth0,
 //   2. captures every frame on both veth ends (AF_PACKET),
 //   3. runs the project's DDS exchange: `tomc gateway-sim` as a child process and a GatewayLink here, and
@@ -130,7 +131,8 @@ int main(int argc, char** argv) {
   const int domain = std::atoi(argv[2]);
   // Step 0: this must be a fresh namespace: nothing but lo.
   const auto before = interfaces();
-  if (before.size() != 1 || before[0] != "lo") fail("not in a fresh network namespace (interfaces besides lo)");
+  if (before.size() != 1 || before[0] != "lo")
+    fail("not in a fresh network namespace (interfaces besides lo)");
   run("ip link set lo up");
   run(std::string("ip link add ") + kVethA + " type veth peer name " + kVethB);
   run(std::string("ip addr add 10.213.7.1/24 dev ") + kVethA);
@@ -190,8 +192,9 @@ int main(int argc, char** argv) {
   const std::uint64_t control_frames = a.frames() + b.frames() - project_frames;
 
   std::filesystem::remove_all(dir);
-  std::printf("project_frames=%llu fresh=%llu control_frames=%llu\n", static_cast<unsigned long long>(project_frames),
-              static_cast<unsigned long long>(fresh), static_cast<unsigned long long>(control_frames));
+  std::printf("project_frames=%llu fresh=%llu control_frames=%llu\n",
+              static_cast<unsigned long long>(project_frames), static_cast<unsigned long long>(fresh),
+              static_cast<unsigned long long>(control_frames));
   std::fflush(stdout);
   return 0;
 }

@@ -105,8 +105,9 @@ TEST(Loopback, NothingLeavesLoopbackInANetworkNamespace) {
   if (WEXITSTATUS(status) == 77) {
     const char* required = std::getenv("TOMC_REQUIRE_NETNS");
     if (required != nullptr && std::string(required) == "1") {
-      FAIL() << "cannot create a network namespace (unshare(CLONE_NEWNET)), but it was possible when the build "
-                "was configured: the capture check did not run";
+      FAIL()
+          << "cannot create a network namespace (unshare(CLONE_NEWNET)), but it was possible when the build "
+             "was configured: the capture check did not run";
     }
     GTEST_SKIP() << "no network namespace here (unshare(CLONE_NEWNET) needs CAP_SYS_ADMIN); the QoS checks "
                     "above still ran";
@@ -115,8 +116,8 @@ TEST(Loopback, NothingLeavesLoopbackInANetworkNamespace) {
   unsigned long long project = 0, fresh = 0, control = 0;
   const auto line = output.find("project_frames=");
   ASSERT_NE(line, std::string::npos) << output;
-  ASSERT_EQ(std::sscanf(output.c_str() + line, "project_frames=%llu fresh=%llu control_frames=%llu", &project, &fresh,
-                        &control),
+  ASSERT_EQ(std::sscanf(output.c_str() + line, "project_frames=%llu fresh=%llu control_frames=%llu", &project,
+                        &fresh, &control),
             3)
       << output;
   EXPECT_EQ(project, 0u) << "the project's DDS exchange put frames on a non-loopback interface";

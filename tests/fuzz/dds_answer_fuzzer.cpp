@@ -1,7 +1,8 @@
 // Outside bytes of the gateway link (docs/gateway.md): an ActualCycle sample as it arrives from the network.
 // The first byte picks the path:
-//   even: the bytes are a CDR payload, deserialized by the generated type support as Fast DDS does, then routed;
-//   odd:  the bytes build a well-formed sample field by field (device names, telegram numbers, PZD lengths,
+//   even: the bytes are a CDR payload, deserialized by the generated type support as Fast DDS does, then
+//   routed; odd:  the bytes build a well-formed sample field by field (device names, telegram numbers, PZD
+//   lengths,
 //         byte orders, controller, cycles) so that the routing rules see every combination.
 // After routing, the cyclic side reads every device. Nothing may crash, and a device's frames may only ever
 // hold the configured lengths (a wrong entry must never reach the TO).
@@ -112,7 +113,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (std::size_t i = 0; i < setup.frames.size(); ++i) {
     (void)setup.core.read_actual(i, setup.frames[i]);
-    const DeviceFrames expected = tomc::drives::make_frames(setup.configs[i], tomc::telegrams::Direction::kActual);
+    const DeviceFrames expected =
+        tomc::drives::make_frames(setup.configs[i], tomc::telegrams::Direction::kActual);
     for (std::size_t k = 0; k < tomc::drives::kSlotCount; ++k) {
       if (setup.frames[i].slots[k].length != expected.slots[k].length) std::abort();
     }

@@ -191,8 +191,8 @@ TEST(DriveConnection, FaultAcknowledgeSequence) {
 }
 
 // A link partner that restarted (LinkHealth::peer_restarts, e.g. a gateway with a new incarnation,
-// docs/gateway.md) is a link loss in the cycle it is seen, although frames keep arriving; the next fresh frame
-// recovers the link.
+// docs/gateway.md) is a link loss in the cycle it is seen, although frames keep arriving; the next fresh
+// frame recovers the link.
 class RestartingLink final : public tomc::drives::DriveAdapter {
  public:
   RestartingLink(const DeviceConfig& c, const SimulatedDriveParameters& p) : drive(c, p) {}

@@ -31,7 +31,8 @@ constexpr std::string_view kGatewaySimUsage =
     "\n"
     "--send injects a fault into a running simulator and waits until it reports it applied. COMMAND is\n"
     "drop-answers (--value: how many; 18446744073709551615 = until resume), delay-answers (--value: us),\n"
-    "stop, resume, restart (--value: ms of silence), drive-fault (--device, --value: fault number, 0 clears),\n"
+    "stop, resume, restart (--value: ms of silence), drive-fault (--device, --value: fault number, 0 "
+    "clears),\n"
     "disconnect or connect (--device).\n"
     "\n"
     "exit status: 0 stopped by a signal (or command applied), 1 the command was not confirmed,\n"
@@ -55,8 +56,8 @@ T parse_number(std::string_view option, std::string_view text, T minimum, T maxi
   T value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || value < minimum || value > maximum) {
-    throw UsageError("gateway-sim: " + std::string(option) + ": '" + std::string(text) + "' is not an integer " +
-                     std::to_string(minimum) + ".." + std::to_string(maximum));
+    throw UsageError("gateway-sim: " + std::string(option) + ": '" + std::string(text) +
+                     "' is not an integer " + std::to_string(minimum) + ".." + std::to_string(maximum));
   }
   return value;
 }
@@ -92,7 +93,8 @@ Options parse_options(std::span<const std::string_view> args) {
     } else if (a == "--device") {
       o.device = std::string(next());
     } else {
-      throw UsageError("gateway-sim: unknown argument '" + std::string(a) + "' (try: tomc gateway-sim --help)");
+      throw UsageError("gateway-sim: unknown argument '" + std::string(a) +
+                       "' (try: tomc gateway-sim --help)");
     }
   }
   return o;
@@ -159,8 +161,8 @@ int gateway_sim_command(std::span<const std::string_view> args, std::ostream& ou
     sigwait(&signals, &signal_number);
     const auto c = simulator.counters();
     out << "gateway-sim: stopped by signal " << signal_number << " after " << c.setpoints_applied
-        << " setpoints applied, " << c.answers_published << " answers, " << c.setpoint_gaps << " setpoint gaps, "
-        << c.setpoints_rejected << " rejected" << std::endl;
+        << " setpoints applied, " << c.answers_published << " answers, " << c.setpoint_gaps
+        << " setpoint gaps, " << c.setpoints_rejected << " rejected" << std::endl;
   }
   return 0;
 }

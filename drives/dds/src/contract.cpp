@@ -107,15 +107,16 @@ std::string mismatch(const DeviceConfig& config, tg::Direction direction, gatewa
       return {};
     case Difference::kByteOrder: {
       const auto got = from_contract(byte_order);
-      return "byte order " + (got ? std::string(tg::to_string(*got)) : "invalid (" + std::to_string(d.got) + ")") +
+      return "byte order " +
+             (got ? std::string(tg::to_string(*got)) : "invalid (" + std::to_string(d.got) + ")") +
              ", expected " + std::string(tg::to_string(config.codec.byte_order));
     }
     case Difference::kTelegram:
-      return std::string("slot ") + slot_name(d.slot) + ": telegram " + std::to_string(d.got) + ", expected " +
-             std::to_string(d.expected);
+      return std::string("slot ") + slot_name(d.slot) + ": telegram " + std::to_string(d.got) +
+             ", expected " + std::to_string(d.expected);
     case Difference::kLength:
-      return std::string("slot ") + slot_name(d.slot) + ": " + std::to_string(d.got) + " PZD bytes, expected " +
-             std::to_string(d.expected);
+      return std::string("slot ") + slot_name(d.slot) + ": " + std::to_string(d.got) +
+             " PZD bytes, expected " + std::to_string(d.expected);
   }
   return "?";
 }

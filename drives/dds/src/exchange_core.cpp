@@ -226,8 +226,8 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     if (!matches(d.config, tg::Direction::kActual, e.byte_order(), e.slots())) {
       d.rejected.fetch_add(1, std::memory_order_relaxed);
       try {
-        d.mismatch = "gateway '" + sample.gateway().to_string() + "': " +
-                     mismatch(d.config, tg::Direction::kActual, e.byte_order(), e.slots());
+        d.mismatch = "gateway '" + sample.gateway().to_string() +
+                     "': " + mismatch(d.config, tg::Direction::kActual, e.byte_order(), e.slots());
       } catch (...) {
       }
       continue;
@@ -253,9 +253,7 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     completed_.store(completed, std::memory_order_release);
     record_round_trip(completed - 1, now_ns);
   }
-  {
-    std::lock_guard<std::mutex> wake(wait_mutex_);
-  }
+  { std::lock_guard<std::mutex> wake(wait_mutex_); }
   answered_cv_.notify_all();
 }
 

@@ -72,8 +72,9 @@ class StatusListener final : public fdds::DataReaderListener {
     while (reader->take_next_sample(&status, &info) == ReturnCode_t::RETCODE_OK) {
       if (!info.valid_data || status.contract_version() != kContractVersion) continue;
       std::lock_guard<std::mutex> lock(mutex);
-      auto it = std::find_if(statuses.begin(), statuses.end(),
-                             [&](const gateway::GatewayStatus& s) { return s.gateway() == status.gateway().c_str(); });
+      auto it = std::find_if(statuses.begin(), statuses.end(), [&](const gateway::GatewayStatus& s) {
+        return s.gateway() == status.gateway().c_str();
+      });
       if (it == statuses.end()) {
         statuses.push_back(status);
       } else {
@@ -141,7 +142,8 @@ struct GatewayLink::Impl {
 };
 
 std::shared_ptr<GatewayLink> GatewayLink::create(const GatewayLinkConfig& config) {
-  if (const auto problem = check_domain(config.domain); !problem.empty()) throw std::invalid_argument(problem);
+  if (const auto problem = check_domain(config.domain); !problem.empty())
+    throw std::invalid_argument(problem);
   if (!(config.cycle_time_s > 0.0) || config.cycle_time_s > 4.0) {
     throw std::invalid_argument("gateway link: cycle time must be > 0 and <= 4 s");
   }
@@ -178,7 +180,8 @@ GatewayLink::~GatewayLink() {
   impl_->participant.reset();
 }
 
-std::unique_ptr<DdsGatewayDrive> GatewayLink::make_drive(const std::string& device, const DeviceConfig& config) {
+std::unique_ptr<DdsGatewayDrive> GatewayLink::make_drive(const std::string& device,
+                                                         const DeviceConfig& config) {
   std::lock_guard<std::mutex> lock(impl_->start_mutex);
   if (impl_->started) throw std::invalid_argument("gateway link: devices are added before start()/connect()");
   const std::size_t index = impl_->core->add_device(device, config);
@@ -193,9 +196,10 @@ void GatewayLink::start() {
   m.core->prepare_sample(m.sample);
   Participant& p = *m.participant;
   m.actual_listener = std::make_unique<ActualListener>(*m.core);
-  m.actual_reader = p.subscriber().create_datareader(&p.topic(kActualTopic, m.actual_type), cyclic_reader_qos(),
-                                                     m.actual_listener.get());
-  if (m.actual_reader == nullptr) throw std::runtime_error("Fast DDS could not create the actual-value reader");
+  m.actual_reader = p.subscriber().create_datareader(&p.topic(kActualTopic, m.actual_type),
+                                                     cyclic_reader_qos(), m.actual_listener.get());
+  if (m.actual_reader == nullptr)
+    throw std::runtime_error("Fast DDS could not create the actual-value reader");
   m.sender = std::thread([&m] { m.sender_loop(); });
   m.started = true;
 }
@@ -208,12 +212,11 @@ std::vector<DeviceReport> GatewayLink::connect(std::chrono::milliseconds timeout
     // Stop waiting early when every silent device has a definite reason that waiting will not change.
     const auto reports = diagnose();
     // A gateway's status must be there too, so the reasons come from what it announces.
-    const bool settled = !gateways().empty() &&
-                         std::all_of(reports.begin(), reports.end(), [](const DeviceReport& r) {
-                           return r.diagnosis == DeviceDiagnosis::kAnswering ||
-                                  r.diagnosis == DeviceDiagnosis::kNotServed ||
-                                  r.diagnosis == DeviceDiagnosis::kConfigMismatch;
-                         });
+    const bool settled =
+        !gateways().empty() && std::all_of(reports.begin(), reports.end(), [](const DeviceReport& r) {
+          return r.diagnosis == DeviceDiagnosis::kAnswering || r.diagnosis == DeviceDiagnosis::kNotServed ||
+                 r.diagnosis == DeviceDiagnosis::kConfigMismatch;
+        });
     if (settled || std::chrono::steady_clock::now() >= deadline) break;
   }
   return diagnose();
@@ -239,8 +242,9 @@ std::vector<DeviceReport> GatewayLink::diagnose() const {
     const DeviceConfig& mine = core.device_config(i);
     const GatewayDeviceCounters counters = core.counters(i);
     const std::uint64_t fresh = core.last_fresh(i);
-    const bool answering = sent == 0 ? counters.answers > 0 && core.last_mismatch(i).empty()
-                                     : fresh != 0 && sent + 1 - fresh <= core.options().max_answer_age_cycles + 2;
+    const bool answering = sent == 0
+                               ? counters.answers > 0 && core.last_mismatch(i).empty()
+                               : fresh != 0 && sent + 1 - fresh <= core.options().max_answer_age_cycles + 2;
     // The gateway(s) that list this device.
     const gateway::GatewayStatus* serving = nullptr;
     const gateway::DeviceDescription* description = nullptr;
@@ -269,15 +273,17 @@ std::vector<DeviceReport> GatewayLink::diagnose() const {
     const std::string mismatch = core.last_mismatch(i);
     if (answering) {
       r.diagnosis = DeviceDiagnosis::kAnswering;
-      r.text = "'" + r.device + "' answers" + (serving ? " through gateway '" + serving->gateway().to_string() + "'" : "");
+      r.text = "'" + r.device + "' answers" +
+               (serving ? " through gateway '" + serving->gateway().to_string() + "'" : "");
     } else if (!configured_difference.empty() || !mismatch.empty() ||
                (description != nullptr && description->state() == gateway::DEVICE_CONFIG_MISMATCH)) {
       r.diagnosis = DeviceDiagnosis::kConfigMismatch;
       r.text = "'" + r.device + "': " +
                (!configured_difference.empty()
                     ? "gateway '" + serving->gateway().to_string() + "': " + configured_difference
-                    : !mismatch.empty() ? mismatch
-                                        : "gateway '" + serving->gateway().to_string() + "': " + description->detail().to_string());
+                : !mismatch.empty() ? mismatch
+                                    : "gateway '" + serving->gateway().to_string() +
+                                          "': " + description->detail().to_string());
     } else if (statuses.empty()) {
       r.diagnosis = DeviceDiagnosis::kNoGateway;
       r.text = "no gateway has announced itself on DDS domain " + std::to_string(impl_->config.domain) +
@@ -295,16 +301,17 @@ std::vector<DeviceReport> GatewayLink::diagnose() const {
       r.text = "no gateway serves '" + r.device + "' (" + served + ")";
     } else if (description->state() == gateway::DEVICE_DISCONNECTED) {
       r.diagnosis = DeviceDiagnosis::kDisconnected;
-      r.text = "gateway '" + serving->gateway().to_string() + "' has no cyclic exchange with '" + r.device + "'" +
-               (description->detail().size() == 0 ? "" : ": " + description->detail().to_string());
+      r.text = "gateway '" + serving->gateway().to_string() + "' has no cyclic exchange with '" + r.device +
+               "'" + (description->detail().size() == 0 ? "" : ": " + description->detail().to_string());
     } else if (serving->controller() != 0 && serving->controller() != ours) {
       r.diagnosis = DeviceDiagnosis::kOtherController;
       r.text = "gateway '" + serving->gateway().to_string() + "' serves another controller";
     } else {
       r.diagnosis = DeviceDiagnosis::kSilent;
-      r.text = "gateway '" + serving->gateway().to_string() + "' serves '" + r.device + "' but no current answer arrives (" +
-               std::to_string(counters.answers) + " answers, " + std::to_string(counters.stale) + " stale, " +
-               std::to_string(counters.restarts) + " gateway restarts)";
+      r.text = "gateway '" + serving->gateway().to_string() + "' serves '" + r.device +
+               "' but no current answer arrives (" + std::to_string(counters.answers) + " answers, " +
+               std::to_string(counters.stale) + " stale, " + std::to_string(counters.restarts) +
+               " gateway restarts)";
     }
     reports.push_back(std::move(r));
   }
@@ -334,10 +341,11 @@ std::vector<GatewayLink::GatewayInfo> GatewayLink::gateways() const {
     g.controller = s.controller();
     g.command_number = s.command_number();
     for (const auto& d : s.devices()) {
-      static constexpr const char* kStates[] = {"connected", "faulted", "disconnected", "configuration mismatch"};
+      static constexpr const char* kStates[] = {"connected", "faulted", "disconnected",
+                                                "configuration mismatch"};
       const auto state = static_cast<std::size_t>(d.state());
-      g.devices.push_back(GatewayDevice{d.device().to_string(), state < 4 ? kStates[state] : "invalid", d.fault(),
-                                        d.detail().to_string()});
+      g.devices.push_back(GatewayDevice{d.device().to_string(), state < 4 ? kStates[state] : "invalid",
+                                        d.fault(), d.detail().to_string()});
     }
     out.push_back(std::move(g));
   }

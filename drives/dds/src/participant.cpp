@@ -3,12 +3,12 @@
 
 #include <stdexcept>
 
-#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
-#include <fastdds/dds/publisher/qos/PublisherQos.hpp>
-#include <fastdds/dds/subscriber/qos/SubscriberQos.hpp>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/qos/PublisherQos.hpp>
+#include <fastdds/dds/subscriber/qos/SubscriberQos.hpp>
 
 namespace tomc::drives::dds {
 
@@ -80,7 +80,8 @@ fdds::DomainParticipantQos loopback_participant_qos(const std::string& name) {
 
 std::string loopback_violations(const fdds::DomainParticipantQos& qos) {
   std::string out;
-  if (qos.transport().use_builtin_transports) out += "builtin transports enabled (UDPv4 on every interface)\n";
+  if (qos.transport().use_builtin_transports)
+    out += "builtin transports enabled (UDPv4 on every interface)\n";
   if (qos.transport().user_transports.empty()) out += "no user transport\n";
   for (const auto& t : qos.transport().user_transports) {
     if (const auto* udp = dynamic_cast<const UDPv4TransportDescriptor*>(t.get())) {
@@ -204,7 +205,8 @@ fdds::Topic& Participant::topic(const std::string& name, fdds::TypeSupport type)
       throw std::runtime_error("Fast DDS could not register type " + type.get_type_name());
     }
   }
-  if (auto* existing = dynamic_cast<fdds::Topic*>(participant_->lookup_topicdescription(name))) return *existing;
+  if (auto* existing = dynamic_cast<fdds::Topic*>(participant_->lookup_topicdescription(name)))
+    return *existing;
   fdds::Topic* t = participant_->create_topic(name, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   if (t == nullptr) throw std::runtime_error("Fast DDS could not create topic " + name);
   return *t;

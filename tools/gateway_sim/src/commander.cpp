@@ -70,7 +70,8 @@ struct GatewayCommander::Impl {
   std::uint64_t next_number = 0;
 };
 
-GatewayCommander::GatewayCommander(int domain, const std::string& partition) : impl_(std::make_unique<Impl>()) {
+GatewayCommander::GatewayCommander(int domain, const std::string& partition)
+    : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.participant = std::make_unique<dds::Participant>(domain, "tomc gateway commander", partition);
   dds::Participant& p = *m.participant;
@@ -82,9 +83,9 @@ GatewayCommander::GatewayCommander(int domain, const std::string& partition) : i
     throw std::runtime_error("Fast DDS could not create the command writer / status reader");
   }
   // Numbers distinct from any earlier commander's: the simulator echoes the last one it applied.
-  m.next_number = (static_cast<std::uint64_t>(::getpid()) << 32) +
-                  static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count() &
-                                             0xFFFFFFF);
+  m.next_number =
+      (static_cast<std::uint64_t>(::getpid()) << 32) +
+      static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count() & 0xFFFFFFF);
 }
 
 GatewayCommander::~GatewayCommander() {

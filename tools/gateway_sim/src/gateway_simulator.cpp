@@ -1,6 +1,6 @@
 // The gateway simulator (gateway_simulator.hpp, docs/gateway.md "Gateway simulator"). A simulator, not a
-// real-time component: one mutex guards the drives and the session, the DDS listener threads and the gateway's
-// own clock thread take it in turn.
+// real-time component: one mutex guards the drives and the session, the DDS listener threads and the
+// gateway's own clock thread take it in turn.
 #include "tomc/gateway_sim/gateway_simulator.hpp"
 
 #include <unistd.h>
@@ -23,8 +23,8 @@
 
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
-#include "tomc/drives/simulated_drive.hpp"
 #include "tomc/drives/dds/type_support.hpp"
+#include "tomc/drives/simulated_drive.hpp"
 
 namespace tomc::gateway_sim {
 
@@ -182,8 +182,8 @@ struct GatewaySimulator::Impl {
   }
 
   void publish_status(Clock::time_point now, bool force) {
-    std::string signature = std::to_string(incarnation) + "/" + std::to_string(owner) + "/" +
-                            std::to_string(command_number);
+    std::string signature =
+        std::to_string(incarnation) + "/" + std::to_string(owner) + "/" + std::to_string(command_number);
     status.devices().resize(devices.size());
     for (std::size_t i = 0; i < devices.size(); ++i) {
       const Device& d = devices[i];
@@ -383,7 +383,8 @@ struct GatewaySimulator::Impl {
   }
 };
 
-GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config) : impl_(std::make_unique<Impl>()) {
+GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config)
+    : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.config = config;
   if (config.devices.empty()) throw std::invalid_argument("gateway-sim: no device");
@@ -416,10 +417,10 @@ GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config) : i
   m.participant = std::make_unique<dds::Participant>(config.domain, "tomc gateway-sim " + config.gateway,
                                                      config.partition);
   dds::Participant& p = *m.participant;
-  m.actual_writer = p.publisher().create_datawriter(&p.topic(dds::kActualTopic, m.actual_type),
-                                                    dds::cyclic_writer_qos());
-  m.status_writer = p.publisher().create_datawriter(&p.topic(dds::kStatusTopic, m.status_type),
-                                                    dds::status_writer_qos());
+  m.actual_writer =
+      p.publisher().create_datawriter(&p.topic(dds::kActualTopic, m.actual_type), dds::cyclic_writer_qos());
+  m.status_writer =
+      p.publisher().create_datawriter(&p.topic(dds::kStatusTopic, m.status_type), dds::status_writer_qos());
   if (m.actual_writer == nullptr || m.status_writer == nullptr) {
     throw std::runtime_error("gateway-sim: Fast DDS could not create the writers");
   }
@@ -445,9 +446,7 @@ GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config) : i
 GatewaySimulator::~GatewaySimulator() {
   Impl& m = *impl_;
   m.stop.store(true);
-  {
-    std::lock_guard<std::mutex> lock(m.delay_mutex);
-  }
+  { std::lock_guard<std::mutex> lock(m.delay_mutex); }
   m.delay_cv.notify_all();
   if (m.clock_thread.joinable()) m.clock_thread.join();
   if (m.delay_thread.joinable()) m.delay_thread.join();

@@ -98,8 +98,8 @@ std::vector<std::string> GatewayLinks::connect() {
 
 void GatewayLinks::wait_for_answers() {
   for (std::size_t i = 0; i < links_.size(); ++i) {
-    links_[i]->wait_for_answers(std::chrono::nanoseconds(
-        static_cast<std::int64_t>(std::llround(answer_timeouts_s_[i] * 1e9))));
+    links_[i]->wait_for_answers(
+        std::chrono::nanoseconds(static_cast<std::int64_t>(std::llround(answer_timeouts_s_[i] * 1e9))));
   }
 }
 
@@ -110,10 +110,12 @@ namespace tomc::scenario::detail {
 void reject_simulated_drive_keys(const Json& drive, ObjectReader& reader, Problems& problems) {
   if (!reader.valid()) return;
   for (const auto& [key, value] : drive.items()) {
-    if (key == "comment" || key == "adapter" || key == "telegram" || key == "supplementary_telegram") continue;
-    problems.add(reader.path_of(key),
-                 "a parameter of the simulated drive; with the dds_gateway adapter the drive is the gateway's "
-                 "(for the gateway simulator: its --config file)");
+    if (key == "comment" || key == "adapter" || key == "telegram" || key == "supplementary_telegram")
+      continue;
+    problems.add(
+        reader.path_of(key),
+        "a parameter of the simulated drive; with the dds_gateway adapter the drive is the gateway's "
+        "(for the gateway simulator: its --config file)");
     reader.get(key);
   }
 }

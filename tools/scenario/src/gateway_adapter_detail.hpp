@@ -4,8 +4,8 @@
 
 namespace tomc::scenario::detail {
 
-// With the dds_gateway adapter: every key of `drive` besides adapter, telegram and supplementary_telegram is a
-// simulated-drive parameter, which belongs to the gateway's configuration; each is reported.
+// With the dds_gateway adapter: every key of `drive` besides adapter, telegram and supplementary_telegram is
+// a simulated-drive parameter, which belongs to the gateway's configuration; each is reported.
 void reject_simulated_drive_keys(const Json& drive, ObjectReader& reader, Problems& problems);
 
 }  // namespace tomc::scenario::detail

@@ -102,7 +102,8 @@ void load_gateway_sim_config_file(const std::filesystem::path& file, GatewaySimC
     document = Json::parse(text.str());
   } catch (const Json::parse_error& e) {
     std::string what = e.what();
-    if (const auto close = what.find("] "); what.starts_with("[json.exception") && close != std::string::npos) {
+    if (const auto close = what.find("] ");
+        what.starts_with("[json.exception") && close != std::string::npos) {
       what.erase(0, close + 2);
     }
     problems.add(file.string(), "malformed JSON: " + what);

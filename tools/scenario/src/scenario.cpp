@@ -193,7 +193,8 @@ struct Scenario::Impl {
   double cycle_time = 0.001;
   std::uint64_t cycles = 0;
   std::unique_ptr<to::Runtime> runtime;
-  GatewayLinks gateways;  // drives behind a Fast DDS gateway (gateway_adapter.hpp); empty for simulated drives
+  // Drives behind a Fast DDS gateway (gateway_adapter.hpp); empty with simulated drives only.
+  GatewayLinks gateways;
   std::vector<TechnologyObjectEntry> objects;
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;

@@ -37,14 +37,15 @@ class GatewayCommander {
   // Waits until a simulator's command reader has matched this commander (call it before the cyclic part of a
   // test: a reliable topic's first sample can otherwise wait for a repair).
   bool wait_matched(std::chrono::milliseconds timeout);
-  // Sends `command` to `gateway` ("" = every simulator on the domain) and waits until a simulator of that name
-  // (any, for "") reports it applied. False on timeout (no simulator, or it did not answer).
-  bool send(const std::string& gateway, Command command, std::uint64_t value = 0, const std::string& device = {},
-            std::chrono::milliseconds timeout = std::chrono::seconds(5));
+  // Sends `command` to `gateway` ("" = every simulator on the domain) and waits until a simulator of that
+  // name (any, for "") reports it applied. False on timeout (no simulator, or it did not answer).
+  bool send(const std::string& gateway, Command command, std::uint64_t value = 0,
+            const std::string& device = {}, std::chrono::milliseconds timeout = std::chrono::seconds(5));
   // The same without waiting for the confirmation, for a caller that keeps cycling meanwhile: returns the
   // command's number, 0 when no simulator has matched the command topic within `timeout`.
   std::uint64_t post(const std::string& gateway, Command command, std::uint64_t value = 0,
-                     const std::string& device = {}, std::chrono::milliseconds timeout = std::chrono::seconds(5));
+                     const std::string& device = {},
+                     std::chrono::milliseconds timeout = std::chrono::seconds(5));
   // Whether a simulator named `gateway` ("" = any) reported command `number` applied.
   bool applied(std::uint64_t number, const std::string& gateway = {}) const;
 

@@ -49,15 +49,15 @@ std::string join_path(std::string_view base, std::string_view key);
 void load_speed_axis_config(const Json& config, std::string_view path, techobjects::SpeedAxisData& data,
                             Problems& problems);
 
-// The `drive` object: which adapter (the simulated drive, or a dds_gateway object), which telegram(s) and, for
-// the simulated drive, its machine model.
+// The `drive` object: which adapter (the simulated drive, or a dds_gateway object), which telegram(s) and,
+// for the simulated drive, its machine model.
 struct DriveSettings {
   std::string adapter = "simulated";
   std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
   std::uint16_t supplementary_telegram = 0;  // 0 or 750
   drives::SimulatedDriveParameters parameters{};
-  // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and the
-  // simulated-drive parameters do not apply (gateway_adapter.hpp).
+  // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and
+  // the simulated-drive parameters do not apply (gateway_adapter.hpp).
   std::optional<GatewayAdapterSettings> gateway;
   drives::DeviceConfig device_config() const;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The configuration file of the gateway simulator, `tomc gateway-sim --config FILE` (docs/gateway.md
-// "Gateway simulator"). Each device is a simulated PROFIdrive drive described by the same `drive` object as in
-// scenario files, so a scenario's drive moves into the gateway unchanged:
+// "Gateway simulator"). Each device is a simulated PROFIdrive drive described by the same `drive` object as
+// in scenario files, so a scenario's drive moves into the gateway unchanged:
 //
 //   { "gateway": "gw1", "domain": 42, "cycle_time": 0.001,
 //     "devices": [ { "name": "axis1", "drive": { "telegram": 3 } } ] }

@@ -31,8 +31,8 @@ void fill(const DeviceConfig& config, const DeviceFrames& frames,
 // Empty when `slots` (in `byte_order`) carries exactly the telegrams of `config` in `direction` with the
 // telegram's length, else the first difference ("slot drive: telegram 2, expected 3"). Then the entry must
 // not be used: bytes of another telegram or byte order read as wrong values.
-std::string mismatch(const DeviceConfig& config, telegrams::Direction direction, gateway::ByteOrder byte_order,
-                     const std::array<gateway::Telegram, kSlotCount>& slots);
+std::string mismatch(const DeviceConfig& config, telegrams::Direction direction,
+                     gateway::ByteOrder byte_order, const std::array<gateway::Telegram, kSlotCount>& slots);
 // The same check without building a message: for the cyclic paths.
 bool matches(const DeviceConfig& config, telegrams::Direction direction, gateway::ByteOrder byte_order,
              const std::array<gateway::Telegram, kSlotCount>& slots) noexcept;

@@ -3,8 +3,9 @@
 // and the controller's rules of the contract (docs/gateway.md "What the controller does").
 //
 //   cyclic thread    read_actual() / write_setpoint() per device, once per servo cycle: no lock, no
-//                    allocation, no waiting. The last device's write_setpoint() publishes the cycle's setpoint
-//                    frames (a triple buffer) and wakes the sender thread (a futex wake, never a wait).
+//                    allocation, no waiting. The last device's write_setpoint() publishes the cycle's
+//                    setpoint frames (a triple buffer) and wakes the sender thread (a futex wake, never a
+//                    wait).
 //   sender thread    take_setpoints(): newest setpoint frames -> the DDS sample it then writes.
 //   listener thread  route(): a received ActualCycle -> per device, a triple buffer of the newest answer.
 //
@@ -31,7 +32,8 @@ struct ExchangeOptions {
   std::uint64_t controller = 1;             // id of this controller run, non-zero (GatewayLink draws it)
   std::uint32_t cycle_time_ns = 1'000'000;  // announced in every SetpointCycle
   // An answer counts as fresh in cycle c when it answers the setpoint of cycle c-1-k with k <= this. 0 = only
-  // the previous cycle's (lock-step); 1 (default) also tolerates an answer one cycle late on a real-time link.
+  // the previous cycle's (lock-step); 1 (default) also tolerates an answer one cycle late on a real-time
+  // link.
   std::uint32_t max_answer_age_cycles = 1;
 };
 

@@ -28,7 +28,7 @@ struct GatewayLinkConfig {
   int domain = 0;         // DDS domain id, 0..232; controller and gateway must use the same
   std::string partition;  // DDS partition, "" = default; controller and gateway must use the same
   std::string participant_name = "tomc controller";
-  double cycle_time_s = 0.001;  // the servo cycle, announced to the gateway
+  double cycle_time_s = 0.001;              // the servo cycle, announced to the gateway
   std::uint32_t max_answer_age_cycles = 1;  // ExchangeOptions::max_answer_age_cycles
 };
 

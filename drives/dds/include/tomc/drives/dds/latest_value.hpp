@@ -33,7 +33,8 @@ class LatestValue {
   T& write_slot() noexcept { return slots_[back_]; }
   // Makes the write slot the newest value; the producer continues in a slot the consumer does not hold.
   void publish() noexcept {
-    const std::uint8_t previous = middle_.exchange(static_cast<std::uint8_t>(back_ | kNew), std::memory_order_acq_rel);
+    const std::uint8_t previous =
+        middle_.exchange(static_cast<std::uint8_t>(back_ | kNew), std::memory_order_acq_rel);
     back_ = static_cast<std::uint8_t>(previous & kIndex);
   }
 
@@ -54,9 +55,9 @@ class LatestValue {
   static constexpr std::uint8_t kIndex = 0x3;
   static constexpr std::uint8_t kNew = 0x4;
   std::array<T, 3> slots_{};
-  std::uint8_t back_ = 0;                  // producer only
-  std::atomic<std::uint8_t> middle_{1};    // shared: index | kNew
-  std::uint8_t front_ = 2;                 // consumer only
+  std::uint8_t back_ = 0;                // producer only
+  std::atomic<std::uint8_t> middle_{1};  // shared: index | kNew
+  std::uint8_t front_ = 2;               // consumer only
 };
 
 }  // namespace tomc::drives::dds

@@ -1,8 +1,8 @@
 #pragma once
-// Every DDS participant tomc creates — the gateway adapter's, the gateway simulator's, the tests' — comes from
-// here, so that none of them can send anything but loopback traffic (TOOLCHAIN.md §5: with default settings
-// Fast DDS sends multicast out of every interface). The per-topic QoS of the contract is here too, so both
-// sides of the contract use the same (docs/gateway.md "QoS").
+// Every DDS participant tomc creates — the gateway adapter's, the gateway simulator's, the tests' — comes
+// from here, so that none of them can send anything but loopback traffic (TOOLCHAIN.md §5: with default
+// settings Fast DDS sends multicast out of every interface). The per-topic QoS of the contract is here too,
+// so both sides of the contract use the same (docs/gateway.md "QoS").
 //
 // This header includes Fast DDS: only the DDS adapter, the gateway simulator and their tests include it.
 
@@ -54,8 +54,8 @@ eprosima::fastdds::dds::DataWriterQos command_writer_qos();
 eprosima::fastdds::dds::DataReaderQos command_reader_qos();
 
 // A participant with loopback_participant_qos(), one publisher and one subscriber in `partition` ("" = the
-// default partition). Controller and gateway must use the same domain and partition. Deleting it deletes every
-// entity it contains. Construction throws std::runtime_error when Fast DDS refuses.
+// default partition). Controller and gateway must use the same domain and partition. Deleting it deletes
+// every entity it contains. Construction throws std::runtime_error when Fast DDS refuses.
 class Participant {
  public:
   Participant(int domain, const std::string& name, const std::string& partition);
