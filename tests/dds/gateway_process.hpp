@@ -38,12 +38,14 @@ inline std::filesystem::path test_directory(const std::string& name) {
   return dir;
 }
 
-// A gateway-sim configuration with `devices` as (name, drive telegram) on `domain`.
+// A gateway-sim configuration with `devices` as (name, drive telegram) on `domain`. Unless `extra` says
+// otherwise, the gateway's watchdog is 1 s: longer than any lock-step wait of the tests for a missing answer
+// (a controller that waits longer than the watchdog is dropped by the gateway, docs/gateway.md §10).
 inline std::string gateway_config(int domain, const std::vector<std::pair<std::string, int>>& devices,
                                   const std::string& gateway = "gw1", const std::string& extra = "") {
   std::ostringstream s;
   s << "{ \"gateway\": \"" << gateway << "\", \"domain\": " << domain << ", \"cycle_time\": 0.001, ";
-  if (!extra.empty()) s << extra << ", ";
+  s << (extra.empty() ? std::string("\"watchdog\": 1.0") : extra) << ", ";
   s << "\"devices\": [";
   for (std::size_t i = 0; i < devices.size(); ++i) {
     s << (i ? ", " : "") << "{ \"name\": \"" << devices[i].first
