@@ -395,8 +395,8 @@ TEST(GatewayTwoProcess, SecondControllerIsRefused) {
   // Both connected before either cycles: the first to send is served.
   GatewayAxis first(domain, "axis1", 2);
   GatewayAxis second(domain, "axis1", 2, std::chrono::milliseconds(1));
+  second.connect();  // the second first: its probe answer must not be the newest answer at first's cycle 0
   expect_answering(first.connect());
-  second.connect();
   first.run(20);
   for (int i = 0; i < 30; ++i) {
     first.step();

@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -94,10 +95,12 @@ class Capture {
         continue;
       }
       if (n < static_cast<ssize_t>(sizeof(ether_header) + sizeof(iphdr))) continue;
-      const auto* eth = reinterpret_cast<const ether_header*>(buffer);
-      if (ntohs(eth->ether_type) != ETHERTYPE_IP) continue;
-      const auto* ip = reinterpret_cast<const iphdr*>(buffer + sizeof(ether_header));
-      if (ip->protocol == IPPROTO_UDP || ip->protocol == IPPROTO_IGMP) frames_.fetch_add(1);
+      ether_header eth;  // copied out: the frame's headers are not aligned for the structs
+      std::memcpy(&eth, buffer, sizeof eth);
+      if (ntohs(eth.ether_type) != ETHERTYPE_IP) continue;
+      iphdr ip;
+      std::memcpy(&ip, buffer + sizeof(ether_header), sizeof ip);
+      if (ip.protocol == IPPROTO_UDP || ip.protocol == IPPROTO_IGMP) frames_.fetch_add(1);
     }
   }
   int fd_ = -1;

@@ -76,8 +76,9 @@ std::size_t ExchangeCore::find(std::string_view name) const noexcept {
 // Cyclic thread
 
 bool ExchangeCore::is_current(const Answer& a, std::uint64_t sent) const noexcept {
-  // Before the first setpoint: the gateway's idle answer is the drive as it stands (docs/gateway.md).
-  if (sent == 0) return a.controller == 0;
+  // Before the first setpoint: the gateway's idle answer, or its answer to this controller's probe, is the
+  // drive as it stands (docs/gateway.md §4).
+  if (sent == 0) return a.controller == 0 || (a.controller == options_.controller && !a.has_setpoint);
   if (a.controller != options_.controller || !a.has_setpoint || a.setpoint_cycle >= sent) return false;
   return sent - 1 - a.setpoint_cycle <= options_.max_answer_age_cycles;
 }
@@ -156,6 +157,14 @@ void ExchangeCore::flush() noexcept {
 
 // ---------------------------------------------------------------------------------------------------------
 // Sender thread
+
+void ExchangeCore::prepare_probe(gateway::SetpointCycle& sample) const {
+  sample.contract_version(kContractVersion);
+  sample.controller(options_.controller);
+  sample.cycle(0);
+  sample.cycle_time_ns(options_.cycle_time_ns);
+  sample.devices().clear();
+}
 
 void ExchangeCore::prepare_sample(gateway::SetpointCycle& sample) const {
   sample.contract_version(kContractVersion);
@@ -239,7 +248,9 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     a.setpoint_cycle = e.setpoint_cycle();
     extract(e.slots(), a.frames);
     d.answers.publish();
-    if (d.answer_count.fetch_add(1, std::memory_order_relaxed) == 0) heard_.fetch_add(1);
+    d.answer_count.fetch_add(1, std::memory_order_relaxed);
+    // Answered to this controller (a probe or a cycle): the whole loop works for this device.
+    if (sample.controller() == options_.controller && !d.heard_by_us.exchange(true)) heard_.fetch_add(1);
     if (sample.controller() == options_.controller && e.has_setpoint() &&
         e.setpoint_cycle() + 1 > d.answered.load(std::memory_order_relaxed)) {
       d.answered.store(e.setpoint_cycle() + 1, std::memory_order_release);

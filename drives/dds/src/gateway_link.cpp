@@ -207,16 +207,23 @@ void GatewayLink::start() {
 std::vector<DeviceReport> GatewayLink::connect(std::chrono::milliseconds timeout) {
   start();
   const auto deadline = std::chrono::steady_clock::now() + timeout;
+  // Probes until every device has an answer addressed to this controller: then setpoints reach the gateway
+  // (its reader has matched this writer, which an idle answer alone would not show) and its answers come
+  // back. The runtime has not started: nothing else writes.
+  gateway::SetpointCycle probe;
+  impl_->core->prepare_probe(probe);
   for (;;) {
+    impl_->setpoint_writer->write(&probe);
     if (impl_->core->wait_until_heard(std::chrono::milliseconds(5))) break;
     // Stop waiting early when every silent device has a definite reason that waiting will not change.
     const auto reports = diagnose();
     // A gateway's status must be there too, so the reasons come from what it announces.
-    const bool settled =
-        !gateways().empty() && std::all_of(reports.begin(), reports.end(), [](const DeviceReport& r) {
-          return r.diagnosis == DeviceDiagnosis::kAnswering || r.diagnosis == DeviceDiagnosis::kNotServed ||
-                 r.diagnosis == DeviceDiagnosis::kConfigMismatch;
-        });
+    bool settled = !gateways().empty();
+    for (std::size_t i = 0; i < reports.size() && settled; ++i) {
+      const DeviceDiagnosis d = reports[i].diagnosis;
+      settled = d == DeviceDiagnosis::kNotServed || d == DeviceDiagnosis::kConfigMismatch ||
+                d == DeviceDiagnosis::kOtherController || impl_->core->heard_by_us(i);
+    }
     if (settled || std::chrono::steady_clock::now() >= deadline) break;
   }
   return diagnose();

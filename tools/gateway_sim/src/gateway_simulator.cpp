@@ -138,7 +138,9 @@ struct GatewaySimulator::Impl {
       (void)d.drive->read_actual(d.actual);
   }
 
-  void publish_answer(Clock::time_point now) {
+  // One ActualCycle of every connected device. `probe`: the answer to a probe of that controller, with no
+  // setpoint applied for it.
+  void publish_answer(Clock::time_point now, std::uint64_t probe = 0) {
     ++sequence;  // also for a dropped answer: the controller sees the gap
     if (drop_remaining > 0) {
       if (drop_remaining != kDropForever) --drop_remaining;
@@ -154,7 +156,7 @@ struct GatewaySimulator::Impl {
     answer.gateway(config.gateway);
     answer.incarnation(incarnation);
     answer.sequence_number(sequence);
-    answer.controller(owner);
+    answer.controller(probe != 0 ? probe : owner);
     std::size_t n = 0;
     for (const auto& d : devices)
       n += d.disconnected ? 0 : 1;
@@ -165,7 +167,7 @@ struct GatewaySimulator::Impl {
       auto& e = answer.devices()[i++];
       e.device(d.name);
       e.byte_order(d.byte_order);
-      e.has_setpoint(d.has_setpoint);
+      e.has_setpoint(probe == 0 && d.has_setpoint);
       e.setpoint_cycle(d.setpoint_cycle);
       dds::fill(d.config, d.actual, e.slots());
     }
@@ -245,6 +247,16 @@ struct GatewaySimulator::Impl {
     if (sample.contract_version() != dds::kContractVersion || sample.devices().size() > dds::kMaxDevices ||
         sample.controller() == 0) {
       ++counters.setpoints_rejected;
+      return;
+    }
+    if (sample.devices().empty()) {
+      // A probe (docs/gateway.md G9): answered at once if this controller could be served; nothing applied,
+      // no drive stepped, the controller not taken as served.
+      if (owner != 0 && sample.controller() != owner && now - last_setpoint < watchdog) {
+        ++counters.setpoints_rejected;
+        return;
+      }
+      publish_answer(now, sample.controller());
       return;
     }
     if (owner != 0 && sample.controller() != owner) {

@@ -86,6 +86,8 @@ class ExchangeCore {
   // ---- sender thread ----
   // Incremented and notified each time a cycle's setpoints are published; the sender waits on it.
   std::atomic<std::uint32_t>& setpoint_signal() noexcept { return setpoint_signal_; }
+  // A probe (docs/gateway.md G9): a SetpointCycle without devices that a gateway answers at once.
+  void prepare_probe(gateway::SetpointCycle& sample) const;
   // Set-up of the sender's sample: device names, byte orders, telegram numbers, reserved PZD capacity.
   void prepare_sample(gateway::SetpointCycle& sample) const;
   // Copies the newest published setpoints into a prepared sample; false if none is new since the last call.
@@ -101,9 +103,12 @@ class ExchangeCore {
   // Blocks the calling thread (never the cyclic one in a real-time set-up) until every device has answered
   // the setpoints of every cycle sent so far, or `timeout` passed. For lock-step operation and tests.
   bool wait_for_answers(std::chrono::nanoseconds timeout);
-  // Blocks until every device has received at least one answer (any controller, also an idle one).
+  // Blocks until every device has received an answer addressed to this controller (to a probe or a cycle):
+  // setpoints reach the gateway and its answers come back.
   bool wait_until_heard(std::chrono::nanoseconds timeout);
   GatewayDeviceCounters counters(std::size_t device) const noexcept;
+  // Whether the device had an answer addressed to this controller (to a probe or a cycle).
+  bool heard_by_us(std::size_t device) const noexcept { return devices_[device]->heard_by_us.load(); }
   // Answers of the device's own controller routed so far for cycle c are in cycles (c+1); 0 = none.
   std::uint64_t answered_through(std::size_t device) const noexcept {
     return devices_[device]->answered.load(std::memory_order_acquire);
@@ -143,6 +148,7 @@ class ExchangeCore {
     std::atomic<std::uint64_t> restarts{0};
     std::atomic<std::uint64_t> answered{0};
     std::atomic<std::uint64_t> last_fresh{0};
+    std::atomic<bool> heard_by_us{false};
     std::string mismatch;  // guarded by route_mutex_
   };
   struct SetpointBatch {
@@ -184,7 +190,7 @@ class ExchangeCore {
   std::atomic<std::uint64_t> answers_lost_{0};
   std::atomic<std::uint64_t> foreign_devices_{0};
   std::atomic<std::uint64_t> completed_{0};  // min over devices of `answered`
-  std::atomic<std::uint64_t> heard_{0};      // devices with at least one answer
+  std::atomic<std::uint64_t> heard_{0};      // devices with an answer addressed to this controller
   std::unique_ptr<std::array<std::atomic<std::uint32_t>, kRoundTripBuckets>> round_trip_histogram_;
   std::atomic<std::uint64_t> round_trips_{0};
   std::atomic<std::int64_t> round_trip_max_ns_{0};
