@@ -45,32 +45,54 @@ tomc::testing::GatewayProcess& gateway_for(int drives, int domain) {
   return *p;
 }
 
-void BM_GatewayCycle(benchmark::State& state) {
-  const int drives = static_cast<int>(state.range(0));
-  const bool paced = state.range(1) != 0;
-  const int domain = 190 + drives % 40;
-  gateway_for(drives, domain);
-  drives::dds::GatewayLinkConfig config;
-  config.domain = domain;
-  config.partition = tomc::testing::test_partition();
-  auto link = drives::dds::GatewayLink::create(config);
-  drives::DeviceConfig dc;
-  dc.drive_telegram = 105;
-  dc.supplementary_telegram = 750;
+// The controller side, one link per drive count, kept across repetitions: a new controller would have to wait
+// for the gateway's watchdog to release the previous one (docs/gateway.md G1).
+struct Controller {
+  std::shared_ptr<drives::dds::GatewayLink> link;
   std::vector<std::unique_ptr<drives::dds::DdsGatewayDrive>> adapters;
   std::vector<drives::DeviceFrames> actual;
   std::vector<drives::DeviceFrames> setpoint;
+  std::string problem;  // non-empty: the gateway did not answer
+};
+
+Controller& controller_for(int drives, int domain) {
+  static std::map<int, std::unique_ptr<Controller>> controllers;
+  auto& c = controllers[drives];
+  if (c) return *c;
+  gateway_for(drives, domain);
+  c = std::make_unique<Controller>();
+  drives::dds::GatewayLinkConfig config;
+  config.domain = domain;
+  config.partition = tomc::testing::test_partition();
+  c->link = drives::dds::GatewayLink::create(config);
+  drives::DeviceConfig dc;
+  dc.drive_telegram = 105;
+  dc.supplementary_telegram = 750;
   for (int i = 0; i < drives; ++i) {
-    adapters.push_back(link->make_drive("d" + std::to_string(i), dc));
-    actual.push_back(drives::make_frames(dc, telegrams::Direction::kActual));
-    setpoint.push_back(drives::make_frames(dc, telegrams::Direction::kSetpoint));
+    c->adapters.push_back(c->link->make_drive("d" + std::to_string(i), dc));
+    c->actual.push_back(drives::make_frames(dc, telegrams::Direction::kActual));
+    c->setpoint.push_back(drives::make_frames(dc, telegrams::Direction::kSetpoint));
   }
-  for (const auto& r : link->connect(std::chrono::seconds(20))) {
-    if (r.diagnosis != drives::dds::DeviceDiagnosis::kAnswering) {
-      state.SkipWithError(r.text.c_str());
-      return;
+  for (const auto& r : c->link->connect(std::chrono::seconds(20))) {
+    if (r.diagnosis != drives::dds::DeviceDiagnosis::kAnswering) c->problem = r.text;
+  }
+  return *c;
+}
+
+void BM_GatewayCycle(benchmark::State& state) {
+  const int drives = static_cast<int>(state.range(0));
+  const bool paced = state.range(1) != 0;
+  Controller& c = controller_for(drives, 190 + drives % 40);
+  if (!c.problem.empty()) {
+    state.SkipWithError(c.problem.c_str());
+    for (auto _ : state) {  // Google Benchmark 1.7 needs the iterations run even when skipped
     }
+    return;
   }
+  auto& link = c.link;
+  auto& adapters = c.adapters;
+  auto& actual = c.actual;
+  auto& setpoint = c.setpoint;
   std::uint64_t missed = 0;
   auto next = Clock::now();
   int warm_up = 50;
