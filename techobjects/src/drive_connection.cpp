@@ -1,5 +1,7 @@
 #include "tomc/techobjects/drive_connection.hpp"
 
+#include <algorithm>
+
 #include "tomc/telegrams/normalisation.hpp"
 
 namespace tomc::techobjects {
@@ -24,7 +26,10 @@ std::string_view to_string(CommunicationFault fault) noexcept {
 }
 
 DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& config)
-    : device_(&device), config_(config), slave_monitor_(config.sign_of_life) {
+    : device_(&device),
+      config_(config),
+      slave_monitor_(config.sign_of_life),
+      peer_restarts_(device.adapter->link_health().peer_restarts) {
   const auto& dc = device.adapter->config();
   for (std::size_t i = 0; i < drives::kSlotCount; ++i) {
     const auto t = dc.telegram(static_cast<Slot>(i));
@@ -67,7 +72,16 @@ bool DriveConnection::in_operation() const noexcept {
 
 void DriveConnection::read() noexcept {
   if (device_ == nullptr) return;
-  const bool fresh = device_->fresh;
+  bool fresh = device_->fresh;
+  // A restarted link partner (a gateway with a new incarnation) broke the exchange even when frames keep
+  // coming: this cycle counts as beyond the link-loss tolerance, so the TO raises its communication alarm
+  // (docs/gateway.md); the next fresh frame resynchronises as after any gap.
+  const std::uint32_t restarts = device_->adapter->link_health().peer_restarts;
+  if (restarts != peer_restarts_) {
+    peer_restarts_ = restarts;
+    fresh = false;
+    missed_ = std::max(missed_, config_.link_loss_tolerance_cycles);
+  }
   if (fresh) {
     // After a gap the drive's counter has moved on: resynchronise; the gap is the link supervision's
     // business.

@@ -147,9 +147,8 @@ TEST(ScenarioConfig, LoaderWritesStartValues) {
 TEST(ScenarioDrive, AdapterAndTelegram) {
   EXPECT_NE(
       problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
-          .find(
-              "technology_objects[0].drive.adapter: 'dds' (the Fast DDS gateway adapter for real drives) is "
-              "not available yet"),
+          .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
+                "\"dds_gateway\""),
       std::string::npos);
   EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")).find("drive.adapter: 'analog'"),
             std::string::npos);

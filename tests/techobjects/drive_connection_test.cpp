@@ -190,4 +190,46 @@ TEST(DriveConnection, FaultAcknowledgeSequence) {
   EXPECT_TRUE(m.connection().in_operation());
 }
 
+// A link partner that restarted (LinkHealth::peer_restarts, e.g. a gateway with a new incarnation,
+// docs/gateway.md) is a link loss in the cycle it is seen, although frames keep arriving; the next fresh
+// frame recovers the link.
+class RestartingLink final : public tomc::drives::DriveAdapter {
+ public:
+  RestartingLink(const DeviceConfig& c, const SimulatedDriveParameters& p) : drive(c, p) {}
+  const DeviceConfig& config() const noexcept override { return drive.config(); }
+  bool read_actual(tomc::drives::DeviceFrames& a) noexcept override { return drive.read_actual(a); }
+  void write_setpoint(const tomc::drives::DeviceFrames& s) noexcept override { drive.write_setpoint(s); }
+  tomc::drives::LinkHealth link_health() const noexcept override {
+    auto h = drive.link_health();
+    h.peer_restarts = restarts;
+    return h;
+  }
+  SimulatedDrive drive;
+  std::uint32_t restarts = 0;
+};
+
+TEST(DriveConnection, PeerRestartIsALinkLoss) {
+  Runtime runtime(RuntimeConfig{0.001, 1, 1});
+  DeviceConfig device;
+  device.drive_telegram = 3;
+  auto owned = std::make_unique<RestartingLink>(device, SimulatedDriveParameters{});
+  RestartingLink* link = owned.get();
+  auto& io = runtime.add_device(std::move(owned));
+  DriveConnectionConfig c;
+  c.link_loss_tolerance_cycles = 3;
+  auto& object = runtime.emplace<ConnectionObject>(io, c);
+  runtime.start();
+  object.connection.request(tg::DriveRequest::kOperate);
+  for (int i = 0; i < 10; ++i)
+    runtime.step();
+  ASSERT_TRUE(object.connection.communication_ok());
+  link->restarts = 1;
+  runtime.step();
+  EXPECT_EQ(object.connection.communication_fault(), CommunicationFault::kLinkLost);
+  EXPECT_GT(object.connection.cycles_without_fresh_frame(), c.link_loss_tolerance_cycles);
+  runtime.step();
+  EXPECT_TRUE(object.connection.communication_ok());
+  EXPECT_EQ(object.connection.cycles_without_fresh_frame(), 0u);
+}
+
 }  // namespace

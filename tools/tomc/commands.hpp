@@ -9,5 +9,6 @@ namespace tomc::cli {
 
 int telegram_command(std::span<const std::string_view> args, std::ostream& out);
 int sim_command(std::span<const std::string_view> args, std::ostream& out);
+int gateway_sim_command(std::span<const std::string_view> args, std::ostream& out);
 
 }  // namespace tomc::cli

@@ -82,6 +82,8 @@ int sim_command(std::span<const std::string_view> args, std::ostream& out) {
     trace = &file;
   }
   const scenario::RunResult result = loaded.scenario->run(trace);
+  for (const auto& line : result.warnings)
+    std::cerr << "tomc: " << *o.scenario << ": warning: " << line << '\n';
   if (o.out) {
     file.close();
     if (!file) throw UsageError("sim: writing '" + *o.out + "' failed");

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <string>
 
+#include "gateway_adapter_detail.hpp"
 #include "json_reader.hpp"
 #include "tomc/techobjects/positioning_variables.hpp"
 #include "tomc/techobjects/variables.hpp"
@@ -251,13 +252,19 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
   ObjectReader r(drive, std::string(path), problems);
   if (!r.valid()) return;
   if (const Json* v = r.get("adapter")) {
-    if (auto a = detail::read_string(*v, r.path_of("adapter"), problems)) {
-      if (*a == "dds") {
-        problems.add(
-            r.path_of("adapter"),
-            "'dds' (the Fast DDS gateway adapter for real drives) is not available yet; use 'simulated'");
+    if (v->is_object()) {
+      // The Fast DDS gateway (gateway_adapter.cpp): the drive model lives in the gateway, not here.
+      settings.gateway.emplace();
+      settings.adapter = "dds_gateway";
+      load_gateway_adapter(*v, r.path_of("adapter"), *settings.gateway, problems);
+    } else if (auto a = detail::read_string(*v, r.path_of("adapter"), problems)) {
+      if (*a == "dds" || *a == "dds_gateway") {
+        problems.add(r.path_of("adapter"),
+                     "the gateway adapter is an object: {\"type\": \"dds_gateway\", \"domain\": 0, "
+                     "\"device\": \"<name at the gateway>\"}");
       } else if (*a != "simulated") {
-        problems.add(r.path_of("adapter"), "'" + *a + "' is not an adapter (simulated; dds later)");
+        problems.add(r.path_of("adapter"),
+                     "'" + *a + "' is not an adapter ('simulated', or a dds_gateway object)");
       } else {
         settings.adapter = *a;
       }
@@ -294,6 +301,11 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
     }
   }
 
+  if (settings.gateway) {
+    detail::reject_simulated_drive_keys(drive, r, problems);
+    r.finish();
+    return;
+  }
   auto& p = settings.parameters;
   p.servo_cycle_s = cycle_time_s;
   if (const Json* v = r.get("servo_cycle_s")) {

@@ -191,7 +191,8 @@ bool is_identifier(std::string_view name) noexcept {
 std::optional<MachineObject> load_technology_object(const Json& value, const std::string& path,
                                                     double cycle_time_s, to::Runtime& runtime,
                                                     std::span<const MachineObject> existing,
-                                                    Problems& problems, std::string_view tool) {
+                                                    Problems& problems, std::string_view tool,
+                                                    GatewayLinks* gateways) {
   ObjectReader r(value, path, problems);
   if (!r.valid()) return std::nullopt;
   MachineObject entry;
@@ -227,7 +228,6 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       }
     }
   }
-  (void)tool;
   const std::size_t before = problems.size();
   to::SpeedAxisData speed_data;
   to::PositioningAxisData positioning_data;
@@ -300,7 +300,19 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
   if (!entry.name.empty() && kind && problems.size() == before) {
     drives::SimulatedDrive* drive_ptr = nullptr;
     to::DeviceIo* io = nullptr;
-    if (has_drive) {
+    if (has_drive && drive.gateway) {
+      if (gateways == nullptr) {
+        problems.add(r.path_of("drive") + ".adapter",
+                     "a gateway drive is not available in " + std::string(tool));
+        return entry.name.empty() ? std::nullopt : std::optional<MachineObject>(std::move(entry));
+      }
+      try {
+        io = &runtime.add_device(gateways->make_drive(*drive.gateway, drive.device_config(), cycle_time_s));
+      } catch (const std::exception& e) {
+        problems.add(r.path_of("drive") + ".adapter", e.what());
+        return entry.name.empty() ? std::nullopt : std::optional<MachineObject>(std::move(entry));
+      }
+    } else if (has_drive) {
       auto owned = std::make_unique<drives::SimulatedDrive>(drive.device_config(), drive.parameters);
       drive_ptr = owned.get();
       io = &runtime.add_device(std::move(owned));

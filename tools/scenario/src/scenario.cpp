@@ -185,6 +185,8 @@ struct Scenario::Impl {
   double cycle_time = 0.001;
   std::uint64_t cycles = 0;
   std::unique_ptr<to::Runtime> runtime;
+  // Drives behind a Fast DDS gateway (gateway_adapter.hpp); empty with simulated drives only.
+  GatewayLinks gateways;
   std::vector<TechnologyObjectEntry> objects;
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
@@ -371,7 +373,8 @@ void Scenario::Impl::load(const Json& document) {
 }
 
 void Scenario::Impl::load_technology_object(const Json& value, const std::string& path) {
-  if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems)) {
+  if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems,
+                                                    "tomc sim", &gateways)) {
     objects.push_back(std::move(*entry));
   }
 }
@@ -976,8 +979,11 @@ RunResult Scenario::run(std::ostream* trace) {
   if (trace != nullptr) *trace << trace_header() << '\n';
   auto next_expectation = s.expectations.begin();
   std::string row;
+  if (!s.gateways.empty()) result.warnings = s.gateways.connect();
   for (s.cycle = 0; s.cycle < s.cycles; ++s.cycle) {
     s.runtime->step();
+    // Drives behind a gateway: lock-step, each cycle's answers (or their timeout) before the next cycle.
+    if (!s.gateways.empty()) s.gateways.wait_for_answers();
     ++result.cycles_run;
     // Single-threaded: the store writes a pending snapshot between cycles, outside Runtime::step().
     if (s.retain) (void)s.retain->service();

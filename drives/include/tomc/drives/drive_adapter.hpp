@@ -51,6 +51,10 @@ struct LinkHealth {
   std::uint32_t consecutive_missed = 0;  // servo cycles in a row without a fresh actual frame
   std::uint64_t missed_total = 0;
   std::uint64_t exchanges = 0;
+  // Restarts of the link partner seen so far (e.g. a gateway that came back with a new incarnation): the
+  // exchange was broken even if no cycle went without a frame, and the drive connection treats it as a link
+  // loss (docs/gateway.md).
+  std::uint32_t peer_restarts = 0;
 };
 
 class DriveAdapter {

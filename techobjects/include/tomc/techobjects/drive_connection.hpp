@@ -108,6 +108,7 @@ class DriveConnection {
   double speed_setpoint_rpm_ = 0.0;
   double actual_speed_rpm_ = 0.0;
   std::uint32_t missed_ = 0;
+  std::uint32_t peer_restarts_ = 0;  // LinkHealth::peer_restarts last seen
   bool ever_fresh_ = false;
   bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
   bool has_zsw2_ = false;

@@ -6,6 +6,7 @@
 // Nothing here throws for bad input; problems are collected in a Problems list.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/positioning_axis_data.hpp"
+#include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/techobjects/speed_axis_data.hpp"
 
 namespace tomc::scenario {
@@ -55,13 +57,17 @@ void load_positioning_axis_config(const Json& config, std::string_view path,
 void load_external_encoder_config(const Json& config, std::string_view path,
                                   techobjects::ExternalEncoderData& data, Problems& problems);
 
-// The `drive` object: which adapter, which telegram(s) and, for the simulated drive, its machine model.
+// The `drive` object: which adapter (the simulated drive, or a dds_gateway object), which telegram(s) and,
+// for the simulated drive, its machine model.
 struct DriveSettings {
   std::string adapter = "simulated";
   std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
   std::uint16_t supplementary_telegram = 0;  // 0 or 750
   std::uint16_t encoder_telegram = 0;        // 0, 81 or 83: a separately connected encoder (slot kEncoder1)
   drives::SimulatedDriveParameters parameters{};
+  // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and
+  // the simulated-drive parameters do not apply (gateway_adapter.hpp).
+  std::optional<GatewayAdapterSettings> gateway;
   drives::DeviceConfig device_config() const;
 };
 

@@ -14,6 +14,7 @@
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/config.hpp"
+#include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/techobjects/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
 #include "tomc/techobjects/runtime.hpp"
@@ -65,11 +66,13 @@ bool is_identifier(std::string_view name) noexcept;
 // Reads technology_objects[i] at `path` and, if it has no problems, adds its drive and the TO to `runtime`
 // (which must not have started). `existing` are the objects read before (names must be unique; a synchronous
 // axis' leading values must be among them). Returns the entry whenever it has a usable name (built or not),
-// nullopt otherwise. `tool` names the program in "not yet supported by ..." messages.
+// nullopt otherwise. `tool` names the program in "not yet supported by ..." messages. Drives whose adapter is
+// a Fast DDS gateway are built through `gateways`; without it such a drive is a problem of the file.
 std::optional<MachineObject> load_technology_object(const Json& value, const std::string& path,
                                                     double cycle_time_s, techobjects::Runtime& runtime,
                                                     std::span<const MachineObject> existing,
-                                                    Problems& problems, std::string_view tool = "tomc sim");
+                                                    Problems& problems, std::string_view tool = "tomc sim",
+                                                    GatewayLinks* gateways = nullptr);
 
 // The simulated machine's position switches reach every positioning axis as a PLC's servo process image would
 // (spec 02 §4.4 "TPA OB Servo"): a pre-servo hook on `runtime`, at the levels PositionLimits_HW.*SwitchLevel

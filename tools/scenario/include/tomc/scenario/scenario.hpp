@@ -29,6 +29,7 @@ struct RunResult {
   std::size_t expectations_checked = 0;
   std::vector<std::string> failed_expectations;  // one line each, "expect[i] (cycle k): ..."
   std::vector<std::string> runtime_errors;       // e.g. a `set` refused at run time (never expected)
+  std::vector<std::string> warnings;             // e.g. a device behind a gateway that does not answer
   bool ok() const noexcept { return failed_expectations.empty() && runtime_errors.empty(); }
 };
 

@@ -1,0 +1,115 @@
+// The gateway simulator's configuration file (gateway_sim_config.hpp).
+#include "tomc/scenario/gateway_sim_config.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "json_reader.hpp"
+#include "tomc/drives/dds/contract.hpp"
+#include "tomc/drives/dds/participant.hpp"
+
+namespace tomc::scenario {
+
+namespace dds = tomc::drives::dds;
+using detail::ObjectReader;
+
+drives::DeviceConfig GatewaySimDevice::device_config() const {
+  drives::DeviceConfig c = drive.device_config();
+  c.codec.byte_order = byte_order;
+  return c;
+}
+
+void load_gateway_sim_config(const Json& document, GatewaySimConfig& config, Problems& problems) {
+  ObjectReader root(document, "", problems);
+  if (!root.valid()) return;
+  if (const Json* v = root.get("gateway")) {
+    if (auto g = detail::read_string(*v, "gateway", problems)) {
+      if (g->empty() || g->size() > dds::kMaxNameLength) {
+        problems.add("gateway", "a name of 1.." + std::to_string(dds::kMaxNameLength) + " characters");
+      } else {
+        config.gateway = *g;
+      }
+    }
+  }
+  root.integer("domain", config.domain, 0, dds::kMaxDomainId, false, true);
+  if (const Json* v = root.get("partition")) {
+    if (auto p = detail::read_string(*v, "partition", problems)) config.partition = *p;
+  }
+  root.real("cycle_time", config.cycle_time, detail::Range{0.0, 1.0, true});
+  root.real("watchdog", config.watchdog, detail::Range{0.0, 60.0, true});
+  root.integer("drop_every", config.drop_every, 0, 1'000'000);
+  root.integer("delay_us", config.delay_us, 0, 10'000'000);
+  if (const Json* v = root.get("devices", true)) {
+    if (!v->is_array() || v->empty()) {
+      problems.add("devices", "expected a non-empty array of devices, got " +
+                                  std::string(v->is_array() ? "an empty array" : detail::type_name(*v)));
+    } else if (v->size() > dds::kMaxDevices) {
+      problems.add("devices", std::to_string(v->size()) + " devices; a gateway serves at most " +
+                                  std::to_string(dds::kMaxDevices));
+    } else {
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        const std::string path = "devices[" + std::to_string(i) + "]";
+        ObjectReader r((*v)[i], path, problems);
+        if (!r.valid()) continue;
+        GatewaySimDevice device;
+        if (const Json* n = r.get("name", true)) {
+          if (auto name = detail::read_string(*n, r.path_of("name"), problems)) {
+            if (name->empty() || name->size() > dds::kMaxNameLength) {
+              problems.add(r.path_of("name"),
+                           "a device name of 1.." + std::to_string(dds::kMaxNameLength) + " characters");
+            } else {
+              for (const auto& other : config.devices) {
+                if (other.name == *name) problems.add(r.path_of("name"), "'" + *name + "' is defined twice");
+              }
+              device.name = *name;
+            }
+          }
+        }
+        if (const Json* b = r.get("byte_order")) {
+          if (auto c = detail::read_choice(*b, r.path_of("byte_order"),
+                                           {"big", "little-bytes", "swapped-words", "little"}, problems)) {
+            device.byte_order = static_cast<telegrams::ByteOrder>(*c);
+          }
+        }
+        if (const Json* d = r.get("drive", true)) {
+          load_drive(*d, r.path_of("drive"), config.cycle_time, device.drive, problems);
+          if (device.drive.gateway) {
+            problems.add(r.path_of("drive") + ".adapter",
+                         "a gateway simulator's device is a simulated drive, not another gateway");
+          }
+        }
+        r.finish();
+        config.devices.push_back(std::move(device));
+      }
+    }
+  }
+  root.finish();
+}
+
+void load_gateway_sim_config_file(const std::filesystem::path& file, GatewaySimConfig& config,
+                                  Problems& problems) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    problems.add(file.string(), std::string("cannot read: ") + std::strerror(errno));
+    return;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  Json document;
+  try {
+    document = Json::parse(text.str());
+  } catch (const Json::parse_error& e) {
+    std::string what = e.what();
+    if (const auto close = what.find("] ");
+        what.starts_with("[json.exception") && close != std::string::npos) {
+      what.erase(0, close + 2);
+    }
+    problems.add(file.string(), "malformed JSON: " + what);
+    return;
+  }
+  load_gateway_sim_config(document, config, problems);
+}
+
+}  // namespace tomc::scenario
