@@ -12,7 +12,9 @@ inline constexpr std::uint16_t kNone = 0x0000;
 // From the manual (spec 03 §5):
 inline constexpr std::uint16_t kAbortedByAlarmReaction =
     0x8001;  // a technology alarm's stop reaction ended the job
-inline constexpr std::uint16_t kJogWrongDirection = 0x8007;  // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kJogWrongDirection = 0x8007;   // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kControlPanelActive = 0x8012;  // the axis control panel has control priority
+inline constexpr std::uint16_t kLifebeatExpired = 0x8013;     // the panel's lifebeat monitoring time elapsed
 // tomc's own (spec 03 §5 [IMPL]):
 inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"
 inline constexpr std::uint16_t kLockedByStop = 0x8102;    // an MC_Stop with Execute = TRUE blocks motion jobs
