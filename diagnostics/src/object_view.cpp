@@ -70,27 +70,45 @@ void ObjectView::resolve_telegrams() {
       }
     }
   }
-  telegram_probes_ = std::make_unique<TelegramProbe[]>(channels_.size());
-  for (std::size_t i = 0; i < channels_.size(); ++i)
-    telegram_probes_[i] = TelegramProbe{this, i};
+  sources_ = std::make_unique<TelegramSource[]>(channels_.size());
+  for (std::size_t i = 0; i < channels_.size(); ++i) {
+    const TelegramChannel& c = channels_[i];
+    const bool actual = c.direction == tg::Direction::kActual;
+    TelegramSource& s = sources_[i];
+    s.signal = c.signal;
+    s.actual = nullptr;
+    s.setpoint = nullptr;
+    switch (c.slot) {
+      case drives::Slot::kDrive:
+        if (actual)
+          s.actual = &d->drive_actual();
+        else
+          s.setpoint = &d->drive_setpoint();
+        break;
+      case drives::Slot::kSupplementary:
+        if (actual)
+          s.actual = &d->supplementary_actual();
+        else
+          s.setpoint = &d->supplementary_setpoint();
+        break;
+      case drives::Slot::kEncoder1:
+        if (actual)
+          s.actual = &d->encoder_actual(0);
+        else
+          s.setpoint = &d->encoder_setpoint(0);
+        break;
+      case drives::Slot::kEncoder2:
+        if (actual)
+          s.actual = &d->encoder_actual(1);
+        else
+          s.setpoint = &d->encoder_setpoint(1);
+        break;
+    }
+  }
 }
 
 std::uint32_t ObjectView::telegram_word(std::size_t i) const noexcept {
-  const to::DriveConnection* d = drive();
-  if (d == nullptr || i >= channels_.size()) return 0;
-  const TelegramChannel& c = channels_[i];
-  const bool actual = c.direction == tg::Direction::kActual;
-  switch (c.slot) {
-    case drives::Slot::kDrive:
-      return actual ? d->drive_actual().raw(c.signal) : d->drive_setpoint().raw(c.signal);
-    case drives::Slot::kSupplementary:
-      return actual ? d->supplementary_actual().raw(c.signal) : d->supplementary_setpoint().raw(c.signal);
-    case drives::Slot::kEncoder1:
-      return actual ? d->encoder_actual(0).raw(c.signal) : d->encoder_setpoint(0).raw(c.signal);
-    case drives::Slot::kEncoder2:
-      return actual ? d->encoder_actual(1).raw(c.signal) : d->encoder_setpoint(1).raw(c.signal);
-  }
-  return 0;
+  return i < channels_.size() ? sources_[i].read() : 0;
 }
 
 namespace {
@@ -136,10 +154,9 @@ std::optional<Probe> ObjectView::probe(std::string_view path) const {
     if (slot_name(c.slot) != slot || c.signal != *signal) continue;
     if (bit >= 0 && bit >= static_cast<std::int8_t>(tg::info(c.signal).bits)) return std::nullopt;
     constexpr auto read = [](const void* object) noexcept -> double {
-      const auto* p = static_cast<const TelegramProbe*>(object);
-      return static_cast<double>(p->view->telegram_word(p->index));
+      return static_cast<double>(static_cast<const TelegramSource*>(object)->read());
     };
-    return Probe{read, &telegram_probes_[i], bit};
+    return Probe{read, &sources_[i], bit};
   }
   return std::nullopt;
 }

@@ -63,12 +63,18 @@ class ObjectView {
   std::optional<Probe> probe(std::string_view path) const;
 
  private:
-  struct TelegramProbe {  // what a telegram probe reads; stable addresses after resolve_telegrams()
-    const ObjectView* view;
-    std::size_t index;
+  // Where a channel's word lives in the drive connection, resolved once (no look-up, no virtual call in the
+  // cycle). Stable addresses after resolve_telegrams(): trace probes point at them.
+  struct TelegramSource {
+    const telegrams::ActualSignals* actual;  // one of the two is set
+    const telegrams::SetpointSignals* setpoint;
+    telegrams::Signal signal;
+    std::uint32_t read() const noexcept {
+      return actual != nullptr ? actual->raw(signal) : setpoint->raw(signal);
+    }
   };
   std::vector<TelegramChannel> channels_;
-  std::unique_ptr<TelegramProbe[]> telegram_probes_;
+  std::unique_ptr<TelegramSource[]> sources_;
 };
 
 template <typename Object>
