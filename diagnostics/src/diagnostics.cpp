@@ -151,6 +151,9 @@ void Diagnostics::attach(to::Runtime& runtime) {
   std::lock_guard lock(mutex_);
   state_.objects.resize(objects_.size());
   for (std::size_t i = 0; i < objects_.size(); ++i) {
+    // Staggered over the publish period so that no cycle copies every object.
+    objects_[i]->publish_slot =
+        (i * config_.publish_period_cycles / objects_.size()) % config_.publish_period_cycles;
     state_.objects[i].snapshot.values.assign(objects_[i]->view->variables().size(), 0.0);
     state_.objects[i].snapshot.words.assign(objects_[i]->view->telegram_channels().size(), 0);
   }
@@ -188,11 +191,10 @@ void Diagnostics::cycle(const to::CycleClock& clock) noexcept {
   for (auto& o : objects_) {
     if (o->panel) o->panel->cycle(clock);
   }
-  // 3. Snapshots, staggered over the publish period so that no cycle copies every object.
-  const std::uint64_t period = config_.publish_period_cycles;
-  const std::uint64_t slot = clock.servo_cycles % period;
-  for (std::size_t i = 0; i < objects_.size(); ++i) {
-    if ((i * period / objects_.size()) % period == slot) publish(*objects_[i], clock.servo_cycles);
+  // 3. Snapshots, each object in its own slot of the publish period.
+  const std::uint64_t slot = clock.servo_cycles % config_.publish_period_cycles;
+  for (auto& o : objects_) {
+    if (o->publish_slot == slot) publish(*o, clock.servo_cycles);
   }
   // 4. Trace.
   recorder_.sample(clock.servo_cycles);

@@ -150,7 +150,7 @@ class Diagnostics {
     std::unique_ptr<AxisPanel> panel;
     std::vector<ResolvedItem> items;  // diagnostics_layout(type), in order
     TripleBuffer<ObjectSnapshot> buffer;
-    std::uint64_t last_event = 0;  // the cycle's: sequence of the newest event published
+    std::uint64_t publish_slot = 0;  // published when servo_cycles % publish_period_cycles == publish_slot
   };
   void publish(Object& object, std::uint64_t cycle) noexcept;
   void answer(std::uint64_t request, PanelAnswer answer) noexcept;
