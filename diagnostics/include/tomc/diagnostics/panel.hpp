@@ -153,7 +153,15 @@ class AxisPanel {
 
 // The panel of every axis that has MC_Power, MC_MoveJog, MC_MoveVelocity, MC_Halt and MC_Reset,
 // control_priority(), program_released() and data().DynamicLimits. Axis types with more functions (homing,
-// positioning) derive from it and override the *_extra hooks (docs/architecture.md "Axis control panel").
+// positioning) derive from it:
+//   - extra_capabilities(): their capability bits (kHomeActive, kHomeSetPosition, kMoveAbsolute, ...);
+//   - extra_command(): take their commands (kHome, kMoveAbsolute, kMoveRelative) and start their instruction
+//     with start(fb) (a fresh Execute edge), using velocity() and dynamics(); set_motion() for the page;
+//   - call_extra(): call their instructions each cycle (already inside the PanelCall), then
+//   end_when_idle(fb);
+//   - release_extra(): drop their Execute inputs when the panel stops, disables or gives back;
+//   - watch_extra_errors(): watch(fb, flag) per instruction, so that errors reach the page;
+//   - instruction_names() and extra_status(): their outputs in PanelStatus::instructions[5..7].
 template <typename Axis>
 class BasicAxisPanel : public AxisPanel {
  public:
@@ -223,7 +231,7 @@ class BasicAxisPanel : public AxisPanel {
     }
     // Execute-edge instructions: Execute stays TRUE while the job runs and falls when it has ended, so that
     // the next command gives a new edge.
-    if (!reset_.Busy) reset_.Execute = false;
+    end_when_idle(reset_);
     if (!halt_.Busy) {
       halt_.Execute = false;
       if (motion_ == PanelMotion::kStopping) motion_ = PanelMotion::kNone;
@@ -287,6 +295,11 @@ class BasicAxisPanel : public AxisPanel {
   void watch(const Instruction& fb, bool& was_error) noexcept {
     if (fb.Error && !was_error) report_error(fb.ErrorID);
     was_error = fb.Error;
+  }
+  // An Execute-edge instruction whose job ended gets Execute = FALSE, so that the next command gives an edge.
+  template <typename Instruction>
+  static void end_when_idle(Instruction& fb) noexcept {
+    if (!fb.Busy) fb.Execute = false;
   }
   void report_error(std::uint16_t error_id) noexcept {
     error_id_ = error_id;
