@@ -12,7 +12,6 @@ namespace tg = tomc::telegrams;
 
 namespace {
 
-constexpr double kDegreesPerRevolution = 360.0;
 constexpr std::uint32_t kMaxStepsPerRevolution = 8388608;       // seed 004 §10.3 Sensor.Parameter
 constexpr std::uint32_t kMaxDeterminableRevolutions = 8388608;  // seed 004 §10.3 Sensor.Parameter
 constexpr std::uint32_t kMaxFineResolution = 31;
@@ -43,7 +42,8 @@ std::int64_t wrapping_mul(std::int64_t a, std::int64_t b) noexcept {
 
 // Load travel per load revolution: LeadScrew (linear axis) or 360° (rotary axis).
 double units_per_load_revolution(const AxisMechanics& axis) noexcept {
-  return axis.MotionType == AxisMotionType::kLinear ? axis.Mechanics.LeadScrew : kDegreesPerRevolution;
+  return axis.MotionType == AxisMotionType::kLinear ? axis.Mechanics.LeadScrew
+                                                    : axis.RotaryUnitsPerRevolution;
 }
 
 std::uint64_t measuring_range_of(const EncoderMechanics& e) noexcept {

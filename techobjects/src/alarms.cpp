@@ -19,6 +19,9 @@ constexpr AlarmDefinition kAlarms[] = {
     {kAlarmModuloTooFast, C::kAcknowledge, R::kRemoveEnable,
      "modulo axis faster than Modulo.Length / servo cycle"},
     {kAlarmDriveSto, C::kAcknowledge, R::kRemoveEnable, "drive STO / autonomous OFF2"},
+    {kAlarmSensorFault, C::kAcknowledge, R::kRemoveEnable, "encoder error (Gx_ZSW.15, code in Gx_XIST2)"},
+    {kAlarmAdjustmentLost, C::kAcknowledge, R::kNone,
+     "absolute-encoder adjustment not restored (backup missing or corrupt): the axis is not homed"},
     {kAlarmDynamicsLimitedVelocity, C::kWarning, R::kNone,
      "programmed velocity limited to the dynamic limits"},
     {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone,
@@ -31,6 +34,13 @@ constexpr AlarmDefinition kAlarms[] = {
     {kAlarmSoftwareLimitExceeded, C::kAcknowledge, R::kRemoveEnable, "software limit switch passed"},
     {kAlarmPositioning, C::kAcknowledge, R::kRemoveEnable, "positioning monitoring"},
     {kAlarmDriveSafeStop, C::kAcknowledge, R::kFollowSetpoint, "drive-autonomous SS1/SS2 OFF3 braking"},
+    {kAlarmHomingFailed, C::kAcknowledge, R::kStopMaxDynamics, "homing could not be completed"},
+    {kAlarmLeadingAxisDefective, C::kAcknowledge, R::kStopMaxDynamics,
+     "leading axis not assigned (not a configured leading value) or defective"},
+    {kAlarmLeaderNotPositionControlled, C::kAcknowledge, R::kRemoveEnable,
+     "leading axis not position-controlled (setpoint coupling)"},
+    {kAlarmSynchronizationError, C::kAcknowledge, R::kStopMaxDynamics,
+     "error during synchronization / desynchronization: the leading value reversed"},
 };
 
 }  // namespace

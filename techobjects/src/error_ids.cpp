@@ -14,6 +14,22 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "the axis control panel has control priority (jobs of the user program are rejected)";
     case kLifebeatExpired:
       return "lifebeat monitoring of the axis control panel expired: axis stopped, control priority returned";
+    case kInvalidRatioNumerator:
+      return "RatioNumerator 0 is not allowed";
+    case kInvalidRatioDenominator:
+      return "RatioDenominator must be 1 or more";
+    case kRecursiveLeadingValue:
+      return "the following axis would be the origin of its own leading value";
+    case kInvalidMasterStartDistance:
+      return "invalid MasterStartDistance / MasterStopDistance";
+    case kInvalidMasterSyncPosition:
+      return "invalid MasterSyncPosition (the leader is already past the start of synchronization)";
+    case kInvalidSyncProfileReference:
+      return "invalid SyncProfileReference";
+    case kNoGearing:
+      return "no MC_GearIn / MC_GearInPos pending or active";
+    case kHomingDuringGearInPos:
+      return "MC_Home is not possible while MC_GearInPos is active";
     case kRejectedByRunningJob:
       return "rejected by a running job (override matrix cell N)";
     case kLockedByStop:
@@ -22,6 +38,24 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "technology object not enabled";
     case kAxisBlockedByAlarm:
       return "technology object blocked by an alarm reaction";
+    case kAxisNotHomed:
+      return "technology object not homed";
+    case kEncoderNotValid:
+      return "encoder actual value not valid";
+    case kHomingModeNotAvailable:
+      return "homing mode not available on this technology object";
+    case kNotPositionControlled:
+      return "the job needs position-controlled operation";
+    case kBusy:
+      return "a backup of the absolute-encoder adjustment is still being written";
+    case kBackupFailed:
+      return "the absolute-encoder backup could not be written";
+    case kInvalidPosition:
+      return "invalid Position or Distance (not finite, or outside the modulo range)";
+    case kInvalidBufferMode:
+      return "invalid BufferMode";
+    case kInvalidSensor:
+      return "invalid Sensor";
     case kInvalidVelocity:
       return "invalid Velocity";
     case kInvalidAcceleration:

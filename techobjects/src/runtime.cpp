@@ -2,6 +2,7 @@
 // A6 (MC_PreServo -> MC_Servo -> MC_PostServo).
 #include "tomc/techobjects/runtime.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -57,6 +58,40 @@ void Runtime::set_user_program(Hook hook) {
 
 void Runtime::start() {
   require_setup("start");
+  // Leaders before followers (spec 07 §6.1): a depth-first topological order that keeps the order of
+  // addition where nothing forces otherwise; a cycle in the coupling graph is a configuration error.
+  enum class Mark : std::uint8_t { kNone, kVisiting, kDone };
+  std::vector<Mark> marks(objects_.size(), Mark::kNone);
+  std::vector<TechnologyObject*> order;
+  const auto index_of = [&](const TechnologyObject* o) -> std::size_t {
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      if (objects_[i].get() == o) return i;
+    }
+    throw std::logic_error("start: " + std::string(o != nullptr ? o->name() : "(null)") +
+                           " is a leading value of another technology object but not in this runtime");
+  };
+  std::vector<std::size_t> path;
+  const auto visit = [&](auto&& self, std::size_t i) -> void {
+    if (marks[i] == Mark::kDone) return;
+    if (marks[i] == Mark::kVisiting) {
+      std::string chain;
+      const auto from = std::find(path.begin(), path.end(), i);
+      for (auto it = from; it != path.end(); ++it)
+        chain += std::string(objects_[*it]->name()) + " -> ";
+      throw std::logic_error("start: the leading-value interconnections form a cycle: " + chain +
+                             std::string(objects_[i]->name()) + " (spec 07 §1.2)");
+    }
+    marks[i] = Mark::kVisiting;
+    path.push_back(i);
+    for (TechnologyObject* leader : objects_[i]->leaders())
+      self(self, index_of(leader));
+    path.pop_back();
+    marks[i] = Mark::kDone;
+    order.push_back(objects_[i].get());
+  };
+  for (std::size_t i = 0; i < objects_.size(); ++i)
+    visit(visit, i);
+  cycle_order_ = std::move(order);
   started_ = true;
 }
 
@@ -67,7 +102,7 @@ void Runtime::step() noexcept {
   // MC_Servo: read every actual frame, servo part of every TO, write every setpoint frame.
   for (auto& d : devices_)
     d->fresh = d->adapter->read_actual(d->actual);
-  for (auto& o : objects_)
+  for (TechnologyObject* o : cycle_order_)
     o->servo(clock_);
   for (auto& d : devices_)
     d->adapter->write_setpoint(d->setpoint);
@@ -76,7 +111,7 @@ void Runtime::step() noexcept {
   const std::uint64_t cycle = clock_.servo_cycles;
   // MC_Interpolator, then the user program, at their ratios of the servo cycle.
   if (cycle % config_.interpolator_ratio == 0) {
-    for (auto& o : objects_)
+    for (TechnologyObject* o : cycle_order_)
       o->interpolate(clock_);
     ++clock_.interpolator_cycles;
   }

@@ -76,29 +76,15 @@ bool SpeedAxis::blocked() const noexcept {
 // Job records
 
 JobId SpeedAxis::new_job(JobKind kind, JobState state) noexcept {
-  const JobId id = next_job_++;
-  if (next_job_ == 0) next_job_ = 1;
-  auto& r = jobs_[id % jobs_.size()];
-  r = JobRecord{id, kind, JobStatus{state, 0, false}};
-  return id;
-}
-
-SpeedAxis::JobRecord* SpeedAxis::record(JobId id) noexcept {
-  auto& r = jobs_[id % jobs_.size()];
-  return (id != 0 && r.id == id) ? &r : nullptr;
+  return jobs_.create(kind, state);
 }
 
 void SpeedAxis::set_job(JobId id, JobState state, std::uint16_t error_id) noexcept {
-  if (auto* r = record(id)) {
-    r->status.state = state;
-    r->status.error_id = error_id;
-    if (state != JobState::kActive) r->status.in_velocity = false;
-  }
+  jobs_.set(id, state, error_id);
 }
 
 JobStatus SpeedAxis::job_status(JobId id) const noexcept {
-  const auto& r = jobs_[id % jobs_.size()];
-  return (id != 0 && r.id == id) ? r.status : JobStatus{};
+  return jobs_.status(id);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -656,7 +642,7 @@ void SpeedAxis::generate_setpoint() noexcept {
     } else if (motion_.kind == JobKind::kJog && motion_.jog_stopping && settled && at_zero) {
       set_job(motion_.id, JobState::kDone);  // J2: Busy ends at standstill
       motion_ = Motion{};
-    } else if (auto* r = record(motion_.id)) {
+    } else if (auto* r = jobs_.find(motion_.id)) {
       r->status.in_velocity = settled && !motion_.jog_stopping;
     }
   }

@@ -25,6 +25,7 @@ struct Row {
   bool s;
   bool py;
   bool e;
+  bool y_only = false;  // a synchronous-axis bit of spec 07 §1.9, reserved on P
 };
 
 // Holds an enum against a spec table: numbers, names, per-TO availability, and that the enum has no extra
@@ -32,7 +33,7 @@ struct Row {
 template <typename Bit, std::size_t N>
 void expect_table(const std::vector<Row<Bit>>& rows, const std::array<Bit, N>& all_bits,
                   std::uint32_t (*mask)(TechnologyObjectType)) {
-  std::uint32_t s_mask = 0, py_mask = 0, e_mask = 0;
+  std::uint32_t s_mask = 0, py_mask = 0, y_mask = 0, e_mask = 0;
   std::set<int> numbers;
   for (const auto& row : rows) {
     SCOPED_TRACE(row.name);
@@ -40,18 +41,19 @@ void expect_table(const std::vector<Row<Bit>>& rows, const std::array<Bit, N>& a
     EXPECT_EQ(name(row.bit), row.name);
     EXPECT_EQ(defined_on(S, row.bit), row.s);
     EXPECT_EQ(defined_on(P, row.bit), row.py);
-    EXPECT_EQ(defined_on(Y, row.bit), row.py);  // Y has all P variables (spec 04 §0.1)
+    EXPECT_EQ(defined_on(Y, row.bit), row.py || row.y_only);  // Y has all P variables (spec 04 §0.1)
     EXPECT_EQ(defined_on(E, row.bit), row.e);
     EXPECT_TRUE(numbers.insert(row.number).second) << "bit listed twice";
     const auto m = std::uint32_t{1} << row.number;
     if (row.s) s_mask |= m;
     if (row.py) py_mask |= m;
+    if (row.py || row.y_only) y_mask |= m;
     if (row.e) e_mask |= m;
   }
   // The mask has no bit the table calls reserved.
   EXPECT_EQ(mask(S), s_mask);
   EXPECT_EQ(mask(P), py_mask);
-  EXPECT_EQ(mask(Y), py_mask);
+  EXPECT_EQ(mask(Y), y_mask);
   EXPECT_EQ(mask(E), e_mask);
   // Every enumerator is a row of the table, in bit order.
   ASSERT_EQ(all_bits.size(), rows.size());
@@ -59,7 +61,8 @@ void expect_table(const std::vector<Row<Bit>>& rows, const std::array<Bit, N>& a
     EXPECT_EQ(static_cast<int>(all_bits[i]), rows[i].number) << i;
 }
 
-// spec 04 §5.1 (man. §10.2.15, §10.3.38, §10.4.15); bits 19-22 and 24 are reserved everywhere
+// spec 04 §5.1 (man. §10.2.15, §10.3.38, §10.4.15); bits 19-22 and 24 are reserved on S, P, E; Y uses 21/22
+// (spec 07 §1.9)
 TEST(StatusBits, StatusWord) {
   using enum StatusWordBit;
   const std::vector<Row<StatusWordBit>> rows = {
@@ -82,6 +85,8 @@ TEST(StatusBits, StatusWord) {
       {kSWLimitMaxActive, 16, "SWLimitMaxActive", false, true, false},
       {kHWLimitMinActive, 17, "HWLimitMinActive", false, true, false},
       {kHWLimitMaxActive, 18, "HWLimitMaxActive", false, true, false},
+      {kSynchronizing, 21, "Synchronizing", false, false, false, true},  // spec 07 §1.9
+      {kSynchronous, 22, "Synchronous", false, false, false, true},      // spec 07 §1.9
       {kMoveSuperimposedCommand, 23, "MoveSuperimposedCommand", false, true, false},
       {kAxisSimulation, 25, "AxisSimulation", true, true, false},
       {kTorqueLimitingCommand, 26, "TorqueLimitingCommand", true, true, false},
@@ -99,6 +104,7 @@ TEST(StatusBits, StatusWord2) {
   using enum StatusWord2Bit;
   const std::vector<Row<StatusWord2Bit>> rows = {
       {kStopCommand, 0, "StopCommand", true, true, false},
+      {kDesynchronizingCommand, 1, "DesynchronizingCommand", false, false, false, true},  // spec 07 §1.9
       {kPassingBacklash, 2, "PassingBacklash", false, true, false},
       {kMotionInSuperimposedCommand, 6, "MotionInSuperimposedCommand", false, true, false},
       {kHaltSuperimposedCommand, 7, "HaltSuperimposedCommand", false, true, false},
@@ -128,6 +134,7 @@ TEST(StatusBits, ErrorWord) {
       {kFollowingErrorFault, 11, "FollowingErrorFault", false, true, false},
       {kPositioningFault, 12, "PositioningFault", false, true, false},
       {kPeripheralError, 13, "PeripheralError", true, true, true},
+      {kSynchronousError, 14, "SynchronousError", false, false, false, true},  // spec 07 §1.9
       {kAdaptionError, 15, "AdaptionError", true, true, true},
       {kSuperimposingError, 16, "SuperimposingError", false, true, false},
   };
@@ -154,6 +161,7 @@ TEST(StatusBits, WarningWord) {
       {kFollowingErrorWarning, 11, "FollowingErrorWarning", false, true, false},
       {kPositioningWarning, 12, "PositioningWarning", false, true, false},
       {kPeripheralWarning, 13, "PeripheralWarning", true, true, true},
+      {kSynchronousWarning, 14, "SynchronousWarning", false, false, false, true},  // spec 07 §1.9
       {kAdaptionWarning, 15, "AdaptionWarning", true, true, true},
       {kSuperimposingWarning, 16, "SuperimposingWarning", false, true, false},
   };

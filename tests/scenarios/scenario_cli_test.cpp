@@ -134,9 +134,9 @@ TEST_F(ScenarioCli, UnknownTraceName) {
 }
 
 TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
-  const SimRun r = sim(write("u.json", scenario("{}", "TO_ExternalEncoder", "MC_Power", "[]")));
+  const SimRun r = sim(write("u.json", scenario("{}", "TO_SynchronousAxis", "MC_Power", "[]")));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("technology_objects[0].type: TO_ExternalEncoder is not yet supported"),
+  EXPECT_NE(r.err.find("technology_objects[0].type: TO_SynchronousAxis is not yet supported"),
             std::string::npos)
       << r.err;
 }
@@ -169,6 +169,58 @@ TEST_F(ScenarioCli, CommandLineErrors) {
   r = sim("--help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("usage: tomc sim SCENARIO.json"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// docs/scenarios.md "retain_file", spec 02 §5.9 / §11 scenario 39: run 1 adjusts an absolute encoder (MC_Home
+// Mode 7 at 250 mm) and the end of the run writes the adjustment; run 2, on the same mechanics, starts homed
+// at 250 mm without homing. Without the file (or with a damaged one) run 2 reports alarm 432 and is not
+// homed.
+class ScenarioRetain : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / "tomc_sim_retain";
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  int sim(const std::string& name, const std::string& text) {
+    const auto p = dir_ / name;
+    std::ofstream(p) << text;
+    const std::string command = std::string(TOMC_BINARY) + " sim " + p.string() + " >/dev/null 2>" +
+                                (dir_ / (name + ".err")).string();
+    const int raw = std::system(command.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  }
+  std::string scenario(const std::string& timeline, const std::string& expect) const {
+    return R"({ "cycle_time": 0.001, "cycles": 30, "retain_file": ")" + (dir_ / "retain.dat").string() + R"(",
+      "technology_objects": [ { "name": "Slide", "type": "TO_PositioningAxis",
+        "config": { "Sensor[1].Type": 1, "Sensor[1].Parameter.DeterminableRevolutions": 4096 },
+        "drive": { "telegram": 3, "initial_load_position": 12.0 } } ],
+      "timeline": )" +
+           timeline + R"(, "expect": )" + expect + "}";
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(ScenarioRetain, AdjustmentPersistsBetweenRuns) {
+  const std::string adjust =
+      R"([ { "cycle": 10, "instance": "home", "instruction": "MC_Home", "axis": "Slide",
+      "inputs": { "Execute": true, "Mode": 7, "Position": 250.0 } } ])";
+  const std::string homed_at_250 = R"([ { "cycle": 25, "tolerance": 0.001,
+      "values": { "Slide.StatusWord.X5": true, "Slide.ActualPosition": 250.0, "Slide.ErrorWord": 0 } } ])";
+  const std::string not_homed = R"([ { "cycle": 25, "values": { "Slide.StatusWord.X5": false,
+      "Slide.ErrorDetail.Number": 432, "Slide.ErrorWord.X10": true } } ])";
+  EXPECT_EQ(sim("second_without_file.json", scenario("[]", not_homed)), 0);
+  EXPECT_EQ(sim("first.json", scenario(adjust, R"([ { "cycle": 11, "values": { "home.Done": true } } ])")),
+            0);
+  ASSERT_TRUE(std::filesystem::exists(dir_ / "retain.dat"));
+  EXPECT_EQ(sim("second.json", scenario("[]", homed_at_250)), 0) << slurp(dir_ / "second.json.err");
+  std::ofstream(dir_ / "retain.dat", std::ios::app) << "garbage\n";
+  EXPECT_EQ(sim("second_damaged.json", scenario("[]", not_homed)), 0);
 }
 
 }  // namespace

@@ -182,10 +182,10 @@ TEST(ScenarioDrive, ModelParameters) {
   EXPECT_EQ(
       problem_of(with_drive(R"({"telegram": 2, "communication_fault_reaction": "OFF4"})")),
       "technology_objects[0].drive.communication_fault_reaction: 'OFF4' is not one of OFF1, OFF2, OFF3");
-  EXPECT_NE(
-      problem_of(with_drive(R"({"telegram": 2, "motor_inertia": 1})"))
-          .find("technology_objects[0].drive.motor_inertia: unknown key (known here: 'adapter', 'telegram'"),
-      std::string::npos);
+  EXPECT_NE(problem_of(with_drive(R"({"telegram": 2, "motor_inertia": 1})"))
+                .find("technology_objects[0].drive.motor_inertia: unknown key (known here: 'adapter', "
+                      "'encoder_telegram', 'telegram'"),
+            std::string::npos);
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 2, "initial_load_position": null})")),
             "technology_objects[0].drive.initial_load_position: expected a number, got null");
 }
@@ -321,10 +321,26 @@ TEST(ScenarioLoader, TechnologyObjects) {
   EXPECT_EQ(problem_of(d),
             "technology_objects: expected a non-empty array of technology objects, got an empty array");
   d = base();
+  d["technology_objects"][0]["type"] = "TO_SynchronousAxis";
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].type: TO_SynchronousAxis is not yet supported by tomc sim (supported: "
+            "TO_SpeedAxis, TO_PositioningAxis, TO_ExternalEncoder)");
+  // A positioning axis needs an encoder: telegram 2 carries none (spec 01 §3.3), named by the TO's path.
   d["technology_objects"][0]["type"] = "TO_PositioningAxis";
   EXPECT_EQ(problem_of(d),
-            "technology_objects[0].type: TO_PositioningAxis is not yet supported by tomc sim (supported: "
-            "TO_SpeedAxis)");
+            "technology_objects[0].config: Axis1.Sensor[1].Interface.Number: the device's telegrams carry no "
+            "such encoder (drive telegram 2, encoder telegram 0)");
+  // Units must fit the motion type (spec 04 §3.11).
+  d["technology_objects"][0]["drive"] = Json::parse(R"({"telegram": 3})");
+  d["technology_objects"][0]["config"] =
+      Json::parse(R"({"Units.LengthUnit": 1005, "Units.VelocityUnit": 1521})");
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].config: Axis1.Units.LengthUnit: a linear axis needs a length unit (m, mm, "
+            "in, ...)");
+  d["technology_objects"][0]["config"] = Json::parse(R"({"Sensor[1].Parameter.StepsPerRevolution": 0})");
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].config.Sensor[1].Parameter.StepsPerRevolution: 0 out of range 1..8388608");
+  d["technology_objects"][0]["config"] = Json::object();
   d["technology_objects"][0]["type"] = "TO_Conveyor";
   EXPECT_EQ(problem_of(d),
             "technology_objects[0].type: unknown technology object type 'TO_Conveyor' (one of "
@@ -384,7 +400,13 @@ TEST(ScenarioLoader, InstanceCreation) {
   EXPECT_NE(
       problem_of(
           with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_MoveAbsolute", "axis": "Axis1"})"))
-          .find("timeline[1].instruction: MC_MoveAbsolute is not yet supported by tomc sim"),
+          .find(
+              "timeline[1].instruction: MC_MoveAbsolute is not an instruction of TO_SpeedAxis Axis1 (spec 01 "
+              "§1.3; its instructions: MC_Power, MC_Reset"),
+      std::string::npos);
+  EXPECT_NE(
+      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_GearIn", "axis": "Axis1"})"))
+          .find("timeline[1].instruction: MC_GearIn is not yet supported by tomc sim"),
       std::string::npos);
   EXPECT_EQ(
       problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Halt", "axis": "Axis2"})")),

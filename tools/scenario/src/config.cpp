@@ -8,6 +8,7 @@
 #include <string>
 
 #include "json_reader.hpp"
+#include "tomc/techobjects/positioning_variables.hpp"
 #include "tomc/techobjects/variables.hpp"
 #include "tomc/telegrams/layout.hpp"
 
@@ -25,11 +26,11 @@ std::string lowercase(std::string_view s) {
 }
 
 // A near miss ("dynamiclimits.maxvelocity", "MaxVelocity") is most often a typo of one real path.
-std::string suggestion_for(std::string_view key) {
+std::string suggestion_for(std::string_view key, std::span<const to::VariableInfo> table) {
   const std::string lower = lowercase(key);
   std::string tail_match;
   int tail_matches = 0;
-  for (const auto& v : to::speed_axis_variables()) {
+  for (const auto& v : table) {
     if (lowercase(v.path) == lower) return " (did you mean '" + std::string(v.path) + "'?)";
     const auto dot = v.path.rfind('.');
     const std::string_view tail = dot == std::string_view::npos ? v.path : v.path.substr(dot + 1);
@@ -55,27 +56,34 @@ drives::DeviceConfig DriveSettings::device_config() const {
   drives::DeviceConfig c;
   c.drive_telegram = telegram;
   c.supplementary_telegram = supplementary_telegram;
+  c.encoder_telegrams[0] = encoder_telegram;
   return c;
 }
 
-void load_speed_axis_config(const Json& config, std::string_view path, to::SpeedAxisData& data,
-                            Problems& problems) {
+namespace {
+
+// Every key of `config` is a data-block path of `table`; the reflection table decides type, range and access.
+template <typename Data>
+void load_config(const Json& config, std::string_view path, std::string_view type_name,
+                 std::span<const to::VariableInfo> table, const to::VariableInfo* (*find)(std::string_view),
+                 Data& data, Problems& problems) {
   if (!config.is_object()) {
     problems.add(path,
                  "expected an object of data-block paths, got " + std::string(detail::type_name(config)));
     return;
   }
+  const std::string of = "not a variable of " + std::string(type_name);
   for (const auto& [key, value] : config.items()) {
     if (key == "comment") continue;
     const std::string at = join_path(path, key);
-    const to::VariableInfo* info = to::find_speed_axis_variable(key);
+    const to::VariableInfo* info = find(key);
     if (info == nullptr) {
       if (value.is_object()) {
         // {"DynamicLimits": {"MaxVelocity": ...}}: the format wants the full path as one key.
-        problems.add(at, "not a variable of TO_SpeedAxis; keys are full data-block paths such as '" + key +
-                             "." + (value.empty() ? std::string("...") : value.begin().key()) + "'");
+        problems.add(at, of + "; keys are full data-block paths such as '" + key + "." +
+                             (value.empty() ? std::string("...") : value.begin().key()) + "'");
       } else {
-        problems.add(at, "unknown variable of TO_SpeedAxis" + suggestion_for(key));
+        problems.add(at, "unknown variable of " + std::string(type_name) + suggestion_for(key, table));
       }
       continue;
     }
@@ -89,6 +97,26 @@ void load_speed_axis_config(const Json& config, std::string_view path, to::Speed
       static_cast<void>(info->write(data, *number));
     }
   }
+}
+
+}  // namespace
+
+void load_speed_axis_config(const Json& config, std::string_view path, to::SpeedAxisData& data,
+                            Problems& problems) {
+  load_config(config, path, "TO_SpeedAxis", to::speed_axis_variables(), &to::find_speed_axis_variable, data,
+              problems);
+}
+
+void load_positioning_axis_config(const Json& config, std::string_view path, to::PositioningAxisData& data,
+                                  Problems& problems) {
+  load_config(config, path, "TO_PositioningAxis", to::positioning_axis_variables(),
+              &to::find_positioning_axis_variable, data, problems);
+}
+
+void load_external_encoder_config(const Json& config, std::string_view path, to::ExternalEncoderData& data,
+                                  Problems& problems) {
+  load_config(config, path, "TO_ExternalEncoder", to::external_encoder_variables(),
+              &to::find_external_encoder_variable, data, problems);
 }
 
 namespace detail {
@@ -235,7 +263,18 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
       }
     }
   }
-  if (const Json* v = r.get("telegram", true)) {
+  // A drive telegram, or (an encoder-only device, e.g. for TO_ExternalEncoder) an encoder telegram, or both.
+  if (const Json* v = r.get("encoder_telegram")) {
+    if (auto t = detail::read_integer(*v, r.path_of("encoder_telegram"), 0, 65535, false, problems)) {
+      if (*t != 0 && *t != 81 && *t != 83) {
+        problems.add(r.path_of("encoder_telegram"),
+                     std::to_string(*t) + " is not an encoder telegram (81, 83)");
+      } else {
+        settings.encoder_telegram = static_cast<std::uint16_t>(*t);
+      }
+    }
+  }
+  if (const Json* v = r.get("telegram", !r.has("encoder_telegram"))) {
     if (auto t = detail::read_integer(*v, r.path_of("telegram"), 0, 65535, false, problems)) {
       if (!telegrams::is_drive_telegram(static_cast<int>(*t))) {
         problems.add(r.path_of("telegram"),

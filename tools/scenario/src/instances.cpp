@@ -6,18 +6,33 @@
 #include <type_traits>
 
 #include "tomc/instructions/mc_halt.hpp"
+#include "tomc/instructions/mc_home.hpp"
+#include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
+#include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/instructions/mc_write_parameter.hpp"
+#include "tomc/techobjects/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis.hpp"
 
 namespace tomc::scenario::detail {
 namespace {
 
+using techobjects::ExternalEncoder;
+using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
+
+// The axis type an instruction class works on: MC_Power<SpeedAxis> -> SpeedAxis.
+template <typename FB>
+struct axis_of;
+template <template <typename> class Instruction, typename Axis>
+struct axis_of<Instruction<Axis>> {
+  using type = Axis;
+};
 
 template <typename FB>
 using Member =
@@ -79,7 +94,10 @@ class InstanceOf final : public Instance {
     return std::visit([&](auto member) { return static_cast<double>(fb_.*member); },
                       table_[parameter].member);
   }
-  void call(SpeedAxis& axis) noexcept override { fb_(axis); }
+  // The loader creates an instance only for a TO of the instruction's axis type.
+  void call(techobjects::TechnologyObject& object) noexcept override {
+    fb_(static_cast<typename axis_of<FB>::type&>(object));
+  }
 
  private:
   const std::array<Parameter<FB>, N>& table_;
@@ -93,125 +111,200 @@ std::unique_ptr<Instance> make(const std::array<Parameter<FB>, N>& table) {
 }
 
 // Parameter order as in the manual's instruction descriptions: inputs, then outputs.
-using Power = instructions::MC_Power<SpeedAxis>;
-const auto kPower = std::to_array<Parameter<Power>>({
-    in("Enable", &Power::Enable),
-    in("StartMode", &Power::StartMode),
-    in("StopMode", &Power::StopMode),
-    out("Status", &Power::Status),
-    out("Busy", &Power::Busy),
-    out("Error", &Power::Error),
-    out("ErrorID", &Power::ErrorID),
+template <typename Axis>
+using Power = instructions::MC_Power<Axis>;
+template <typename Axis>
+const auto kPower = std::to_array<Parameter<Power<Axis>>>({
+    in("Enable", &Power<Axis>::Enable),
+    in("StartMode", &Power<Axis>::StartMode),
+    in("StopMode", &Power<Axis>::StopMode),
+    out("Status", &Power<Axis>::Status),
+    out("Busy", &Power<Axis>::Busy),
+    out("Error", &Power<Axis>::Error),
+    out("ErrorID", &Power<Axis>::ErrorID),
 });
 
-using Reset = instructions::MC_Reset<SpeedAxis>;
-const auto kReset = std::to_array<Parameter<Reset>>({
-    in("Execute", &Reset::Execute),
-    in("Restart", &Reset::Restart),
-    out("Done", &Reset::Done),
-    out("Busy", &Reset::Busy),
-    out("CommandAborted", &Reset::CommandAborted),
-    out("Error", &Reset::Error),
-    out("ErrorID", &Reset::ErrorID),
+template <typename Axis>
+using Reset = instructions::MC_Reset<Axis>;
+template <typename Axis>
+const auto kReset = std::to_array<Parameter<Reset<Axis>>>({
+    in("Execute", &Reset<Axis>::Execute),
+    in("Restart", &Reset<Axis>::Restart),
+    out("Done", &Reset<Axis>::Done),
+    out("Busy", &Reset<Axis>::Busy),
+    out("CommandAborted", &Reset<Axis>::CommandAborted),
+    out("Error", &Reset<Axis>::Error),
+    out("ErrorID", &Reset<Axis>::ErrorID),
 });
 
-using MoveVelocity = instructions::MC_MoveVelocity<SpeedAxis>;
-const auto kMoveVelocity = std::to_array<Parameter<MoveVelocity>>({
-    in("Execute", &MoveVelocity::Execute),
-    in("Velocity", &MoveVelocity::Velocity),
-    in("Acceleration", &MoveVelocity::Acceleration),
-    in("Deceleration", &MoveVelocity::Deceleration),
-    in("Jerk", &MoveVelocity::Jerk),
-    in("Direction", &MoveVelocity::Direction),
-    in("Current", &MoveVelocity::Current),
-    in("PositionControlled", &MoveVelocity::PositionControlled),
-    out("InVelocity", &MoveVelocity::InVelocity),
-    out("Busy", &MoveVelocity::Busy),
-    out("CommandAborted", &MoveVelocity::CommandAborted),
-    out("Error", &MoveVelocity::Error),
-    out("ErrorID", &MoveVelocity::ErrorID),
+template <typename Axis>
+using MoveVelocity = instructions::MC_MoveVelocity<Axis>;
+template <typename Axis>
+const auto kMoveVelocity = std::to_array<Parameter<MoveVelocity<Axis>>>({
+    in("Execute", &MoveVelocity<Axis>::Execute),
+    in("Velocity", &MoveVelocity<Axis>::Velocity),
+    in("Acceleration", &MoveVelocity<Axis>::Acceleration),
+    in("Deceleration", &MoveVelocity<Axis>::Deceleration),
+    in("Jerk", &MoveVelocity<Axis>::Jerk),
+    in("Direction", &MoveVelocity<Axis>::Direction),
+    in("Current", &MoveVelocity<Axis>::Current),
+    in("PositionControlled", &MoveVelocity<Axis>::PositionControlled),
+    out("InVelocity", &MoveVelocity<Axis>::InVelocity),
+    out("Busy", &MoveVelocity<Axis>::Busy),
+    out("CommandAborted", &MoveVelocity<Axis>::CommandAborted),
+    out("Error", &MoveVelocity<Axis>::Error),
+    out("ErrorID", &MoveVelocity<Axis>::ErrorID),
 });
 
-using MoveJog = instructions::MC_MoveJog<SpeedAxis>;
-const auto kMoveJog = std::to_array<Parameter<MoveJog>>({
-    in("JogForward", &MoveJog::JogForward),
-    in("JogBackward", &MoveJog::JogBackward),
-    in("Velocity", &MoveJog::Velocity),
-    in("Acceleration", &MoveJog::Acceleration),
-    in("Deceleration", &MoveJog::Deceleration),
-    in("Jerk", &MoveJog::Jerk),
-    in("PositionControlled", &MoveJog::PositionControlled),
-    out("InVelocity", &MoveJog::InVelocity),
-    out("Busy", &MoveJog::Busy),
-    out("CommandAborted", &MoveJog::CommandAborted),
-    out("Error", &MoveJog::Error),
-    out("ErrorID", &MoveJog::ErrorID),
+template <typename Axis>
+using MoveJog = instructions::MC_MoveJog<Axis>;
+template <typename Axis>
+const auto kMoveJog = std::to_array<Parameter<MoveJog<Axis>>>({
+    in("JogForward", &MoveJog<Axis>::JogForward),
+    in("JogBackward", &MoveJog<Axis>::JogBackward),
+    in("Velocity", &MoveJog<Axis>::Velocity),
+    in("Acceleration", &MoveJog<Axis>::Acceleration),
+    in("Deceleration", &MoveJog<Axis>::Deceleration),
+    in("Jerk", &MoveJog<Axis>::Jerk),
+    in("PositionControlled", &MoveJog<Axis>::PositionControlled),
+    out("InVelocity", &MoveJog<Axis>::InVelocity),
+    out("Busy", &MoveJog<Axis>::Busy),
+    out("CommandAborted", &MoveJog<Axis>::CommandAborted),
+    out("Error", &MoveJog<Axis>::Error),
+    out("ErrorID", &MoveJog<Axis>::ErrorID),
 });
 
-using Halt = instructions::MC_Halt<SpeedAxis>;
-const auto kHalt = std::to_array<Parameter<Halt>>({
-    in("Execute", &Halt::Execute),
-    in("Deceleration", &Halt::Deceleration),
-    in("Jerk", &Halt::Jerk),
-    in("AbortAcceleration", &Halt::AbortAcceleration),
-    in("Mode", &Halt::Mode),
-    out("Done", &Halt::Done),
-    out("Busy", &Halt::Busy),
-    out("CommandAborted", &Halt::CommandAborted),
-    out("Error", &Halt::Error),
-    out("ErrorID", &Halt::ErrorID),
+template <typename Axis>
+using Halt = instructions::MC_Halt<Axis>;
+template <typename Axis>
+const auto kHalt = std::to_array<Parameter<Halt<Axis>>>({
+    in("Execute", &Halt<Axis>::Execute),
+    in("Deceleration", &Halt<Axis>::Deceleration),
+    in("Jerk", &Halt<Axis>::Jerk),
+    in("AbortAcceleration", &Halt<Axis>::AbortAcceleration),
+    in("Mode", &Halt<Axis>::Mode),
+    out("Done", &Halt<Axis>::Done),
+    out("Busy", &Halt<Axis>::Busy),
+    out("CommandAborted", &Halt<Axis>::CommandAborted),
+    out("Error", &Halt<Axis>::Error),
+    out("ErrorID", &Halt<Axis>::ErrorID),
 });
 
-using Stop = instructions::MC_Stop<SpeedAxis>;
-const auto kStop = std::to_array<Parameter<Stop>>({
-    in("Execute", &Stop::Execute),
-    in("Mode", &Stop::Mode),
-    in("Deceleration", &Stop::Deceleration),
-    in("Jerk", &Stop::Jerk),
-    in("AbortAcceleration", &Stop::AbortAcceleration),
-    out("Done", &Stop::Done),
-    out("Busy", &Stop::Busy),
-    out("CommandAborted", &Stop::CommandAborted),
-    out("Error", &Stop::Error),
-    out("ErrorID", &Stop::ErrorID),
+template <typename Axis>
+using Stop = instructions::MC_Stop<Axis>;
+template <typename Axis>
+const auto kStop = std::to_array<Parameter<Stop<Axis>>>({
+    in("Execute", &Stop<Axis>::Execute),
+    in("Mode", &Stop<Axis>::Mode),
+    in("Deceleration", &Stop<Axis>::Deceleration),
+    in("Jerk", &Stop<Axis>::Jerk),
+    in("AbortAcceleration", &Stop<Axis>::AbortAcceleration),
+    out("Done", &Stop<Axis>::Done),
+    out("Busy", &Stop<Axis>::Busy),
+    out("CommandAborted", &Stop<Axis>::CommandAborted),
+    out("Error", &Stop<Axis>::Error),
+    out("ErrorID", &Stop<Axis>::ErrorID),
 });
 
-using SetAxisStw = instructions::MC_SetAxisSTW<SpeedAxis>;
-const auto kSetAxisStw = std::to_array<Parameter<SetAxisStw>>({
-    in("Execute", &SetAxisStw::Execute),
-    in("STW1", &SetAxisStw::STW1),
-    in("STW1BitMask", &SetAxisStw::STW1BitMask),
-    in("STW2", &SetAxisStw::STW2),
-    in("STW2BitMask", &SetAxisStw::STW2BitMask),
-    out("Done", &SetAxisStw::Done),
-    out("Busy", &SetAxisStw::Busy),
-    out("CommandAborted", &SetAxisStw::CommandAborted),
-    out("Error", &SetAxisStw::Error),
-    out("ErrorID", &SetAxisStw::ErrorID),
+template <typename Axis>
+using SetAxisStw = instructions::MC_SetAxisSTW<Axis>;
+template <typename Axis>
+const auto kSetAxisStw = std::to_array<Parameter<SetAxisStw<Axis>>>({
+    in("Execute", &SetAxisStw<Axis>::Execute),
+    in("STW1", &SetAxisStw<Axis>::STW1),
+    in("STW1BitMask", &SetAxisStw<Axis>::STW1BitMask),
+    in("STW2", &SetAxisStw<Axis>::STW2),
+    in("STW2BitMask", &SetAxisStw<Axis>::STW2BitMask),
+    out("Done", &SetAxisStw<Axis>::Done),
+    out("Busy", &SetAxisStw<Axis>::Busy),
+    out("CommandAborted", &SetAxisStw<Axis>::CommandAborted),
+    out("Error", &SetAxisStw<Axis>::Error),
+    out("ErrorID", &SetAxisStw<Axis>::ErrorID),
 });
 
-using WriteParameter = instructions::MC_WriteParameter<SpeedAxis>;
-const auto kWriteParameter = std::to_array<Parameter<WriteParameter>>({
-    in("Execute", &WriteParameter::Execute),
-    in("ParameterNumber", &WriteParameter::ParameterNumber),
-    in("Value", &WriteParameter::Value),
-    out("Done", &WriteParameter::Done),
-    out("Busy", &WriteParameter::Busy),
-    out("CommandAborted", &WriteParameter::CommandAborted),
-    out("Error", &WriteParameter::Error),
-    out("ErrorID", &WriteParameter::ErrorID),
+template <typename Axis>
+using WriteParameter = instructions::MC_WriteParameter<Axis>;
+template <typename Axis>
+const auto kWriteParameter = std::to_array<Parameter<WriteParameter<Axis>>>({
+    in("Execute", &WriteParameter<Axis>::Execute),
+    in("ParameterNumber", &WriteParameter<Axis>::ParameterNumber),
+    in("Value", &WriteParameter<Axis>::Value),
+    out("Done", &WriteParameter<Axis>::Done),
+    out("Busy", &WriteParameter<Axis>::Busy),
+    out("CommandAborted", &WriteParameter<Axis>::CommandAborted),
+    out("Error", &WriteParameter<Axis>::Error),
+    out("ErrorID", &WriteParameter<Axis>::ErrorID),
 });
 
+template <typename Axis>
+using MoveAbsolute = instructions::MC_MoveAbsolute<Axis>;
+template <typename Axis>
+const auto kMoveAbsolute = std::to_array<Parameter<MoveAbsolute<Axis>>>({
+    in("Execute", &MoveAbsolute<Axis>::Execute),
+    in("Position", &MoveAbsolute<Axis>::Position),
+    in("Velocity", &MoveAbsolute<Axis>::Velocity),
+    in("Acceleration", &MoveAbsolute<Axis>::Acceleration),
+    in("Deceleration", &MoveAbsolute<Axis>::Deceleration),
+    in("Jerk", &MoveAbsolute<Axis>::Jerk),
+    in("BufferMode", &MoveAbsolute<Axis>::BufferMode),
+    in("Direction", &MoveAbsolute<Axis>::Direction),
+    out("Done", &MoveAbsolute<Axis>::Done),
+    out("Busy", &MoveAbsolute<Axis>::Busy),
+    out("Active", &MoveAbsolute<Axis>::Active),
+    out("CommandAborted", &MoveAbsolute<Axis>::CommandAborted),
+    out("Error", &MoveAbsolute<Axis>::Error),
+    out("ErrorID", &MoveAbsolute<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using MoveRelative = instructions::MC_MoveRelative<Axis>;
+template <typename Axis>
+const auto kMoveRelative = std::to_array<Parameter<MoveRelative<Axis>>>({
+    in("Execute", &MoveRelative<Axis>::Execute),
+    in("Distance", &MoveRelative<Axis>::Distance),
+    in("Velocity", &MoveRelative<Axis>::Velocity),
+    in("Acceleration", &MoveRelative<Axis>::Acceleration),
+    in("Deceleration", &MoveRelative<Axis>::Deceleration),
+    in("Jerk", &MoveRelative<Axis>::Jerk),
+    in("BufferMode", &MoveRelative<Axis>::BufferMode),
+    out("Done", &MoveRelative<Axis>::Done),
+    out("Busy", &MoveRelative<Axis>::Busy),
+    out("Active", &MoveRelative<Axis>::Active),
+    out("CommandAborted", &MoveRelative<Axis>::CommandAborted),
+    out("Error", &MoveRelative<Axis>::Error),
+    out("ErrorID", &MoveRelative<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using Home = instructions::MC_Home<Axis>;
+template <typename Axis>
+const auto kHome = std::to_array<Parameter<Home<Axis>>>({
+    in("Execute", &Home<Axis>::Execute),
+    in("Position", &Home<Axis>::Position),
+    in("Mode", &Home<Axis>::Mode),
+    in("Sensor", &Home<Axis>::Sensor),
+    out("ReferenceMarkPosition", &Home<Axis>::ReferenceMarkPosition),
+    out("Done", &Home<Axis>::Done),
+    out("Busy", &Home<Axis>::Busy),
+    out("CommandAborted", &Home<Axis>::CommandAborted),
+    out("Error", &Home<Axis>::Error),
+    out("ErrorID", &Home<Axis>::ErrorID),
+});
+
+// The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
 constexpr std::array<std::string_view, 8> kSpeedAxisInstructions{
     "MC_Power", "MC_Reset", "MC_MoveVelocity", "MC_MoveJog",
     "MC_Halt",  "MC_Stop",  "MC_SetAxisSTW",   "MC_WriteParameter",
 };
+constexpr std::array<std::string_view, 11> kPositioningAxisInstructions{
+    "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
+    "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter",
+};
+constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
+                                                                       "MC_WriteParameter"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 26> kPlannedInstructions{
-    "MC_Home",
-    "MC_MoveAbsolute",
-    "MC_MoveRelative",
+constexpr std::array<std::string_view, 23> kPlannedInstructions{
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
     "MC_TorqueLimiting",
@@ -262,8 +355,16 @@ std::optional<std::size_t> Instance::find(std::string_view name) const noexcept 
   return static_cast<std::size_t>(it - p.begin());
 }
 
-std::span<const std::string_view> speed_axis_instructions() noexcept {
-  return kSpeedAxisInstructions;
+std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) noexcept {
+  switch (kind) {
+    case TechnologyObjectKind::kSpeedAxis:
+      return kSpeedAxisInstructions;
+    case TechnologyObjectKind::kPositioningAxis:
+      return kPositioningAxisInstructions;
+    case TechnologyObjectKind::kExternalEncoder:
+      return kExternalEncoderInstructions;
+  }
+  return {};
 }
 
 bool is_planned_instruction(std::string_view name) noexcept {
@@ -271,15 +372,42 @@ bool is_planned_instruction(std::string_view name) noexcept {
          kPlannedInstructions.end();
 }
 
-std::unique_ptr<Instance> make_speed_axis_instance(std::string_view instruction) {
-  if (instruction == "MC_Power") return make(kPower);
-  if (instruction == "MC_Reset") return make(kReset);
-  if (instruction == "MC_MoveVelocity") return make(kMoveVelocity);
-  if (instruction == "MC_MoveJog") return make(kMoveJog);
-  if (instruction == "MC_Halt") return make(kHalt);
-  if (instruction == "MC_Stop") return make(kStop);
-  if (instruction == "MC_SetAxisSTW") return make(kSetAxisStw);
-  if (instruction == "MC_WriteParameter") return make(kWriteParameter);
+namespace {
+
+template <typename Axis>
+std::unique_ptr<Instance> make_common(std::string_view instruction) {
+  if (instruction == "MC_Power") return make(kPower<Axis>);
+  if (instruction == "MC_Reset") return make(kReset<Axis>);
+  if (instruction == "MC_WriteParameter") return make(kWriteParameter<Axis>);
+  return nullptr;
+}
+
+template <typename Axis>
+std::unique_ptr<Instance> make_motion(std::string_view instruction) {
+  if (auto common = make_common<Axis>(instruction)) return common;
+  if (instruction == "MC_MoveVelocity") return make(kMoveVelocity<Axis>);
+  if (instruction == "MC_MoveJog") return make(kMoveJog<Axis>);
+  if (instruction == "MC_Halt") return make(kHalt<Axis>);
+  if (instruction == "MC_Stop") return make(kStop<Axis>);
+  if (instruction == "MC_SetAxisSTW") return make(kSetAxisStw<Axis>);
+  return nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<Instance> make_instance(std::string_view instruction, TechnologyObjectKind kind) {
+  switch (kind) {
+    case TechnologyObjectKind::kSpeedAxis:
+      return make_motion<SpeedAxis>(instruction);
+    case TechnologyObjectKind::kPositioningAxis:
+      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<PositioningAxis>);
+      if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
+      if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
+      return make_motion<PositioningAxis>(instruction);
+    case TechnologyObjectKind::kExternalEncoder:
+      if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);
+      return make_common<ExternalEncoder>(instruction);
+  }
   return nullptr;
 }
 

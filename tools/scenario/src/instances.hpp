@@ -12,7 +12,7 @@
 #include <variant>
 #include <vector>
 
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/runtime.hpp"
 
 namespace tomc::scenario::detail {
 
@@ -33,16 +33,20 @@ class Instance {
   // Index into parameters(); already validated values only (the loader checked type and range).
   virtual void set(std::size_t parameter, double value) noexcept = 0;
   virtual double get(std::size_t parameter) const noexcept = 0;
-  virtual void call(techobjects::SpeedAxis& axis) noexcept = 0;
+  // `object` is of the TO type the instance was made for (make_instance).
+  virtual void call(techobjects::TechnologyObject& object) noexcept = 0;
 
   std::optional<std::size_t> find(std::string_view name) const noexcept;
 };
 
-// Instruction names known to tomc sim for TO_SpeedAxis, in the order of the manual.
-std::span<const std::string_view> speed_axis_instructions() noexcept;
+// The TO types tomc sim builds (TO_SynchronousAxis comes with the synchronous axis).
+enum class TechnologyObjectKind : std::uint8_t { kSpeedAxis, kPositioningAxis, kExternalEncoder };
+
+// Instruction names known to tomc sim for a TO type, in the order of the manual (spec 01 §1.3).
+std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) noexcept;
 // MC_* instructions of the manual that tomc does not implement yet (a clear "not yet supported").
 bool is_planned_instruction(std::string_view name) noexcept;
-// nullptr for a name not in speed_axis_instructions().
-std::unique_ptr<Instance> make_speed_axis_instance(std::string_view instruction);
+// nullptr for a name not in instructions_for(kind).
+std::unique_ptr<Instance> make_instance(std::string_view instruction, TechnologyObjectKind kind);
 
 }  // namespace tomc::scenario::detail

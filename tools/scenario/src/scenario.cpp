@@ -19,6 +19,11 @@
 #include "instances.hpp"
 #include "json_reader.hpp"
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/techobjects/axis_units.hpp"
+#include "tomc/techobjects/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/positioning_variables.hpp"
+#include "tomc/techobjects/retentive_store.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 #include "tomc/techobjects/variables.hpp"
@@ -29,6 +34,7 @@ namespace {
 namespace to = tomc::techobjects;
 using detail::Instance;
 using detail::ObjectReader;
+using detail::TechnologyObjectKind;
 using Reaction = drives::SimulatedDriveParameters::FaultReaction;
 
 constexpr std::int64_t kMaxCycles = 1'000'000'000;  // 11.6 days at 1 ms: far beyond any test, still finite
@@ -124,8 +130,66 @@ constexpr std::array<std::string_view, 4> kToTypeNames{"TO_SpeedAxis", "TO_Posit
 struct TechnologyObjectEntry {
   std::string name;
   bool built = false;  // false: its definition had problems; names still resolve to avoid follow-up noise
-  to::SpeedAxis* axis = nullptr;
+  TechnologyObjectKind kind = TechnologyObjectKind::kSpeedAxis;
+  to::TechnologyObject* object = nullptr;  // the one of the three below that is set
+  to::SpeedAxis* speed_axis = nullptr;
+  to::PositioningAxis* positioning_axis = nullptr;
+  to::ExternalEncoder* external_encoder = nullptr;
   drives::SimulatedDrive* drive = nullptr;
+
+  std::string_view type_name() const noexcept {
+    return kind == TechnologyObjectKind::kSpeedAxis         ? "TO_SpeedAxis"
+           : kind == TechnologyObjectKind::kPositioningAxis ? "TO_PositioningAxis"
+                                                            : "TO_ExternalEncoder";
+  }
+  const to::VariableInfo* find_variable(std::string_view path) const noexcept {
+    switch (kind) {
+      case TechnologyObjectKind::kSpeedAxis:
+        return to::find_speed_axis_variable(path);
+      case TechnologyObjectKind::kPositioningAxis:
+        return to::find_positioning_axis_variable(path);
+      case TechnologyObjectKind::kExternalEncoder:
+        return to::find_external_encoder_variable(path);
+    }
+    return nullptr;
+  }
+  std::optional<to::BitReference> find_bit(std::string_view path) const noexcept {
+    switch (kind) {
+      case TechnologyObjectKind::kSpeedAxis:
+        return to::find_speed_axis_bit(path);
+      case TechnologyObjectKind::kPositioningAxis:
+        return to::find_positioning_axis_bit(path);
+      case TechnologyObjectKind::kExternalEncoder:
+        return to::find_external_encoder_bit(path);
+    }
+    return std::nullopt;
+  }
+  // Reads a variable (or one bit of a word) of this TO's data block, for traces and expectations.
+  std::function<double()> reader(const to::VariableInfo* info, std::optional<to::BitReference> bit) const {
+    const auto read = [info, bit](const auto& data) {
+      return bit ? (bit->read(data) ? 1.0 : 0.0) : info->read(data);
+    };
+    switch (kind) {
+      case TechnologyObjectKind::kSpeedAxis:
+        return [a = speed_axis, read] { return read(a->data()); };
+      case TechnologyObjectKind::kPositioningAxis:
+        return [a = positioning_axis, read] { return read(a->data()); };
+      case TechnologyObjectKind::kExternalEncoder:
+        return [a = external_encoder, read] { return read(a->data()); };
+    }
+    return [] { return std::numeric_limits<double>::quiet_NaN(); };
+  }
+  to::WriteResult write(std::string_view variable, double value) const noexcept {
+    if (speed_axis != nullptr) return speed_axis->write(variable, value);
+    if (positioning_axis != nullptr) return positioning_axis->write(variable, value);
+    return external_encoder->write(variable, value);
+  }
+  bool inject_alarm(std::uint32_t number, std::uint32_t additional,
+                    to::AlarmReaction reaction) const noexcept {
+    if (speed_axis != nullptr) return speed_axis->inject_alarm(number, additional, reaction);
+    if (positioning_axis != nullptr) return positioning_axis->inject_alarm(number, additional, reaction);
+    return external_encoder->inject_alarm(number, additional, reaction);
+  }
 };
 
 struct InstanceEntry {
@@ -197,7 +261,9 @@ struct Scenario::Impl {
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
   std::vector<Column> trace;
-  std::vector<Expectation> expectations;  // sorted by cycle
+  std::vector<Expectation> expectations;       // sorted by cycle
+  std::unique_ptr<to::RetentiveStore> retain;  // "retain_file": absolute-encoder adjustments across runs
+  std::string retain_report;                   // what restoring it found (for the CLI's summary)
   Problems problems;
   // A broken technology_objects or timeline array makes every later reference to its names fail; those
   // follow-up problems would only bury the real one, so they are not reported.
@@ -216,6 +282,7 @@ struct Scenario::Impl {
   // ---- loading ----
   void load(const Json& document);
   void load_technology_object(const Json& value, const std::string& path);
+  void wire_machine_inputs();
   void load_event(const Json& value, const std::string& path, std::optional<std::uint64_t>& previous_cycle);
   void load_instance_event(ObjectReader& r, Event& event);
   void load_set_event(ObjectReader& r, Event& event);
@@ -320,6 +387,18 @@ void Scenario::Impl::load(const Json& document) {
     }
   }
 
+  // The retentive memory of absolute-encoder adjustments (spec 02 §5.9): restored before the first cycle,
+  // written whenever an adjustment changes (docs/scenarios.md "retain_file").
+  if (const Json* v = root.get("retain_file")) {
+    if (auto path = detail::read_string(*v, "retain_file", problems)) {
+      if (path->empty()) {
+        problems.add("retain_file", "expected a file name");
+      } else {
+        retain = std::make_unique<to::RetentiveStore>(*path);
+      }
+    }
+  }
+
   if (const Json* v = root.get("expect")) {
     if (!v->is_array()) {
       problems.add("expect", "expected an array of expectations, got " + std::string(detail::type_name(*v)));
@@ -385,31 +464,80 @@ void Scenario::Impl::load_technology_object(const Json& value, const std::string
       if (it == kToTypeNames.end()) {
         problems.add(r.path_of("type"), "unknown technology object type '" + *t + "' (one of " +
                                             list_of(std::span<const std::string_view>(kToTypeNames)) + ")");
-      } else if (it != kToTypeNames.begin()) {
-        problems.add(r.path_of("type"), *t + " is not yet supported by tomc sim (supported: TO_SpeedAxis)");
+      } else if (static_cast<ToType>(it - kToTypeNames.begin()) == ToType::kSynchronousAxis) {
+        problems.add(r.path_of("type"), *t + " is not yet supported by tomc sim (supported: TO_SpeedAxis, "
+                                             "TO_PositioningAxis, TO_ExternalEncoder)");
       } else {
-        type = ToType::kSpeedAxis;
+        type = static_cast<ToType>(it - kToTypeNames.begin());
       }
     }
   }
   const std::size_t before = problems.size();
-  to::SpeedAxisData data;
+  to::SpeedAxisData speed_data;
+  to::PositioningAxisData positioning_data;
+  to::ExternalEncoderData encoder_data;
   DriveSettings drive;
   bool has_drive = false;
   if (type) {
-    if (const Json* v = r.get("config")) load_speed_axis_config(*v, r.path_of("config"), data, problems);
+    bool needs_drive = true;
+    std::string_view type_name = kToTypeNames[static_cast<std::size_t>(*type)];
+    const Json* config = r.get("config");
     // The simulated drive is parameterised like the TO unless the file says otherwise (p2000 =
-    // ReferenceSpeed, p2003 = ReferenceTorque), as automatic data adaption would do; a mismatch must be asked
-    // for explicitly.
-    drive.parameters.reference_speed_rpm = data.Actor.DriveParameter.ReferenceSpeed;
-    drive.parameters.reference_torque_nm = data.Actor.DriveParameter.ReferenceTorque;
+    // ReferenceSpeed, p2003 = ReferenceTorque, the mechanics of the load), as automatic data adaption would
+    // do; a mismatch must be asked for explicitly.
+    auto& p = drive.parameters;
+    switch (*type) {
+      case ToType::kSpeedAxis:
+        if (config != nullptr) load_speed_axis_config(*config, r.path_of("config"), speed_data, problems);
+        p.reference_speed_rpm = speed_data.Actor.DriveParameter.ReferenceSpeed;
+        p.reference_torque_nm = speed_data.Actor.DriveParameter.ReferenceTorque;
+        needs_drive = speed_data.VirtualAxis.Mode != to::kModeOn && speed_data.Simulation.Mode != to::kModeOn;
+        break;
+      case ToType::kPositioningAxis: {
+        if (config != nullptr)
+          load_positioning_axis_config(*config, r.path_of("config"), positioning_data, problems);
+        const auto& d = positioning_data;
+        p.reference_speed_rpm = d.Actor.DriveParameter.ReferenceSpeed;
+        p.reference_torque_nm = d.Actor.DriveParameter.ReferenceTorque;
+        p.gear_motor_revolutions = d.LoadGear.Numerator;
+        p.gear_load_revolutions = d.LoadGear.Denominator;
+        const auto units = to::axis_unit_factors(d.Units.LengthUnit, d.Units.VelocityUnit);
+        p.load_units_per_revolution = d.Properties.MotionType == 0 ? d.Mechanics.LeadScrew * units.leadscrew
+                                                                   : units.units_per_revolution;
+        const auto& s1 = d.Sensor[0];
+        p.encoder1.steps_per_revolution = s1.Parameter.StepsPerRevolution;
+        p.encoder1.fine_resolution_xist1 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist1);
+        p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist2);
+        needs_drive = d.VirtualAxis.Mode != to::kModeOn && d.Simulation.Mode != to::kModeOn;
+        break;
+      }
+      case ToType::kExternalEncoder: {
+        if (config != nullptr)
+          load_external_encoder_config(*config, r.path_of("config"), encoder_data, problems);
+        const auto& d = encoder_data;
+        p.gear_motor_revolutions = d.LoadGear.Numerator;
+        p.gear_load_revolutions = d.LoadGear.Denominator;
+        const auto units = to::axis_unit_factors(d.Units.LengthUnit, d.Units.VelocityUnit);
+        p.load_units_per_revolution = d.Properties.MotionType == 0 ? d.Mechanics.LeadScrew * units.leadscrew
+                                                                   : units.units_per_revolution;
+        p.encoder1.steps_per_revolution = d.Sensor.Parameter.StepsPerRevolution;
+        p.encoder1.fine_resolution_xist1 = static_cast<std::uint8_t>(d.Sensor.Parameter.FineResolutionXist1);
+        p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(d.Sensor.Parameter.FineResolutionXist2);
+        drive.encoder_telegram = 81;  // an encoder-only device unless the file says otherwise
+        break;
+      }
+      case ToType::kSynchronousAxis:
+        break;
+    }
     if (const Json* v = r.get("drive")) {
       load_drive(*v, r.path_of("drive"), cycle_time, drive, problems);
       has_drive = true;
-    } else if (data.VirtualAxis.Mode != to::kModeOn && data.Simulation.Mode != to::kModeOn) {
+    } else if (needs_drive) {
       problems.add(r.path_of("drive"),
-                   "missing (a TO_SpeedAxis needs a drive unless VirtualAxis.Mode or "
-                   "Simulation.Mode is 1)");
+                   "missing (a " + std::string(type_name) +
+                       (*type == ToType::kExternalEncoder ? " needs a device with encoder telegram 81 or 83)"
+                                                          : " needs a drive unless VirtualAxis.Mode or "
+                                                            "Simulation.Mode is 1)"));
     }
   } else {
     // The type is unusable, so its config cannot be checked; still accept the keys to avoid noise.
@@ -426,11 +554,28 @@ void Scenario::Impl::load_technology_object(const Json& value, const std::string
       io = &runtime->add_device(std::move(owned));
     }
     try {
-      entry.axis = &runtime->emplace<to::SpeedAxis>(entry.name, io, data);
+      switch (*type) {
+        case ToType::kSpeedAxis:
+          entry.kind = TechnologyObjectKind::kSpeedAxis;
+          entry.speed_axis = &runtime->emplace<to::SpeedAxis>(entry.name, io, speed_data);
+          entry.object = entry.speed_axis;
+          break;
+        case ToType::kPositioningAxis:
+          entry.kind = TechnologyObjectKind::kPositioningAxis;
+          entry.positioning_axis = &runtime->emplace<to::PositioningAxis>(entry.name, io, positioning_data);
+          entry.object = entry.positioning_axis;
+          break;
+        case ToType::kExternalEncoder:
+        case ToType::kSynchronousAxis:
+          entry.kind = TechnologyObjectKind::kExternalEncoder;
+          entry.external_encoder = &runtime->emplace<to::ExternalEncoder>(entry.name, io, encoder_data);
+          entry.object = entry.external_encoder;
+          break;
+      }
       entry.drive = drive_ptr;
       entry.built = true;
     } catch (const std::invalid_argument& e) {
-      // The loader checked every value already; this catches a cross-check the TO may add later.
+      // Cross-checks of the TO (units against the motion type, the encoder's telegram, ...), named by path.
       problems.add(r.path_of("config"), e.what());
     }
   }
@@ -535,13 +680,25 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
     entry.defined_at = r.path();
     entry.axis = to_index.value_or(0);
     entry.axis_name = *axis;
-    entry.fb = detail::make_speed_axis_instance(*instruction);
-    if (!entry.fb) {
-      const std::string supported = list_of(detail::speed_axis_instructions());
-      problems.add(r.path_of("instruction"),
-                   detail::is_planned_instruction(*instruction)
-                       ? *instruction + " is not yet supported by tomc sim (supported: " + supported + ")"
-                       : "unknown instruction '" + *instruction + "' (supported: " + supported + ")");
+    if (to_index && objects[*to_index].built) {
+      const TechnologyObjectEntry& object = objects[*to_index];
+      entry.fb = detail::make_instance(*instruction, object.kind);
+      if (!entry.fb) {
+        const std::string supported = list_of(detail::instructions_for(object.kind));
+        bool other_type = false;
+        for (auto kind : {TechnologyObjectKind::kSpeedAxis, TechnologyObjectKind::kPositioningAxis,
+                          TechnologyObjectKind::kExternalEncoder}) {
+          const auto names = detail::instructions_for(kind);
+          other_type = other_type || std::find(names.begin(), names.end(), *instruction) != names.end();
+        }
+        problems.add(r.path_of("instruction"),
+                     other_type
+                         ? *instruction + " is not an instruction of " + std::string(object.type_name()) +
+                               " " + object.name + " (spec 01 §1.3; its instructions: " + supported + ")"
+                     : detail::is_planned_instruction(*instruction)
+                         ? *instruction + " is not yet supported by tomc sim (supported: " + supported + ")"
+                         : "unknown instruction '" + *instruction + "' (supported: " + supported + ")");
+      }
     }
     // Recorded even when unusable, so later events of the same instance do not report it again.
     instances.push_back(std::move(entry));
@@ -625,9 +782,10 @@ void Scenario::Impl::load_set_event(ObjectReader& r, Event& event) {
     }
     if (!objects[*to_index].built) continue;  // its definition was already reported
     const std::string variable = key.substr(dot + 1);
-    const to::VariableInfo* info = to::find_speed_axis_variable(variable);
+    const to::VariableInfo* info = objects[*to_index].find_variable(variable);
     if (info == nullptr) {
-      problems.add(path, "unknown variable of TO_SpeedAxis " + objects[*to_index].name);
+      problems.add(path, "unknown variable of " + std::string(objects[*to_index].type_name()) + " " +
+                             objects[*to_index].name);
       continue;
     }
     // The same rule user code obeys (spec 04 §0.2): DIR and CAL only.
@@ -738,7 +896,6 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
   if (const auto o = find_object(head)) {
     const TechnologyObjectEntry& entry = objects[*o];
     if (!entry.built) return std::nullopt;  // already reported
-    const to::SpeedAxis* axis = entry.axis;
     if (rest.starts_with("drive.")) {
       const std::string_view observable = rest.substr(6);
       const auto it = std::find_if(kDriveObservables.begin(), kDriveObservables.end(),
@@ -757,17 +914,18 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       column.read = [drive, read = it->read] { return read(*drive); };
       return column;
     }
-    if (const to::VariableInfo* info = to::find_speed_axis_variable(rest)) {
+    if (const to::VariableInfo* info = entry.find_variable(rest)) {
       column.format = format_of(info->type);
-      column.read = [axis, info] { return info->read(axis->data()); };
+      column.read = entry.reader(info, std::nullopt);
       return column;
     }
-    if (const auto bit = to::find_speed_axis_bit(rest)) {
+    if (const auto bit = entry.find_bit(rest)) {
       column.format = Format::kBool;
-      column.read = [axis, bit = *bit] { return bit.read(axis->data()) ? 1.0 : 0.0; };
+      column.read = entry.reader(nullptr, bit);
       return column;
     }
-    problems.add(path, "'" + std::string(rest) + "' is not a variable of TO_SpeedAxis " + entry.name);
+    problems.add(path, "'" + std::string(rest) + "' is not a variable of " + std::string(entry.type_name()) +
+                           " " + entry.name);
     return std::nullopt;
   }
   if (const auto i = find_instance(head)) {
@@ -811,7 +969,7 @@ void Scenario::Impl::apply(const Event& event) noexcept {
     }
     case Event::Kind::kSet:
       for (const SetItem& s : event.sets) {
-        const to::WriteResult result = objects[s.to].axis->write(s.variable, s.value);
+        const to::WriteResult result = objects[s.to].write(s.variable, s.value);
         if (!result.ok()) {
           // Validated at load time with the same rules; if the TO ever disagrees the run must not go on
           // quietly.
@@ -830,8 +988,8 @@ void Scenario::Impl::apply(const Event& event) noexcept {
     case Event::Kind::kInject:
     case Event::Kind::kClear: {
       if (event.fault == FaultKind::kTechnologyAlarm) {
-        (void)objects[event.target].axis->inject_alarm(event.code, event.additional_value,
-                                                       static_cast<to::AlarmReaction>(event.alarm_reaction));
+        (void)objects[event.target].inject_alarm(event.code, event.additional_value,
+                                                 static_cast<to::AlarmReaction>(event.alarm_reaction));
         break;
       }
       drives::SimulatedDrive& d = *objects[event.target].drive;
@@ -865,13 +1023,33 @@ void Scenario::Impl::apply(const Event& event) noexcept {
   }
 }
 
+// The simulated machine's position switches reach a positioning axis as a PLC's servo process image would
+// (spec 02 §4.4 "TPA OB Servo"): before MC_Servo, at the level the switch is wired for (*SwitchLevel).
+void Scenario::Impl::wire_machine_inputs() {
+  std::vector<std::pair<to::PositioningAxis*, const drives::SimulatedDrive*>> wired;
+  for (const auto& o : objects) {
+    if (o.positioning_axis != nullptr && o.drive != nullptr) wired.emplace_back(o.positioning_axis, o.drive);
+  }
+  if (wired.empty()) return;
+  runtime->set_pre_servo([wired = std::move(wired)](to::Runtime&) {
+    for (const auto& [axis, drive] : wired) {
+      const drives::MachineInputs in = drive->machine_inputs();
+      const auto& hw = axis->data().PositionLimits_HW;
+      auto& image = axis->digital_inputs();
+      image.MinSwitch = in.negative_limit_switch == hw.MinSwitchLevel;
+      image.MaxSwitch = in.positive_limit_switch == hw.MaxSwitchLevel;
+      image.HomingInput = in.reference_cam;
+    }
+  });
+}
+
 void Scenario::Impl::user_program() noexcept {
   // Events of this cycle first ("just before the user program"), then every created instance once, in
   // creation order, on its axis — the order in which a PLC program would call its FB instances.
   while (next_event < events.size() && events[next_event].cycle == cycle)
     apply(events[next_event++]);
   for (std::size_t i : created)
-    instances[i].fb->call(*objects[instances[i].axis].axis);
+    instances[i].fb->call(*objects[instances[i].axis].object);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -891,6 +1069,18 @@ LoadResult Scenario::load(const Json& document) {
   impl->created.reserve(impl->instances.size());
   Impl* self = impl.get();
   impl->runtime->set_user_program([self](to::Runtime&) { self->user_program(); });
+  impl->wire_machine_inputs();
+  if (impl->retain) {
+    for (const auto& o : impl->objects) {
+      if (o.positioning_axis != nullptr) impl->retain->attach(*o.positioning_axis);
+      if (o.external_encoder != nullptr) impl->retain->attach(*o.external_encoder);
+    }
+    const to::RetainFile file = impl->retain->restore();
+    impl->retain_report = std::string(impl->retain->file().string()) + ": " +
+                          std::string(to::to_string(file.status)) +
+                          (file.message.empty() ? "" : " (" + file.message + ")");
+    impl->runtime->set_post_servo([store = impl->retain.get()](to::Runtime&) { store->cycle(); });
+  }
   impl->runtime->start();
   result.scenario.reset(new Scenario(std::move(impl)));
   return result;
@@ -954,6 +1144,8 @@ RunResult Scenario::run(std::ostream* trace) {
   for (s.cycle = 0; s.cycle < s.cycles; ++s.cycle) {
     s.runtime->step();
     ++result.cycles_run;
+    // Single-threaded: the store writes a pending snapshot between cycles, outside Runtime::step().
+    if (s.retain) (void)s.retain->service();
     if (trace != nullptr) {
       // The time column in its shortest exact form: 0.003, not 0.0030000000000000001.
       row = std::to_string(s.cycle) + "," + format_number(static_cast<double>(s.cycle) * s.cycle_time);
@@ -977,6 +1169,11 @@ RunResult Scenario::run(std::ostream* trace) {
       }
     }
     if (s.aborted) break;
+  }
+  if (s.retain) {
+    // The end of the run is a power-down: what the retentive memory holds reaches the file.
+    s.retain->cycle();
+    (void)s.retain->service();
   }
   result.runtime_errors.insert(result.runtime_errors.end(), s.runtime_errors.begin(), s.runtime_errors.end());
   return result;

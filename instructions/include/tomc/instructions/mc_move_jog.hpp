@@ -43,8 +43,9 @@ struct MC_MoveJog {
       }
       if (status.state == techobjects::JobState::kDone) job_ = 0;  // J2: at standstill after release
     }
-    const techobjects::Submission s = axis.jog(
-        job_, techobjects::JogInputs{JogForward, JogBackward, Velocity, Acceleration, Deceleration, Jerk});
+    const techobjects::Submission s =
+        axis.jog(job_, techobjects::JogInputs{JogForward, JogBackward, Velocity, Acceleration, Deceleration,
+                                              Jerk, PositionControlled});
     if (!s.accepted()) {
       job_ = 0;
       Busy = false;

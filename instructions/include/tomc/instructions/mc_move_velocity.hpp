@@ -28,8 +28,8 @@ struct MC_MoveVelocity {
     handshake_.call(
         Execute,
         [&] {
-          return axis.move_velocity(techobjects::MoveVelocityInputs{Velocity, Acceleration, Deceleration,
-                                                                    Jerk, Direction, Current});
+          return axis.move_velocity(techobjects::MoveVelocityInputs{
+              Velocity, Acceleration, Deceleration, Jerk, Direction, Current, PositionControlled});
         },
         [&](techobjects::JobId id) { return axis.job_status(id); });
     const auto& o = handshake_.outputs();

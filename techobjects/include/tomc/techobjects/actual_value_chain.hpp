@@ -102,6 +102,8 @@ struct AxisMechanics {
   MechanicsConfig Mechanics{};
   ActorConfig Actor{};
   ModuloConfig Modulo{};
+  // Position units per load revolution of a rotary axis: 360 for °, 2π for rad (axis_units.hpp).
+  double RotaryUnitsPerRevolution = 360.0;
 };
 
 // First configuration problem: variable path relative to <TO> and an English message (static strings).

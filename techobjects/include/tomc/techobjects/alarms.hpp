@@ -43,6 +43,8 @@ inline constexpr std::uint32_t kAlarmDriveCommunication = 405;  // no fresh fram
 inline constexpr std::uint32_t kAlarmDriveSignOfLife = 406;     // drive sign-of-life failed
 inline constexpr std::uint32_t kAlarmModuloTooFast = 412;       // seed L3946
 inline constexpr std::uint32_t kAlarmDriveSto = 421;            // seed L2712
+inline constexpr std::uint32_t kAlarmSensorFault = 431;         // encoder error (Gx_ZSW.15), [OUR CHOICE]
+inline constexpr std::uint32_t kAlarmAdjustmentLost = 432;      // absolute-encoder adjustment not restored
 inline constexpr std::uint32_t kAlarmDynamicsLimitedVelocity = 501;  // seed §10.3.15
 inline constexpr std::uint32_t kAlarmDynamicsLimitedAcceleration = 502;
 inline constexpr std::uint32_t kAlarmDynamicsLimitedJerk = 503;
@@ -53,6 +55,10 @@ inline constexpr std::uint32_t kAlarmSoftwareLimitReached = 533;
 inline constexpr std::uint32_t kAlarmSoftwareLimitExceeded = 534;
 inline constexpr std::uint32_t kAlarmPositioning = 541;
 inline constexpr std::uint32_t kAlarmDriveSafeStop = 550;  // seed L2719
+inline constexpr std::uint32_t kAlarmHomingFailed = 560;   // homing could not be completed, [OUR CHOICE]
+inline constexpr std::uint32_t kAlarmLeadingAxisDefective = 601;         // spec 07 §1.10 (ALM8)
+inline constexpr std::uint32_t kAlarmLeaderNotPositionControlled = 603;  // spec 07 §1.10
+inline constexpr std::uint32_t kAlarmSynchronizationError = 608;  // leading value reversed, spec 07 §1.10
 
 struct PendingAlarm {
   std::uint32_t number = 0;

@@ -25,6 +25,14 @@ struct DriveConnectionConfig {
   std::uint32_t link_loss_tolerance_cycles = 3;
 };
 
+// Ti, To, T_DC of isochronous operation in seconds (spec 01 §3.5; MC_WriteParameter 1010/1011/1012): they
+// enter the following error of position-controlled axes.
+struct CommunicationTimes {
+  double Ti = 0.0;
+  double To = 0.0;
+  double Tdc = 0.0;
+};
+
 // Why StatusDrive.CommunicationOK is FALSE (seed L11468), the first reason found.
 enum class CommunicationFault : std::uint8_t {
   kNone,

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -46,6 +47,9 @@ class TechnologyObject {
   virtual void servo(const CycleClock& clock) noexcept = 0;  // MC_Servo: actual values, control, setpoints
   virtual void interpolate(
       const CycleClock& clock) noexcept = 0;  // MC_Interpolator: jobs, profiles, monitoring
+  // The TOs whose values this one reads in its cycle (a synchronous axis: its possible leading values). The
+  // runtime evaluates them first (spec 07 §6.1); a cycle in this graph is a configuration error.
+  virtual std::span<TechnologyObject* const> leaders() const noexcept { return {}; }
 };
 
 class Runtime {
@@ -58,6 +62,8 @@ class Runtime {
   Runtime& operator=(const Runtime&) = delete;
 
   // ---- set-up (before start(); may allocate and throw std::logic_error) ----
+  // start() orders the TOs so that every leader runs before its followers (TechnologyObject::leaders()) and
+  // throws std::logic_error naming the TOs of a coupling cycle or a leader that is not in this runtime.
   DeviceIo& add_device(std::unique_ptr<drives::DriveAdapter> adapter);
   void add_technology_object(std::unique_ptr<TechnologyObject> object);
   template <typename T, typename... Args>
@@ -92,8 +98,9 @@ class Runtime {
   RuntimeConfig config_;
   CycleClock clock_{};
   bool started_ = false;
-  std::vector<std::unique_ptr<DeviceIo>> devices_;  // stable addresses: TOs keep DeviceIo&
-  std::vector<std::unique_ptr<TechnologyObject>> objects_;
+  std::vector<std::unique_ptr<DeviceIo>> devices_;          // stable addresses: TOs keep DeviceIo&
+  std::vector<std::unique_ptr<TechnologyObject>> objects_;  // in the order they were added
+  std::vector<TechnologyObject*> cycle_order_;              // leaders before followers (start())
   Hook pre_servo_;
   Hook post_servo_;
   Hook post_interpolator_;

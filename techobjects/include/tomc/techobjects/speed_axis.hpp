@@ -15,6 +15,7 @@
 #include "tomc/techobjects/drive_connection.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
+#include "tomc/techobjects/job_table.hpp"
 #include "tomc/techobjects/profiles.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis_data.hpp"
@@ -30,6 +31,7 @@ struct MoveVelocityInputs {
   double Jerk = -1.0;
   std::int32_t Direction = 0;  // 0 sign of Velocity, 1 positive, 2 negative
   bool Current = false;
+  bool PositionControlled = true;  // positioning/synchronous axes (spec 02 §2.1); ignored on a speed axis
 };
 struct HaltInputs {
   double Deceleration = -1.0;
@@ -50,6 +52,7 @@ struct JogInputs {
   double Acceleration = -1.0;
   double Deceleration = -1.0;
   double Jerk = -1.0;
+  bool PositionControlled = true;  // positioning/synchronous axes (spec 02 §2.5); ignored on a speed axis
 };
 
 // The result of writing a data-block variable from user code.
@@ -119,11 +122,7 @@ class SpeedAxis final : public TechnologyObject {
   // Actor.RemoveEnableReaction (immediately). 1000 belongs to positioning axes.
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
   // Ti, To, T_DC (seconds) in effect; they enter the following error of position-controlled axes.
-  struct CommunicationTimes {
-    double Ti = 0.0;
-    double To = 0.0;
-    double Tdc = 0.0;
-  };
+  using CommunicationTimes = techobjects::CommunicationTimes;
   const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
   JobStatus job_status(JobId id) const noexcept;
 
@@ -140,11 +139,6 @@ class SpeedAxis final : public TechnologyObject {
   };
   enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
 
-  struct JobRecord {
-    JobId id = 0;
-    JobKind kind = JobKind::kNone;
-    JobStatus status{};
-  };
   struct Motion {  // the running base motion (MoveVelocity, Jog, Halt)
     JobId id = 0;
     JobKind kind = JobKind::kNone;
@@ -165,7 +159,6 @@ class SpeedAxis final : public TechnologyObject {
   // helpers
   JobId new_job(JobKind kind, JobState state) noexcept;
   void set_job(JobId id, JobState state, std::uint16_t error_id = 0) noexcept;
-  JobRecord* record(JobId id) noexcept;
   std::uint16_t motion_prerequisites() const noexcept;
   std::optional<std::uint16_t> resolve_dynamics(double acceleration, double deceleration, double jerk,
                                                 ProfileLimits& out) noexcept;
@@ -192,8 +185,7 @@ class SpeedAxis final : public TechnologyObject {
   DriveConnection drive_;
   AlarmList alarms_;
   ControlPriority control_;
-  std::array<JobRecord, 32> jobs_{};
-  JobId next_job_ = 1;
+  JobTable<JobKind> jobs_;
   std::uint64_t cycle_ = 0;
   double ipo_cycle_s_ = 0.001;
 

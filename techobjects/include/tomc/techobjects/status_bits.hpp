@@ -49,6 +49,8 @@ enum class StatusWordBit : std::uint8_t {
   kSWLimitMaxActive = 16,         // P/Y
   kHWLimitMinActive = 17,         // P/Y
   kHWLimitMaxActive = 18,         // P/Y
+  kSynchronizing = 21,            // Y (spec 07 §1.9; reserved on P)
+  kSynchronous = 22,              // Y (spec 07 §1.9; reserved on P)
   kMoveSuperimposedCommand = 23,  // P/Y
   kAxisSimulation = 25,           // S, P/Y
   kTorqueLimitingCommand = 26,    // S, P/Y
@@ -62,6 +64,7 @@ enum class StatusWordBit : std::uint8_t {
 // <TO>.StatusWord2, spec 04 §5.2 (man. §10.2.16, §10.3.39). Not present on E.
 enum class StatusWord2Bit : std::uint8_t {
   kStopCommand = 0,                      // S, P/Y
+  kDesynchronizingCommand = 1,           // Y (spec 07 §1.9, [T]; reserved on P)
   kPassingBacklash = 2,                  // P/Y
   kMotionInSuperimposedCommand = 6,      // P/Y (T)
   kHaltSuperimposedCommand = 7,          // P/Y
@@ -87,6 +90,7 @@ enum class ErrorWordBit : std::uint8_t {
   kFollowingErrorFault = 11,    // P/Y
   kPositioningFault = 12,       // P/Y
   kPeripheralError = 13,
+  kSynchronousError = 14,  // Y (spec 07 §1.9)
   kAdaptionError = 15,
   kSuperimposingError = 16,  // P/Y
 };
@@ -107,6 +111,7 @@ enum class WarningWordBit : std::uint8_t {
   kFollowingErrorWarning = 11,  // P/Y
   kPositioningWarning = 12,     // P/Y
   kPeripheralWarning = 13,
+  kSynchronousWarning = 14,  // Y (spec 07 §1.9)
   kAdaptionWarning = 15,
   kSuperimposingWarning =
       16,  // P/Y (the P table prints "16...31 reserved"; read as 17...31, spec 04 §14 item 10)
@@ -159,6 +164,8 @@ inline constexpr std::array kStatusWordBits{
     StatusWordBit::kSWLimitMaxActive,
     StatusWordBit::kHWLimitMinActive,
     StatusWordBit::kHWLimitMaxActive,
+    StatusWordBit::kSynchronizing,
+    StatusWordBit::kSynchronous,
     StatusWordBit::kMoveSuperimposedCommand,
     StatusWordBit::kAxisSimulation,
     StatusWordBit::kTorqueLimitingCommand,
@@ -170,6 +177,7 @@ inline constexpr std::array kStatusWordBits{
 };
 inline constexpr std::array kStatusWord2Bits{
     StatusWord2Bit::kStopCommand,
+    StatusWord2Bit::kDesynchronizingCommand,
     StatusWord2Bit::kPassingBacklash,
     StatusWord2Bit::kMotionInSuperimposedCommand,
     StatusWord2Bit::kHaltSuperimposedCommand,
@@ -178,24 +186,34 @@ inline constexpr std::array kStatusWord2Bits{
     StatusWord2Bit::kOnProfile,
 };
 inline constexpr std::array kErrorWordBits{
-    ErrorWordBit::kSystemFault,      ErrorWordBit::kConfigFault,
-    ErrorWordBit::kUserFault,        ErrorWordBit::kCommandNotAccepted,
-    ErrorWordBit::kDriveFault,       ErrorWordBit::kSensorFault,
-    ErrorWordBit::kDynamicError,     ErrorWordBit::kCommunicationFault,
-    ErrorWordBit::kSWLimit,          ErrorWordBit::kHWLimit,
-    ErrorWordBit::kHomingError,      ErrorWordBit::kFollowingErrorFault,
-    ErrorWordBit::kPositioningFault, ErrorWordBit::kPeripheralError,
-    ErrorWordBit::kAdaptionError,    ErrorWordBit::kSuperimposingError,
+    ErrorWordBit::kSystemFault,
+    ErrorWordBit::kConfigFault,
+    ErrorWordBit::kUserFault,
+    ErrorWordBit::kCommandNotAccepted,
+    ErrorWordBit::kDriveFault,
+    ErrorWordBit::kSensorFault,
+    ErrorWordBit::kDynamicError,
+    ErrorWordBit::kCommunicationFault,
+    ErrorWordBit::kSWLimit,
+    ErrorWordBit::kHWLimit,
+    ErrorWordBit::kHomingError,
+    ErrorWordBit::kFollowingErrorFault,
+    ErrorWordBit::kPositioningFault,
+    ErrorWordBit::kPeripheralError,
+    ErrorWordBit::kSynchronousError,
+    ErrorWordBit::kAdaptionError,
+    ErrorWordBit::kSuperimposingError,
 };
 inline constexpr std::array kWarningWordBits{
-    WarningWordBit::kSystemWarning,      WarningWordBit::kConfigWarning,
-    WarningWordBit::kUserWarning,        WarningWordBit::kCommandNotAccepted,
-    WarningWordBit::kDriveWarning,       WarningWordBit::kSensorWarning,
-    WarningWordBit::kDynamicWarning,     WarningWordBit::kCommunicationWarning,
-    WarningWordBit::kSWLimitMin,         WarningWordBit::kSWLimitMax,
-    WarningWordBit::kHomingWarning,      WarningWordBit::kFollowingErrorWarning,
-    WarningWordBit::kPositioningWarning, WarningWordBit::kPeripheralWarning,
-    WarningWordBit::kAdaptionWarning,    WarningWordBit::kSuperimposingWarning,
+    WarningWordBit::kSystemWarning,        WarningWordBit::kConfigWarning,
+    WarningWordBit::kUserWarning,          WarningWordBit::kCommandNotAccepted,
+    WarningWordBit::kDriveWarning,         WarningWordBit::kSensorWarning,
+    WarningWordBit::kDynamicWarning,       WarningWordBit::kCommunicationWarning,
+    WarningWordBit::kSWLimitMin,           WarningWordBit::kSWLimitMax,
+    WarningWordBit::kHomingWarning,        WarningWordBit::kFollowingErrorWarning,
+    WarningWordBit::kPositioningWarning,   WarningWordBit::kPeripheralWarning,
+    WarningWordBit::kSynchronousWarning,   WarningWordBit::kAdaptionWarning,
+    WarningWordBit::kSuperimposingWarning,
 };
 
 // ---- names as printed in the manual ----
@@ -256,12 +274,18 @@ constexpr std::string_view name(StatusWordBit bit) noexcept {
       return "InClamping";
     case StatusWordBit::kMotionInCommand:
       return "MotionInCommand";
+    case StatusWordBit::kSynchronizing:
+      return "Synchronizing";
+    case StatusWordBit::kSynchronous:
+      return "Synchronous";
   }
   return {};
 }
 
 constexpr std::string_view name(StatusWord2Bit bit) noexcept {
   switch (bit) {
+    case StatusWord2Bit::kDesynchronizingCommand:
+      return "DesynchronizingCommand";
     case StatusWord2Bit::kStopCommand:
       return "StopCommand";
     case StatusWord2Bit::kPassingBacklash:
@@ -308,6 +332,8 @@ constexpr std::string_view name(ErrorWordBit bit) noexcept {
       return "FollowingErrorFault";
     case ErrorWordBit::kPositioningFault:
       return "PositioningFault";
+    case ErrorWordBit::kSynchronousError:
+      return "SynchronousError";
     case ErrorWordBit::kPeripheralError:
       return "PeripheralError";
     case ErrorWordBit::kAdaptionError:
@@ -346,6 +372,8 @@ constexpr std::string_view name(WarningWordBit bit) noexcept {
       return "FollowingErrorWarning";
     case WarningWordBit::kPositioningWarning:
       return "PositioningWarning";
+    case WarningWordBit::kSynchronousWarning:
+      return "SynchronousWarning";
     case WarningWordBit::kPeripheralWarning:
       return "PeripheralWarning";
     case WarningWordBit::kAdaptionWarning:
@@ -424,8 +452,10 @@ constexpr std::uint32_t status_word_mask(TechnologyObjectType type) noexcept {
       return bit_mask({kEnable, kError, kRestartActive, kOnlineStartValuesChanged, kControlPanelActive, kDone,
                        kJogCommand, kVelocityCommand, kConstantVelocity, kAccelerating, kDecelerating,
                        kAxisSimulation, kTorqueLimitingCommand, kInLimitation});
-    case TechnologyObjectType::kPositioningAxis:
-    case TechnologyObjectType::kSynchronousAxis:  // spec 04 §5.1 column P/Y (man. §10.3.38)
+    case TechnologyObjectType::kSynchronousAxis:  // P/Y plus the synchronous bits of spec 07 §1.9
+      return status_word_mask(TechnologyObjectType::kPositioningAxis) |
+             bit_mask({kSynchronizing, kSynchronous});
+    case TechnologyObjectType::kPositioningAxis:  // spec 04 §5.1 column P/Y (man. §10.3.38)
       return bit_mask({kEnable,
                        kError,
                        kRestartActive,
@@ -465,8 +495,9 @@ constexpr std::uint32_t status_word2_mask(TechnologyObjectType type) noexcept {
   switch (type) {
     case TechnologyObjectType::kSpeedAxis:  // spec 04 §5.2 column S: bit 0 only
       return bit_mask(kStopCommand);
-    case TechnologyObjectType::kPositioningAxis:
     case TechnologyObjectType::kSynchronousAxis:
+      return status_word2_mask(TechnologyObjectType::kPositioningAxis) | bit_mask(kDesynchronizingCommand);
+    case TechnologyObjectType::kPositioningAxis:
       return bit_mask({kStopCommand, kPassingBacklash, kMotionInSuperimposedCommand, kHaltSuperimposedCommand,
                        kMotionInSuperimposedAxesCommand, kPositionProfileCommand, kOnProfile});
     case TechnologyObjectType::kExternalEncoder:  // spec 04 §5.2: not present on E
@@ -481,8 +512,9 @@ constexpr std::uint32_t error_word_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kSpeedAxis:  // spec 04 §5.3 column S (man. §10.2.17)
       return bit_mask({kSystemFault, kConfigFault, kUserFault, kCommandNotAccepted, kDriveFault,
                        kDynamicError, kCommunicationFault, kPeripheralError, kAdaptionError});
-    case TechnologyObjectType::kPositioningAxis:
     case TechnologyObjectType::kSynchronousAxis:
+      return error_word_mask(TechnologyObjectType::kPositioningAxis) | bit_mask(kSynchronousError);
+    case TechnologyObjectType::kPositioningAxis:
       return bit_mask({kSystemFault, kConfigFault, kUserFault, kCommandNotAccepted, kDriveFault, kSensorFault,
                        kDynamicError, kCommunicationFault, kSWLimit, kHWLimit, kHomingError,
                        kFollowingErrorFault, kPositioningFault, kPeripheralError, kAdaptionError,
@@ -500,8 +532,9 @@ constexpr std::uint32_t warning_word_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kSpeedAxis:  // spec 04 §5.4 column S (man. §10.2.19)
       return bit_mask({kSystemWarning, kConfigWarning, kUserWarning, kCommandNotAccepted, kDriveWarning,
                        kDynamicWarning, kCommunicationWarning, kPeripheralWarning, kAdaptionWarning});
-    case TechnologyObjectType::kPositioningAxis:
     case TechnologyObjectType::kSynchronousAxis:
+      return warning_word_mask(TechnologyObjectType::kPositioningAxis) | bit_mask(kSynchronousWarning);
+    case TechnologyObjectType::kPositioningAxis:
       return bit_mask({kSystemWarning, kConfigWarning, kUserWarning, kCommandNotAccepted, kDriveWarning,
                        kSensorWarning, kDynamicWarning, kCommunicationWarning, kSWLimitMin, kSWLimitMax,
                        kHomingWarning, kFollowingErrorWarning, kPositioningWarning, kPeripheralWarning,

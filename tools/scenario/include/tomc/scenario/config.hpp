@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/techobjects/external_encoder_data.hpp"
+#include "tomc/techobjects/positioning_axis_data.hpp"
 #include "tomc/techobjects/speed_axis_data.hpp"
 
 namespace tomc::scenario {
@@ -46,12 +48,19 @@ std::string join_path(std::string_view base, std::string_view key);
 // at `path`.<key>. Variables not given keep the start value already in `data`.
 void load_speed_axis_config(const Json& config, std::string_view path, techobjects::SpeedAxisData& data,
                             Problems& problems);
+// The same for TO_PositioningAxis (positioning_axis_variables(): "Sensor[1].Parameter.StepsPerRevolution")
+// and TO_ExternalEncoder.
+void load_positioning_axis_config(const Json& config, std::string_view path,
+                                  techobjects::PositioningAxisData& data, Problems& problems);
+void load_external_encoder_config(const Json& config, std::string_view path,
+                                  techobjects::ExternalEncoderData& data, Problems& problems);
 
 // The `drive` object: which adapter, which telegram(s) and, for the simulated drive, its machine model.
 struct DriveSettings {
   std::string adapter = "simulated";
   std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
   std::uint16_t supplementary_telegram = 0;  // 0 or 750
+  std::uint16_t encoder_telegram = 0;        // 0, 81 or 83: a separately connected encoder (slot kEncoder1)
   drives::SimulatedDriveParameters parameters{};
   drives::DeviceConfig device_config() const;
 };

@@ -1,0 +1,39 @@
+#pragma once
+// A leading value (spec 07 §1.2–§1.4): what a positioning axis, a synchronous axis or an external encoder
+// offers a following synchronous axis, read by the follower in the same MC_Interpolator cycle (the runtime
+// runs leaders first). Positions are continuous (no modulo jump); the modulo range is given so that user
+// inputs in leader coordinates (MasterSyncPosition) can be mapped onto them. No unit conversion happens
+// between leader and follower (spec 07 §1.2).
+
+#include <cstdint>
+
+namespace tomc::techobjects {
+
+// The type of coupling configured per interconnection (spec 07 §1.2).
+enum class LeadingValueCoupling : std::uint8_t {
+  kSetpoint,     // the leader's setpoint (spec 07 §1.3)
+  kActualValue,  // the leader's extrapolated actual value (spec 07 §1.4)
+};
+
+struct LeadingValue {
+  double position = 0.0;  // continuous
+  double velocity = 0.0;
+  double acceleration = 0.0;
+  bool valid = false;                // the source delivers values (actual value: encoder valid)
+  bool position_controlled = false;  // the leader runs position-controlled (setpoint coupling needs it)
+};
+
+struct ModuloRange {
+  bool enabled = false;
+  double start = 0.0;
+  double length = 360.0;
+};
+
+class LeadingValueSource {
+ public:
+  virtual ~LeadingValueSource() = default;
+  virtual LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept = 0;
+  virtual ModuloRange leading_value_modulo() const noexcept = 0;
+};
+
+}  // namespace tomc::techobjects

@@ -1,0 +1,383 @@
+#pragma once
+// TO_PositioningAxis (spec 01 §2–§8, spec 02 §2–§7, spec 03 §4, spec 04 column P): an axis that positions a
+// load in user units. It assembles the issue-5 components — actual-value chain (encoder counts -> user units,
+// modulo), position controller (Kv, precontrol, DSC), following-error / positioning / standstill monitors,
+// software and hardware limit switches — around the job machinery the speed axis has: MC_Power, MC_Reset,
+// alarm reactions, the §9.19.1 matrix, MC_Stop and MC_Halt. Motion jobs: MC_MoveAbsolute, MC_MoveRelative
+// (BufferMode 0/1), MC_MoveVelocity, MC_MoveJog, MC_Home (direct modes 0, 1, 11, 12).
+//
+// Units: the data block holds positions in Units.LengthUnit, velocities in Units.VelocityUnit; internally the
+// axis computes in position units per second (axis_units.hpp). Positions are kept continuous internally; the
+// data block shows them modulo-wrapped with their modulo cycle counters (spec 01 §2.4).
+//
+// Cycle: MC_Servo reads the drive and encoder, computes the actual values, runs the position controller on
+// the setpoint of the last MC_Interpolator, and the servo-rate monitors; MC_Interpolator takes the jobs,
+// applies alarm reactions, generates the setpoint, runs the software-limit look-ahead and updates the status.
+// Both are noexcept and allocate nothing.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "tomc/techobjects/actual_value_chain.hpp"
+#include "tomc/techobjects/actual_value_extrapolation.hpp"
+#include "tomc/techobjects/alarms.hpp"
+#include "tomc/techobjects/axis_units.hpp"
+#include "tomc/techobjects/drive_connection.hpp"
+#include "tomc/techobjects/encoder_channel.hpp"
+#include "tomc/techobjects/job.hpp"
+#include "tomc/techobjects/job_priority.hpp"
+#include "tomc/techobjects/job_table.hpp"
+#include "tomc/techobjects/leading_value.hpp"
+#include "tomc/techobjects/limit_switches.hpp"
+#include "tomc/techobjects/passive_homing.hpp"
+#include "tomc/techobjects/position_control.hpp"
+#include "tomc/techobjects/position_monitoring.hpp"
+#include "tomc/techobjects/positioning_axis_data.hpp"
+#include "tomc/techobjects/profiles.hpp"
+#include "tomc/techobjects/retained_encoder_data.hpp"
+#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/speed_axis.hpp"
+
+namespace tomc::techobjects {
+
+// Inputs of MC_MoveAbsolute (spec 03 §4.5); negative dynamics = DynamicDefaults.
+struct MoveAbsoluteInputs {
+  double Position = 0.0;
+  double Velocity = -1.0;
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  std::int32_t Direction = 1;   // modulo only: 1 positive, 2 negative, 3 shortest path
+  std::int32_t BufferMode = 0;  // 0 abort, 1 append
+};
+// Inputs of MC_MoveRelative (spec 03 §4.6).
+struct MoveRelativeInputs {
+  double Distance = 0.0;
+  double Velocity = -1.0;
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  std::int32_t BufferMode = 0;
+};
+// Inputs of MC_Home (spec 03 §4.3).
+struct HomeInputs {
+  double Position = 0.0;
+  std::int32_t Mode = 0;
+  std::int32_t Sensor = 0;
+};
+
+// The process-image inputs an axis reads besides its telegrams (spec 02 §4.4, §5.3): the hardware limit
+// switches and the homing digital input. The integrator (or the scenario engine, from the simulated machine)
+// writes them before MC_Servo, e.g. in the MC_PreServo hook, as a PLC's "TPA OB Servo" process image.
+struct AxisDigitalInputs {
+  bool MinSwitch = false;    // level of PositionLimits_HW.MinSwitchAddress
+  bool MaxSwitch = false;    // level of PositionLimits_HW.MaxSwitchAddress
+  bool HomingInput = false;  // level of Sensor[n].ActiveHoming/PassiveHoming.DigitalInputAddress
+};
+
+class PositioningAxis : public TechnologyObject, public LeadingValueSource {
+ public:
+  // `device` is the drive (and its encoders); nullptr for a virtual axis. Throws std::invalid_argument for
+  // start values the data block does not permit, or mechanics/units that do not fit together, naming the
+  // variable path.
+  PositioningAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
+                  const DriveConnectionConfig& drive = {});
+
+  // ---- TechnologyObject ----
+  std::string_view name() const noexcept override { return name_; }
+  void servo(const CycleClock& clock) noexcept override;
+  void interpolate(const CycleClock& clock) noexcept override;
+
+  // ---- the data block ----
+  const PositioningAxisData& data() const noexcept { return db_; }
+  WriteResult write(std::string_view path, double value) noexcept;
+  WriteResult write_start_value(std::string_view path, double value) noexcept;
+  double read(std::string_view path) const noexcept;
+  const AlarmList& alarms() const noexcept { return alarms_; }
+  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
+  const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
+  AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
+  const AxisDigitalInputs& digital_inputs() const noexcept { return inputs_; }
+
+  // ---- jobs (called by instructions from the user program) ----
+  PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
+  Submission reset(bool restart) noexcept;
+  Submission home(const HomeInputs& in) noexcept;
+  Submission move_absolute(const MoveAbsoluteInputs& in) noexcept;
+  Submission move_relative(const MoveRelativeInputs& in) noexcept;
+  Submission move_velocity(const MoveVelocityInputs& in) noexcept;
+  Submission halt(const HaltInputs& in) noexcept;
+  Submission stop(const StopInputs& in) noexcept;
+  void stop_execute(JobId job, bool execute) noexcept;
+  Submission jog(JobId running, const JogInputs& in) noexcept;
+  Submission set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                          std::uint16_t stw2_mask) noexcept;
+  // 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart), 1020
+  // Actor.RemoveEnableReaction (immediately) — spec 03 §4.15.
+  Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  JobStatus job_status(JobId id) const noexcept;
+  // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
+  double reference_mark_position() const noexcept { return reference_mark_position_; }
+
+  // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
+  // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
+  // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
+  using RetainedEncoderData = techobjects::RetainedEncoderData;
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  // Before Runtime::start(): the retained data could not be restored (1 backup missing, 2 corrupt, 3 no
+  // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
+  // ---- as a leading value (spec 07 §1.3, §1.4) ----
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override;
+
+  // ---- for tests, diagnostics and the synchronous axis ----
+  // The setpoint the interpolator generated last (continuous position, before modulo wrap).
+  const MotionState& setpoint() const noexcept { return setpoint_; }
+  double continuous_actual_position() const noexcept { return actual_position_; }
+  bool position_controlled() const noexcept { return position_controlled_; }
+  const AxisUnitFactors& units() const noexcept { return units_; }
+  const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
+
+ protected:
+  enum class JobKind : std::uint8_t {
+    kNone,
+    kReset,
+    kHome,
+    kMoveAbsolute,
+    kMoveRelative,
+    kMoveVelocity,
+    kJog,
+    kHalt,
+    kStop,
+    kSetAxisStw,
+    kWriteParameter,
+    kGearIn,          // synchronous axis (synchronous_axis.hpp): MC_GearIn
+    kGearInPos,       // MC_GearInPos, once synchronization started
+    kGearInVelocity,  // MC_GearInVelocity
+    kGearOut,         // MC_GearOut, once desynchronization started
+  };
+  enum class PowerPhase : std::uint8_t { kDisabled, kEnabling, kEnabled, kDisabling };
+  // What drives the setpoint this cycle.
+  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
+
+  struct Motion {  // a base motion job (running or appended)
+    JobId id = 0;
+    JobKind kind = JobKind::kNone;
+    ProfileLimits limits{};        // resolved (position units), velocity before override
+    double command_velocity = 0;   // MoveVelocity/Jog: signed, before override
+    double target = 0;             // positioning: continuous target position
+    double distance = 0;           // appended positioning: target relative to the end of the running job
+    bool relative_to_end = false;  // appended MoveRelative: Distance counts from the running job's target
+    std::int32_t direction = 1;    // appended MoveAbsolute on a modulo axis
+    double absolute_position = 0;  // appended MoveAbsolute: the requested position
+    double planned_velocity = 0;   // the velocity limit the profile was planned with (override changes)
+    bool jog_stopping = false;
+    bool position_controlled = true;
+    bool interpolation_done = false;  // positioning: the setpoint has reached the target
+  };
+  struct StopJob {
+    JobId id = 0;
+    int weight = 0;
+    ProfileLimits limits{};
+    bool execute = false;
+    bool done = false;
+  };
+
+  // homing (positioning_axis_homing.cpp)
+  enum class HomingPhase : std::uint8_t {
+    kIdle,
+    kApproach,       // towards the reference cam / digital input at ApproachVelocity (ActiveHoming.Mode 1, 2)
+    kLeaveInput,     // digital input: back off it, against the homing direction, to meet the mark edge
+    kSearchEdge,     // digital input: towards the mark edge in the homing direction at ReferencingVelocity
+    kSearchCamExit,  // cam + zero mark: leaving the cam in the homing direction arms the zero-mark search
+    kSearchMark,     // zero mark armed, in the homing direction at ReferencingVelocity
+    kToHome,         // homed: to the home position at ApproachVelocity
+  };
+  struct ActiveHomingJob {
+    HomingPhase phase = HomingPhase::kIdle;
+    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+    double home_position = 0.0;     // MC_Home.Position (3) or Homing.HomePosition (5)
+    double mark_value = 0.0;        // home position - HomePositionOffset
+    double direction = 1.0;         // homing direction (ActiveHoming.Direction)
+    double travel_direction = 1.0;  // the direction of the present search motion
+    bool mark_on_entering = false;  // digital input: the mark is the edge onto the input
+    int limit_reversals = 0;
+  };
+  struct PassiveHomingJob {
+    JobId id = 0;
+    double value = 0.0;  // position assigned at the mark
+  };
+  void start_active_homing(JobId id, double home_position) noexcept;
+  void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
+  void run_homing() noexcept;      // MC_Interpolator
+  void run_passive_homing() noexcept;
+  void end_passive_homing(JobState state, std::uint16_t error_id = 0) noexcept;
+  void homing_move(double direction, double velocity) noexcept;
+  void assign_reference(double mark_position, double value) noexcept;
+  void fail_homing(std::uint32_t cause) noexcept;
+  bool input_active() const noexcept;
+  void store_adjustment() noexcept;
+
+  static constexpr bool synchronous_kind(JobKind k) noexcept {
+    return k == JobKind::kGearIn || k == JobKind::kGearInPos || k == JobKind::kGearInVelocity ||
+           k == JobKind::kGearOut;
+  }
+
+  // ---- hooks of the synchronous axis (no-ops on a positioning axis) ----
+  // The §9.19.2 row of a new job against the running synchronous jobs: 0 = proceed (aborts applied), else the
+  // ErrorID that rejects the new job. Called after the §9.19.1 check passed.
+  virtual std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
+    (void)row;
+    return 0;
+  }
+  // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
+  virtual void abort_synchronous(std::uint16_t error_id) noexcept { (void)error_id; }
+  // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
+  virtual void run_synchronous() noexcept {}
+  // The setpoint of Generator::kSynchronous for this cycle.
+  virtual MotionState synchronous_setpoint() noexcept { return setpoint_; }
+  // A following axis in synchronous operation stops at a software limit with maximum dynamics (spec 02 §4.5).
+  virtual bool following_in_synchronous_operation() const noexcept { return false; }
+  virtual void update_synchronous_status() noexcept {}
+
+  // configuration
+  void configure_components() noexcept;
+  void configure_monitoring() noexcept;
+  void configure_extrapolation() noexcept;
+  // jobs
+  JobId new_job(JobKind kind, JobState state) noexcept { return jobs_.create(kind, state); }
+  void set_job(JobId id, JobState state, std::uint16_t error_id = 0) noexcept {
+    jobs_.set(id, state, error_id);
+  }
+  std::uint16_t motion_prerequisites() const noexcept;
+  std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
+                                                double jerk, ProfileLimits& out) noexcept;
+  std::uint16_t arbitrate_motion(NewJob row, bool& queue) noexcept;
+  std::array<RunningJob, 4> running_jobs(std::size_t& n) const noexcept;
+  void abort_motion(std::uint16_t error_id) noexcept;
+  void abort_pending(std::uint16_t error_id) noexcept;
+  std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
+  void start_positioning(Motion motion) noexcept;
+  // setpoint generation
+  void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
+  void plan_position(double target, const ProfileLimits& limits) noexcept;
+  double override_factor() const noexcept;
+  double velocity_limit() const noexcept;  // position units / s
+  void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept;
+  void raise_with(std::uint32_t number, std::uint32_t additional, std::int32_t reaction) noexcept;
+  void apply_alarm_reactions() noexcept;
+  void update_power_phase() noexcept;
+  void update_live_motion() noexcept;
+  void generate_setpoint() noexcept;
+  void monitor_software_limits() noexcept;
+  void complete_jobs() noexcept;
+  void update_status() noexcept;
+  void restart() noexcept;
+  // servo
+  void read_actual_values() noexcept;
+  void simulate_actual_values() noexcept;
+  void control() noexcept;
+  void servo_monitoring() noexcept;
+  void supervise_drive() noexcept;
+  void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
+  bool blocked() const noexcept { return reaction_in_force_ != AlarmReaction::kNone; }
+  bool virtual_axis() const noexcept { return device_ == nullptr; }
+  bool homed() const noexcept;
+  bool follows_actual() const noexcept;
+  bool modulo() const noexcept { return db_.Modulo.Enable; }
+
+  std::string name_;
+  DeviceIo* device_ = nullptr;
+  PositioningAxisData start_;
+  PositioningAxisData db_;
+  DriveConnectionConfig drive_config_;
+  DriveConnection drive_;
+  AlarmList alarms_;
+  JobTable<JobKind> jobs_;
+  AxisDigitalInputs inputs_{};
+  std::uint64_t cycle_ = 0;
+  double servo_cycle_s_ = 0.001;
+  double ipo_cycle_s_ = 0.001;
+  bool servo_cycle_known_ = false;
+
+  // components
+  AxisUnitFactors units_{};
+  AxisMechanics mechanics_{};
+  EncoderMechanics encoder_mechanics_{};
+  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
+  EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
+  PositionController controller_;
+  FollowingErrorMonitor following_error_;
+  PositioningMonitor positioning_;
+  StandstillSignal standstill_;
+  limits::SoftwareLimitMonitor software_limits_;
+  limits::HardwareLimitMonitor hardware_limits_;
+  SetpointDelayLine simulation_delay_{};
+  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
+
+  // power
+  PowerPhase phase_ = PowerPhase::kDisabled;
+  bool enable_ = false;
+  std::int32_t start_mode_ = 1;
+  std::int32_t stop_mode_ = 0;
+  std::uint64_t enabling_since_ = 0;
+  double enable_timeout_s_ = 2.0;
+  bool position_controlled_ = true;
+
+  // motion
+  Motion motion_{};
+  Motion pending_{};  // BufferMode 1
+  StopJob stop_{};
+  Generator generator_ = Generator::kIdle;
+  VelocityProfile velocity_profile_{};
+  PositionProfile position_profile_{};
+  double profile_time_ = 0.0;
+  MotionState setpoint_{};                  // continuous position units
+  bool positioning_start_pending_ = false;  // servo starts the positioning monitor with this target
+  double positioning_target_ = 0.0;
+  bool limit_stop_ = false;  // a software-limit stop to limit_stop_position_ is in force
+  double limit_stop_position_ = 0.0;
+  double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
+  double last_actual_velocity_ = 0.0;
+  double last_setpoint_acceleration_ = 0.0;
+
+  // homing
+  ActiveHomingJob homing_{};
+  PassiveHomingJob passive_{};
+  PassiveHomingSearch passive_search_{};
+  InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
+  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
+  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
+  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
+
+  // actual values (continuous position units)
+  double actual_position_ = 0.0;
+  double actual_velocity_ = 0.0;
+  bool homed_ = false;
+  double reference_mark_position_ = 0.0;
+  bool actual_valid_ = false;
+
+  // alarms
+  AlarmReaction reaction_in_force_ = AlarmReaction::kNone;
+  bool reset_pending_ = false;
+  JobId reset_job_ = 0;
+  bool restart_requested_ = false;
+  std::uint64_t acknowledged_at_ = 0;
+  bool drive_fault_seen_ = false;
+  bool encoder_fault_seen_ = false;
+  FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
+  CommunicationTimes communication_times_{};
+  CommunicationTimes communication_times_start_{};
+};
+
+}  // namespace tomc::techobjects

@@ -1,0 +1,399 @@
+// TO_ExternalEncoder: an encoder telegram evaluated into user units (spec 01 §5.3), with enable, alarms,
+// direct homing and the standstill signal.
+#include "tomc/techobjects/external_encoder.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/positioning_variables.hpp"
+
+namespace tomc::techobjects {
+
+ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const ExternalEncoderData& start_values,
+                                 const DriveConnectionConfig& connection)
+    : name_(std::move(name)),
+      device_(device),
+      start_(start_values),
+      db_(start_values),
+      connection_config_(connection),
+      encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kEncoderG1) {
+  const auto fail = [&](std::string_view path, std::string_view message) {
+    throw std::invalid_argument(name_ + "." + std::string(path) + ": " + std::string(message));
+  };
+  for (const auto& v : external_encoder_variables()) {
+    if (v.role != VariableRole::kConfiguration) continue;
+    const ValueError e = check_value(v, v.read(start_));
+    if (e != ValueError::kNone) fail(v.path, to_string(e));
+  }
+  units_ = axis_unit_factors(start_.Units.LengthUnit, start_.Units.VelocityUnit);
+  if (!units_.valid) fail("Units.VelocityUnit", "does not measure the same quantity as Units.LengthUnit");
+  const bool rotary =
+      start_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kRotary);
+  if (rotary != (length_unit_scale(start_.Units.LengthUnit)->dimension == UnitDimension::kAngle)) {
+    fail("Units.LengthUnit", rotary ? "a rotary encoder needs an angle unit (°, rad)"
+                                    : "a linear encoder needs a length unit (m, mm, in, ...)");
+  }
+  if (device_ == nullptr)
+    fail("Sensor.Interface", "an external encoder needs a device with telegram 81 or 83");
+  const auto& cfg = device_->adapter->config();
+  if (cfg.encoder_telegrams[0] != 81 && cfg.encoder_telegrams[0] != 83) {
+    fail("Sensor.Interface", "the device carries no encoder telegram 81 or 83 (spec 01 §3.3)");
+  }
+  source_ = EncoderSource::kEncoderG1;
+  connection_ = DriveConnection(*device_, connection_config_);
+  configure();
+  if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
+}
+
+// The external encoder has no mounting choice between motor and load: its measuring system is evaluated
+// through load gear and leadscrew as MountingMode 0 with measuring gear 1:1 (actual_value_chain.hpp), or
+// through DistancePerRevolution for a measuring wheel.
+void ExternalEncoder::configure() noexcept {
+  const auto& s = db_.Sensor;
+  mechanics_.MotionType = static_cast<AxisMotionType>(db_.Properties.MotionType);
+  mechanics_.LoadGear = GearRatio{db_.LoadGear.Numerator, db_.LoadGear.Denominator};
+  mechanics_.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
+  mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+  mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
+  encoder_mechanics_.Type = static_cast<EncoderType>(s.Type);
+  encoder_mechanics_.System = static_cast<EncoderSystem>(s.System);
+  encoder_mechanics_.MountingMode =
+      s.MountingMode == static_cast<std::int32_t>(SensorMountingMode::kExternalMeasuringSystem)
+          ? EncoderMounting::kExternalMeasuringSystem
+          : EncoderMounting::kMotorShaft;
+  encoder_mechanics_.InverseDirection = s.InverseDirection;
+  encoder_mechanics_.Parameter.Resolution = s.Parameter.Resolution;
+  encoder_mechanics_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
+  encoder_mechanics_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
+  encoder_mechanics_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
+  encoder_mechanics_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
+  encoder_mechanics_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
+  encoder_mechanics_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
+  encoder_mechanics_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
+  encoder_mechanics_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
+  encoder_mechanics_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
+  encoder_mechanics_.Nist = NistSource::kEncoderTelegram83;
+  encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, source_);
+  (void)standstill_.configure(StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
+                                                     db_.StandstillSignal.MinDwellTime, servo_cycle_s_});
+}
+
+void ExternalEncoder::servo(const CycleClock& clock) noexcept {
+  if (!servo_cycle_known_ || clock.servo_cycle_s != servo_cycle_s_) {
+    servo_cycle_s_ = clock.servo_cycle_s;
+    servo_cycle_known_ = true;
+    configure();
+  }
+  if (retained_restored_ && retained_.valid && !power_up_done_) {
+    // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+    RetainedSensorState r;
+    r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+    r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+    r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+    encoder_.chain().power_up(&r);
+  }
+  power_up_done_ = true;
+  connection_.read();
+  encoder_.read(connection_, device_->fresh);
+  const bool error = encoder_.error();
+  const bool communication = connection_.communication_ok();
+  if (error && !error_seen_) {
+    (void)alarms_.raise(kAlarmSensorFault, encoder_.error_code(), cycle_);
+    if (!encoder_.chain().absolute_type()) homed_ = false;  // spec 04 §8 rule 8
+  }
+  error_seen_ = error;
+  if (!communication && connection_.cycles_without_fresh_frame() > 0) {
+    (void)alarms_.raise(kAlarmDriveCommunication, 0, cycle_);
+  }
+  valid_ = encoder_.valid() && communication;
+  velocity_ = encoder_.chain().velocity();
+  (void)standstill_.update(velocity_);
+  db_.ActualAcceleration = (velocity_ - last_velocity_) / servo_cycle_s_ * units_.acceleration;
+  last_velocity_ = velocity_;
+  db_.StatusSensor.CommunicationOK = communication;
+  db_.StatusSensor.Error = error;
+  db_.StatusSensor.State =
+      static_cast<std::int32_t>(valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
+  db_.StatusSensor.Control = enabled_;
+  input_edges_.observe(inputs_.HomingInput == db_.Sensor.PassiveHoming.SwitchLevel,
+                       encoder_.chain().continuous_position());
+  if (const auto mark = encoder_.take_reference_mark()) mark_position_ = *mark;
+  if (retained_.valid) {
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
+  encoder_.write(connection_);
+  connection_.request(telegrams::DriveRequest::kOff);  // encoder-only: no drive state machine to run
+  connection_.write();
+}
+
+LeadingValue ExternalEncoder::leading_value(LeadingValueCoupling) const noexcept {
+  LeadingValue v;
+  v.position = extrapolation_.position();
+  v.velocity = extrapolation_.velocity();
+  v.acceleration = extrapolation_.acceleration();
+  v.valid = valid_;
+  v.position_controlled = true;  // an encoder has no position control to lose (spec 07 §1.4)
+  return v;
+}
+
+void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
+  cycle_ = clock.interpolator_cycles + 1;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    // The extrapolation of the leading value (spec 07 §1.4), as on the positioning axis.
+    const auto& e = db_.Extrapolation;
+    ExtrapolationConfig c;
+    c.position_t1 = e.PositionFilter.T1;
+    c.position_t2 = e.PositionFilter.T2;
+    c.velocity_t1 = e.VelocityFilter.T1;
+    c.velocity_t2 = e.VelocityFilter.T2;
+    c.tolerance_range = e.VelocityTolerance.Range / units_.velocity;
+    c.hysteresis = e.Hysteresis.Value;
+    c.velocity_mode = e.Settings.ExtrapolatedVelocityMode;
+    c.cycle = ipo_cycle_s_;
+    const bool system = e.Settings.SystemDefinedExtrapolation != 0;
+    db_.Extrapolation.LeadingAxisDependentTime = system ? ipo_cycle_s_ + c.position_t1 + c.position_t2 : 0.0;
+    if (!system) c.position_t1 = c.position_t2 = 0.0;
+    c.time = db_.Extrapolation.LeadingAxisDependentTime + e.FollowingAxisDependentTime;
+    extrapolation_.configure(c);
+  }
+  extrapolation_.update(encoder_.chain().continuous_position(), velocity_);
+  db_.StatusExtrapolation.FilteredPosition = extrapolation_.filtered_position();
+  db_.StatusExtrapolation.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+  db_.StatusExtrapolation.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+  db_.StatusExtrapolation.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
+  if (reset_pending_) {
+    reset_pending_ = false;
+    (void)alarms_.acknowledge(restart_requested_, cycle_);
+    connection_.acknowledge();
+    encoder_.acknowledge();
+    if (restart_requested_) {
+      const RetainedSensorState retained = encoder_.chain().retained_state();
+      db_ = start_;
+      connection_.restart(connection_config_);
+      configure();
+      if (encoder_.chain().absolute_type()) {
+        encoder_.chain().power_up(&retained);
+      } else {
+        homed_ = false;
+      }
+    }
+    jobs_.set(reset_job_, JobState::kDone);
+  }
+  // Enabled while the encoder delivers valid values and no alarm is pending (reaction 10 "remove enable").
+  enabled_ = enable_ && valid_ && alarms_.strongest_reaction() != AlarmReaction::kRemoveEnable;
+  // Passive homing (spec 02 §5.6) needs the enabled encoder; it ends with an alarm or the disable.
+  if (passive_job_ != 0) {
+    if (!enabled_) {
+      jobs_.set(passive_job_, JobState::kError, error_id::kAbortedByAlarmReaction);
+      passive_job_ = 0;
+      passive_search_.stop(encoder_);
+    } else if (const auto mark = passive_search_.step(velocity_, input_edges_, mark_position_, encoder_)) {
+      assign_reference(*mark, passive_value_, ModuloCycleRule::kHomePositionHalf);
+      jobs_.set(passive_job_, JobState::kDone);
+      passive_job_ = 0;
+    }
+  }
+  input_edges_.clear();
+  mark_position_.reset();
+  update_status();
+}
+
+void ExternalEncoder::update_status() noexcept {
+  const auto& chain = encoder_.chain();
+  db_.ActualPosition = chain.position();
+  db_.ActualVelocity = velocity_ * units_.velocity;
+  db_.ActualModuloCycle = db_.Modulo.Enable ? chain.modulo_cycle() : 0;
+  db_.StatusSensor.Position = db_.ActualPosition;
+  db_.StatusSensor.Velocity = db_.ActualVelocity;
+  db_.StatusSensor.ModuloCycle = db_.ActualModuloCycle;
+  db_.StatusSensor.AbsEncoderOffset = retained_.valid ? retained_.AbsEncoderOffset : 0.0;
+  std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
+  assign(sw, StatusWordBit::kEnable, enabled_);
+  assign(sw, StatusWordBit::kError, alarms_.any_error());
+  assign(sw, StatusWordBit::kHomingDone, homed_);
+  assign(sw, StatusWordBit::kDone, passive_job_ == 0);  // E: no job except MC_Power (spec 04 §5.1)
+  assign(sw, StatusWordBit::kHomingCommand, passive_job_ != 0);
+  assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
+  db_.StatusWord = sw;
+  std::uint32_t ew = 0;
+  for (const auto& a : alarms_.alarms()) {
+    if (a.number == kAlarmSensorFault) assign(ew, ErrorWordBit::kSensorFault, true);
+    if (a.number == kAlarmDriveCommunication) assign(ew, ErrorWordBit::kCommunicationFault, true);
+    if (a.number == kAlarmAdjustmentLost) assign(ew, ErrorWordBit::kHomingError, true);
+  }
+  db_.ErrorWord = ew;
+  db_.WarningWord = 0;
+  const PendingAlarm* top = alarms_.error_detail();
+  db_.ErrorDetail.Number = top == nullptr ? 0 : top->number;
+  // E shows 0 or 10 (spec 04 §14 item 7): 10 for an alarm that removes the enable.
+  db_.ErrorDetail.Reaction = static_cast<std::int32_t>(
+      top != nullptr && top->reaction == AlarmReaction::kRemoveEnable ? ExternalEncoderReaction::kRemoveEnable
+                                                                      : ExternalEncoderReaction::kNone);
+}
+
+PowerState ExternalEncoder::power(bool enable, std::int32_t, std::int32_t) noexcept {
+  enable_ = enable;
+  PowerState s;
+  s.Status = enabled_;
+  s.Busy = enable_;
+  return s;
+}
+
+Submission ExternalEncoder::reset(bool restart) noexcept {
+  if (restart && (enable_ || enabled_)) return Submission::reject(error_id::kRestartNeedsDisabledAxis);
+  reset_pending_ = true;
+  restart_requested_ = restart;
+  reset_job_ = jobs_.create(JobKind::kReset, JobState::kActive);
+  return Submission::accept(reset_job_);
+}
+
+// MC_Home on the external encoder (spec 02 §5.1: modes 0, 1, 2, 6, 7, 8, 9, 10, 11, 12, 13; no active
+// homing).
+Submission ExternalEncoder::home(const HomeInputs& in) noexcept {
+  if (!std::isfinite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
+  if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
+  if (in.Mode == 3 || in.Mode == 5)
+    return Submission::reject(error_id::kHomingModeNotAvailable);  // active: axes
+  if (in.Sensor != 0 && in.Sensor != 1) return Submission::reject(error_id::kInvalidSensor);
+  const bool absolute = absolute_encoder();
+  if ((in.Mode == 6 || in.Mode == 7) && !absolute)
+    return Submission::reject(error_id::kHomingModeNotAvailable);
+  if (in.Mode == 13 && absolute) return Submission::reject(error_id::kHomingModeNotAvailable);
+  if (in.Mode == 9) {
+    if (passive_job_ != 0 && !homed_) {
+      jobs_.set(passive_job_, JobState::kAborted);
+      passive_job_ = 0;
+      passive_search_.stop(encoder_);
+    }
+    return Submission::accept(jobs_.create(JobKind::kHome, JobState::kDone));
+  }
+  if (in.Mode == 2 || in.Mode == 8 || in.Mode == 10) {
+    if (!enabled_) return Submission::reject(error_id::kAxisNotEnabled);  // spec 02 §5.6
+    if (passive_job_ != 0) {
+      jobs_.set(passive_job_, JobState::kAborted);
+      passive_search_.stop(encoder_);
+    }
+    if (in.Mode != 2 && !absolute) homed_ = false;
+    passive_job_ = jobs_.create(JobKind::kHome, JobState::kActive);
+    passive_value_ = in.Mode == 10 ? db_.Homing.HomePosition : in.Position;
+    const auto& p = db_.Sensor.PassiveHoming;
+    passive_search_.start(PassiveHomingSearch::Config{
+        p.Mode, p.Direction, p.SideInput, db_.StandstillSignal.VelocityThreshold / units_.velocity});
+    input_edges_.was_active = inputs_.HomingInput == p.SwitchLevel;
+    return Submission::accept(passive_job_);
+  }
+  if (!valid_) return Submission::reject(error_id::kEncoderNotValid);
+  if (in.Mode == 13 && alarms_.any_error()) return Submission::reject(error_id::kAxisBlockedByAlarm);
+  // An external encoder has no setpoint: 11/12 set/shift its actual value like 0/1 (spec 02 §5.1 table).
+  const double shown = db_.ActualPosition;
+  const bool relative = in.Mode == 1 || in.Mode == 6 || in.Mode == 12;
+  const double wanted = relative ? shown + in.Position : in.Position;
+  const double now = encoder_.chain().continuous_position();
+  assign_reference(now, wanted, in.Mode == 7 ? ModuloCycleRule::kZero : ModuloCycleRule::kShortestDistance);
+  if (in.Mode == 6 || in.Mode == 7) store_adjustment();  // retentive (spec 02 §5.9)
+  if (in.Mode != 6 && in.Mode != 7 && in.Mode != 13) {
+    // 0, 1, 11, 12 set HomingDone, not Adjusted (spec 02 §5.1)
+  } else {
+    db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+  }
+  update_status();
+  return Submission::accept(jobs_.create(JobKind::kHome, JobState::kDone));
+}
+
+// The position at the mark becomes `value`; the present position is `value` plus the travel since the mark.
+void ExternalEncoder::assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept {
+  const double now = value + (encoder_.chain().continuous_position() - mark_position);
+  (void)encoder_.set_position(now, rule);
+  homed_ = true;
+  if (rule == ModuloCycleRule::kHomePositionHalf) {  // passive homing: referenced (spec 02 §5.1)
+    if (absolute_encoder() && db_.StatusSensor.Adjusted == 0) store_adjustment();
+    db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+  }
+  reference_mark_position_ =
+      db_.Modulo.Enable ? modulo_wrap(value, db_.Modulo.StartValue, db_.Modulo.Length).position : value;
+}
+
+bool ExternalEncoder::absolute_encoder() const noexcept {
+  return db_.Sensor.Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+}
+
+void ExternalEncoder::store_adjustment() noexcept {
+  const RetainedSensorState r = encoder_.chain().retained_state();
+  retained_.valid = true;
+  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
+  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  ++retained_.sequence;
+}
+
+void ExternalEncoder::restore_retained(const RetainedEncoderData& data) noexcept {
+  if (!absolute_encoder() || !data.valid) return;
+  retained_ = data;
+  retained_restored_ = true;
+  homed_ = true;
+  db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
+void ExternalEncoder::report_adjustment_lost(std::uint32_t cause) noexcept {
+  if (absolute_encoder()) (void)alarms_.raise(kAlarmAdjustmentLost, cause, cycle_);
+}
+
+Submission ExternalEncoder::write_parameter(std::int32_t parameter_number, double value) noexcept {
+  if (parameter_number < 1010 || parameter_number > 1012) {
+    return Submission::reject(error_id::kInvalidParameterNumber);
+  }
+  if (!std::isfinite(value) || value < 0.0) return Submission::reject(error_id::kInvalidParameterValue);
+  double& target = parameter_number == 1010   ? communication_times_start_.Ti
+                   : parameter_number == 1011 ? communication_times_start_.To
+                                              : communication_times_start_.Tdc;
+  target = value;
+  assign(db_.StatusWord, StatusWordBit::kOnlineStartValuesChanged, true);  // effective after restart
+  return Submission::accept(jobs_.create(JobKind::kWriteParameter, JobState::kDone));
+}
+
+bool ExternalEncoder::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
+                                   AlarmReaction reaction) noexcept {
+  return alarms_.raise(number, additional_value, reaction, cycle_);
+}
+
+WriteResult ExternalEncoder::write(std::string_view path, double value) noexcept {
+  WriteResult r;
+  const VariableInfo* v = find_external_encoder_variable(path);
+  if (v == nullptr) return r;
+  r.found = true;
+  r.access = check_write_access(*v, WriteContext::kUserProgram);
+  if (r.access == AccessError::kNone) r.value = v->write(db_, value);
+  if (r.ok()) {
+    (void)standstill_.configure(
+        StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
+                               db_.StandstillSignal.MinDwellTime, servo_cycle_s_});
+  }
+  return r;
+}
+
+WriteResult ExternalEncoder::write_start_value(std::string_view path, double value) noexcept {
+  WriteResult r;
+  const VariableInfo* v = find_external_encoder_variable(path);
+  if (v == nullptr) return r;
+  r.found = true;
+  r.access = check_write_access(*v, WriteContext::kStartValue);
+  if (r.access != AccessError::kNone) return r;
+  r.value = v->write(start_, value);
+  if (r.value == ValueError::kNone && v->access == Access::kRES && v->read(start_) != v->read(db_)) {
+    assign(db_.StatusWord, StatusWordBit::kOnlineStartValuesChanged, true);
+  }
+  return r;
+}
+
+double ExternalEncoder::read(std::string_view path) const noexcept {
+  if (const VariableInfo* v = find_external_encoder_variable(path)) return v->read(db_);
+  if (const auto bit = find_external_encoder_bit(path)) return bit->read(db_) ? 1.0 : 0.0;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace tomc::techobjects

@@ -1,0 +1,834 @@
+// TO_PositioningAxis, one application cycle.
+// MC_Servo:        drive/encoder frames -> actual values -> position control -> servo-rate monitoring
+//                  (following error, positioning window, standstill, hardware limits) -> drive setpoint
+// MC_Interpolator: MC_Reset -> alarm reactions -> enable/disable -> live job inputs (override, jog) ->
+//                  setpoint generation -> software-limit look-ahead -> job completion -> status
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/telegrams/normalisation.hpp"
+
+namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+namespace {
+
+constexpr std::uint64_t kReRaiseHoldOffCycles = 20;  // as the speed axis (decision S8)
+constexpr double kStandstillEpsilon = 1e-9;          // position units / s
+
+// floor((x - start) / length): the modulo cycle index of a continuous position.
+std::int64_t cycle_index(double x, double start, double length) noexcept {
+  return static_cast<std::int64_t>(std::floor((x - start) / length));
+}
+
+}  // namespace
+
+// =========================================================================================================
+// MC_Servo
+
+void PositioningAxis::servo(const CycleClock& clock) noexcept {
+  if (!servo_cycle_known_ || clock.servo_cycle_s != servo_cycle_s_) {
+    servo_cycle_s_ = clock.servo_cycle_s;
+    servo_cycle_known_ = true;
+    configure_components();  // the cycle time enters the chain, the controller and the monitors
+    if (retained_restored_ && retained_.valid) {
+      // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+      RetainedSensorState r;
+      r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+      r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+      r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+      encoder_.chain().power_up(&r);
+    }
+  }
+  if (device_ != nullptr) {
+    read_actual_values();
+  } else {
+    simulate_actual_values();
+  }
+  control();
+  servo_monitoring();
+  homing_observe();
+  if (retained_.valid && device_ != nullptr) {
+    // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
+
+  // What the drive is asked to do (as the speed axis, spec 02 §3.1, §3.4).
+  if (device_ != nullptr) {
+    tg::DriveRequest request = tg::DriveRequest::kOff;
+    if (reaction_in_force_ == AlarmReaction::kRemoveEnable) {
+      switch (db_.Actor.RemoveEnableReaction) {
+        case 0x1:
+          request = tg::DriveRequest::kOff;
+          break;
+        case 0x3:
+          request = tg::DriveRequest::kCoastStop;
+          break;
+        default:
+          request = tg::DriveRequest::kQuickStop;
+          break;
+      }
+    } else if (phase_ == PowerPhase::kEnabling || phase_ == PowerPhase::kEnabled) {
+      request = tg::DriveRequest::kOperate;
+    } else if (phase_ == PowerPhase::kDisabling) {
+      request = stop_mode_ == 1   ? tg::DriveRequest::kQuickStop
+                : stop_mode_ == 3 ? tg::DriveRequest::kCoastStop
+                                  : tg::DriveRequest::kOperate;
+    } else {
+      request = stop_mode_ == 3 ? tg::DriveRequest::kCoastStop : tg::DriveRequest::kOff;
+    }
+    encoder_.write(drive_);  // absolute value cyclically, error acknowledge
+    drive_.request(request);
+    drive_.write();
+  }
+}
+
+void PositioningAxis::read_actual_values() noexcept {
+  drive_.read();
+  db_.StatusDrive.InOperation = drive_.in_operation();
+  db_.StatusDrive.CommunicationOK = drive_.communication_ok();
+  db_.StatusDrive.Error = drive_.drive_status().state == tg::DriveState::kFault;
+  db_.ActualSpeed = drive_.actual_speed_rpm();
+  if (drive_.device_config().supplementary_telegram == 750) {
+    const double sign = db_.Actor.InverseDirection ? -1.0 : 1.0;
+    db_.StatusTorqueData.ActualTorque = sign * tg::n2_to_torque(drive_.supplementary_actual().M_ACT,
+                                                                db_.Actor.DriveParameter.ReferenceTorque);
+  }
+
+  encoder_.read(drive_, device_->fresh);
+  const bool encoder_error = encoder_.error();
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.CommunicationOK =
+      drive_.communication_ok() || drive_.communication_fault() == CommunicationFault::kDriveFault;
+  sensor.Error = encoder_error;
+  const bool held_off = acknowledged_at_ != 0 && cycle_ < acknowledged_at_ + kReRaiseHoldOffCycles;
+  if (encoder_error && (!encoder_fault_seen_ || !held_off)) {
+    raise(kAlarmSensorFault, encoder_.error_code());  // the code is in Gx_XIST2 (spec 06 §6.3)
+    // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8).
+    if (!encoder_.chain().absolute_type()) homed_ = false;
+  }
+  encoder_fault_seen_ = encoder_error;
+  actual_valid_ = encoder_.chain().position_valid() && !encoder_error && drive_.communication_ok();
+  sensor.State =
+      static_cast<std::int32_t>(actual_valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
+  actual_position_ = encoder_.chain().continuous_position();
+  actual_velocity_ = encoder_.chain().velocity();
+  supervise_drive();
+}
+
+// Virtual axis (spec 01 §2.5): the setpoint is taken over as the actual value one servo cycle later.
+// Simulation (§2.6): delayed by T_t of the simulated control loop.
+void PositioningAxis::simulate_actual_values() noexcept {
+  const double previous = actual_position_;
+  if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
+    const auto& pc = db_.PositionControl;
+    const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
+    const double tt = pc.Kpc > 0.0
+                          ? ipo_cycle_s_ + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
+                          : ipo_cycle_s_ + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
+    simulation_delay_.push(setpoint_.position);
+    actual_position_ = simulation_delay_.delayed(tt / servo_cycle_s_);
+    actual_velocity_ = (actual_position_ - previous) / servo_cycle_s_;
+  } else {
+    actual_position_ = setpoint_.position;
+    actual_velocity_ = setpoint_.velocity;
+  }
+  actual_valid_ = true;
+  db_.StatusDrive.InOperation = phase_ == PowerPhase::kEnabled;
+  db_.StatusDrive.CommunicationOK = true;
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.State = static_cast<std::int32_t>(SensorState::VALID);
+  sensor.CommunicationOK = true;
+  sensor.Error = false;
+}
+
+void PositioningAxis::control() noexcept {
+  const bool drive_follows_to = phase_ == PowerPhase::kEnabled ||
+                                (phase_ == PowerPhase::kDisabling && stop_mode_ != 1 && stop_mode_ != 3);
+  const bool active = drive_follows_to && !follows_actual();
+  double velocity = 0.0;  // load velocity to the drive, position units / s
+  PositionControlOutput out{};
+  if (active && position_controlled_ && device_ == nullptr) {
+    // Virtual axis / simulation (spec 01 §2.5, §2.6): no control loop; the following error is what the
+    // simulated delay leaves (0 on a virtual axis, whose actual value is the setpoint of the cycle before).
+    controller_.reset();
+    out.following_error = db_.VirtualAxis.Mode == kModeOn ? 0.0 : setpoint_.position - actual_position_;
+    velocity = setpoint_.velocity;
+  } else if (active && position_controlled_) {
+    out = controller_.update(
+        PositionControlInput{setpoint_.position, setpoint_.position, setpoint_.velocity, actual_position_});
+    velocity = out.velocity_setpoint;
+  } else {
+    controller_.reset();
+    if (active) velocity = setpoint_.velocity;  // non-position-controlled operation (spec 02 §7.7)
+  }
+  db_.StatusServo.BalancedPosition = active && position_controlled_ ? out.balanced_position : 0.0;
+  db_.StatusServo.ControlDifference = out.control_difference;
+  db_.StatusServo.PositionAfterDynamicFilter = setpoint_.position;
+  db_.StatusPositioning.FollowingError = active && position_controlled_ ? out.following_error : 0.0;
+  if (device_ == nullptr) {
+    db_.VelocitySetpoint = 0.0;  // spec 01 §2.5 table
+    return;
+  }
+  const double max = db_.Actor.DriveParameter.MaxSpeed;
+  const double rpm = std::clamp(encoder_.chain().scaling().motor_speed(velocity), -max, max);
+  db_.VelocitySetpoint = encoder_.chain().scaling().load_velocity(rpm) * units_.velocity;
+  drive_.set_speed_setpoint(rpm);
+  auto& sp = drive_.drive_setpoint();
+  if (db_.PositionControl.EnableDSC && active && position_controlled_) {
+    sp.XERR = encoder_.chain().scaling().xerr(out.dsc_position_error);
+    sp.KPC = tg::kpc_from_kv(out.dsc_kpc);
+  } else {
+    sp.XERR = 0;
+    sp.KPC = 0;
+  }
+}
+
+void PositioningAxis::servo_monitoring() noexcept {
+  const bool controlled = phase_ == PowerPhase::kEnabled && !follows_actual() && position_controlled_;
+  // Following error (spec 02 §6.2): 521 removes the enable, 522 warns; both on the rising edge.
+  if (controlled) {
+    const auto check = following_error_.check(db_.StatusPositioning.FollowingError, setpoint_.velocity);
+    if (check.alarm != following_error_state_) {
+      if (check.alarm == FollowingErrorAlarm::kError521) raise(kAlarmFollowingError);
+      if (check.alarm == FollowingErrorAlarm::kWarning522) raise(kAlarmFollowingErrorWarning);
+    }
+    following_error_state_ = check.alarm;
+  } else {
+    following_error_state_ = FollowingErrorAlarm::kNone;
+  }
+
+  // Standstill signal (spec 02 §6.3).
+  (void)standstill_.update(actual_velocity_);
+
+  // Positioning monitoring (spec 02 §6.1): started in the servo cycle that uses the final setpoint.
+  if (positioning_start_pending_) {
+    positioning_start_pending_ = false;
+    positioning_.start(positioning_target_);
+  }
+  if (positioning_.status().outcome == PositioningOutcome::kInProgress) {
+    if (controlled) {
+      const PositioningStatus st = positioning_.update(actual_position_);
+      if (st.outcome == PositioningOutcome::kFault) raise(kAlarmPositioning, st.additional_value);
+    } else {
+      positioning_.cancel();
+    }
+  }
+
+  // Hardware limit switches (spec 02 §4.1–§4.4): inactive on virtual and simulated axes (spec 01 §2.5).
+  if (device_ != nullptr) {
+    limits::HardwareLimitInput hw;
+    hw.min_switch_input = inputs_.MinSwitch;
+    hw.max_switch_input = inputs_.MaxSwitch;
+    hw.position = actual_position_;
+    hw.velocity = setpoint_.velocity;
+    // Active homing with AutoReversal: the limit switches are reversal cams, no alarm 531 (spec 02 §4.2).
+    hw.homing_reversal =
+        motion_.kind == JobKind::kHome && db_.Homing.AutoReversal && homing_.phase != HomingPhase::kToHome;
+    const auto r = hardware_limits_.update(hw);
+    if (r.alarm.raised())
+      raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    // The monitor reports a reversal cam while the switch is active; homing reacts to reaching it.
+    if (r.reversal_cam != limits::LimitSide::kNone && r.reversal_cam != reversal_cam_seen_) {
+      reversal_cam_ = r.reversal_cam;
+    }
+    reversal_cam_seen_ = r.reversal_cam;
+  }
+
+  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
+  if (modulo() && std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
+    raise(kAlarmModuloTooFast);
+
+  db_.ActualAcceleration = (actual_velocity_ - last_actual_velocity_) / servo_cycle_s_ * units_.acceleration;
+  last_actual_velocity_ = actual_velocity_;
+}
+
+void PositioningAxis::supervise_drive() noexcept {
+  const bool held_off = cycle_ < acknowledged_at_ + kReRaiseHoldOffCycles && acknowledged_at_ != 0;
+  const auto fault = drive_.communication_fault();
+  const bool drive_fault = fault == CommunicationFault::kDriveFault;
+  if (drive_fault && (!drive_fault_seen_ || !held_off)) raise(kAlarmDriveFault);
+  drive_fault_seen_ = drive_fault;
+  if (held_off) return;
+  if (fault == CommunicationFault::kLinkLost && drive_.cycles_without_fresh_frame() > 0)
+    raise(kAlarmDriveCommunication);
+  if (fault == CommunicationFault::kSignOfLifeFailed) raise(kAlarmDriveSignOfLife);
+  if (phase_ == PowerPhase::kEnabled && reaction_in_force_ == AlarmReaction::kNone &&
+      fault == CommunicationFault::kNone && !drive_.in_operation()) {
+    raise(kAlarmDriveNotReady);
+  }
+}
+
+// Direct homing moves the actual value and the setpoint together, so that no compensating motion results
+// (spec 02 §5.7 [Derived]); a profile in progress moves with them.
+void PositioningAxis::shift_position(double delta) noexcept {
+  if (delta == 0.0) return;
+  setpoint_.position += delta;
+  actual_position_ += delta;
+  profile_offset_ += delta;
+  motion_.target += delta;
+  if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
+  positioning_target_ += delta;
+  limit_stop_position_ += delta;
+  controller_.reset();  // the delay lines refill with the shifted setpoint: no following-error step
+  simulation_delay_.fill(setpoint_.position);
+  software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+}
+
+// =========================================================================================================
+// MC_Interpolator
+
+void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
+  cycle_ = clock.interpolator_cycles + 1;
+  if (ipo_cycle_s_ != clock.interpolator_cycle_s) {
+    ipo_cycle_s_ = clock.interpolator_cycle_s;
+    configure_extrapolation();
+  }
+  // The actual value as a leading value, once per interpolator cycle (spec 07 §1.4).
+  extrapolation_.update(actual_position_, actual_velocity_);
+  {
+    auto& st = db_.StatusExtrapolation;
+    st.FilteredPosition = extrapolation_.filtered_position();
+    st.FilteredVelocity = extrapolation_.filtered_velocity() * units_.velocity;
+    st.ExtrapolatedPosition = extrapolation_.extrapolated_position();
+    st.ExtrapolatedVelocity = extrapolation_.velocity() * units_.velocity;
+  }
+
+  if (reset_pending_) {
+    reset_pending_ = false;
+    alarms_.acknowledge(restart_requested_, cycle_);
+    software_limits_.acknowledge();
+    hardware_limits_.acknowledge();
+    acknowledged_at_ = cycle_;
+    if (device_ != nullptr) {
+      drive_.acknowledge();
+      encoder_.acknowledge();
+    }
+    if (restart_requested_) restart();
+    set_job(reset_job_, JobState::kDone);
+  }
+
+  apply_alarm_reactions();
+  update_power_phase();
+  run_homing();
+  run_synchronous();
+  update_live_motion();
+  generate_setpoint();
+  monitor_software_limits();
+  complete_jobs();
+  update_status();
+}
+
+void PositioningAxis::apply_alarm_reactions() noexcept {
+  const AlarmReaction r = alarms_.strongest_reaction();
+  if (r == reaction_in_force_) return;
+  const bool escalation = reaction_rank(r) > reaction_rank(reaction_in_force_);
+  const AlarmReaction before = reaction_in_force_;
+  reaction_in_force_ = r;
+  if (!escalation && r != before) {
+    limit_stop_ = false;
+    if (r == AlarmReaction::kNone &&
+        (before == AlarmReaction::kRemoveEnable || before == AlarmReaction::kFollowSetpoint)) {
+      if (phase_ == PowerPhase::kEnabled) {
+        phase_ = enable_ ? PowerPhase::kEnabling : PowerPhase::kDisabled;
+        enabling_since_ = cycle_;
+      }
+    }
+    return;
+  }
+  // A stop reaction takes over: motion jobs end with 16#8001 (spec 03 §6.6).
+  const ProfileLimits current =
+      motion_.id != 0 ? motion_.limits
+                      : ProfileLimits{0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
+                                      db_.DynamicDefaults.Deceleration / units_.acceleration,
+                                      db_.DynamicDefaults.Jerk / units_.acceleration};
+  abort_synchronous(error_id::kAbortedByAlarmReaction);
+  abort_motion(error_id::kAbortedByAlarmReaction);
+  abort_pending(error_id::kAbortedByAlarmReaction);
+  if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
+    end_passive_homing(JobState::kError, error_id::kAbortedByAlarmReaction);
+  }
+  const int alarm_weight = stop_weight_of_reaction(static_cast<int>(r));
+  const bool stop_keeps_control =
+      stop_.id != 0 && stop_.weight >= alarm_weight && r != AlarmReaction::kFollowSetpoint && !limit_stop_;
+  if (stop_.id != 0 && !stop_keeps_control) {
+    set_job(stop_.id, JobState::kAborted);  // seed §6.9.4
+    stop_ = StopJob{};
+  }
+  if (stop_keeps_control) return;
+  const auto& l = db_.DynamicLimits;
+  const double a = units_.acceleration;
+  ProfileLimits ramp{};
+  switch (r) {
+    case AlarmReaction::kStopCurrentDynamics:
+      ramp = current;
+      break;
+    case AlarmReaction::kStopMaxDynamics:
+      ramp = ProfileLimits{0.0, l.MaxDeceleration / a, l.MaxDeceleration / a, l.MaxJerk / a};
+      break;
+    case AlarmReaction::kStopEmergencyRamp:
+      ramp = ProfileLimits{0.0, db_.DynamicDefaults.EmergencyDeceleration / a,
+                           db_.DynamicDefaults.EmergencyDeceleration / a, 0.0};
+      break;
+    case AlarmReaction::kRemoveEnable:
+    case AlarmReaction::kFollowSetpoint:
+      generator_ = Generator::kIdle;  // the drive brakes (remove enable) or is followed (follow setpoint)
+      limit_stop_ = false;
+      return;
+    case AlarmReaction::kNone:
+      return;
+  }
+  if (limit_stop_) {
+    // The software-limit look-ahead: the motion is decoupled and stops at the limit (spec 02 §4.5). The
+    // look-ahead started the stop so that the reaction's deceleration reaches the limit exactly.
+    ramp.velocity = std::max(std::fabs(setpoint_.velocity), 1e-9);
+    ramp.acceleration = std::max(ramp.acceleration, ramp.deceleration);
+    plan_position(limit_stop_position_, ramp);
+  } else {
+    plan_velocity(0.0, ramp, false);
+  }
+}
+
+void PositioningAxis::update_power_phase() noexcept {
+  if (phase_ == PowerPhase::kDisabled && enable_ && reaction_in_force_ != AlarmReaction::kRemoveEnable) {
+    phase_ = PowerPhase::kEnabling;
+    enabling_since_ = cycle_;
+  }
+  if (phase_ == PowerPhase::kEnabling) {
+    if (!enable_) {
+      phase_ = PowerPhase::kDisabled;
+    } else if (virtual_axis() || (drive_.in_operation() && actual_valid_)) {
+      // Enabled at the actual position; a moving axis is braked by the position loop (spec 01 §6.2).
+      phase_ = PowerPhase::kEnabled;
+      position_controlled_ = start_mode_ == 1;
+      setpoint_ = MotionState{actual_position_, 0.0, 0.0};
+      generator_ = Generator::kIdle;
+      controller_.reset();
+      positioning_.cancel();
+    } else if (static_cast<double>(cycle_ - enabling_since_) * ipo_cycle_s_ > enable_timeout_s_ &&
+               reaction_in_force_ == AlarmReaction::kNone) {
+      raise(kAlarmDriveNotReady);
+    }
+  }
+  if (phase_ == PowerPhase::kEnabled && !enable_) {
+    // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
+    abort_synchronous(0);
+    abort_motion(0);
+    abort_pending(0);
+    if (passive_.id != 0) {
+      end_passive_homing(JobState::kAborted);
+    }
+    if (stop_.id != 0) {
+      set_job(stop_.id, JobState::kAborted);
+      stop_ = StopJob{};
+    }
+    limit_stop_ = false;
+    phase_ = PowerPhase::kDisabling;
+    const auto& l = db_.DynamicLimits;
+    const double a = units_.acceleration;
+    if (stop_mode_ == 0) {
+      plan_velocity(0.0,
+                    ProfileLimits{0.0, db_.DynamicDefaults.EmergencyDeceleration / a,
+                                  db_.DynamicDefaults.EmergencyDeceleration / a, 0.0},
+                    false);
+    } else if (stop_mode_ == 2) {
+      plan_velocity(0.0, ProfileLimits{0.0, l.MaxDeceleration / a, l.MaxDeceleration / a, l.MaxJerk / a},
+                    false);
+    } else {
+      generator_ = Generator::kIdle;
+    }
+  }
+}
+
+// Inputs that act while a job runs: the override (spec 01 §8.4) and the jog inputs (spec 03 §3.4).
+void PositioningAxis::update_live_motion() noexcept {
+  const double ovr = override_factor();
+  switch (motion_.kind) {
+    case JobKind::kJog:
+    case JobKind::kMoveVelocity: {
+      const double target =
+          std::clamp(motion_.command_velocity * ovr, -motion_.limits.velocity, motion_.limits.velocity);
+      if (std::fabs(target - motion_.planned_velocity) > 1e-12 ||
+          (motion_.kind == JobKind::kJog && generator_ == Generator::kIdle &&
+           std::fabs(setpoint_.velocity - target) > kStandstillEpsilon)) {
+        motion_.planned_velocity = target;
+        plan_velocity(target, motion_.limits, false);
+      }
+      break;
+    }
+    case JobKind::kMoveAbsolute:
+    case JobKind::kMoveRelative: {
+      if (motion_.interpolation_done) break;
+      const double v = motion_.limits.velocity * ovr;
+      if (std::fabs(v - motion_.planned_velocity) > 1e-12) {
+        motion_.planned_velocity = v;
+        if (v > 0.0) {
+          ProfileLimits l = motion_.limits;
+          l.velocity = v;
+          plan_position(motion_.target, l);
+        } else {
+          plan_velocity(0.0, motion_.limits, false);  // override 0 %: stop, the job stays active
+        }
+      }
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
+                                    bool abort_acceleration) noexcept {
+  MotionState start = setpoint_;
+  if (abort_acceleration) start.acceleration = 0.0;
+  ProfileLimits l = limits;
+  if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
+  // The velocity limit wins over the job's jerk (decision S4).
+  const double v0 = start.velocity;
+  const double a0 = start.acceleration;
+  if (l.jerk > 0.0 && std::isfinite(l.velocity) && a0 * v0 > 0.0) {
+    const double margin = l.velocity - std::fabs(v0);
+    const double needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : std::numeric_limits<double>::infinity();
+    if (needed > l.jerk) l.jerk = std::isfinite(needed) ? needed : 0.0;
+  }
+  if (velocity_profile_.plan(start, target, l)) {
+    profile_time_ = 0.0;
+    profile_offset_ = 0.0;
+    generator_ = Generator::kVelocity;
+  }
+}
+
+void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
+  if (position_profile_.plan(setpoint_, target, limits)) {
+    profile_time_ = 0.0;
+    profile_offset_ = 0.0;
+    generator_ = Generator::kPosition;
+  }
+}
+
+void PositioningAxis::generate_setpoint() noexcept {
+  if (follows_actual()) {
+    setpoint_ = MotionState{actual_position_, actual_velocity_, 0.0};  // follow-up (spec 02 §3.2)
+    generator_ = Generator::kIdle;
+    return;
+  }
+  switch (generator_) {
+    case Generator::kVelocity: {
+      profile_time_ += ipo_cycle_s_;
+      if (profile_time_ >= velocity_profile_.duration() - 1e-9) {
+        const MotionState end = velocity_profile_.at(velocity_profile_.duration());
+        setpoint_ = MotionState{
+            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile_.duration()),
+            end.velocity, 0.0};
+        generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
+      } else {
+        setpoint_ = velocity_profile_.at(profile_time_);
+        setpoint_.position += profile_offset_;
+      }
+      break;
+    }
+    case Generator::kPosition: {
+      profile_time_ += ipo_cycle_s_;
+      if (profile_time_ >= position_profile_.duration() - 1e-9) {
+        setpoint_ = MotionState{
+            position_profile_.at(position_profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
+        generator_ = Generator::kIdle;
+        const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
+        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
+            homing_to_home) {
+          if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
+            motion_.interpolation_done = true;
+            positioning_target_ = setpoint_.position;
+            positioning_start_pending_ = true;
+          }
+        }
+      } else {
+        setpoint_ = position_profile_.at(profile_time_);
+        setpoint_.position += profile_offset_;
+      }
+      break;
+    }
+    case Generator::kIdle:
+      setpoint_.position += setpoint_.velocity * ipo_cycle_s_;
+      setpoint_.acceleration = 0.0;
+      break;
+    case Generator::kSynchronous:
+      setpoint_ = synchronous_setpoint();
+      break;
+  }
+  // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
+  // setpoint goes to the drive directly.
+  if (!position_controlled_) setpoint_.position = actual_position_;
+}
+
+// Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
+void PositioningAxis::monitor_software_limits() noexcept {
+  if (phase_ != PowerPhase::kEnabled || follows_actual()) return;
+  const std::int32_t reaction =
+      limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
+  const auto& l = db_.DynamicLimits;
+  limits::SoftwareLimitInput in;
+  const double start = db_.Modulo.StartValue;
+  const double length = db_.Modulo.Length;
+  const std::int64_t k = modulo() ? cycle_index(setpoint_.position, start, length) : 0;
+  in.position = modulo() ? setpoint_.position - static_cast<double>(k) * length : setpoint_.position;
+  in.velocity = setpoint_.velocity;
+  in.acceleration = setpoint_.acceleration;
+  in.homed = homed();
+  in.following_axis = following_in_synchronous_operation();
+  if (reaction == limits::kReactionStopMaxDynamics) {
+    in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
+    in.stop_jerk = l.MaxJerk / units_.acceleration;
+  } else {
+    const ProfileLimits cur =
+        motion_.id != 0 ? motion_.limits
+                        : ProfileLimits{0.0, 0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
+                                        db_.DynamicDefaults.Jerk / units_.acceleration};
+    in.stop_deceleration = cur.deceleration;
+    in.stop_jerk = cur.jerk;
+  }
+  in.cycle_time = ipo_cycle_s_;
+  const auto r = software_limits_.update(in);
+  if (r.stop_now) {
+    limit_stop_ = true;
+    limit_stop_position_ = r.stop_position + static_cast<double>(k) * (modulo() ? length : 0.0);
+  }
+  if (r.alarm.raised()) {
+    raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    apply_alarm_reactions();  // the reaction takes effect in the cycle of the alarm
+  }
+}
+
+void PositioningAxis::complete_jobs() noexcept {
+  const bool settled = generator_ == Generator::kIdle;
+  const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
+  const PositioningOutcome outcome = positioning_.status().outcome;
+  if (motion_.id != 0) {
+    switch (motion_.kind) {
+      case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
+      case JobKind::kMoveAbsolute:
+      case JobKind::kMoveRelative:
+        // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
+        if (motion_.interpolation_done && !positioning_start_pending_ &&
+            outcome == PositioningOutcome::kDone) {
+          set_job(motion_.id, JobState::kDone);
+          motion_ = Motion{};
+          // BufferMode 1: the appended job starts in the cycle the running one is Done (spec 03 §3.7 T-E).
+          if (pending_.id != 0) {
+            const Motion next = pending_;
+            pending_ = Motion{};
+            start_positioning(next);
+          }
+        }
+        break;
+      case JobKind::kHalt:
+        if (settled && at_zero) {
+          set_job(motion_.id, JobState::kDone);
+          motion_ = Motion{};
+          if (position_controlled_) {  // X6 after a position-controlled stop (spec 04 §8 rule 2)
+            positioning_target_ = setpoint_.position;
+            positioning_start_pending_ = true;
+          }
+        }
+        break;
+      case JobKind::kJog:
+        if (motion_.jog_stopping && settled && at_zero) {
+          set_job(motion_.id, JobState::kDone);  // J2
+          motion_ = Motion{};
+        } else if (auto* r = jobs_.find(motion_.id)) {
+          r->status.in_velocity = settled && !motion_.jog_stopping;
+        }
+        break;
+      case JobKind::kMoveVelocity:
+        if (auto* r = jobs_.find(motion_.id)) r->status.in_velocity = settled;
+        break;
+      default:
+        break;
+    }
+  }
+  if (stop_.id != 0 && !stop_.done && settled && at_zero) {
+    stop_.done = true;
+    set_job(stop_.id, JobState::kDone);
+    if (!stop_.execute) stop_ = StopJob{};
+    if (position_controlled_) {
+      positioning_target_ = setpoint_.position;
+      positioning_start_pending_ = true;
+    }
+  }
+  if (limit_stop_ && settled && at_zero) limit_stop_ = false;
+  if (phase_ == PowerPhase::kDisabling) {
+    const bool drive_off = virtual_axis() || !drive_.in_operation();
+    if ((stop_mode_ == 0 || stop_mode_ == 2) && settled && at_zero) phase_ = PowerPhase::kDisabled;
+    if (stop_mode_ == 1 && drive_off &&
+        std::fabs(actual_velocity_) < db_.StandstillSignal.VelocityThreshold / units_.velocity)
+      phase_ = PowerPhase::kDisabled;
+    if (stop_mode_ == 3) phase_ = PowerPhase::kDisabled;
+  }
+}
+
+void PositioningAxis::update_status() noexcept {
+  const double start = db_.Modulo.StartValue;
+  const double length = db_.Modulo.Length;
+  // Setpoints and actual values as the data block shows them (spec 04 §2): modulo-wrapped, data units.
+  if (modulo()) {
+    const ModuloPosition sp = modulo_wrap(setpoint_.position, start, length);
+    const ModuloPosition act = modulo_wrap(actual_position_, start, length);
+    db_.Position = sp.position;
+    db_.ActualPosition = act.position;
+    // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
+    // the cycles between them.
+    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() : act.cycle;
+    db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
+    db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
+  } else {
+    db_.Position = setpoint_.position;
+    db_.ActualPosition = actual_position_;
+    db_.ModuloCycle = 0;
+    db_.ActualModuloCycle = 0;
+  }
+  db_.Velocity = setpoint_.velocity * units_.velocity;
+  db_.Acceleration = setpoint_.acceleration * units_.acceleration;
+  db_.ActualVelocity = actual_velocity_ * units_.velocity;
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.Position = db_.ActualPosition;
+  sensor.Velocity = db_.ActualVelocity;
+  sensor.ModuloCycle = db_.ActualModuloCycle;
+  if (virtual_axis()) sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);  // §2.5 table
+
+  const bool positioning = motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative;
+  db_.StatusPositioning.TargetPosition =
+      positioning ? (modulo() ? modulo_wrap(motion_.target, start, length).position : motion_.target) : 0.0;
+  db_.StatusPositioning.TargetPositionModuloCycle =
+      positioning && modulo()
+          ? static_cast<std::int32_t>(db_.ModuloCycle + cycle_index(motion_.target, start, length) -
+                                      cycle_index(setpoint_.position, start, length))
+          : 0;
+  db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
+  db_.StatusPositioning.SetpointExecutionTime =
+      generator_ == Generator::kPosition ? std::max(0.0, position_profile_.duration() - profile_time_) : 0.0;
+
+  std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
+  const bool enabled = phase_ == PowerPhase::kEnabled && reaction_in_force_ != AlarmReaction::kRemoveEnable;
+  const bool settled = generator_ == Generator::kIdle;
+  const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
+  const bool job_running = motion_.id != 0 || pending_.id != 0 || (stop_.id != 0 && !stop_.done);
+  db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
+      retained_.valid ? retained_.AbsEncoderOffset : 0.0;
+  const PositioningOutcome outcome = positioning_.status().outcome;
+  assign(sw, StatusWordBit::kEnable, enabled);
+  assign(sw, StatusWordBit::kError, alarms_.any_error());
+  assign(sw, StatusWordBit::kHomingDone, homed());
+  // P: Done after the positioning window check (spec 04 §8 rule 2), or no motion job at all.
+  assign(sw, StatusWordBit::kDone,
+         !job_running && settled && at_zero && outcome != PositioningOutcome::kInProgress &&
+             outcome != PositioningOutcome::kFault && !positioning_start_pending_);
+  assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
+  assign(sw, StatusWordBit::kPositioningCommand, positioning);
+  assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
+  assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
+  assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
+  // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
+  // ramp passes a = 0 only for an instant).
+  const bool constant =
+      std::fabs(setpoint_.acceleration) < 1e-9 && std::fabs(last_setpoint_acceleration_) < 1e-9;
+  last_setpoint_acceleration_ = setpoint_.acceleration;
+  assign(sw, StatusWordBit::kConstantVelocity, enabled && constant);
+  assign(sw, StatusWordBit::kAccelerating, setpoint_.acceleration * setpoint_.velocity > 0.0);
+  assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
+  assign(sw, StatusWordBit::kAxisSimulation, db_.Simulation.Mode == kModeOn);
+  assign(sw, StatusWordBit::kNonPositionControlled, !position_controlled_ || !enabled);
+  const limits::LimitStatusBits limit_bits = limits::merge(software_limits_.bits(), hardware_limits_.bits());
+  sw |= limit_bits.status_word();
+  db_.StatusWord = sw;
+  db_.StatusWord2 = 0;
+  assign(db_.StatusWord2, StatusWord2Bit::kStopCommand, stop_.id != 0);
+
+  std::uint32_t ew = limit_bits.error_word();
+  std::uint32_t ww = limit_bits.warning_word();
+  for (const auto& a : alarms_.alarms()) {
+    switch (a.number) {
+      case kAlarmDriveFault:
+      case kAlarmDriveNotReady:
+      case kAlarmDriveSto:
+      case kAlarmDriveSafeStop:
+        assign(ew, ErrorWordBit::kDriveFault, true);
+        break;
+      case kAlarmDriveCommunication:
+      case kAlarmDriveSignOfLife:
+        assign(ew, ErrorWordBit::kCommunicationFault, true);
+        break;
+      case kAlarmSensorFault:
+        assign(ew, ErrorWordBit::kSensorFault, true);
+        break;
+      case kAlarmFollowingError:
+        assign(ew, ErrorWordBit::kFollowingErrorFault, true);
+        break;
+      case kAlarmPositioning:
+        assign(ew, ErrorWordBit::kPositioningFault, true);
+        break;
+      case kAlarmModuloTooFast:
+        assign(ew, ErrorWordBit::kDynamicError, true);
+        break;
+      case kAlarmHomingFailed:
+      case kAlarmAdjustmentLost:
+        assign(ew, ErrorWordBit::kHomingError, true);
+        break;
+      case kAlarmFollowingErrorWarning:
+        assign(ww, WarningWordBit::kFollowingErrorWarning, true);
+        break;
+      case kAlarmDynamicsLimitedVelocity:
+      case kAlarmDynamicsLimitedAcceleration:
+      case kAlarmDynamicsLimitedJerk:
+        assign(ww, WarningWordBit::kDynamicWarning, true);
+        break;
+      default:
+        break;
+    }
+  }
+  db_.ErrorWord = ew;
+  db_.WarningWord = ww;
+  const PendingAlarm* top = alarms_.error_detail();
+  db_.ErrorDetail.Number = top == nullptr ? 0 : top->number;
+  db_.ErrorDetail.Reaction = static_cast<std::int32_t>(top == nullptr ? AlarmReaction::kNone : top->reaction);
+  update_synchronous_status();
+}
+
+void PositioningAxis::restart() noexcept {
+  // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7). An incremental encoder loses
+  // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
+  // value (spec 02 §4.4).
+  const auto changed = StatusWordBit::kOnlineStartValuesChanged;
+  abort_synchronous(0);
+  db_ = start_;
+  communication_times_ = communication_times_start_;
+  assign(db_.StatusWord, changed, false);
+  db_.OperativeSensor = db_.PositionControl.InitialOperativeSensor;
+  db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
+  motion_ = Motion{};
+  pending_ = Motion{};
+  stop_ = StopJob{};
+  generator_ = Generator::kIdle;
+  limit_stop_ = false;
+  positioning_start_pending_ = false;
+  units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
+  const RetainedSensorState retained = encoder_.chain().retained_state();
+  configure_components();
+  if (encoder_.chain().absolute_type()) {
+    encoder_.chain().power_up(&retained);
+  } else {
+    homed_ = false;
+    actual_position_ = 0.0;
+  }
+  setpoint_ = MotionState{actual_position_, 0.0, 0.0};
+  drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;
+  drive_config_.reference_torque_nm = start_.Actor.DriveParameter.ReferenceTorque;
+  if (device_ != nullptr) drive_.restart(drive_config_);
+}
+
+}  // namespace tomc::techobjects
