@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tomc/techobjects/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
 
 namespace tomc::diagnostics {
@@ -110,6 +112,14 @@ Diagnostics::~Diagnostics() = default;
 void Diagnostics::add(to::SpeedAxis& axis) {
   add(std::make_unique<TechnologyObjectView<to::SpeedAxis>>(axis),
       std::make_unique<BasicAxisPanel<to::SpeedAxis>>(axis));
+}
+
+void Diagnostics::add(to::PositioningAxis& axis) {
+  add(std::make_unique<TechnologyObjectView<to::PositioningAxis>>(axis), nullptr);
+}
+
+void Diagnostics::add(to::ExternalEncoder& encoder) {
+  add(std::make_unique<TechnologyObjectView<to::ExternalEncoder>>(encoder), nullptr);
 }
 
 void Diagnostics::add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPanel> panel) {

@@ -36,7 +36,9 @@
 
 namespace tomc::techobjects {
 class SpeedAxis;
-}
+class PositioningAxis;
+class ExternalEncoder;
+}  // namespace tomc::techobjects
 
 namespace tomc::diagnostics {
 
@@ -87,6 +89,10 @@ class Diagnostics {
 
   // ---- set-up (before attach) ----
   void add(techobjects::SpeedAxis& axis);  // view + control panel
+  // View only (also a SynchronousAxis): its control panel comes with the control-priority hook of the
+  // positioning axis (docs/architecture.md "Diagnostics").
+  void add(techobjects::PositioningAxis& axis);
+  void add(techobjects::ExternalEncoder& encoder);  // view (no panel: an encoder is not moved)
   // Any technology object: its view and, for an axis, its panel (nullptr: none).
   void add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPanel> panel);
   void add_switch(std::string name, std::string description, std::atomic<bool>& flag);
