@@ -10,6 +10,10 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "job aborted by the stop reaction of a technology alarm";
     case kJogWrongDirection:
       return "wrong direction specification: JogForward and JogBackward both TRUE";
+    case kControlPanelActive:
+      return "the axis control panel has control priority (jobs of the user program are rejected)";
+    case kLifebeatExpired:
+      return "lifebeat monitoring of the axis control panel expired: axis stopped, control priority returned";
     case kInvalidRatioNumerator:
       return "RatioNumerator 0 is not allowed";
     case kInvalidRatioDenominator:

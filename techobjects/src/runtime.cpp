@@ -47,6 +47,10 @@ void Runtime::set_post_servo(Hook hook) {
   require_setup("set_post_servo");
   post_servo_ = std::move(hook);
 }
+void Runtime::set_post_interpolator(Hook hook) {
+  require_setup("set_post_interpolator");
+  post_interpolator_ = std::move(hook);
+}
 void Runtime::set_user_program(Hook hook) {
   require_setup("set_user_program");
   user_program_ = std::move(hook);
@@ -111,6 +115,7 @@ void Runtime::step() noexcept {
       o->interpolate(clock_);
     ++clock_.interpolator_cycles;
   }
+  if (post_interpolator_) post_interpolator_(*this);
   if (cycle % config_.user_program_ratio == 0 && user_program_) user_program_(*this);
   ++clock_.servo_cycles;
 }

@@ -58,6 +58,7 @@ double SpeedAxis::velocity_unit_per_revolution_per_second() const noexcept {
 }
 
 double SpeedAxis::override_factor() const noexcept {
+  if (control_.override_ineffective()) return 1.0;  // spec 02 §9.3: the panel has its own "adapt velocity"
   return std::clamp(db_.Override.Velocity, 0.0, 200.0) / 100.0;  // spec 01 §8.4: 0..200 %
 }
 
@@ -177,7 +178,11 @@ void SpeedAxis::plan_velocity(double target, const ProfileLimits& limits, bool a
 
 PowerState SpeedAxis::power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept {
   PowerState s;
-  if (start_mode != 0 && start_mode != 1) {
+  if (const auto e = control_.program_job_rejection()) {
+    // The panel holds control priority: the program's MC_Power changes nothing (spec 02 §9.2).
+    s.Error = enable;
+    s.ErrorID = enable ? e : 0;
+  } else if (start_mode != 0 && start_mode != 1) {
     s.Error = true;
     s.ErrorID = error_id::kInvalidStartMode;
   } else if (stop_mode < 0 || stop_mode > 3) {
@@ -194,6 +199,7 @@ PowerState SpeedAxis::power(bool enable, std::int32_t start_mode, std::int32_t s
 }
 
 Submission SpeedAxis::reset(bool restart) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (restart && (phase_ != PowerPhase::kDisabled || enable_)) {
     return Submission::reject(error_id::kRestartNeedsDisabledAxis);
   }
@@ -204,6 +210,7 @@ Submission SpeedAxis::reset(bool restart) noexcept {
 }
 
 Submission SpeedAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
   if (in.Direction < 0 || in.Direction > 2) return Submission::reject(error_id::kInvalidDirection);
   ProfileLimits limits;
@@ -227,6 +234,7 @@ Submission SpeedAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
 }
 
 Submission SpeedAxis::halt(const HaltInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (in.Mode != 0 && in.Mode != 1) return Submission::reject(error_id::kInvalidMode);
   ProfileLimits limits;
   // MC_Halt has no Acceleration input: the deceleration serves both signs of the ramp.
@@ -242,6 +250,7 @@ Submission SpeedAxis::halt(const HaltInputs& in) noexcept {
 }
 
 Submission SpeedAxis::stop(const StopInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   const int weight = stop_weight_of_mc_stop_mode(in.Mode);
   if (weight == 0)
     return Submission::reject(error_id::kInvalidMode);  // Mode 1 and anything else (spec 03 §4.13)
@@ -292,6 +301,7 @@ Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
   const bool mine = running != 0 && running == motion_.id && motion_.kind == JobKind::kJog;
   if (!mine) {
     if (!any) return Submission{};  // nothing to do, no job
+    if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
     if (both) return Submission::reject(error_id::kJogWrongDirection);
     if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
     ProfileLimits limits;
@@ -319,6 +329,7 @@ Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
 
 Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
                                    std::uint16_t stw2_mask) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   constexpr std::uint16_t kUserStw1 = 0xFB00;  // bits 8, 9, 11..15 (the TO owns 0..7 and 10)
   constexpr std::uint16_t kUserStw2 = 0x0FFF;  // bits 0..11 (12..15: master sign-of-life)
   if ((stw1_mask & ~kUserStw1) != 0 || (stw2_mask & ~kUserStw2) != 0)
@@ -333,6 +344,7 @@ Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, 
 }
 
 Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   switch (parameter_number) {
     case 1010:
     case 1011:
@@ -649,6 +661,7 @@ void SpeedAxis::update_status() noexcept {
   const bool enabled = phase_ == PowerPhase::kEnabled && reaction_in_force_ != AlarmReaction::kRemoveEnable;
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
+  assign(sw, StatusWordBit::kControlPanelActive, control_.held());
   // SA: Done = motion finished and setpoint velocity 0 (spec 04 §8 rule 2).
   assign(sw, StatusWordBit::kDone, !generator_active_ && std::fabs(setpoint_.velocity) < kStandstillEpsilon);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);

@@ -79,12 +79,13 @@ TEST(Runtime, OneCycleRunsThePhasesInOrder) {
   rt.emplace<RecordingObject>("TB", b);
   rt.set_pre_servo([](Runtime&) { log("pre-servo"); });
   rt.set_post_servo([](Runtime&) { log("post-servo"); });
+  rt.set_post_interpolator([](Runtime&) { log("post-interpolator"); });
   rt.set_user_program([](Runtime&) { log("user"); });
   rt.start();
   rt.step();
-  const std::vector<std::string> expected = {"pre-servo",        "read A",   "read B",  "servo TA 0 fresh",
-                                             "servo TB 0 fresh", "write A",  "write B", "post-servo",
-                                             "ipo TA 0",         "ipo TB 0", "user"};
+  const std::vector<std::string> expected = {
+      "pre-servo", "read A",     "read B",   "servo TA 0 fresh", "servo TB 0 fresh",  "write A",
+      "write B",   "post-servo", "ipo TA 0", "ipo TB 0",         "post-interpolator", "user"};
   EXPECT_EQ(guard.entries, expected);
   // The TO saw the frame read this cycle and its setpoint reached the adapter in the same cycle.
   EXPECT_EQ(ta.seen_actual, std::byte{0x42});
@@ -111,7 +112,9 @@ TEST(Runtime, InterpolatorAndUserProgramRatios) {
   auto& a = rt.add_device(std::make_unique<RecordingAdapter>("A"));
   rt.emplace<RecordingObject>("TA", a);
   int user_calls = 0;
+  int post_interpolator_calls = 0;
   rt.set_user_program([&](Runtime&) { ++user_calls; });
+  rt.set_post_interpolator([&](Runtime&) { ++post_interpolator_calls; });
   rt.start();
   for (int i = 0; i < 8; ++i)
     rt.step();
@@ -124,6 +127,7 @@ TEST(Runtime, InterpolatorAndUserProgramRatios) {
   EXPECT_EQ(servo, 8);
   EXPECT_EQ(ipo, 4);
   EXPECT_EQ(user_calls, 2);
+  EXPECT_EQ(post_interpolator_calls, 8);  // every servo cycle: traces sample at the servo rate
   EXPECT_DOUBLE_EQ(rt.clock().interpolator_cycle_s, 0.001);
   EXPECT_DOUBLE_EQ(rt.clock().time_s(), 0.004);
 }

@@ -1,4 +1,4 @@
-// tomc — the project's command-line program. Subcommands: telegram, sim, gateway-sim (more arrive with later
+// tomc — the project's command-line program. Subcommands: telegram, sim, demo, gateway-sim (more arrive with later
 // layers).
 #include <exception>
 #include <iostream>
@@ -16,6 +16,7 @@ constexpr std::string_view kUsage =
     "commands:\n"
     "  telegram   encode and decode PROFIdrive telegrams (tomc telegram --help)\n"
     "  sim        run a scenario on simulated drives and write its trace (tomc sim --help)\n"
+    "  demo       run a simulated machine with its diagnostics web page (tomc demo --help)\n"
     "  gateway-sim  simulated drives behind the Fast DDS gateway contract (tomc gateway-sim --help)\n"
     "\n"
     "Bad input prints one line on stderr and exits with status 2.\n";
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
     }
     if (command == "telegram") return tomc::cli::telegram_command(rest, std::cout);
     if (command == "sim") return tomc::cli::sim_command(rest, std::cout);
+    if (command == "demo") return tomc::cli::demo_command(rest, std::cout);
     if (command == "gateway-sim") return tomc::cli::gateway_sim_command(rest, std::cout);
     throw tomc::cli::UsageError("unknown command '" + std::string(command) + "' (try: tomc --help)");
   } catch (const tomc::cli::UsageError& e) {

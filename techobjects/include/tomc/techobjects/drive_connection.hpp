@@ -67,7 +67,11 @@ class DriveConnection {
   telegrams::SetpointSignals& drive_setpoint() noexcept { return drive_sp_; }
   const telegrams::SetpointSignals& drive_setpoint() const noexcept { return drive_sp_; }
   telegrams::SetpointSignals& supplementary_setpoint() noexcept { return supplementary_sp_; }
+  const telegrams::SetpointSignals& supplementary_setpoint() const noexcept { return supplementary_sp_; }
   telegrams::SetpointSignals& encoder_setpoint(int index) noexcept { return encoder_sp_[index == 0 ? 0 : 1]; }
+  const telegrams::SetpointSignals& encoder_setpoint(int index) const noexcept {
+    return encoder_sp_[index == 0 ? 0 : 1];
+  }
 
   // ---- what the drive reports ----
   const telegrams::ActualSignals& drive_actual() const noexcept { return drive_act_; }

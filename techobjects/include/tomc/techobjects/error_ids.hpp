@@ -12,7 +12,9 @@ inline constexpr std::uint16_t kNone = 0x0000;
 // From the manual (spec 03 §5):
 inline constexpr std::uint16_t kAbortedByAlarmReaction =
     0x8001;  // a technology alarm's stop reaction ended the job
-inline constexpr std::uint16_t kJogWrongDirection = 0x8007;  // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kJogWrongDirection = 0x8007;   // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kControlPanelActive = 0x8012;  // the axis control panel has control priority
+inline constexpr std::uint16_t kLifebeatExpired = 0x8013;     // the panel's lifebeat monitoring time elapsed
 // Synchronous operation, numbered as in the manual's error list (spec 07 §1.10, ALM8):
 inline constexpr std::uint16_t kInvalidRatioNumerator = 0x8017;    // RatioNumerator = 0
 inline constexpr std::uint16_t kInvalidRatioDenominator = 0x8018;  // RatioDenominator < 1

@@ -1,6 +1,7 @@
 #pragma once
 // The runtime that owns the technology objects and their drive adapters and runs one application cycle
-// (ARCHITECTURE-GUIDE §2): MC_PreServo hook, MC_Servo, MC_PostServo hook, MC_Interpolator, user program.
+// (ARCHITECTURE-GUIDE §2): MC_PreServo hook, MC_Servo, MC_PostServo hook, MC_Interpolator, post-interpolator
+// hook (diagnostics: axis control panel, snapshots, traces), user program.
 // step() is deterministic on virtual time (an integer cycle counter times the cycle time). After start()
 // nothing in step() allocates, locks, throws or does I/O (tests/techobjects/allocation_test.cpp proves it).
 
@@ -74,6 +75,9 @@ class Runtime {
   }
   void set_pre_servo(Hook hook);
   void set_post_servo(Hook hook);
+  // Runs in every servo cycle right after the MC_Interpolator slot (also in servo cycles in which the
+  // interpolator does not run, so that a trace samples at the servo rate) and before the user program.
+  void set_post_interpolator(Hook hook);
   void set_user_program(Hook hook);
   void start();
   bool started() const noexcept { return started_; }
@@ -99,6 +103,7 @@ class Runtime {
   std::vector<TechnologyObject*> cycle_order_;              // leaders before followers (start())
   Hook pre_servo_;
   Hook post_servo_;
+  Hook post_interpolator_;
   Hook user_program_;
 };
 

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "tomc/techobjects/alarms.hpp"
+#include "tomc/techobjects/control_priority.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
 #include "tomc/techobjects/job.hpp"
 #include "tomc/techobjects/job_priority.hpp"
@@ -95,6 +96,13 @@ class SpeedAxis final : public TechnologyObject {
   bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
   const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
 
+  // ---- the axis control panel (spec 02 §9.2) ----
+  ControlPriority& control_priority() noexcept { return control_; }
+  const ControlPriority& control_priority() const noexcept { return control_; }
+  // Precondition of taking control priority: the user program has released the axis (MC_Power.Enable =
+  // FALSE) and the TO is disabled.
+  bool program_released() const noexcept { return !enable_ && phase_ == PowerPhase::kDisabled; }
+
   // ---- jobs (called by instructions from the user program) ----
   // MC_Power: level-class; called once per instruction call.
   PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
@@ -176,6 +184,7 @@ class SpeedAxis final : public TechnologyObject {
   DriveConnectionConfig drive_config_;
   DriveConnection drive_;
   AlarmList alarms_;
+  ControlPriority control_;
   JobTable<JobKind> jobs_;
   std::uint64_t cycle_ = 0;
   double ipo_cycle_s_ = 0.001;

@@ -1,0 +1,115 @@
+// `tomc demo` as a user runs it: help, a bad configuration (every problem named by its JSON path, exit 2),
+// bad options, and a short run of a configuration of one's own in the tomc sim format.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+struct DemoRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+DemoRun tomc(const std::vector<std::string>& args) {
+  const std::string err_file = ::testing::TempDir() + "tomc_demo_stderr_" + std::to_string(getpid()) + ".txt";
+  std::string cmd = quote(TOMC_BINARY);
+  for (const auto& a : args)
+    cmd += " " + quote(a);
+  cmd += " 2>" + quote(err_file);
+  DemoRun run;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return run;
+  char buf[4096];
+  std::size_t n = 0;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0)
+    run.out.append(buf, n);
+  const int status = pclose(pipe);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_file);
+  std::stringstream ss;
+  ss << err.rdbuf();
+  run.err = ss.str();
+  return run;
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name + "_" + std::to_string(getpid()) + ".json";
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(DemoCli, Help) {
+  const DemoRun r = tomc({"demo", "--help"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("usage: tomc demo"), std::string::npos);
+}
+
+TEST(DemoCli, BadOptions) {
+  EXPECT_EQ(tomc({"demo", "--port", "70000"}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--port", "x"}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--token", "a", "--generate-token"}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--seconds", "-1"}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--frobnicate"}).status, 2);
+  const DemoRun missing = tomc({"demo", "--config", "/nonexistent/machine.json"});
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
+}
+
+TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
+  const std::string path = write_file("bad_machine", R"({
+    "cycle_time": 0.001,
+    "technology_objects": [
+      {"name": "A", "type": "TO_SpeedAxis", "config": {"DynamicLimits.MaxVelocity": -1},
+       "drive": {"adapter": "simulated", "telegram": 2}},
+      {"name": "B", "type": "TO_PositioningAxis"}
+    ],
+    "program": {"C": {"velocities": [1]}, "A": {"dwell_s": 0}},
+    "diagnostics": {"port": 99999, "colour": "red"},
+    "extra": 1
+  })");
+  const DemoRun r = tomc({"demo", "--config", path});
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* expected :
+       {"technology_objects[0].config.DynamicLimits.MaxVelocity",
+        "technology_objects[1].drive: missing (a TO_PositioningAxis needs a drive",
+        "program.C: no technology object", "program.A.dwell_s", "diagnostics.port",
+        "diagnostics.colour: unknown key", "extra: unknown key"}) {
+    EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
+  }
+  EXPECT_EQ(tomc({"demo", "--config", write_file("not_json", "{ nope")}).status, 2);
+}
+
+// A machine of one's own, in the tomc sim format, read-only (no token), on any free port, for one second.
+TEST(DemoCli, RunsAConfigurationOfOnesOwn) {
+  const std::string path = write_file("own_machine", R"({
+    "cycle_time": 0.002,
+    "technology_objects": [
+      {"name": "Fan", "type": "TO_SpeedAxis", "config": {"DynamicLimits.MaxVelocity": 1000.0},
+       "drive": {"adapter": "simulated", "telegram": 1}}
+    ]
+  })");
+  const DemoRun r = tomc({"demo", "--config", path, "--port", "0", "--seconds", "1"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("cycle 2 ms: Fan"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("read-only"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("http://127.0.0.1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stopped after"), std::string::npos) << r.out;
+}
+
+}  // namespace

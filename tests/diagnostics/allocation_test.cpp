@@ -1,0 +1,133 @@
+// Real-time discipline of the diagnostics layer: with Diagnostics attached (snapshots of every object in
+// every cycle, the axis control panel taking commands and running its instructions, a 32-channel trace
+// recording), Runtime::step() allocates nothing. A counting global operator new proves it; only allocations
+// made inside step() are counted (the reader's side, poll(), allocates on purpose and runs between steps
+// here).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "diagnostics_fixture.hpp"
+
+namespace {
+std::atomic<std::uint64_t> g_allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(size == 0 ? 1 : size);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace {
+
+using namespace tomc;
+using diagnostics::PanelCommandKind;
+
+#ifdef TOMC_SANITIZED_BUILD
+constexpr int kCycles = 5'000;
+#else
+constexpr int kCycles = 50'000;
+#endif
+
+TEST(DiagnosticsAllocation, CountingAllocatorSeesAllocations) {
+  const auto before = g_allocations.load();
+  tomc::testing::DiagnosticsMachine m;
+  m.diagnostics.poll();
+  EXPECT_GT(g_allocations.load(), before);
+}
+
+TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
+  tomc::testing::DiagnosticsMachine m(4, diagnostics::DiagnosticsConfig{1, 1024, 100});
+  for (std::size_t i = 1; i < 4; ++i) {
+    m.programs[i]->power.Enable = true;
+    m.programs[i]->move.Velocity = 500.0 * static_cast<double>(i);
+    m.programs[i]->run = true;
+  }
+  // A 32-channel trace of every object, triggered by the panel's axis reaching constant velocity.
+  diagnostics::TraceRequest trace;
+  const char* paths[] = {
+      "Velocity",         "ActualSpeed",           "StatusWord",         "StatusWord.X12", "ErrorWord",
+      "VelocitySetpoint", "telegram.drive.NIST_B", "telegram.drive.ZSW1"};
+  for (int axis = 1; axis <= 4; ++axis) {
+    for (const char* p : paths)
+      trace.channels.push_back("Axis" + std::to_string(axis) + "." + p);
+  }
+  ASSERT_EQ(trace.channels.size(), 32u);
+  trace.trigger = diagnostics::TriggerKind::kRisingEdge;
+  trace.trigger_signal = "Axis1.StatusWord.X12";
+  trace.pre_samples = 500;
+  trace.post_samples = 2000;
+  ASSERT_TRUE(m.diagnostics.start_trace(trace).empty());
+
+  std::uint64_t in_cycle = 0;
+  auto step = [&] {
+    const auto before = g_allocations.load(std::memory_order_relaxed);
+    m.runtime.step();
+    in_cycle += g_allocations.load(std::memory_order_relaxed) - before;
+  };
+  auto post = [&](PanelCommandKind kind, std::int32_t direction = 0, double value = 0.0) {
+    diagnostics::PanelCommand c;
+    c.object = 0;
+    c.session = 9;
+    c.kind = kind;
+    c.direction = direction;
+    c.value = value;
+    ASSERT_NE(m.diagnostics.post(c), 0u);
+  };
+  post(PanelCommandKind::kTake, 0, 60.0);
+  post(PanelCommandKind::kEnable);
+  int completed_traces = 0;
+  for (int i = 0; i < kCycles; ++i) {
+    // The panel jogs back and forth, changes its dynamics, stops; lifebeats keep it.
+    if (i % 1000 == 100) post(PanelCommandKind::kJog, (i / 1000) % 2 == 0 ? +1 : -1);
+    if (i % 1000 == 600) post(PanelCommandKind::kSetAdapt, 0, 50.0 + (i / 1000) % 100);
+    if (i % 1000 == 800) post(PanelCommandKind::kJog, 0);
+    if (i % 1000 == 900) post(PanelCommandKind::kMoveVelocity, +1);
+    if (i % 1000 == 950) post(PanelCommandKind::kStop);
+    if (i % 200 == 0) post(PanelCommandKind::kLifebeat);
+    step();
+    if (i % 20 == 0) {
+      m.diagnostics.poll();  // the reader's side, outside the counted window
+      const bool done = m.diagnostics.read([](const diagnostics::Diagnostics::State& s) {
+        return s.trace.state == diagnostics::TraceCapture::State::kComplete;
+      });
+      if (done) {
+        ++completed_traces;
+        ASSERT_TRUE(m.diagnostics.start_trace(trace).empty());
+      }
+    }
+  }
+  EXPECT_EQ(in_cycle, 0u);
+  EXPECT_GT(completed_traces, 0);
+  EXPECT_TRUE(m.axes[0]->control_priority().held());
+}
+
+}  // namespace

@@ -1,0 +1,382 @@
+// The web API over HTTP (docs/diagnostics.md), against a machine whose runtime runs in real time (1 ms) on
+// its own thread, as in `tomc demo`: status JSON, control actions with and without the token, traces and
+// their CSV/PNG export, server-sent events, and malformed requests, which get a 4xx answer and leave the
+// runtime running undisturbed.
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <thread>
+
+#include "../diagnostics/diagnostics_fixture.hpp"
+#include "tomc/diagnostics/server.hpp"
+#include "tomc/techobjects/realtime_runner.hpp"
+
+namespace {
+
+using namespace tomc;
+using Json = nlohmann::json;
+using namespace std::chrono_literals;
+
+constexpr const char* kToken = "s3cret-t0ken";
+constexpr const char* kSession = "00000000c0ffee01";
+
+std::size_t item_index(const Json& objects, std::string_view area, std::string_view label,
+                       std::size_t object);
+
+// The speed setpoint of an object in a /api/status answer (the cycle's data are only read through the API:
+// the runtime runs on another thread).
+double speed_setpoint(const Json& objects, const Json& status, std::size_t object) {
+  const Json& v =
+      status["objects"][object]["items"][item_index(objects, "Setpoints", "Speed setpoint", object)];
+  return v.is_number() ? v.get<double>() : 0.0;
+}
+
+struct Served {
+  explicit Served(std::string token = kToken, std::size_t axes = 1)
+      : machine(axes, diagnostics::DiagnosticsConfig{5, 4096, 500}) {
+    // The program's inputs are set before the cycle starts: afterwards only the API changes the machine.
+    for (std::size_t i = 1; i < axes; ++i) {
+      machine.programs[i]->power.Enable = true;
+      machine.programs[i]->move.Velocity = 300.0;
+      machine.programs[i]->run = true;
+    }
+    diagnostics::ServerOptions options;
+    options.port = 0;
+    options.token = std::move(token);
+    options.runner_statistics = [this] { return runner.statistics(); };
+    server = std::make_unique<diagnostics::Server>(machine.diagnostics, options);
+    server->start();
+    runner.start();
+    objects = get("/api/objects").second;
+  }
+  ~Served() {
+    server->stop();
+    runner.stop();
+  }
+  httplib::Client client() const {
+    httplib::Client c("127.0.0.1", server->port());
+    c.set_read_timeout(5, 0);
+    return c;
+  }
+  // Status code and parsed body (null if the body is not JSON).
+  std::pair<int, Json> get(const std::string& path) const {
+    auto c = client();
+    auto r = c.Get(path);
+    if (!r) return {0, nullptr};
+    return {r->status, Json::parse(r->body, nullptr, false)};
+  }
+  std::pair<int, Json> post(const std::string& path, const std::string& body,
+                            const char* token = kToken) const {
+    auto c = client();
+    httplib::Headers headers;
+    if (token != nullptr) headers.emplace("Authorization", std::string("Bearer ") + token);
+    auto r = c.Post(path, headers, body, "application/json");
+    if (!r) return {0, nullptr};
+    return {r->status, Json::parse(r->body, nullptr, false)};
+  }
+  std::pair<int, Json> panel(const std::string& command, Json extra = Json::object()) const {
+    extra["command"] = command;
+    extra["session"] = kSession;
+    return post("/api/panel/Axis1", extra.dump());
+  }
+  // Polls /api/status until `predicate(status)` holds (at most `timeout`).
+  template <typename Predicate>
+  Json wait_status(Predicate predicate, std::chrono::milliseconds timeout = 5000ms) const {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    Json last;
+    while (std::chrono::steady_clock::now() < deadline) {
+      last = get("/api/status").second;
+      bool met = false;
+      try {
+        met = last.is_object() && predicate(last);  // a part not there yet (no snapshot) is "not yet"
+      } catch (const Json::exception&) {
+      }
+      if (met) return last;
+      std::this_thread::sleep_for(20ms);
+    }
+    ADD_FAILURE() << "condition not met; last status: " << last.dump().substr(0, 400);
+    return last;
+  }
+
+  tomc::testing::DiagnosticsMachine machine;
+  techobjects::RealTimeRunner runner{techobjects::RealTimeRunnerConfig{1ms, 0, false},
+                                     [this] { machine.runtime.step(); }};
+  std::unique_ptr<diagnostics::Server> server;
+  Json objects;
+};
+
+// Index of a layout item of an object in /api/objects.
+std::size_t item_index(const Json& objects, std::string_view area, std::string_view label,
+                       std::size_t object = 0) {
+  std::size_t index = 0;
+  for (const auto& a : objects["objects"][object]["layout"]) {
+    for (const auto& i : a["items"]) {
+      if (a["title"] == area && i["label"] == label) return index;
+      ++index;
+    }
+  }
+  ADD_FAILURE() << "no item " << area << "/" << label;
+  return 0;
+}
+
+TEST(WebApi, ObjectsAndStatus) {
+  Served s;
+  const auto [code, objects] = s.get("/api/objects");
+  ASSERT_EQ(code, 200);
+  ASSERT_EQ(objects["objects"].size(), 1u);
+  const Json& o = objects["objects"][0];
+  EXPECT_EQ(o["name"], "Axis1");
+  EXPECT_EQ(o["type"], "TO_SpeedAxis");
+  EXPECT_EQ(o["telegrams"]["drive"], 3);
+  EXPECT_EQ(o["telegram"].size(), 10u);  // telegram 3: 6 actual + 4 setpoint words
+  EXPECT_EQ(o["telegram"][0]["signal"], "ZSW1");
+  EXPECT_FALSE(o["telegram"][0]["fields"].empty());
+  const auto caps = o["capabilities"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(caps.begin(), caps.end(), "jog"), caps.end());
+  EXPECT_EQ(std::find(caps.begin(), caps.end(), "move_absolute"), caps.end());
+
+  const Json status = s.wait_status([](const Json& j) { return j["objects"][0]["valid"] == true; });
+  const Json& a = status["objects"][0];
+  EXPECT_EQ(a["name"], "Axis1");
+  EXPECT_TRUE(a["words"]["StatusWord"].is_number());
+  EXPECT_EQ(a["items"].size(), 7u + 8u + 3u + 8u + 2u + 2u + 4u);
+  EXPECT_EQ(a["telegram"].size(), 10u);
+  EXPECT_EQ(a["items"][item_index(objects, "Axis status", "Enabled")], 0.0);
+  EXPECT_DOUBLE_EQ(a["items"][item_index(objects, "Dynamic limits", "Velocity")].get<double>(), 3000.0);
+  EXPECT_EQ(status["read_only"], false);
+  EXPECT_GT(status["runner"]["cycles"].get<std::uint64_t>(), 0u);
+  EXPECT_GT(status["cycle"].get<std::uint64_t>(), 0u);
+
+  const auto [vcode, vars] = s.get("/api/objects/Axis1/variables");
+  ASSERT_EQ(vcode, 200);
+  EXPECT_EQ(vars["variables"].size(), techobjects::speed_axis_variables().size());
+  EXPECT_EQ(vars["variables"][0]["path"], "Velocity");
+  const auto [acode, alarms] = s.get("/api/objects/Axis1/alarms");
+  ASSERT_EQ(acode, 200);
+  EXPECT_TRUE(alarms["pending"].empty());
+}
+
+TEST(WebApi, ControlActionsNeedTheToken) {
+  Served s;
+  EXPECT_EQ(s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", nullptr).first, 401);
+  EXPECT_EQ(s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", "wrong").first, 403);
+  EXPECT_EQ(s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", "s3cret-t0ke").first, 403);
+  EXPECT_EQ(s.post("/api/trace", R"({"channels":["Axis1.Velocity"]})", nullptr).first, 401);
+  EXPECT_EQ(s.post("/api/trace/stop", "", nullptr).first, 401);
+  EXPECT_EQ(s.wait_status([](const Json& j) {
+    return j["objects"][0]["valid"] == true;
+  })["objects"][0]["panel"]["held"],
+            false);
+  const auto [code, body] = s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})");
+  EXPECT_EQ(code, 200);
+  EXPECT_EQ(body["answer"], "accepted");
+}
+
+TEST(WebApi, ReadOnlyWithoutToken) {
+  Served s("");
+  const auto [code, body] = s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", "anything");
+  EXPECT_EQ(code, 403);
+  EXPECT_NE(body["error"].get<std::string>().find("read-only"), std::string::npos);
+  EXPECT_EQ(s.get("/api/status").first, 200);  // reading is allowed
+  EXPECT_EQ(s.get("/api/status").second["read_only"], true);
+}
+
+// Take master control, enable, jog: the velocity rises; release; a second session is refused; give back.
+TEST(WebApi, PanelJogsTheAxis) {
+  Served s;
+  ASSERT_EQ(s.panel("take", {{"lifebeat_s", 5.0}}).first, 200);
+  ASSERT_EQ(s.panel("enable").first, 200);
+  s.wait_status([](const Json& j) { return j["objects"][0]["panel"]["instructions"][0]["active"] == true; });
+  ASSERT_EQ(s.panel("jog", {{"direction", 1}}).first, 200);
+  s.wait_status([](const Json& j) {
+    return (j["objects"][0]["panel"]["motion"] == "jog forwards") &&
+           j["objects"][0]["words"]["StatusWord"].get<double>() > 0 &&
+           (static_cast<std::uint32_t>(j["objects"][0]["words"]["StatusWord"].get<double>()) & (1u << 9)) !=
+               0;
+  });
+  s.wait_status([&](const Json& j) { return speed_setpoint(s.objects, j, 0) > 100.0; });
+  ASSERT_EQ(s.panel("lifebeat").first, 200);
+  ASSERT_EQ(s.panel("jog", {{"direction", 0}}).first, 200);
+  // Another page: refused while this one holds master control.
+  Json other = {{"command", "take"}, {"session", "abcdef"}};
+  const auto [code, body] = s.post("/api/panel/Axis1", other.dump());
+  EXPECT_EQ(code, 409);
+  EXPECT_EQ(body["answer"], "held_by_other_session");
+  other["command"] = "enable";
+  EXPECT_EQ(s.post("/api/panel/Axis1", other.dump()).first, 409);
+  // Position functions do not exist on a speed axis.
+  EXPECT_EQ(s.panel("move_absolute", {{"position", 10.0}}).first, 422);
+  ASSERT_EQ(s.panel("give_back").first, 200);
+  const Json back = s.wait_status([](const Json& j) { return j["objects"][0]["panel"]["held"] == false; });
+  EXPECT_EQ(speed_setpoint(s.objects, back, 0), 0.0);
+}
+
+// spec 02 §9.2: when the page stops sending lifebeats the axis stops and control priority returns.
+TEST(WebApi, LifebeatLossOverHttp) {
+  Served s;
+  ASSERT_EQ(s.panel("take", {{"lifebeat_s", 0.3}}).first, 200);
+  ASSERT_EQ(s.panel("enable").first, 200);
+  ASSERT_EQ(s.panel("velocity", {{"direction", -1}}).first, 200);
+  const Json j = s.wait_status([](const Json& j) {
+    return j["objects"][0]["panel"]["held"] == false && j["objects"][0]["panel"]["error_id"] == "16#8013";
+  });
+  EXPECT_EQ(j["objects"][0]["panel"]["error_text"].get<std::string>().find("lifebeat"), 0u);
+}
+
+TEST(WebApi, TraceAndExports) {
+  Served s(kToken, 2);  // Axis2 runs under its program at 300 1/min
+  const Json request = {
+      {"channels", {"Axis2.Velocity", "Axis2.StatusWord.X12", "Axis2.telegram.drive.NIST_B"}},
+      {"trigger", {{"kind", "immediate"}}},
+      {"post_samples", 300}};
+  ASSERT_EQ(s.post("/api/trace", request.dump()).first, 200);
+  s.wait_status([](const Json& j) { return j["trace"]["state"] == "complete"; });
+  const auto [code, trace] = s.get("/api/trace?max_points=50");
+  ASSERT_EQ(code, 200);
+  EXPECT_EQ(trace["rows"], 300);
+  EXPECT_LE(trace["time_s"].size(), 51u);
+  EXPECT_EQ(trace["values"].size(), 3u);
+  EXPECT_EQ(trace["channels"][0], "Axis2.Velocity");
+
+  auto c = s.client();
+  auto csv = c.Get("/api/trace.csv");
+  ASSERT_TRUE(csv);
+  EXPECT_EQ(csv->status, 200);
+  EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+  std::istringstream lines(csv->body);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "cycle,time,Axis2.Velocity,Axis2.StatusWord.X12,Axis2.telegram.drive.NIST_B");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 4) << line;
+  }
+  EXPECT_EQ(rows, 300);
+
+  auto png = c.Get("/api/trace.png?width=800&height=500");
+  ASSERT_TRUE(png);
+  EXPECT_EQ(png->status, 200);
+  EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+  ASSERT_GT(png->body.size(), 8u);
+  EXPECT_EQ(png->body.substr(1, 3), "PNG");
+  const std::vector<std::uint8_t> bytes(png->body.begin(), png->body.end());
+  const cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  ASSERT_FALSE(image.empty());
+  EXPECT_EQ(image.cols, 800);
+  EXPECT_EQ(image.rows, 500);
+  EXPECT_EQ(c.Get("/api/trace.png?width=10")->status, 400);
+}
+
+TEST(WebApi, ServerSentEvents) {
+  Served s;
+  auto c = s.client();
+  int events = 0;
+  std::string buffer;
+  bool parsed = true;
+  auto r = c.Get("/api/events", [&](const char* data, std::size_t length) {
+    buffer.append(data, length);
+    std::size_t end;
+    while ((end = buffer.find("\n\n")) != std::string::npos) {
+      const std::string event = buffer.substr(0, end);
+      buffer.erase(0, end + 2);
+      if (event.rfind("data: ", 0) == 0) {
+        parsed = parsed && Json::parse(event.substr(6), nullptr, false).is_object();
+        ++events;
+      }
+    }
+    return events < 3;  // stop after three events
+  });
+  EXPECT_EQ(events, 3);
+  EXPECT_TRUE(parsed);
+}
+
+// Malformed requests: 4xx, and the runtime goes on undisturbed (no overrun, the cycle counter advances, the
+// program's axis keeps its velocity).
+TEST(WebApi, BadRequestsGet4xxAndDoNotDisturbTheRuntime) {
+  Served s(kToken, 2);
+  s.wait_status([&](const Json& j) { return speed_setpoint(s.objects, j, 1) == 300.0; });
+  const auto cycles_before = s.runner.statistics().cycles;
+  struct Case {
+    std::string path;
+    std::string body;
+    int status;
+  };
+  const std::vector<Case> cases = {
+      {"/api/panel/Axis1", "{", 400},
+      {"/api/panel/Axis1", "[1,2]", 400},
+      {"/api/panel/Axis1", "\"take\"", 400},
+      {"/api/panel/Axis1", R"({"command":"fly","session":"1"})", 400},
+      {"/api/panel/Axis1", R"({"command":"take"})", 400},
+      {"/api/panel/Axis1", R"({"command":"take","session":"xyz"})", 400},
+      {"/api/panel/Axis1", R"({"command":"take","session":"0"})", 400},
+      {"/api/panel/Axis1", R"({"command":"take","session":"1","extra":1})", 400},
+      {"/api/panel/Axis1", R"({"command":"jog","session":"1","direction":2})", 400},
+      {"/api/panel/Axis1", R"({"command":"jog","session":"1","direction":"up"})", 400},
+      {"/api/panel/Axis1", R"({"command":"adapt","session":"1","percent":1e999})", 400},
+      {"/api/panel/Axis1", std::string(100, '[') + std::string(100, ']'), 400},
+      {"/api/panel/Axis1", "\xff\xfe\x00\x01", 400},
+      {"/api/panel/Nobody", R"({"command":"take","session":"1"})", 404},
+      {"/api/panel/Axis1", R"({"command":"enable","session":"1"})", 409},  // not the holder
+      {"/api/trace", R"({"channels":[]})", 400},
+      {"/api/trace", R"({"channels":["Axis1.NoSuchThing"]})", 400},
+      {"/api/trace",
+       R"({"channels":["Axis1.Velocity"],"trigger":{"kind":"above","signal":"Axis1.Velocity"}})", 400},
+      {"/api/trace", R"({"channels":["Axis1.Velocity"],"post_samples":1000000})", 400},
+      {"/api/switches/none", R"({"on":true})", 404},
+      {"/api/switches/none", R"({"on":"yes"})", 400},
+      {"/api/nothing", "{}", 404},
+  };
+  for (const Case& k : cases) {
+    const auto [code, body] = s.post(k.path, k.body);
+    EXPECT_EQ(code, k.status) << k.path << " " << k.body;
+    EXPECT_TRUE(body.is_object() && (body.contains("error") || body.contains("answer"))) << k.body;
+  }
+  auto c = s.client();
+  EXPECT_EQ(c.Get("/api/nothing")->status, 404);
+  EXPECT_EQ(c.Get("/api/objects/Nobody/variables")->status, 404);
+  EXPECT_EQ(c.Get("/api/trace?max_points=abc")->status, 400);
+  EXPECT_EQ(c.Get("/api/trace.png?height=99999")->status, 400);
+  // A body over 64 KiB.
+  httplib::Headers auth{{"Authorization", std::string("Bearer ") + kToken}};
+  const auto big = c.Post("/api/panel/Axis1", auth, std::string(70 * 1024, ' '), "application/json");
+  ASSERT_TRUE(big);
+  EXPECT_EQ(big->status, 413);
+  // Another Host (DNS rebinding): refused.
+  httplib::Headers host{{"Host", "attacker.example:80"}};
+  EXPECT_EQ(c.Get("/api/status", host)->status, 421);
+
+  // The runtime ran on: cycles advanced, the program's axis still at its velocity, no panel was taken.
+  std::this_thread::sleep_for(50ms);
+  const auto stats = s.runner.statistics();
+  EXPECT_GT(stats.cycles, cycles_before);
+  const Json after = s.wait_status([](const Json& j) { return j["objects"][1]["valid"] == true; });
+  EXPECT_EQ(speed_setpoint(s.objects, after, 1), 300.0);
+  EXPECT_EQ(after["objects"][0]["panel"]["held"], false);
+}
+
+// SO_REUSEPORT is off: a second server on the same port fails to start instead of sharing connections.
+TEST(WebApi, SecondServerOnTheSamePortFails) {
+  Served s;
+  diagnostics::ServerOptions options;
+  options.port = s.server->port();
+  diagnostics::Server second(s.machine.diagnostics, options);
+  EXPECT_THROW(second.start(), std::runtime_error);
+}
+
+TEST(WebApi, PageIsServed) {
+  Served s;
+  auto c = s.client();
+  auto r = c.Get("/");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->get_header_value("Content-Type").find("text/html"), std::string::npos);
+  EXPECT_FALSE(r->get_header_value("Content-Security-Policy").empty());
+  EXPECT_EQ(r->body, std::string(diagnostics::web_page()));
+}
+
+}  // namespace

@@ -1,0 +1,418 @@
+// `tomc demo [--config FILE] [--port N] [--bind ADDR] [--token T | --generate-token] [--seconds S]`: a
+// simulated machine run in real time with its diagnostics page (README's first command, via scripts/demo).
+// The machine is a JSON file in the scenario format's `technology_objects` (docs/scenarios.md), plus the
+// demo's program and the page's settings (docs/diagnostics.md "tomc demo"); without --config the built-in
+// examples/demo_machine.json is used.
+#include <signal.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+#include "demo_program.hpp"
+#include "tomc/diagnostics/diagnostics.hpp"
+#include "tomc/diagnostics/server.hpp"
+#include "tomc/scenario/machine.hpp"
+#include "tomc/techobjects/realtime_runner.hpp"
+
+namespace tomc::cli {
+
+namespace {
+
+constexpr std::string_view kDemoUsage =
+    "usage: tomc demo [--config FILE] [--port N] [--bind ADDRESS] [--token TOKEN | --generate-token]\n"
+    "                 [--seconds S]\n"
+    "\n"
+    "Runs a simulated machine in real time with a user program that moves its axes in a loop, and serves "
+    "the\n"
+    "diagnostics page (status, telegrams, alarms, axis control panel, traces) at the printed URL.\n"
+    "\n"
+    "  --config FILE      the machine: cycle_time, technology_objects as in tomc sim (docs/scenarios.md),\n"
+    "                     optional program and diagnostics sections (docs/diagnostics.md); default: the\n"
+    "                     built-in demo machine (examples/demo_machine.json)\n"
+    "  --port N           TCP port, 0 = any free port (default 8080 or the config's)\n"
+    "  --bind ADDRESS     listen address (default 127.0.0.1: this machine only)\n"
+    "  --token TOKEN      allow control actions to a page that presents TOKEN (default: read-only)\n"
+    "  --generate-token   make a random token and print it in the URL\n"
+    "  --seconds S        stop after S seconds (default: run until Ctrl-C)\n"
+    "\n"
+    "exit status: 0 stopped normally, 1 could not serve (e.g. port in use), 2 bad command line or config.\n";
+
+struct DemoOptions {
+  std::optional<std::string> config;
+  std::optional<int> port;
+  std::optional<std::string> bind;
+  std::optional<std::string> token;
+  bool generate_token = false;
+  std::optional<double> seconds;
+  bool help = false;
+};
+
+std::string value_of(std::span<const std::string_view> args, std::size_t& i, std::string_view option) {
+  const std::string_view a = args[i];
+  const std::string prefix = std::string(option) + "=";
+  if (a.starts_with(prefix)) return std::string(a.substr(prefix.size()));
+  if (i + 1 >= args.size()) throw UsageError("demo: " + std::string(option) + " needs a value");
+  return std::string(args[++i]);
+}
+
+template <typename T>
+T number_of(const std::string& text, std::string_view option) {
+  std::istringstream in(text);
+  T value{};
+  if (!(in >> value) || !in.eof())
+    throw UsageError("demo: " + std::string(option) + ": '" + text + "' is not a number");
+  return value;
+}
+
+bool is_option(std::string_view a, std::string_view option) {
+  return a == option || (a.starts_with(option) && a.size() > option.size() && a[option.size()] == '=');
+}
+
+DemoOptions parse_demo_options(std::span<const std::string_view> args) {
+  DemoOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view a = args[i];
+    if (a == "--help" || a == "-h") {
+      o.help = true;
+    } else if (is_option(a, "--config")) {
+      o.config = value_of(args, i, "--config");
+    } else if (is_option(a, "--port")) {
+      const int port = number_of<int>(value_of(args, i, "--port"), "--port");
+      if (port < 0 || port > 65535) throw UsageError("demo: --port: 0 .. 65535");
+      o.port = port;
+    } else if (is_option(a, "--bind")) {
+      o.bind = value_of(args, i, "--bind");
+    } else if (is_option(a, "--token")) {
+      o.token = value_of(args, i, "--token");
+      if (o.token->empty()) throw UsageError("demo: --token: empty");
+    } else if (a == "--generate-token") {
+      o.generate_token = true;
+    } else if (is_option(a, "--seconds")) {
+      const double s = number_of<double>(value_of(args, i, "--seconds"), "--seconds");
+      if (!(s > 0.0) || !std::isfinite(s)) throw UsageError("demo: --seconds: a positive number");
+      o.seconds = s;
+    } else {
+      throw UsageError("demo: unknown argument '" + std::string(a) + "' (try: tomc demo --help)");
+    }
+  }
+  if (o.token && o.generate_token) throw UsageError("demo: --token and --generate-token exclude each other");
+  return o;
+}
+
+std::string random_token() {
+  std::random_device device;  // /dev/urandom on Linux
+  std::string token;
+  for (int i = 0; i < 4; ++i) {
+    char part[9];
+    std::snprintf(part, sizeof part, "%08x", static_cast<unsigned>(device()));
+    token += part;
+  }
+  return token;
+}
+
+// ---- the configuration file ----
+
+using Json = scenario::Json;
+
+struct DemoConfig {
+  double cycle_time_s = 0.001;
+  std::vector<scenario::MachineObject> objects;
+  std::vector<std::pair<std::string, DemoSequence>> sequences;  // by object name
+  diagnostics::ServerOptions server;
+  diagnostics::DiagnosticsConfig diagnostics;
+};
+
+std::string kind_of(const Json& v) {
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_array()) return "an array";
+  if (v.is_object()) return "an object";
+  return "null";
+}
+
+void only_keys(const Json& object, const std::string& path, std::initializer_list<std::string_view> keys,
+               scenario::Problems& problems) {
+  for (const auto& item : object.items()) {
+    if (item.key() == "comment") continue;
+    if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
+      std::string list;
+      for (auto k : keys)
+        list += (list.empty() ? "" : ", ") + std::string(k);
+      problems.add(scenario::join_path(path, item.key()), "unknown key (known: " + list + ")");
+    }
+  }
+}
+
+std::optional<double> positive_number(const Json& v, const std::string& path, scenario::Problems& problems) {
+  if (!v.is_number() || !(v.get<double>() > 0.0)) {
+    problems.add(path, "expected a number > 0, got " +
+                           (v.is_number() ? scenario::format_number(v.get<double>()) : kind_of(v)));
+    return std::nullopt;
+  }
+  return v.get<double>();
+}
+
+// Reads the file into a runtime: cycle_time and technology_objects as tomc sim reads them, then the optional
+// "program" and "diagnostics" sections.
+void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& runtime, DemoConfig& config,
+                      scenario::Problems& problems) {
+  if (!root.is_object()) {
+    problems.add("", "expected a JSON object, got " + kind_of(root));
+    return;
+  }
+  only_keys(root, "", {"cycle_time", "technology_objects", "program", "diagnostics"}, problems);
+  if (const auto it = root.find("cycle_time"); it != root.end()) {
+    if (const auto t = positive_number(*it, "cycle_time", problems)) {
+      if (*t < 1e-4 || *t > 0.1) {
+        problems.add("cycle_time", scenario::format_number(*t) +
+                                       " out of range 0.0001 .. 0.1 s (the demo runs in real time)");
+      } else {
+        config.cycle_time_s = *t;
+      }
+    }
+  }
+  runtime = std::make_unique<techobjects::Runtime>(techobjects::RuntimeConfig{config.cycle_time_s, 1, 1});
+  const auto objects = root.find("technology_objects");
+  if (objects == root.end() || !objects->is_array() || objects->empty()) {
+    problems.add("technology_objects", "expected a non-empty array of technology objects");
+  } else {
+    for (std::size_t i = 0; i < objects->size(); ++i) {
+      if (auto o = scenario::load_technology_object(
+              (*objects)[i], "technology_objects[" + std::to_string(i) + "]", config.cycle_time_s, *runtime,
+              config.objects, problems, "tomc demo")) {
+        config.objects.push_back(std::move(*o));
+      }
+    }
+    // Hardware limit switches and homing inputs of the simulated machine, as in tomc sim.
+    if (problems.empty()) scenario::wire_machine_inputs(*runtime, config.objects);
+  }
+  if (const auto program = root.find("program"); program != root.end()) {
+    if (!program->is_object()) {
+      problems.add("program", "expected an object '<axis>': {\"velocities\": [...], \"dwell_s\": s}");
+    } else {
+      for (const auto& [name, entry] : program->items()) {
+        if (name == "comment") continue;
+        const std::string path = scenario::join_path("program", name);
+        const bool known = std::any_of(config.objects.begin(), config.objects.end(),
+                                       [&](const scenario::MachineObject& o) { return o.name == name; });
+        if (!known) {
+          problems.add(path, "no technology object of that name");
+          continue;
+        }
+        if (!entry.is_object()) {
+          problems.add(path, "expected an object, got " + kind_of(entry));
+          continue;
+        }
+        only_keys(entry, path, {"velocities", "dwell_s"}, problems);
+        DemoSequence sequence;
+        if (const auto v = entry.find("velocities"); v != entry.end()) {
+          if (!v->is_array() || v->empty() || v->size() > 100) {
+            problems.add(scenario::join_path(path, "velocities"), "expected an array of 1 .. 100 numbers");
+          } else {
+            for (std::size_t i = 0; i < v->size(); ++i) {
+              if (!(*v)[i].is_number()) {
+                problems.add(scenario::join_path(path, "velocities") + "[" + std::to_string(i) + "]",
+                             "expected a number");
+              } else {
+                sequence.velocities.push_back((*v)[i].get<double>());
+              }
+            }
+          }
+        }
+        if (const auto d = entry.find("dwell_s"); d != entry.end()) {
+          if (const auto s = positive_number(*d, scenario::join_path(path, "dwell_s"), problems))
+            sequence.dwell_s = *s;
+        }
+        config.sequences.emplace_back(name, std::move(sequence));
+      }
+    }
+  }
+  if (const auto d = root.find("diagnostics"); d != root.end()) {
+    if (!d->is_object()) {
+      problems.add("diagnostics", "expected an object");
+    } else {
+      only_keys(*d, "diagnostics", {"bind", "port", "token", "publish_period_cycles", "event_period_s"},
+                problems);
+      if (const auto v = d->find("bind"); v != d->end()) {
+        if (!v->is_string() || v->get<std::string>().empty()) {
+          problems.add("diagnostics.bind", "expected an address such as \"127.0.0.1\"");
+        } else {
+          config.server.bind_address = v->get<std::string>();
+        }
+      }
+      if (const auto v = d->find("port"); v != d->end()) {
+        if (!v->is_number_integer() || v->get<std::int64_t>() < 0 || v->get<std::int64_t>() > 65535) {
+          problems.add("diagnostics.port", "expected an integer 0 .. 65535 (0: any free port)");
+        } else {
+          config.server.port = v->get<int>();
+        }
+      }
+      if (const auto v = d->find("token"); v != d->end()) {
+        if (!v->is_string() || v->get<std::string>().empty()) {
+          problems.add("diagnostics.token", "expected a non-empty string");
+        } else {
+          config.server.token = v->get<std::string>();
+        }
+      }
+      if (const auto v = d->find("publish_period_cycles"); v != d->end()) {
+        if (!v->is_number_integer() || v->get<std::int64_t>() < 1 || v->get<std::int64_t>() > 10000) {
+          problems.add("diagnostics.publish_period_cycles", "expected an integer 1 .. 10000");
+        } else {
+          config.diagnostics.publish_period_cycles = v->get<std::uint32_t>();
+        }
+      }
+      if (const auto v = d->find("event_period_s"); v != d->end()) {
+        if (!v->is_number() || v->get<double>() < 0.02 || v->get<double>() > 10.0) {
+          problems.add("diagnostics.event_period_s", "expected a number 0.02 .. 10 (s)");
+        } else {
+          config.server.event_period = std::chrono::milliseconds(std::lround(v->get<double>() * 1000.0));
+        }
+      }
+    }
+  }
+}
+
+// The default sequence of an axis without a "program" entry: half and a quarter of its velocity limit
+// forwards, a quarter backwards, stop.
+DemoSequence default_sequence(const techobjects::SpeedAxis& axis) {
+  const double v = axis.data().DynamicLimits.MaxVelocity;
+  return DemoSequence{{0.5 * v, 0.25 * v, -0.25 * v, 0.0}, 3.0};
+}
+
+}  // namespace
+
+int demo_command(std::span<const std::string_view> args, std::ostream& out) {
+  const DemoOptions o = parse_demo_options(args);
+  if (o.help) {
+    out << kDemoUsage;
+    return 0;
+  }
+  // The configuration: the user's file or the built-in demo machine.
+  std::string text;
+  std::string source = "built-in demo machine";
+  if (o.config) {
+    std::ifstream in(*o.config, std::ios::binary);
+    if (!in) throw UsageError("demo: cannot read '" + *o.config + "': " + std::strerror(errno));
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    source = *o.config;
+  } else {
+    text = std::string(demo_machine_json());
+  }
+  const Json root = Json::parse(text, nullptr, false);
+  if (root.is_discarded()) throw UsageError("demo: " + source + ": malformed JSON");
+  DemoConfig config;
+  std::unique_ptr<techobjects::Runtime> runtime;
+  scenario::Problems problems;
+  load_demo_config(root, runtime, config, problems);
+  if (!problems.empty()) {
+    for (const auto& line : problems.lines())
+      std::cerr << "tomc: " << source << ": " << line << '\n';
+    return kExitBadInput;
+  }
+
+  // The machine: every TO on the page, the demo program per axis with its "automatic" switch.
+  diagnostics::Diagnostics diagnostics(config.diagnostics);
+  std::vector<std::unique_ptr<DemoAxisProgram>> programs;
+  for (const scenario::MachineObject& object : config.objects) {
+    if (object.speed_axis == nullptr) {
+      // Positioning/synchronous axes and external encoders: their views (no panel or demo program yet).
+      if (object.positioning_axis != nullptr) diagnostics.add(*object.positioning_axis);
+      if (object.external_encoder != nullptr) diagnostics.add(*object.external_encoder);
+      continue;
+    }
+    diagnostics.add(*object.speed_axis);
+    DemoSequence sequence = default_sequence(*object.speed_axis);
+    for (const auto& [name, s] : config.sequences) {
+      if (name != object.name) continue;
+      if (!s.velocities.empty()) sequence.velocities = s.velocities;
+      sequence.dwell_s = s.dwell_s;
+    }
+    programs.push_back(std::make_unique<DemoAxisProgram>(*object.speed_axis, std::move(sequence)));
+    diagnostics.add_switch(object.name + ".automatic",
+                           "the demo program runs " + object.name +
+                               " in its loop; switch off to release the axis for the control panel",
+                           programs.back()->automatic());
+  }
+  runtime->set_user_program([&programs](techobjects::Runtime& rt) {
+    for (auto& p : programs)
+      (*p)(rt.clock());
+  });
+  diagnostics.attach(*runtime);
+  runtime->start();
+
+  // Signals are taken synchronously by this thread: block them before any other thread starts.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  techobjects::RealTimeRunner runner(
+      techobjects::RealTimeRunnerConfig{std::chrono::nanoseconds(std::llround(config.cycle_time_s * 1e9)), 0,
+                                        false},
+      [&runtime] { runtime->step(); });
+
+  diagnostics::ServerOptions server_options = config.server;
+  if (o.port) server_options.port = *o.port;
+  if (o.bind) server_options.bind_address = *o.bind;
+  if (o.token) server_options.token = *o.token;
+  if (o.generate_token) server_options.token = random_token();
+  server_options.title = "tomc demo";
+  server_options.runner_statistics = [&runner] { return runner.statistics(); };
+  diagnostics::Server server(diagnostics, server_options);
+  try {
+    server.start();
+  } catch (const std::runtime_error& e) {
+    std::cerr << "tomc: demo: " << e.what() << '\n';
+    return 1;
+  }
+  runner.start();
+
+  out << "tomc demo: " << source << ", cycle " << config.cycle_time_s * 1000.0 << " ms:";
+  for (const auto& object : config.objects)
+    out << ' ' << object.name;
+  out << '\n';
+  const std::string url = server.url();
+  if (server_options.token.empty()) {
+    out << "tomc demo: diagnostics page (read-only; --generate-token allows control) at " << url << '\n';
+  } else if (o.generate_token) {
+    out << "tomc demo: diagnostics page at " << url << "#token=" << server_options.token << '\n';
+  } else {
+    out << "tomc demo: diagnostics page at " << url << " (control actions need the token)\n";
+  }
+  out << "tomc demo: Ctrl-C stops" << std::endl;
+
+  // Until Ctrl-C / SIGTERM, or the given number of seconds.
+  const auto deadline = o.seconds
+                            ? std::chrono::steady_clock::now() + std::chrono::duration<double>(*o.seconds)
+                            : std::chrono::steady_clock::time_point::max();
+  for (;;) {
+    timespec wait{0, 200'000'000};
+    if (sigtimedwait(&stop_signals, nullptr, &wait) > 0) break;
+    if (std::chrono::steady_clock::now() >= deadline) break;
+  }
+  server.stop();
+  runner.stop();
+  const auto stats = runner.statistics();
+  out << "tomc demo: stopped after " << stats.cycles << " cycles (" << stats.overruns << " overruns)\n";
+  return 0;
+}
+
+}  // namespace tomc::cli
