@@ -405,6 +405,10 @@ HardwareLimitResult HardwareLimitMonitor::update(const HardwareLimitInput& in) n
                      : min_on         ? LimitSide::kMin
                                       : LimitSide::kNone;
     r.bits = bits();
+    // A switch still active when homing ends (alarm 560, an aborted search) must raise 531 then: it counts
+    // as not seen, so its level is an edge in the first monitored cycle (spec 02 §4.1-§4.3).
+    prev_min_ = false;
+    prev_max_ = false;
     return r;
   }
 

@@ -290,9 +290,9 @@ void PositioningAxis::shift_position(double delta) noexcept {
   if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
   positioning_target_ += delta;
   limit_stop_position_ += delta;
-  controller_.reset();  // the delay lines refill with the shifted setpoint: no following-error step
+  controller_.shift(delta);  // histories move with the coordinates: no following-error step, no transient
   dynamic_filter_.shift(delta);
-  simulation_delay_.fill(setpoint_.position);
+  simulation_delay_.shift(delta);
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
 }
 

@@ -86,6 +86,11 @@ class SetpointDelayLine {
  public:
   // Fills the whole history with value (used at start so there is no step).
   void fill(double value) noexcept;
+  // Moves every stored sample by delta (a position shift by homing keeps the history's shape).
+  void shift(double delta) noexcept {
+    for (auto& v : buffer_)
+      v += delta;
+  }
   void push(double value) noexcept;
   // Value delay_cycles ago (0 = the last pushed value); 0 <= delay_cycles <= kMaxSetpointDelayCycles − 1,
   // clamped otherwise. Linear interpolation between neighbouring samples.
@@ -114,6 +119,14 @@ class PositionController {
   const PositionControlConfig& config() const noexcept { return config_; }
   // Forgets the history; the next update() starts without a step.
   void reset() noexcept;
+  // The coordinate system moved by delta (homing during motion, decision P7): the setpoint histories and the
+  // symmetry filter move with it, so the following error and the output are unchanged.
+  void shift(double delta) noexcept {
+    if (!started_) return;
+    control_line_.shift(delta);
+    fe_line_.shift(delta);
+    symmetry_state_ += delta;
+  }
 
   // One servo cycle.
   PositionControlOutput update(const PositionControlInput& in) noexcept;
