@@ -604,6 +604,7 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
     // Desynchronization starts: the gearing job ends (CommandAborted, §9.19.2 "GearOut active" row).
     d.active = true;
     d.start_sync_out = true;
+    d.source = active_.source;
     const MotionState at = sync_setpoint_;
     end_active(JobState::kAborted, 0);
     setpoint_ = at;
@@ -636,7 +637,9 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
 void SynchronousAxis::run_synchronous() noexcept {
   if (active_.id == 0 && pending_sync_.id == 0 && desync_.id == 0) return;
   if (phase_ != PowerPhase::kEnabled || blocked()) return;  // the alarm/disable paths end the jobs
-  const int source = active_.id != 0 ? active_.source : pending_sync_.source;
+  const int source = active_.id != 0  ? active_.source
+                     : desync_.active ? desync_.source
+                                      : pending_sync_.source;
   const LeadingValue leader = sample(source);
   if (source >= 0 && !leader.valid) {
     raise(kAlarmLeadingAxisDefective, 1);  // e.g. the external encoder of an actual-value coupling failed

@@ -500,6 +500,40 @@ TEST(Gearing, GP5GearOutByDynamicParameters) {
   EXPECT_EQ(m.F->synchronized_motion().FunctionState, 0);
 }
 
+// GearOut profile 1 (spec 07 §2.4, §6.7): the follower stops at SlavePosition over MasterStopDistance of
+// leader travel. Ratio 2, L at 100: over 100 units of L the follower covers 2 x 100 / 2 = 100, so
+// desynchronization starts at F = 900 and ends 100 / 100 = 1 s (1000 cycles) later at 1000, following the
+// leader all the way (the gearing job has ended by then: the blend keeps its leading value).
+TEST(Gearing, GP7GearOutOverALeadingValueDistance) {
+  GearingMachine m;
+  m.gear_pos.RatioNumerator = 2;
+  m.gear_pos.MasterSyncPosition = 0.0;
+  m.gear_pos.SyncProfileReference = 3;
+  m.gear_pos.MasterStartDistance = 10.0;
+  m.gear_pos.Execute = true;
+  m.run(1);
+  m.move_L.Velocity = 100.0;
+  m.move_L.Acceleration = 1.0e9;
+  m.move_L.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.gear_pos.InSync && m.f().Position >= 500.0; }, 5000), 0);
+  m.gear_out.SlavePosition = 1000.0;
+  m.gear_out.SyncProfileReference = 1;
+  m.gear_out.MasterStopDistance = 100.0;
+  m.gear_out.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.gear_out.StartSyncOut; }, 5000), 0);
+  EXPECT_NEAR(m.f().Position, 900.0, 0.5);
+  EXPECT_TRUE(m.gear_pos.CommandAborted);
+  const double f_start = m.f().Position;
+  m.run(500);  // half of the leader distance: the quintic blend is symmetric, half of its travel is done
+  EXPECT_GT(m.f().Position, f_start + 40.0);
+  EXPECT_GT(m.f().Velocity, 50.0);
+  const int cycles = m.run_until([&] { return m.gear_out.Done; }, 1000);
+  EXPECT_NEAR(cycles + 500, 1000, 3);
+  EXPECT_NEAR(m.f().Position, 1000.0, 1e-6);
+  EXPECT_DOUBLE_EQ(m.f().Velocity, 0.0);
+  EXPECT_FALSE(m.gear_out.Error);
+}
+
 // GP-6: GearOut profile 5 cancels a pending GearInPos (CommandAborted, GearOut Done); GearOut without gearing
 // -> 16#8077.
 TEST(Gearing, GP6GearOutCancelAndNoGearing) {

@@ -1,5 +1,5 @@
-// tomc — the project's command-line program. Subcommands: telegram, sim, demo, gateway-sim (more arrive with later
-// layers).
+// tomc — the project's command-line program. Subcommands: telegram, sim, demo, gateway-sim (more arrive with
+// later layers).
 #include <exception>
 #include <iostream>
 #include <string_view>

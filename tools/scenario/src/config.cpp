@@ -291,6 +291,17 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
       }
     }
   }
+  // An encoder-only device measures a shaft that something else turns (docs/simulated-drive.md): its speed.
+  if (const Json* v = r.get("external_speed")) {
+    if (auto speed = detail::read_number(*v, r.path_of("external_speed"), problems)) {
+      if (r.has("telegram")) {
+        problems.add(r.path_of("external_speed"),
+                     "only for an encoder-only device (no drive telegram): a drive turns its own shaft");
+      } else {
+        settings.external_speed = *speed;
+      }
+    }
+  }
   if (const Json* v = r.get("supplementary_telegram")) {
     if (auto t = detail::read_integer(*v, r.path_of("supplementary_telegram"), 0, 65535, false, problems)) {
       if (*t != 0 && *t != 750) {

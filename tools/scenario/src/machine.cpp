@@ -314,6 +314,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       }
     } else if (has_drive) {
       auto owned = std::make_unique<drives::SimulatedDrive>(drive.device_config(), drive.parameters);
+      owned->set_external_speed(drive.external_speed);
       drive_ptr = owned.get();
       io = &runtime.add_device(std::move(owned));
     }

@@ -176,6 +176,7 @@ class SynchronousAxis final : public PositioningAxis {
     double y_stop = 0.0;
     LeaderDomainBlend blend{};
     bool start_sync_out = false;
+    int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
   };
 
   int find_source(const LeadingValueSource* master) const noexcept;

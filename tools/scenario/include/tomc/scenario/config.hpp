@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/techobjects/external_encoder_data.hpp"
 #include "tomc/techobjects/positioning_axis_data.hpp"
-#include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/techobjects/speed_axis_data.hpp"
 
 namespace tomc::scenario {
@@ -65,6 +65,7 @@ struct DriveSettings {
   std::uint16_t supplementary_telegram = 0;  // 0 or 750
   std::uint16_t encoder_telegram = 0;        // 0, 81 or 83: a separately connected encoder (slot kEncoder1)
   drives::SimulatedDriveParameters parameters{};
+  double external_speed = 0.0;  // encoder-only device: speed of the measured shaft (load units per second)
   // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and
   // the simulated-drive parameters do not apply (gateway_adapter.hpp).
   std::optional<GatewayAdapterSettings> gateway;
