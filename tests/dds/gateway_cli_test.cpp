@@ -162,3 +162,40 @@ TEST(GatewayCli, AdapterObjectProblemsNameTheirPaths) {
 }
 
 }  // namespace
+
+// `tomc demo --gateway DOMAIN` (issue 8: the demo pointed at the gateway simulator with one option): every
+// drive of the machine goes through the gateway, each TO's device named like the TO. The demo connects before
+// its first cycle: no warning means both directions of every device answered (docs/gateway.md §10).
+TEST(GatewayCli, DemoThroughTheGatewayWithOneOption) {
+  const int domain = 154;
+  const auto dir = test_directory("demo");
+  std::ofstream(dir / "machine.json") << R"({ "cycle_time": 0.001, "technology_objects": [
+    { "name": "Conveyor", "type": "TO_SpeedAxis", "drive": { "adapter": "simulated", "telegram": 2 } },
+    { "name": "Slide", "type": "TO_PositioningAxis", "drive": { "adapter": "simulated", "telegram": 3 } } ] })";
+  GatewayProcess gateway(dir, gateway_config(domain, {{"Conveyor", 2}, {"Slide", 3}}));
+  const std::string demo = "demo --config " + (dir / "machine.json").string() +
+                           " --port 0 --seconds 1 --gateway " + std::to_string(domain) +
+                           " --gateway-partition " + test_partition();
+  const CliRun r = tomc_cli(dir, demo);
+  EXPECT_EQ(r.status, 0) << r.err << gateway.log();
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("Conveyor Slide"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
+// The same without a gateway on the domain: the demo still runs (the TOs raise their link alarms) and says
+// why.
+TEST(GatewayCli, DemoWithoutAGatewayWarns) {
+  const auto dir = test_directory("demo_nogw");
+  std::ofstream(dir / "machine.json") << R"({ "cycle_time": 0.001, "technology_objects": [
+    { "name": "Conveyor", "type": "TO_SpeedAxis", "drive": { "telegram": 2 } } ] })";
+  const CliRun r =
+      tomc_cli(dir, "demo --config " + (dir / "machine.json").string() +
+                        " --port 0 --seconds 0.5 --gateway 155 --gateway-partition " + test_partition());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("tomc: demo: warning: Conveyor: no gateway"), std::string::npos) << r.err;
+  const CliRun usage = tomc_cli(dir, "demo --gateway-partition x");
+  EXPECT_EQ(usage.status, 2);
+  EXPECT_NE(usage.err.find("--gateway-partition needs --gateway"), std::string::npos) << usage.err;
+  std::filesystem::remove_all(dir);
+}

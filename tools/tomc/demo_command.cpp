@@ -25,6 +25,7 @@
 #include "demo_program.hpp"
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/server.hpp"
+#include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/scenario/machine.hpp"
 #include "tomc/techobjects/realtime_runner.hpp"
 
@@ -34,7 +35,7 @@ namespace {
 
 constexpr std::string_view kDemoUsage =
     "usage: tomc demo [--config FILE] [--port N] [--bind ADDRESS] [--token TOKEN | --generate-token]\n"
-    "                 [--seconds S]\n"
+    "                 [--seconds S] [--gateway DOMAIN [--gateway-partition P]]\n"
     "\n"
     "Runs a simulated machine in real time with a user program that moves its axes in a loop, and serves "
     "the\n"
@@ -48,6 +49,9 @@ constexpr std::string_view kDemoUsage =
     "  --token TOKEN      allow control actions to a page that presents TOKEN (default: read-only)\n"
     "  --generate-token   make a random token and print it in the URL\n"
     "  --seconds S        stop after S seconds (default: run until Ctrl-C)\n"
+    "  --gateway DOMAIN   every drive through the Fast DDS gateway on DOMAIN (0..232), each TO's device\n"
+    "                     named like the TO (e.g. tomc gateway-sim; docs/gateway.md)\n"
+    "  --gateway-partition P  the gateway's DDS partition (default: none)\n"
     "\n"
     "exit status: 0 stopped normally, 1 could not serve (e.g. port in use), 2 bad command line or config.\n";
 
@@ -58,6 +62,8 @@ struct DemoOptions {
   std::optional<std::string> token;
   bool generate_token = false;
   std::optional<double> seconds;
+  std::optional<int> gateway_domain;
+  std::string gateway_partition;
   bool help = false;
 };
 
@@ -105,11 +111,19 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
       const double s = number_of<double>(value_of(args, i, "--seconds"), "--seconds");
       if (!(s > 0.0) || !std::isfinite(s)) throw UsageError("demo: --seconds: a positive number");
       o.seconds = s;
+    } else if (is_option(a, "--gateway-partition")) {
+      o.gateway_partition = value_of(args, i, "--gateway-partition");
+    } else if (is_option(a, "--gateway")) {
+      const int domain = number_of<int>(value_of(args, i, "--gateway"), "--gateway");
+      if (domain < 0 || domain > 232) throw UsageError("demo: --gateway: a DDS domain 0 .. 232");
+      o.gateway_domain = domain;
     } else {
       throw UsageError("demo: unknown argument '" + std::string(a) + "' (try: tomc demo --help)");
     }
   }
   if (o.token && o.generate_token) throw UsageError("demo: --token and --generate-token exclude each other");
+  if (!o.gateway_partition.empty() && !o.gateway_domain)
+    throw UsageError("demo: --gateway-partition needs --gateway");
   return o;
 }
 
@@ -170,7 +184,7 @@ std::optional<double> positive_number(const Json& v, const std::string& path, sc
 // Reads the file into a runtime: cycle_time and technology_objects as tomc sim reads them, then the optional
 // "program" and "diagnostics" sections.
 void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& runtime, DemoConfig& config,
-                      scenario::Problems& problems) {
+                      scenario::GatewayLinks& gateways, scenario::Problems& problems) {
   if (!root.is_object()) {
     problems.add("", "expected a JSON object, got " + kind_of(root));
     return;
@@ -194,7 +208,7 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
     for (std::size_t i = 0; i < objects->size(); ++i) {
       if (auto o = scenario::load_technology_object(
               (*objects)[i], "technology_objects[" + std::to_string(i) + "]", config.cycle_time_s, *runtime,
-              config.objects, problems, "tomc demo")) {
+              config.objects, problems, "tomc demo", &gateways)) {
         config.objects.push_back(std::move(*o));
       }
     }
@@ -287,6 +301,25 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
   }
 }
 
+// --gateway: every TO's drive becomes the device of the same name behind the gateway, with the telegrams the
+// file gives (the drive model's parameters belong to the gateway's configuration, docs/gateway.md).
+void route_drives_through_gateway(Json& root, int domain, const std::string& partition) {
+  const auto objects = root.find("technology_objects");
+  if (objects == root.end() || !objects->is_array()) return;  // reported by the loader
+  for (auto& object : *objects) {
+    if (!object.is_object() || !object.contains("drive") || !object["drive"].is_object()) continue;
+    const Json& old = object["drive"];
+    Json drive = Json::object();
+    Json adapter = {{"type", "dds_gateway"}, {"domain", domain}, {"device", object.value("name", "")}};
+    if (!partition.empty()) adapter["partition"] = partition;
+    drive["adapter"] = adapter;
+    for (const char* key : {"telegram", "supplementary_telegram", "encoder_telegram"}) {
+      if (old.contains(key)) drive[key] = old[key];
+    }
+    object["drive"] = drive;
+  }
+}
+
 // The default sequence of an axis without a "program" entry: half and a quarter of its velocity limit
 // forwards, a quarter backwards, stop.
 DemoSequence default_sequence(const techobjects::SpeedAxis& axis) {
@@ -315,12 +348,14 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   } else {
     text = std::string(demo_machine_json());
   }
-  const Json root = Json::parse(text, nullptr, false);
+  Json root = Json::parse(text, nullptr, false);
   if (root.is_discarded()) throw UsageError("demo: " + source + ": malformed JSON");
+  if (o.gateway_domain) route_drives_through_gateway(root, *o.gateway_domain, o.gateway_partition);
   DemoConfig config;
   std::unique_ptr<techobjects::Runtime> runtime;
   scenario::Problems problems;
-  load_demo_config(root, runtime, config, problems);
+  scenario::GatewayLinks gateways;  // outlives the runtime's drives that use it
+  load_demo_config(root, runtime, config, gateways, problems);
   if (!problems.empty()) {
     for (const auto& line : problems.lines())
       std::cerr << "tomc: " << source << ": " << line << '\n';
@@ -382,6 +417,10 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   } catch (const std::runtime_error& e) {
     std::cerr << "tomc: demo: " << e.what() << '\n';
     return 1;
+  }
+  if (!gateways.empty()) {
+    for (const auto& warning : gateways.connect())
+      std::cerr << "tomc: demo: warning: " << warning << '\n';
   }
   runner.start();
 
