@@ -264,33 +264,36 @@ std::uint16_t SynchronousAxis::arbitrate_synchronous(NewJob row) noexcept {
 // ---------------------------------------------------------------------------------------------------------
 // Jobs
 
-Submission SynchronousAxis::gear_in(const GearInInputs& in) noexcept {
-  if (in.RatioNumerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
-  if (in.RatioDenominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
+// What MC_GearIn and MC_GearInVelocity share (spec 07 §2.1, §2.3): the parameter checks, the leader, the
+// §9.19.2 arbitration, and the start of an active gearing that synchronizes at once. The caller sets what
+// differs (velocity limit, position control, InSync rules) on active_ afterwards.
+Submission SynchronousAxis::start_gearing(JobKind kind, const LeadingValueSource* master,
+                                          std::int32_t numerator, std::int32_t denominator,
+                                          double acceleration, double deceleration, double jerk) noexcept {
+  if (numerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
+  if (denominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
   ProfileLimits limits;
-  if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Acceleration,
-                                      in.Deceleration, in.Jerk, limits))
+  if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), acceleration, deceleration,
+                                      jerk, limits))
     return Submission::reject(*e);
   if (const auto e = motion_prerequisites()) return Submission::reject(e);
   int source = -1;
-  if (const auto e = check_master(in.Master, source)) return Submission::reject(*e);
+  if (const auto e = check_master(master, source)) return Submission::reject(*e);
   bool queue = false;
   if (const auto e = arbitrate_motion(NewJob::kGearIn, queue)) return Submission::reject(e);
   abort_pending(0);
-  const JobId id = new_job(JobKind::kGearIn, JobState::kActive);
+  const JobId id = new_job(kind, JobState::kActive);
   motion_ = Motion{};
   motion_.id = id;
-  motion_.kind = JobKind::kGearIn;
+  motion_.kind = kind;
   active_ = ActiveSync{};
   active_.id = id;
-  active_.kind = JobKind::kGearIn;
+  active_.kind = kind;
   active_.source = source;
-  active_.numerator = in.RatioNumerator;
-  active_.denominator = in.RatioDenominator;
+  active_.numerator = numerator;
+  active_.denominator = denominator;
   active_.phase = Phase::kSynchronizing;
-  active_.limits = limits;  // velocity = min(MaxVelocity, Velocity): synchronization completes only below it
-  active_.direction = sign_or(sample(source).velocity, 0.0);
-  position_controlled_ = true;  // gearing forces position control (spec 07 §1.7)
+  active_.limits = limits;  // MC_GearIn: velocity = MaxVelocity, synchronization completes only below it
   positioning_.cancel();
   sync_setpoint_ = setpoint_;
   generator_ = Generator::kSynchronous;
@@ -298,41 +301,25 @@ Submission SynchronousAxis::gear_in(const GearInInputs& in) noexcept {
   return Submission::accept(id);
 }
 
+Submission SynchronousAxis::gear_in(const GearInInputs& in) noexcept {
+  const Submission s = start_gearing(JobKind::kGearIn, in.Master, in.RatioNumerator, in.RatioDenominator,
+                                     in.Acceleration, in.Deceleration, in.Jerk);
+  if (!s.accepted()) return s;
+  active_.direction = sign_or(sample(active_.source).velocity, 0.0);
+  position_controlled_ = true;  // gearing forces position control (spec 07 §1.7)
+  return s;
+}
+
 Submission SynchronousAxis::gear_in_velocity(const GearInVelocityInputs& in) noexcept {
-  if (in.RatioNumerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
-  if (in.RatioDenominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
-  ProfileLimits limits;
-  if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Acceleration,
-                                      in.Deceleration, in.Jerk, limits))
-    return Submission::reject(*e);
-  if (const auto e = motion_prerequisites()) return Submission::reject(e);
-  int source = -1;
-  if (const auto e = check_master(in.Master, source)) return Submission::reject(*e);
-  bool queue = false;
-  if (const auto e = arbitrate_motion(NewJob::kGearIn, queue)) return Submission::reject(e);
-  abort_pending(0);
-  const JobId id = new_job(JobKind::kGearInVelocity, JobState::kActive);
-  motion_ = Motion{};
-  motion_.id = id;
-  motion_.kind = JobKind::kGearInVelocity;
-  active_ = ActiveSync{};
-  active_.id = id;
-  active_.kind = JobKind::kGearInVelocity;
-  active_.source = source;
-  active_.numerator = in.RatioNumerator;
-  active_.denominator = in.RatioDenominator;
-  active_.phase = Phase::kSynchronizing;
+  const Submission s = start_gearing(JobKind::kGearInVelocity, in.Master, in.RatioNumerator,
+                                     in.RatioDenominator, in.Acceleration, in.Deceleration, in.Jerk);
+  if (!s.accepted()) return s;
   // The velocity is limited only by the drive during velocity gearing (spec 07 §2.3).
-  active_.limits = limits;
   active_.limits.velocity = std::numeric_limits<double>::infinity();
   active_.continuous_update = in.ContinuousUpdate;
   active_.start_sync = true;
   position_controlled_ = in.PositionControlled;  // spec 07 §1.7
-  positioning_.cancel();
-  sync_setpoint_ = setpoint_;
-  generator_ = Generator::kSynchronous;
-  last_synchronous_job_ = id;
-  return Submission::accept(id);
+  return s;
 }
 
 Submission SynchronousAxis::gear_in_pos(const GearInPosInputs& in) noexcept {

@@ -183,6 +183,9 @@ class SynchronousAxis final : public PositioningAxis {
   LeadingValue sample(int source) const noexcept;
   std::optional<std::uint16_t> check_master(const LeadingValueSource* master, int& source) noexcept;
   double ratio(std::int32_t n, std::int32_t d) const noexcept { return static_cast<double>(n) / d; }
+  Submission start_gearing(JobKind kind, const LeadingValueSource* master, std::int32_t numerator,
+                           std::int32_t denominator, double acceleration, double deceleration,
+                           double jerk) noexcept;
   double gear_line(const ActiveSync& a, double x) const noexcept;
   void end_active(JobState state, std::uint16_t error_id) noexcept;
   void end_pending(JobState state, std::uint16_t error_id) noexcept;
