@@ -423,7 +423,7 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
   cycle_index_ = k;
 }
 
-void ActualValueChain::set_position(double value, ModuloCycleRule rule) noexcept {
+void ActualValueChain::set_position(double value, ModuloCycleRule rule, double home_position) noexcept {
   if (problem_ || !std::isfinite(value)) return;
   const double old_position = position();
   offset_ = value - static_cast<double>(tracker_.counts()) * units_per_count_;
@@ -435,9 +435,15 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule) noexcept
       case ModuloCycleRule::kShortestDistance:
         add_cycles(modulo_cycle_change(old_position, new_position, start, length));
         break;
-      case ModuloCycleRule::kHomePositionHalf:
-        modulo_cycle_ = new_position <= start + 0.5 * length ? 0 : 1;  // A1: literal "1"
+      case ModuloCycleRule::kHomePositionHalf: {
+        // The rule applies to the home position ("posizione del punto di riferimento", seed 004 §6.1.4), not
+        // to where the axis is when the mark is evaluated; the travel from there counts like a motion (H8).
+        const double home = std::isfinite(home_position) ? home_position : value;
+        const double home_in_range = modulo_wrap(home, start, length).position;
+        modulo_cycle_ = home_in_range <= start + 0.5 * length ? 0 : 1;  // A1: literal "1"
+        add_cycles(cycle_index(value) - cycle_index(home));
         break;
+      }
       case ModuloCycleRule::kZero:
         modulo_cycle_ = 0;
         break;

@@ -173,11 +173,14 @@ void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
     encoder_.acknowledge();
     if (restart_requested_) {
       const RetainedSensorState retained = encoder_.chain().retained_state();
+      const std::int32_t adjusted = db_.StatusSensor.Adjusted;
       db_ = start_;
       connection_.restart(connection_config_);
       configure();
       if (encoder_.chain().absolute_type()) {
+        // Adjusted stays until new encoder settings are downloaded; a restart is not one (spec 02 §5.1).
         encoder_.chain().power_up(&retained);
+        db_.StatusSensor.Adjusted = adjusted;
       } else {
         homed_ = false;
       }
@@ -265,7 +268,7 @@ Submission ExternalEncoder::home(const HomeInputs& in) noexcept {
     return Submission::reject(error_id::kHomingModeNotAvailable);
   if (in.Mode == 13 && absolute) return Submission::reject(error_id::kHomingModeNotAvailable);
   if (in.Mode == 9) {
-    if (passive_job_ != 0 && !homed_) {
+    if (passive_job_ != 0) {  // also on a homed encoder (Mode 2), H10
       jobs_.set(passive_job_, JobState::kAborted);
       passive_job_ = 0;
       passive_search_.stop(encoder_);
@@ -308,7 +311,7 @@ Submission ExternalEncoder::home(const HomeInputs& in) noexcept {
 // The position at the mark becomes `value`; the present position is `value` plus the travel since the mark.
 void ExternalEncoder::assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept {
   const double now = value + (encoder_.chain().continuous_position() - mark_position);
-  (void)encoder_.set_position(now, rule);
+  (void)encoder_.set_position(now, rule, value);  // passive homing: the rule looks at the home position (H8)
   homed_ = true;
   if (rule == ModuloCycleRule::kHomePositionHalf) {  // passive homing: referenced (spec 02 §5.1)
     if (absolute_encoder() && db_.StatusSensor.Adjusted == 0) store_adjustment();

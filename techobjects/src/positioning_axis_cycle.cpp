@@ -881,6 +881,11 @@ void PositioningAxis::restart() noexcept {
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
   abort_synchronous(0);
+  // An adjusted absolute encoder stays adjusted until new encoder settings are downloaded, and a restart is
+  // not such a download: its retained offset is restored below (spec 02 §5.1, §5.12).
+  std::array<std::int32_t, 4> adjusted{};  // StatusSensor[1..4]
+  for (std::size_t n = 0; n < adjusted.size(); ++n)
+    adjusted[n] = db_.StatusSensor[n].Adjusted;
   db_ = start_;
   communication_times_ = communication_times_start_;
   assign(db_.StatusWord, changed, false);
@@ -897,6 +902,10 @@ void PositioningAxis::restart() noexcept {
   configure_components();
   if (encoder_.chain().absolute_type()) {
     encoder_.chain().power_up(&retained);
+    for (std::size_t n = 0; n < adjusted.size(); ++n) {
+      const bool absolute = db_.Sensor[n].Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+      if (absolute) db_.StatusSensor[n].Adjusted = adjusted[n];
+    }
   } else {
     homed_ = false;
     actual_position_ = 0.0;

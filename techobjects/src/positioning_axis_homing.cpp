@@ -44,12 +44,12 @@ void PositioningAxis::homing_observe() noexcept {
 
 // The actual position at the mark becomes `value` (spec 02 §5.5/§5.6): the present actual position is `value`
 // plus the distance travelled since the mark. The setpoint moves with it; the modulo counter follows the
-// home-position rule of spec 01 §2.4.1.
-void PositioningAxis::assign_reference(double mark_position, double value) noexcept {
+// home-position rule of spec 01 §2.4.1 for `home_position` (H8).
+void PositioningAxis::assign_reference(double mark_position, double value, double home_position) noexcept {
   const double now = value + (actual_position_ - mark_position);
   double delta = 0.0;
   if (device_ != nullptr) {
-    delta = encoder_.set_position(now, ModuloCycleRule::kHomePositionHalf);
+    delta = encoder_.set_position(now, ModuloCycleRule::kHomePositionHalf, home_position);
   } else {
     delta = now - actual_position_;
   }
@@ -173,7 +173,7 @@ void PositioningAxis::run_homing() noexcept {
       case HomingPhase::kSearchEdge: {
         const bool edge = homing_.mark_on_entering ? input_edges_.entered : input_edges_.left;
         if (edge && in_homing_direction) {
-          assign_reference(input_edges_.position, homing_.mark_value);
+          assign_reference(input_edges_.position, homing_.mark_value, homing_.home_position);
           homing_.phase = HomingPhase::kToHome;
         }
         break;
@@ -188,7 +188,7 @@ void PositioningAxis::run_homing() noexcept {
         break;
       case HomingPhase::kSearchMark:
         if (mark_position_) {
-          assign_reference(*mark_position_, homing_.mark_value);
+          assign_reference(*mark_position_, homing_.mark_value, homing_.home_position);
           homing_.phase = HomingPhase::kToHome;
         }
         break;
@@ -223,7 +223,7 @@ void PositioningAxis::run_homing() noexcept {
 void PositioningAxis::run_passive_homing() noexcept {
   const auto mark = passive_search_.step(actual_velocity_, input_edges_, mark_position_, encoder_);
   if (mark) {
-    assign_reference(*mark, passive_.value);
+    assign_reference(*mark, passive_.value, passive_.value);
     set_job(passive_.id, JobState::kDone);
     passive_ = PassiveHomingJob{};
   }
@@ -242,8 +242,9 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
 
   switch (in.Mode) {
     case 9: {
-      // Abort passive homing (spec 02 §5.6): the passive job ends with CommandAborted; Mode 9 is Done.
-      if (passive_.id != 0 && !homed()) {
+      // Abort passive homing (spec 02 §5.6): the passive job ends with CommandAborted; Mode 9 is Done. Also
+      // on a homed axis: Mode 2 keeps "homed", and the §6.1 matrix aborts every passive job (H10).
+      if (passive_.id != 0) {
         end_passive_homing(JobState::kAborted);
       }
       return Submission::accept(new_job(JobKind::kHome, JobState::kDone));
@@ -258,7 +259,7 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
       const JobId id = new_job(JobKind::kHome, JobState::kActive);
       if (virtual_axis()) {
         // Virtual and simulated axes: homing is executed directly, without motion (spec 01 §2.5).
-        assign_reference(actual_position_, home);
+        assign_reference(actual_position_, home, home);
         set_job(id, JobState::kDone);
         update_status();
         return Submission::accept(id);
@@ -280,7 +281,7 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
       // Modes 8 and 10 reset "homed" of an incremental encoder at the start; Mode 2 keeps it (spec 02 §5.6).
       if (in.Mode != 2 && !absolute) homed_ = false;
       if (virtual_axis()) {
-        assign_reference(actual_position_, value);
+        assign_reference(actual_position_, value, value);
         set_job(id, JobState::kDone);
         update_status();
         return Submission::accept(id);

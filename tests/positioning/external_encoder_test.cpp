@@ -273,4 +273,89 @@ TEST(ExternalEncoderHoming, AbsoluteAdjustmentIsRetentive) {
   EXPECT_TRUE(techobjects::test(e.data().StatusWord, StatusWordBit::kHomingDone));
 }
 
+// spec 02 §5.1: an adjusted absolute encoder stays adjusted until new encoder settings are downloaded;
+// MC_Reset with Restart = TRUE is not such a download, so Adjusted and the position stay (spec 02 §5.12).
+TEST(ExternalEncoderHoming, RestartKeepsAdjustedOfAnAbsoluteEncoder) {
+  techobjects::ExternalEncoderData d;
+  d.Sensor.Type = static_cast<std::int32_t>(techobjects::SensorEncoderType::ABSOLUTE);
+  d.Sensor.Parameter.DeterminableRevolutions = 4096;
+  d.Modulo.Enable = false;
+  EncoderMachine m(81, d);
+  m.run(10);
+  m.home.Mode = 7;
+  m.home.Position = 500.0;
+  m.home.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(m.home.Done);
+  ASSERT_EQ(m.db().StatusSensor.Adjusted, 1);
+  m.reset.Restart = true;
+  m.reset.Execute = true;
+  m.run(3);
+  ASSERT_TRUE(m.reset.Done);
+  EXPECT_EQ(m.db().StatusSensor.Adjusted, 1);
+  EXPECT_NEAR(m.db().ActualPosition, 500.0, 0.01);
+  EXPECT_TRUE(techobjects::test(m.db().StatusWord, StatusWordBit::kHomingDone));
+}
+
+// Decision H10 (spec 03 §6.1 row MC_Home Mode 9: 'A' against passive homing; spec 02 §5.6): Mode 9 aborts a
+// passive Mode 2 job also when the encoder is homed (Mode 2 keeps "homed"); the mark then changes nothing.
+TEST(ExternalEncoderHoming, Mode9AbortsPassiveMode2OnAHomedEncoder) {
+  EncoderMachine m;
+  m.power.Enable = true;
+  m.run(10);
+  m.home.Mode = 0;
+  m.home.Position = 0.0;
+  m.home.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(m.home.Done);
+  m.home.Execute = false;
+  m.run(1);
+  instructions::MC_Home<ExternalEncoder> passive;
+  instructions::MC_Home<ExternalEncoder> abort_passive;
+  passive.Mode = 2;
+  passive.Position = 200.0;
+  passive.Execute = true;
+  passive(*m.encoder);
+  m.run(1);
+  passive(*m.encoder);
+  ASSERT_TRUE(passive.Busy);
+  abort_passive.Mode = 9;
+  abort_passive.Execute = true;
+  abort_passive(*m.encoder);
+  m.run(1);
+  abort_passive(*m.encoder);
+  passive(*m.encoder);
+  EXPECT_TRUE(abort_passive.Done);
+  EXPECT_TRUE(passive.CommandAborted);
+  EXPECT_FALSE(passive.Busy);
+  m.drive->set_external_speed(90.0);
+  m.run(1500);  // the zero mark at 90° passes
+  passive(*m.encoder);
+  EXPECT_FALSE(passive.Done);
+  EXPECT_NEAR(m.db().ActualPosition, m.drive->load_position(), 0.2);  // still the Mode 0 coordinates
+}
+
+// Decision H8 (seed 004 §6.1.4: the home position decides the modulo counter): passive Mode 2 to 180° while
+// the shaft turns at 90 °/s: the mark is evaluated a little after the shaft passed it, so the present
+// position is above 180 (upper half), but the home position 180 is on the inclusive boundary: counter 0.
+TEST(ExternalEncoderHoming, PassiveHomingCounterFollowsTheHomePosition) {
+  techobjects::ExternalEncoderData d;
+  d.Sensor.PassiveHoming.Direction = 0;  // positive
+  EncoderMachine m(81, d);
+  ASSERT_TRUE(m.db().Modulo.Enable);
+  m.power.Enable = true;
+  m.run(10);
+  m.home.Mode = 2;
+  m.home.Position = 180.0;
+  m.home.Execute = true;
+  m.run(2);
+  m.drive->set_external_speed(90.0);
+  for (int i = 0; i < 3000 && !m.home.Done; ++i)
+    m.run(1);
+  ASSERT_TRUE(m.home.Done);
+  // Boundary inclusive: home 180 -> counter 0 although the position is already past 180 at the mark report.
+  EXPECT_GT(m.db().ActualPosition, 180.0);
+  EXPECT_EQ(m.db().ActualModuloCycle, 0);
+}
+
 }  // namespace

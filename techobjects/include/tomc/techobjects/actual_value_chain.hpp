@@ -20,6 +20,7 @@
 // System = kLinear.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -157,7 +158,8 @@ std::int32_t modulo_cycle_change(double old_position, double new_position, doubl
 // How set_position() changes ActualModuloCycle (spec 01 §2.4.1).
 enum class ModuloCycleRule : std::uint8_t {
   kShortestDistance,  // direct homing Mode 0/1/11/12, incremental adjustment 13, absolute adjustment 6
-  kHomePositionHalf,  // active/passive homing Mode 2/3/5/8/10: 0 if pos <= Start + Length/2, else 1 (A1)
+  kHomePositionHalf,  // active/passive homing Mode 2/3/5/8/10: 0 if the home position <= Start + Length/2,
+                      // else 1 (A1); the travel between home position and `position` is counted as motion
   kZero,              // absolute encoder adjustment Mode 7
 };
 
@@ -231,8 +233,10 @@ class ActualValueChain {
   void update(const EncoderSample& sample) noexcept;
 
   // Homing / absolute encoder adjustment: the actual position becomes `position` (direct set). Incremental:
-  // homing offset; absolute types: new AbsEncoderOffset.
-  void set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance) noexcept;
+  // homing offset; absolute types: new AbsEncoderOffset. kHomePositionHalf decides the counter from
+  // `home_position` (the same coordinate as `position`; NaN: `position` itself), H8.
+  void set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance,
+                    double home_position = std::numeric_limits<double>::quiet_NaN()) noexcept;
   // Backlash compensation (backlash.hpp): the position moves by `delta` without motion of the encoder; the
   // modulo cycle counter follows a crossed range boundary like a motion.
   void shift_offset(double delta) noexcept;

@@ -43,9 +43,10 @@ class EncoderChannel {
   void acknowledge() noexcept { acknowledge_cycles_ = kAcknowledgeCycles; }
   // Direct homing (MC_Home 0/1/11/12, spec 02 §5.7): the actual position becomes `position`, the modulo cycle
   // counter follows the shortest way (spec 01 §2.4.1). Returns how far the continuous position moved.
-  double set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance) noexcept {
+  double set_position(double position, ModuloCycleRule rule = ModuloCycleRule::kShortestDistance,
+                      double home_position = std::numeric_limits<double>::quiet_NaN()) noexcept {
     const double before = chain_.continuous_position();
-    chain_.set_position(position, rule);
+    chain_.set_position(position, rule, home_position);
     return chain_.continuous_position() - before;
   }
 

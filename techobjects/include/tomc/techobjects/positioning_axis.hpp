@@ -227,7 +227,7 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   void run_passive_homing() noexcept;
   void end_passive_homing(JobState state, std::uint16_t error_id = 0) noexcept;
   void homing_move(double direction, double velocity) noexcept;
-  void assign_reference(double mark_position, double value) noexcept;
+  void assign_reference(double mark_position, double value, double home_position) noexcept;
   void fail_homing(std::uint32_t cause) noexcept;
   bool input_active() const noexcept;
   void store_adjustment() noexcept;
