@@ -432,6 +432,7 @@ void SimulatedDrive::integrate(double dt) noexcept {
     load_speed_ = 0.0;
     blocked_ = true;
   };
+  if (fixed_stops_broken_) return;
   if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0)
     stop_at(*m.positive_fixed_stop);
   if (m.negative_fixed_stop && load_position_ <= *m.negative_fixed_stop && torque_ <= 0.0)
@@ -686,8 +687,9 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       tg::Meldw meldw;
       meldw.set(tg::MeldwBit::kRampFunctionCompleted,
                 state_ != tg::DriveState::kS5aRampStop && state_ != tg::DriveState::kS5bQuickStop);
-      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold,
-                std::fabs(torque_) < 0.9 * p_.torque_limit_nm);
+      // Torque utilisation (r0033) is relative to the limit in force, MOMRED included (p2194 = 90 %).
+      const double active_limit = torque_ >= 0.0 ? cycle_torque_limit_positive_ : -cycle_torque_limit_negative_;
+      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_) < 0.9 * active_limit);
       meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold,
                 std::fabs(speed_rpm) < p_.standstill_threshold_rpm);
       meldw.set(tg::MeldwBit::kSpeedAtOrBelowThreshold2, std::fabs(speed_rpm) <= p_.standstill_threshold_rpm);

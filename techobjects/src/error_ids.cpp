@@ -82,6 +82,13 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "bit mask selects bits the technology object owns";
     case kNoDriveTelegram:
       return "no drive telegram (virtual axis or simulation)";
+    case kInvalidTorqueLimit:
+      return "invalid torque/force limit (not finite or above 1E12)";
+    case kNoTorqueReduction:
+      return "the drive telegram carries no torque reduction (MOMRED, telegrams 102 to 106)";
+    case kInvalidClampingConfiguration:
+      return "fixed-stop detection: PositionTolerance must be below FollowingErrorDeviation, which must be "
+             "below the maximum following error";
     default:
       return "unknown ErrorID";
   }

@@ -87,6 +87,11 @@ void PositioningMonitor::cancel() noexcept {
   status_ = PositioningStatus{};
 }
 
+void PositioningMonitor::complete() noexcept {
+  state_ = State::kFinished;
+  status_ = PositioningStatus{PositioningOutcome::kDone, 0};
+}
+
 PositioningStatus PositioningMonitor::update(double actual_position) noexcept {
   if (state_ == State::kIdle || state_ == State::kFinished) return status_;
   const bool in = std::fabs(target_ - actual_position) <= config_.Window;  // NaN counts as outside

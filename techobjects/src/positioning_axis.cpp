@@ -21,9 +21,9 @@ bool finite(double x) {
   return std::isfinite(x);
 }
 
-bool carries(std::uint16_t telegram, tg::Signal signal) {
+bool carries(std::uint16_t telegram, tg::Signal signal, tg::Direction direction = tg::Direction::kActual) {
   if (telegram == 0) return false;
-  const auto codec = tg::TelegramCodec::create(telegram, tg::Direction::kActual);
+  const auto codec = tg::TelegramCodec::create(telegram, direction);
   return static_cast<bool>(codec) && codec->carries(signal);
 }
 
@@ -85,6 +85,11 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   if (start_.PositionControl.EnableDSC && device_ != nullptr &&
       !carries(device_->adapter->config().drive_telegram, tg::Signal::G1_XIST1)) {
     fail("PositionControl.EnableDSC", "DSC needs drive telegram 5, 6, 105 or 106");
+  }
+  if (device_ != nullptr) {
+    const std::uint16_t telegram = device_->adapter->config().drive_telegram;
+    drive_has_momred_ = carries(telegram, tg::Signal::MOMRED, tg::Direction::kSetpoint);
+    drive_has_meldw_ = carries(telegram, tg::Signal::MELDW);
   }
   db_.OperativeSensor = op;
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);

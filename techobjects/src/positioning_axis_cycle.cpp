@@ -60,6 +60,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   }
   control();
   servo_monitoring();
+  servo_torque_limiting();
   homing_observe();
   if (retained_.valid && device_ != nullptr) {
     // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
@@ -206,8 +207,9 @@ void PositioningAxis::control() noexcept {
 
 void PositioningAxis::servo_monitoring() noexcept {
   const bool controlled = phase_ == PowerPhase::kEnabled && !follows_actual() && position_controlled_;
-  // Following error (spec 02 §6.2): 521 removes the enable, 522 warns; both on the rising edge.
-  if (controlled) {
+  // Following error (spec 02 §6.2): 521 removes the enable, 522 warns; both on the rising edge. Off while
+  // torque limiting suspends the position-based monitorings (spec 01 §8.10).
+  if (controlled && !position_monitorings_suspended()) {
     const auto check = following_error_.check(db_.StatusPositioning.FollowingError, setpoint_.velocity);
     if (check.alarm != following_error_state_) {
       if (check.alarm == FollowingErrorAlarm::kError521) raise(kAlarmFollowingError);
@@ -227,7 +229,9 @@ void PositioningAxis::servo_monitoring() noexcept {
     positioning_.start(positioning_target_);
   }
   if (positioning_.status().outcome == PositioningOutcome::kInProgress) {
-    if (controlled) {
+    if (controlled && position_monitorings_suspended()) {
+      positioning_.complete();
+    } else if (controlled) {
       const PositioningStatus st = positioning_.update(actual_position_);
       if (st.outcome == PositioningOutcome::kFault) raise(kAlarmPositioning, st.additional_value);
     } else {
@@ -290,6 +294,7 @@ void PositioningAxis::shift_position(double delta) noexcept {
   if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
   positioning_target_ += delta;
   limit_stop_position_ += delta;
+  clamping_.shift(delta);
   controller_.shift(delta);  // histories move with the coordinates: no following-error step, no transient
   dynamic_filter_.shift(delta);
   simulation_delay_.shift(delta);
@@ -331,6 +336,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
 
   apply_alarm_reactions();
   update_power_phase();
+  apply_clamping();
   run_homing();
   run_synchronous();
   update_live_motion();
@@ -818,6 +824,9 @@ void PositioningAxis::update_status() noexcept {
   assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
   assign(sw, StatusWordBit::kAxisSimulation, db_.Simulation.Mode == kModeOn);
   assign(sw, StatusWordBit::kNonPositionControlled, !position_controlled_ || !enabled);
+  assign(sw, StatusWordBit::kTorqueLimitingCommand, torque_.active);
+  assign(sw, StatusWordBit::kInLimitation, in_limitation_);
+  assign(sw, StatusWordBit::kInClamping, clamping_.clamped());
   const limits::LimitStatusBits limit_bits = limits::merge(software_limits_.bits(), hardware_limits_.bits());
   sw |= limit_bits.status_word();
   db_.StatusWord = sw;
@@ -897,6 +906,9 @@ void PositioningAxis::restart() noexcept {
   generator_ = Generator::kIdle;
   limit_stop_ = false;
   positioning_start_pending_ = false;
+  clamping_.reset();
+  clamp_abort_pending_ = false;
+  torque_.stw2_fixed_stop = false;  // the restarted connection cleared the STW bits; set again if active
   units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
   const RetainedSensorState retained = encoder_.chain().retained_state();
   configure_components();

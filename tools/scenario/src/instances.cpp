@@ -20,6 +20,7 @@
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_torque_limiting.hpp"
 #include "tomc/instructions/mc_write_parameter.hpp"
 #include "tomc/techobjects/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
@@ -259,6 +260,20 @@ const auto kWriteParameter = std::to_array<Parameter<WriteParameter<Axis>>>({
 });
 
 template <typename Axis>
+using TorqueLimiting = instructions::MC_TorqueLimiting<Axis>;
+template <typename Axis>
+const auto kTorqueLimiting = std::to_array<Parameter<TorqueLimiting<Axis>>>({
+    in("Enable", &TorqueLimiting<Axis>::Enable),
+    in("Limit", &TorqueLimiting<Axis>::Limit),
+    in("Mode", &TorqueLimiting<Axis>::Mode),
+    out("InClamping", &TorqueLimiting<Axis>::InClamping),
+    out("InLimitation", &TorqueLimiting<Axis>::InLimitation),
+    out("Busy", &TorqueLimiting<Axis>::Busy),
+    out("Error", &TorqueLimiting<Axis>::Error),
+    out("ErrorID", &TorqueLimiting<Axis>::ErrorID),
+});
+
+template <typename Axis>
 using MoveAbsolute = instructions::MC_MoveAbsolute<Axis>;
 template <typename Axis>
 const auto kMoveAbsolute = std::to_array<Parameter<MoveAbsolute<Axis>>>({
@@ -394,23 +409,23 @@ constexpr std::array<std::string_view, 8> kSpeedAxisInstructions{
     "MC_Power", "MC_Reset", "MC_MoveVelocity", "MC_MoveJog",
     "MC_Halt",  "MC_Stop",  "MC_SetAxisSTW",   "MC_WriteParameter",
 };
-constexpr std::array<std::string_view, 11> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
-    "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter",
+    "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 15> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 16> kSynchronousAxisInstructions{
     "MC_Power",          "MC_Reset",        "MC_Home",      "MC_Halt",           "MC_MoveAbsolute",
     "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",   "MC_Stop",           "MC_SetAxisSTW",
     "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos", "MC_GearInVelocity", "MC_GearOut",
+    "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 19> kPlannedInstructions{
+constexpr std::array<std::string_view, 18> kPlannedInstructions{
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
-    "MC_TorqueLimiting",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
     "MC_CamIn",
@@ -506,6 +521,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<PositioningAxis>);
       if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
       if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
+      if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<PositioningAxis>);
       return make_motion<PositioningAxis>(instruction);
     case TechnologyObjectKind::kSynchronousAxis:
       if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<SynchronousAxis>);
@@ -515,6 +531,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_GearInPos") return make(kGearInPos);
       if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
       if (instruction == "MC_GearOut") return make(kGearOut);
+      if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<SynchronousAxis>);
       return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -133,10 +133,12 @@ enum class FaultKind : std::uint8_t {
   kEncoderError,
   kSignOfLifeFreeze,
   kLinkLoss,
-  kTechnologyAlarm
+  kTechnologyAlarm,
+  kFixedStopBreak,
 };
-constexpr std::array<std::string_view, 5> kFaultNames{"drive_fault", "encoder_error", "sign_of_life_freeze",
-                                                      "link_loss", "technology_alarm"};
+constexpr std::array<std::string_view, 6> kFaultNames{"drive_fault",      "encoder_error",
+                                                      "sign_of_life_freeze", "link_loss",
+                                                      "technology_alarm", "fixed_stop_break"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -666,6 +668,7 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
         break;
       case FaultKind::kSignOfLifeFreeze:
       case FaultKind::kLinkLoss:
+      case FaultKind::kFixedStopBreak:
         break;
       case FaultKind::kTechnologyAlarm: {
         // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
@@ -872,6 +875,9 @@ void Scenario::Impl::apply(const Event& event) noexcept {
           break;
         case FaultKind::kLinkLoss:
           d.set_link_lost(on);
+          break;
+        case FaultKind::kFixedStopBreak:
+          d.break_fixed_stops(on);
           break;
         case FaultKind::kTechnologyAlarm:
           break;  // handled above

@@ -128,6 +128,8 @@ class SimulatedDrive final : public DriveAdapter {
   void clear_encoder_error(int encoder) noexcept;
   void freeze_sign_of_life(bool frozen) noexcept { sign_of_life_frozen_ = frozen; }
   void set_link_lost(bool lost) noexcept { link_lost_ = lost; }
+  // The machine's fixed stops give way (a broken stop, a workpiece that yields): the load passes them.
+  void break_fixed_stops(bool broken) noexcept { fixed_stops_broken_ = broken; }
 
   // ---- simulation control ----
   // Power cycle: the mechanics keep their position, the electronics restart (incremental encoders lose it).
@@ -206,6 +208,7 @@ class SimulatedDrive final : public DriveAdapter {
   std::uint8_t slave_counter_ = 0;
   bool sign_of_life_frozen_ = false;
   bool link_lost_ = false;
+  bool fixed_stops_broken_ = false;
 
   // mechanics (motor side in rad/s, load in load units)
   double omega_ = 0.0;  // motor speed, rad/s

@@ -56,6 +56,12 @@ inline constexpr std::uint16_t kInvalidParameterNumber =
 inline constexpr std::uint16_t kInvalidParameterValue = 0x8131;  // MC_WriteParameter: value not permitted
 inline constexpr std::uint16_t kInvalidBitMask = 0x8132;   // MC_SetAxisSTW: mask outside the writable bits
 inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;  // MC_SetAxisSTW on a virtual/simulated axis
+inline constexpr std::uint16_t kInvalidTorqueLimit = 0x8140;  // MC_TorqueLimiting.Limit not finite or > 1E12
+// MC_TorqueLimiting Mode 0: the drive telegram carries no torque reduction (MOMRED, telegrams 10x)
+inline constexpr std::uint16_t kNoTorqueReduction = 0x8141;
+// MC_TorqueLimiting Mode 1: Clamping.PositionTolerance >= Clamping.FollowingErrorDeviation, or the
+// following-error monitoring's MaxValue <= Clamping.FollowingErrorDeviation (spec 01 §8.11)
+inline constexpr std::uint16_t kInvalidClampingConfiguration = 0x8142;
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

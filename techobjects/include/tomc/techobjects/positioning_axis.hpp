@@ -42,6 +42,7 @@
 #include "tomc/techobjects/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/torque_limiting.hpp"
 
 namespace tomc::techobjects {
 
@@ -120,6 +121,9 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart), 1020
   // Actor.RemoveEnableReaction (immediately) — spec 03 §4.15.
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // MC_TorqueLimiting (spec 03 §4.18.3), called on every user-program cycle: Mode 0 limits the drive's
+  // torque/force through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
+  TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
   JobStatus job_status(JobId id) const noexcept;
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
@@ -290,6 +294,13 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   void complete_jobs() noexcept;
   void update_status() noexcept;
   void restart() noexcept;
+  // torque limiting and fixed-stop detection (positioning_axis_torque.cpp)
+  std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
+  void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
+  void apply_clamping() noexcept;         // MC_Interpolator: the jobs a clamping ends
+  // TorqueLimiting.PositionBasedMonitorings = 0: following-error and positioning monitoring are off while
+  // limiting is active (spec 01 §8.10).
+  bool position_monitorings_suspended() const noexcept;
   // servo
   void read_actual_values() noexcept;
   void simulate_actual_values() noexcept;
@@ -391,6 +402,21 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
   CommunicationTimes communication_times_{};
   CommunicationTimes communication_times_start_{};
+
+  // MC_TorqueLimiting (spec 01 §8.10/§8.11)
+  struct TorqueLimitingJob {
+    bool active = false;        // Enable TRUE and accepted
+    std::int32_t mode = 0;      // 0 limiting, 1 fixed-stop detection
+    double limit = -1.0;        // as given (< 0: the defaults)
+    std::uint16_t error = 0;    // latched until Enable goes FALSE
+    bool stw2_fixed_stop = false;  // STW2.8 set by the limiting (cleared when it ends)
+  };
+  TorqueLimitingJob torque_{};
+  ClampingMonitor clamping_{};
+  bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
+  bool in_limitation_ = false;
+  bool drive_has_momred_ = false;  // the drive telegram carries MOMRED (resolved at construction)
+  bool drive_has_meldw_ = false;   // ... and MELDW
 };
 
 }  // namespace tomc::techobjects

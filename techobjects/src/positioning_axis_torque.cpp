@@ -1,0 +1,155 @@
+// TO_PositioningAxis: MC_TorqueLimiting — force/torque limiting (Mode 0) and fixed-stop detection with
+// clamping (Mode 1), spec 01 §8.10/§8.11, spec 03 §4.18.3, seed 004 §6.7.9.1/§6.7.9.2. Decisions T1–T6.
+#include <cmath>
+
+#include "tomc/techobjects/axis_units.hpp"
+#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/telegrams/normalisation.hpp"
+
+namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept {
+  if (in.Mode != 0 && in.Mode != 1) return error_id::kInvalidMode;
+  if (!std::isfinite(in.Limit) || in.Limit > 1.0e12) return error_id::kInvalidTorqueLimit;
+  if (!torque_.active) {
+    // Start conditions (spec 01 §8.10, §12 scenario 36): no MC_Stop, no error that prevents enabling.
+    if (stop_.id != 0 && stop_.execute) return error_id::kLockedByStop;
+    if (alarms_.strongest_reaction() == AlarmReaction::kRemoveEnable) return error_id::kAxisBlockedByAlarm;
+  }
+  // Limiting needs a drive telegram with torque reduction (telegrams 10x); a virtual or simulated axis
+  // accepts the job and outputs nothing (spec 01 §2.5 table).
+  if (device_ != nullptr && !drive_has_momred_ && in.Mode == 0) return error_id::kNoTorqueReduction;
+  if (in.Mode == 1 && !(torque_.active && torque_.mode == 1)) {
+    // Fixed-stop detection: enabled, position-controlled, consistent tolerances (spec 03 §4.18.3, §8.11).
+    if (phase_ != PowerPhase::kEnabled) return error_id::kAxisNotEnabled;
+    if (!position_controlled_) return error_id::kNotPositionControlled;
+    const auto& c = db_.Clamping;
+    const bool fe_monitored = db_.FollowingError.EnableMonitoring;
+    if (c.PositionTolerance >= c.FollowingErrorDeviation ||
+        (fe_monitored && db_.FollowingError.MaxValue <= c.FollowingErrorDeviation)) {
+      return error_id::kInvalidClampingConfiguration;
+    }
+  }
+  return 0;
+}
+
+TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs& in) noexcept {
+  TorqueLimitingState s;
+  if (!in.Enable) {  // the falling edge ends limiting and detection; an error clears with it (spec 03 L3)
+    torque_.active = false;
+    torque_.error = 0;
+    return s;
+  }
+  if (torque_.error == 0) {
+    if (const auto e = torque_limiting_rejection(in)) {
+      torque_.active = false;
+      torque_.error = e;
+    } else {
+      torque_.active = true;
+      torque_.mode = in.Mode;  // Limit and Mode are taken on every call (spec 03 §4.18.3 note 5)
+      torque_.limit = in.Limit;
+    }
+  }
+  s.Error = torque_.error != 0;
+  s.ErrorID = torque_.error;
+  s.Busy = torque_.active;
+  s.InClamping = torque_.active && clamping_.clamped();
+  s.InLimitation = torque_.active && in_limitation_;
+  return s;
+}
+
+bool PositioningAxis::position_monitorings_suspended() const noexcept {
+  return torque_.active && db_.TorqueLimiting.PositionBasedMonitorings ==
+                               static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
+}
+
+void PositioningAxis::servo_torque_limiting() noexcept {
+  const bool active = torque_.active;
+  if (device_ != nullptr) {
+    auto& sp = drive_.drive_setpoint();
+    double reduction_momred = 0.0;
+    if (active && drive_has_momred_) {
+      const bool linear_motor =
+          db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+      const bool linear_axis =
+          db_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kLinear);
+      const bool load_side =
+          db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
+      const bool force = linear_motor || (linear_axis && load_side);
+      const double limit = torque_.limit >= 0.0
+                               ? torque_.limit
+                               : (force ? db_.TorqueLimiting.LimitDefaults.Force
+                                        : db_.TorqueLimiting.LimitDefaults.Torque);
+      TorqueLimitMechanics m;
+      m.linear_axis = linear_axis;
+      m.linear_motor = linear_motor;
+      m.load_side = load_side;
+      m.gear_ratio = static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
+      m.efficiency = db_.Actor.Efficiency;
+      const auto metres = length_unit_scale(db_.Units.LengthUnit);
+      m.leadscrew_per_rev = db_.Mechanics.LeadScrew * units_.leadscrew * (metres ? metres->base : 0.0);
+      const double reference = linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
+                                            : db_.Actor.DriveParameter.ReferenceTorque;
+      // A percentage reduction of the reference torque/force, the same for both directions (spec 01 §8.10).
+      reduction_momred = tg::momred_from_torque_limit(motor_torque_limit(limit, m), reference);
+    }
+    sp.MOMRED = static_cast<std::uint16_t>(reduction_momred);
+    // STW2.8 "travel to fixed stop": set while MC_TorqueLimiting is active, so that the drive does not fault
+    // at the limit (spec 01 §8.13 table, last row: MC_TorqueLimiting sets it, MC_TorqueRange does not).
+    if (active != torque_.stw2_fixed_stop) {
+      sp.STW2.set(tg::Stw2Bit::kTravelToFixedStop, active);
+      torque_.stw2_fixed_stop = active;
+    }
+    // InLimitation: MELDW.1 "torque utilisation < threshold (p2194)" cleared (spec 06 §3.5, spec 04 §5).
+    in_limitation_ = active && drive_has_meldw_ &&
+                     !drive_.drive_actual().MELDW.test(tg::MeldwBit::kTorqueUtilisationBelowThreshold);
+  } else {
+    in_limitation_ = false;
+  }
+
+  // Fixed-stop detection (spec 01 §8.11): only in position-controlled operation of an enabled axis.
+  const bool controlled = phase_ == PowerPhase::kEnabled && !follows_actual() && position_controlled_;
+  if (!(active && torque_.mode == 1 && controlled)) {
+    clamping_.reset();
+    return;
+  }
+  clamping_.configure(db_.Clamping.FollowingErrorDeviation, db_.Clamping.PositionTolerance);
+  const bool moving_away = motion_.id != 0 && motion_.position_controlled &&
+                           setpoint_.velocity * clamping_.stop_direction() < 0.0;
+  switch (clamping_.update(db_.StatusPositioning.FollowingError, actual_position_, moving_away)) {
+    case ClampingEvent::kClamped:
+      clamp_abort_pending_ = true;
+      break;
+    case ClampingEvent::kLost:
+      // The stop broke or gave way: alarm, the axis is disabled (seed 004 §6.7.9.2; decision T4).
+      raise(kAlarmPositioning, kClampingToleranceLeft);
+      break;
+    case ClampingEvent::kReleased:
+    case ClampingEvent::kNone:
+      break;
+  }
+}
+
+void PositioningAxis::apply_clamping() noexcept {
+  if (!clamping_.clamped()) {
+    clamp_abort_pending_ = false;
+    return;
+  }
+  // At the stop every motion and synchronous job ends with CommandAborted (spec 03 §4.18.3 note 6); while
+  // clamped, a job that drives further into the stop ends the same way (decision T3). The setpoint stays
+  // where it is, so the following error — and with it the clamping force — stays constant.
+  const bool into_stop = motion_.id != 0 && setpoint_.velocity * clamping_.stop_direction() > 0.0;
+  if (!clamp_abort_pending_ && !into_stop) return;
+  clamp_abort_pending_ = false;
+  abort_motion(0);
+  abort_pending(0);
+  abort_synchronous(0);
+  generator_ = Generator::kIdle;
+  setpoint_.velocity = 0.0;
+  setpoint_.acceleration = 0.0;
+}
+
+}  // namespace tomc::techobjects
