@@ -688,7 +688,8 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       meldw.set(tg::MeldwBit::kRampFunctionCompleted,
                 state_ != tg::DriveState::kS5aRampStop && state_ != tg::DriveState::kS5bQuickStop);
       // Torque utilisation (r0033) is relative to the limit in force, MOMRED included (p2194 = 90 %).
-      const double active_limit = torque_ >= 0.0 ? cycle_torque_limit_positive_ : -cycle_torque_limit_negative_;
+      const double active_limit =
+          torque_ >= 0.0 ? cycle_torque_limit_positive_ : -cycle_torque_limit_negative_;
       meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_) < 0.9 * active_limit);
       meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold,
                 std::fabs(speed_rpm) < p_.standstill_threshold_rpm);

@@ -79,15 +79,15 @@ void PositioningAxis::servo_torque_limiting() noexcept {
       const bool load_side =
           db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
       const bool force = linear_motor || (linear_axis && load_side);
-      const double limit = torque_.limit >= 0.0
-                               ? torque_.limit
-                               : (force ? db_.TorqueLimiting.LimitDefaults.Force
-                                        : db_.TorqueLimiting.LimitDefaults.Torque);
+      const double limit = torque_.limit >= 0.0 ? torque_.limit
+                                                : (force ? db_.TorqueLimiting.LimitDefaults.Force
+                                                         : db_.TorqueLimiting.LimitDefaults.Torque);
       TorqueLimitMechanics m;
       m.linear_axis = linear_axis;
       m.linear_motor = linear_motor;
       m.load_side = load_side;
-      m.gear_ratio = static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
+      m.gear_ratio =
+          static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
       m.efficiency = db_.Actor.Efficiency;
       const auto metres = length_unit_scale(db_.Units.LengthUnit);
       m.leadscrew_per_rev = db_.Mechanics.LeadScrew * units_.leadscrew * (metres ? metres->base : 0.0);
@@ -117,8 +117,8 @@ void PositioningAxis::servo_torque_limiting() noexcept {
     return;
   }
   clamping_.configure(db_.Clamping.FollowingErrorDeviation, db_.Clamping.PositionTolerance);
-  const bool moving_away = motion_.id != 0 && motion_.position_controlled &&
-                           setpoint_.velocity * clamping_.stop_direction() < 0.0;
+  const bool moving_away =
+      motion_.id != 0 && motion_.position_controlled && setpoint_.velocity * clamping_.stop_direction() < 0.0;
   switch (clamping_.update(db_.StatusPositioning.FollowingError, actual_position_, moving_away)) {
     case ClampingEvent::kClamped:
       clamp_abort_pending_ = true;

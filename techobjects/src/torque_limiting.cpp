@@ -13,7 +13,8 @@ double motor_torque_limit(double limit, const TorqueLimitMechanics& m) noexcept 
   return limit / (i * eta);
 }
 
-ClampingEvent ClampingMonitor::update(double following_error, double actual_position, bool moving_away) noexcept {
+ClampingEvent ClampingMonitor::update(double following_error, double actual_position,
+                                      bool moving_away) noexcept {
   if (!clamped_) {
     // Fixed stop reached: the following error grows past the configured deviation (seed 004 §6.7.9.2).
     if (std::fabs(following_error) <= deviation_) return ClampingEvent::kNone;

@@ -414,10 +414,10 @@ constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 16> kSynchronousAxisInstructions{
-    "MC_Power",          "MC_Reset",        "MC_Home",      "MC_Halt",           "MC_MoveAbsolute",
-    "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",   "MC_Stop",           "MC_SetAxisSTW",
-    "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos", "MC_GearInVelocity", "MC_GearOut",
-    "MC_TorqueLimiting",
+    "MC_Power",        "MC_Reset",          "MC_Home",           "MC_Halt",
+    "MC_MoveAbsolute", "MC_MoveRelative",   "MC_MoveVelocity",   "MC_MoveJog",
+    "MC_Stop",         "MC_SetAxisSTW",     "MC_WriteParameter", "MC_GearIn",
+    "MC_GearInPos",    "MC_GearInVelocity", "MC_GearOut",        "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};

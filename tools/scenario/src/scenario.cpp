@@ -136,9 +136,9 @@ enum class FaultKind : std::uint8_t {
   kTechnologyAlarm,
   kFixedStopBreak,
 };
-constexpr std::array<std::string_view, 6> kFaultNames{"drive_fault",      "encoder_error",
+constexpr std::array<std::string_view, 6> kFaultNames{"drive_fault",         "encoder_error",
                                                       "sign_of_life_freeze", "link_loss",
-                                                      "technology_alarm", "fixed_stop_break"};
+                                                      "technology_alarm",    "fixed_stop_break"};
 
 struct SetItem {
   std::size_t to = 0;

@@ -1,6 +1,6 @@
 #pragma once
-// MC_TorqueLimiting (spec 03 §4.18.3): Enable-level instruction, called once per user-program cycle. Limit and
-// Mode are taken on every call while Enable is TRUE; no Done and no CommandAborted (spec 03 L3).
+// MC_TorqueLimiting (spec 03 §4.18.3): Enable-level instruction, called once per user-program cycle. Limit
+// and Mode are taken on every call while Enable is TRUE; no Done and no CommandAborted (spec 03 L3).
 #include <cstdint>
 
 #include "tomc/techobjects/torque_limiting.hpp"

@@ -405,10 +405,10 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
 
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
   struct TorqueLimitingJob {
-    bool active = false;        // Enable TRUE and accepted
-    std::int32_t mode = 0;      // 0 limiting, 1 fixed-stop detection
-    double limit = -1.0;        // as given (< 0: the defaults)
-    std::uint16_t error = 0;    // latched until Enable goes FALSE
+    bool active = false;           // Enable TRUE and accepted
+    std::int32_t mode = 0;         // 0 limiting, 1 fixed-stop detection
+    double limit = -1.0;           // as given (< 0: the defaults)
+    std::uint16_t error = 0;       // latched until Enable goes FALSE
     bool stw2_fixed_stop = false;  // STW2.8 set by the limiting (cleared when it ends)
   };
   TorqueLimitingJob torque_{};

@@ -47,8 +47,9 @@ enum class ClampingEvent : std::uint8_t {
   kLost,      // the position left the tolerance otherwise: the stop gave way or the load was pushed back
 };
 
-// The clamping state machine of spec 01 §8.11 / seed 004 §6.7.9.2, one update per servo cycle while fixed-stop
-// detection is on and the axis is position-controlled (reset() otherwise). Positions in one continuous unit.
+// The clamping state machine of spec 01 §8.11 / seed 004 §6.7.9.2, one update per servo cycle while
+// fixed-stop detection is on and the axis is position-controlled (reset() otherwise). Positions in one
+// continuous unit.
 class ClampingMonitor {
  public:
   void configure(double following_error_deviation, double position_tolerance) noexcept {

@@ -1,0 +1,108 @@
+// Real-time discipline of MC_TorqueLimiting (torque limiting and fixed-stop detection): an axis that drives
+// into a fixed stop, clamps, is released and changes limit and mode, in a loop, allocates nothing after
+// start(). A counting global operator new over 200,000 cycles (20,000 under the sanitizers); its own binary,
+// so that the counter sees only this test.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "positioning_axis_fixture.hpp"
+#include "tomc/instructions/mc_torque_limiting.hpp"
+
+namespace {
+std::atomic<std::uint64_t> g_allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return std::malloc(size == 0 ? 1 : size);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace {
+
+using namespace tomc;
+
+#ifdef TOMC_SANITIZED_BUILD
+constexpr int kCycles = 20'000;
+#else
+constexpr int kCycles = 200'000;
+#endif
+
+TEST(TorqueLimitingAllocation, ClampReleaseAndLimitChangesAllocateNothing) {
+  auto p = tomc::testing::linear_drive();
+  p.machine.positive_fixed_stop = 32.0;
+  p.machine.negative_fixed_stop = -32.0;
+  tomc::testing::PositioningAxisMachine m(tomc::testing::linear_axis_data(), p, 105);
+  instructions::MC_TorqueLimiting<techobjects::PositioningAxis> torque;
+  m.user = [&] { torque(*m.axis); };
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  torque.Enable = true;
+  torque.Mode = 1;
+  torque.Limit = 0.5;
+  long clamps = 0, releases = 0, limitations = 0;
+  bool was_clamped = false, was_limited = false;
+  double direction = 1.0;
+  const auto before = g_allocations.load();
+  for (int cycle = 0; cycle < kCycles; ++cycle) {
+    // Into the stop at 40 mm/s, alternately the positive and the negative one; when clamped, away to 0.
+    if (!m.move_velocity.Busy && !m.move_absolute.Busy && !torque.InClamping) {
+      m.move_velocity.Velocity = 40.0;
+      m.move_velocity.Direction = direction > 0.0 ? 1 : 2;
+      m.move_velocity.Execute = true;
+    }
+    if (torque.InClamping && !m.move_absolute.Busy) {
+      m.move_velocity.Execute = false;
+      m.move_absolute.Position = 0.0;
+      m.move_absolute.Velocity = 40.0;
+      m.move_absolute.Execute = true;
+      direction = -direction;
+      torque.Limit = torque.Limit > 0.4 ? 0.3 : 0.5;  // a new clamping torque without an edge
+    }
+    if (m.move_absolute.Done) m.move_absolute.Execute = false;
+    m.run(1);
+    if (torque.InClamping && !was_clamped) ++clamps;
+    if (!torque.InClamping && was_clamped) ++releases;
+    if (torque.InLimitation && !was_limited) ++limitations;
+    was_clamped = torque.InClamping;
+    was_limited = torque.InLimitation;
+  }
+  const auto allocated = g_allocations.load() - before;
+  EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
+  EXPECT_EQ(m.db().ErrorDetail.Number, 0u);
+  EXPECT_FALSE(torque.Error);
+  // The loop did what it is about: clampings at both stops, each released again.
+  EXPECT_GE(clamps, kCycles / 10000) << "releases " << releases << " limitations " << limitations;
+  EXPECT_GE(releases, clamps - 1);
+  EXPECT_GE(limitations, clamps);
+}
+
+}  // namespace
