@@ -1,5 +1,5 @@
 // TO_PositioningAxis: MC_TorqueLimiting — force/torque limiting (Mode 0) and fixed-stop detection with
-// clamping (Mode 1), spec 01 §8.10/§8.11, spec 03 §4.18.3, seed 004 §6.7.9.1/§6.7.9.2. Decisions T1–T6.
+// clamping (Mode 1), spec 01 §8.10/§8.11, spec 03 §4.18.3, seed 004 §6.7.9.1/§6.7.9.2. Decisions F1–F7.
 #include <cmath>
 
 #include "tomc/techobjects/axis_units.hpp"
@@ -124,7 +124,7 @@ void PositioningAxis::servo_torque_limiting() noexcept {
       clamp_abort_pending_ = true;
       break;
     case ClampingEvent::kLost:
-      // The stop broke or gave way: alarm, the axis is disabled (seed 004 §6.7.9.2; decision T4).
+      // The stop broke or gave way: alarm, the axis is disabled (seed 004 §6.7.9.2; decision F4).
       raise(kAlarmPositioning, kClampingToleranceLeft);
       break;
     case ClampingEvent::kReleased:
@@ -139,7 +139,7 @@ void PositioningAxis::apply_clamping() noexcept {
     return;
   }
   // At the stop every motion and synchronous job ends with CommandAborted (spec 03 §4.18.3 note 6); while
-  // clamped, a job that drives further into the stop ends the same way (decision T3). The setpoint stays
+  // clamped, a job that drives further into the stop ends the same way (decision F3). The setpoint stays
   // where it is, so the following error — and with it the clamping force — stays constant.
   const bool into_stop = motion_.id != 0 && setpoint_.velocity * clamping_.stop_direction() > 0.0;
   if (!clamp_abort_pending_ && !into_stop) return;

@@ -221,7 +221,7 @@ TEST(TorqueLimiting, FixedStopAbortsTheMoveAndFreezesTheSetpoint) {
   EXPECT_EQ(m.db().ErrorDetail.Number, 0u);
 }
 
-// seed 004 §6.7.9.2: while clamped, a job further into the stop ends at once (decision T3); a
+// seed 004 §6.7.9.2: while clamped, a job further into the stop ends at once (decision F3); a
 // position-controlled job away from the stop releases the clamping when it leaves the tolerance, without an
 // alarm, and runs on.
 TEST(TorqueLimiting, ReleaseOnlyByAJobAwayFromTheStop) {

@@ -6,7 +6,7 @@
 
 namespace tomc::techobjects {
 
-// Additional value of alarm 541 when the position leaves Clamping.PositionTolerance (decision T4; 1 and 2
+// Additional value of alarm 541 when the position leaves Clamping.PositionTolerance (decision F4; 1 and 2
 // are the positioning monitor's, position_monitoring.hpp).
 inline constexpr std::uint32_t kClampingToleranceLeft = 3;
 
