@@ -101,7 +101,10 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
   const bool communication = connection_.communication_ok();
   if (error && !error_seen_) {
     (void)alarms_.raise(kAlarmSensorFault, encoder_.error_code(), cycle_);
-    if (!encoder_.chain().absolute_type()) homed_ = false;  // spec 04 §8 rule 8
+    if (!encoder_.chain().absolute_type()) {  // spec 04 §8 rule 8; H11
+      homed_ = false;
+      db_.StatusSensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kNotAdjusted);
+    }
   }
   error_seen_ = error;
   if (!communication && connection_.cycles_without_fresh_frame() > 0) {

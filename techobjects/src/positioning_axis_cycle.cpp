@@ -120,8 +120,12 @@ void PositioningAxis::read_actual_values() noexcept {
   const bool held_off = acknowledged_at_ != 0 && cycle_ < acknowledged_at_ + kReRaiseHoldOffCycles;
   if (encoder_error && (!encoder_fault_seen_ || !held_off)) {
     raise(kAlarmSensorFault, encoder_.error_code());  // the code is in Gx_XIST2 (spec 06 §6.3)
-    // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8).
-    if (!encoder_.chain().absolute_type()) homed_ = false;
+    // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8): not homed, and the
+    // encoder is no longer "referenced" (Adjusted 0, seed 004 §6.11: only an absolute encoder keeps it; H11).
+    if (!encoder_.chain().absolute_type()) {
+      homed_ = false;
+      sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kNotAdjusted);
+    }
   }
   encoder_fault_seen_ = encoder_error;
   actual_valid_ = encoder_.chain().position_valid() && !encoder_error && drive_.communication_ok();

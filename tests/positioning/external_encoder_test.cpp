@@ -145,6 +145,24 @@ TEST(ExternalEncoder, EncoderErrorRaisesTheSensorAlarmAndResetsHomed) {
   EXPECT_TRUE(m.power.Status);
 }
 
+// Decision H11 (seed 004 §6.11: Adjusted = "encoder referenced"; only an absolute encoder keeps it): an
+// incremental encoder referenced by Mode 13 loses Adjusted with HomingDone when it reports an error.
+TEST(ExternalEncoder, EncoderErrorResetsAdjustedOfAnIncrementalEncoder) {
+  EncoderMachine m;
+  m.power.Enable = true;
+  m.run(10);
+  m.home.Mode = 13;
+  m.home.Position = 42.0;
+  m.home.Execute = true;
+  m.run(2);
+  ASSERT_TRUE(m.home.Done);
+  ASSERT_EQ(m.db().StatusSensor.Adjusted, 1);
+  m.drive->inject_encoder_error(1, 0x0101);
+  m.run(3);
+  EXPECT_FALSE(techobjects::test(m.db().StatusWord, StatusWordBit::kHomingDone));
+  EXPECT_EQ(m.db().StatusSensor.Adjusted, 0);
+}
+
 // spec 03 §4.15: 1010/1011/1012 are accepted on E (after restart); 1000 and 1020 belong to axes.
 TEST(ExternalEncoder, WriteParameter) {
   EncoderMachine m;

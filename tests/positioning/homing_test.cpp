@@ -483,4 +483,22 @@ TEST(Homing, RelativeAbsoluteAndIncrementalAdjustment) {
   EXPECT_FALSE(n.axis->retained().valid);  // not retentive
 }
 
+// Decision H11 (seed 004 §6.11: Adjusted = "encoder referenced", kept only by an absolute encoder): an
+// encoder error takes HomingDone and Adjusted from an incremental encoder, and neither from an absolute one.
+TEST(Homing, EncoderErrorResetsAdjustedOnlyOfAnIncrementalEncoder) {
+  for (const bool absolute : {false, true}) {
+    PositioningAxisMachine m(absolute ? absolute_data() : linear_axis_data());
+    m.run(20);
+    start_home(m, absolute ? 7 : 13, 10.0);
+    m.run(1);
+    ASSERT_TRUE(m.home.Done);
+    ASSERT_EQ(m.db().StatusSensor[0].Adjusted, 1);
+    m.drive->inject_encoder_error(1, 0x0001);
+    m.run(3);
+    EXPECT_TRUE(m.axis->alarms().pending(techobjects::kAlarmSensorFault));
+    EXPECT_EQ(techobjects::test(m.db().StatusWord, techobjects::StatusWordBit::kHomingDone), absolute);
+    EXPECT_EQ(m.db().StatusSensor[0].Adjusted, absolute ? 1 : 0);
+  }
+}
+
 }  // namespace
