@@ -26,6 +26,9 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "invalid MasterSyncPosition (the leader is already past the start of synchronization)";
     case kInvalidSyncProfileReference:
       return "invalid SyncProfileReference";
+    case kInvalidSlavePosition:
+      return "invalid SlavePosition (a linear follower is already inside the stop travel before it, or past "
+             "it)";
     case kNoGearing:
       return "no MC_GearIn / MC_GearInPos pending or active";
     case kHomingDuringGearInPos:

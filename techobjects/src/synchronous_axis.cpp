@@ -120,26 +120,55 @@ double SynchronousAxis::choose_slave_sync(double slave_sync, std::int32_t direct
 
 // Profile 0 (in advance, dynamic parameters, spec 07 §2.2, §6.5): tomc synchronizes over a leading-value
 // distance just long enough that the follower's velocity and acceleration stay within the job's Velocity and
-// Acceleration/Deceleration for the present leader velocity (decision Y6).
+// Acceleration/Deceleration for the present leader velocity (decision Y6). The candidate blend is the one
+// start_pending_sync would run; it is sampled at 17 points (2 % reserve for the peaks between them). The
+// shortest fitting length is bracketed by doubling and then bisected: a fixed number of steps, no allocation.
 double SynchronousAxis::sync_length_profile0(const PendingSyncIn& p,
                                              const LeadingValue& leader) const noexcept {
   const double v = std::max(std::fabs(leader.velocity), 1e-9);
+  const double v_leader = p.direction * v;
   const double r = ratio(p.numerator, p.denominator);
-  const double follower_v = std::fabs(r) * v;
-  double length = std::max(std::fabs(r) * v * v / std::max(p.limits.acceleration, 1e-9), 1e-6);
-  // A fixed number of refinements: the distance to cover depends on where the blend starts.
-  for (int i = 0; i < 4; ++i) {
+  const double y_target = choose_slave_sync(p.slave_sync, p.sync_direction,
+                                            setpoint_.position + r * (p.master_sync - leader.position));
+  const double max_v = 0.98 * p.limits.velocity;
+  const double max_a = 0.98 * p.limits.acceleration;
+  const double max_d = 0.98 * p.limits.deceleration;
+  const auto fits = [&](double length, bool with_velocity) noexcept {
+    LeaderDomainBlend b;
     const double x_a = p.master_sync - p.direction * length;
-    const double y_line = p.slave_sync + r * (x_a - p.master_sync);
-    const double d0 = std::fabs(setpoint_.position - y_line);
-    // Peaks of the quintic terms: |H0'| <= 1.875, |H0''| <= 5.774 (spec 07 §6.4 basis).
-    const double by_velocity =
-        p.limits.velocity > follower_v ? 1.875 * d0 * v / (p.limits.velocity - follower_v) : 0.0;
-    const double by_acceleration = std::sqrt(5.774 * d0 * v * v / std::max(p.limits.acceleration, 1e-9));
-    length = std::max(
-        {by_velocity, by_acceleration, std::fabs(r) * v * v / std::max(p.limits.acceleration, 1e-9), 1e-6});
-  }
-  return length;
+    b.start(x_a, p.direction * length, p.master_sync, y_target, r, setpoint_, v_leader, 0.0);
+    for (int i = 0; i <= 16; ++i) {
+      const MotionState m = b.at(x_a + p.direction * length * (i / 16.0), v_leader, 0.0);
+      if (with_velocity && std::fabs(m.velocity) > max_v) return false;
+      const bool decelerating = m.acceleration * m.velocity < 0.0;
+      if (std::fabs(m.acceleration) > (decelerating ? max_d : max_a)) return false;
+    }
+    return true;
+  };
+  // The shortest distance over which the leader velocity alone could be taken up with Acceleration.
+  const double base = std::max(std::fabs(r) * v * v / std::max(p.limits.acceleration, 1e-9), 1e-6);
+  const auto shortest = [&](bool with_velocity) noexcept {
+    if (fits(base, with_velocity)) return base;
+    double low = base;
+    double high = base;
+    bool found = false;
+    for (int i = 0; i < 40 && !found; ++i) {
+      low = high;
+      high = 2.0 * low;
+      found = fits(high, with_velocity);
+    }
+    if (!found) return -1.0;
+    for (int i = 0; i < 20; ++i) {  // 1e-6 of the bracket
+      const double mid = 0.5 * (low + high);
+      (fits(mid, with_velocity) ? high : low) = mid;
+    }
+    return high;
+  };
+  // A follower starting at rest overshoots the line's velocity by up to half of it in the blend: when no
+  // length keeps that within Velocity, only the acceleration decides (and failing that the base length).
+  double length = shortest(true);
+  if (length < 0.0) length = shortest(false);
+  return length < 0.0 ? base : length;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -443,7 +472,15 @@ bool SynchronousAxis::start_pending_sync(const LeadingValue& leader) noexcept {
   double x_a = 0.0;
   double x_target = p.master_sync;
   if (p.profile == 0) {
-    length = sync_length_profile0(p, leader);
+    // The search costs a few hundred blend evaluations: done again only when its inputs change.
+    if (leader.velocity != p.sized_leader_velocity || setpoint_.position != p.sized_follower.position ||
+        setpoint_.velocity != p.sized_follower.velocity ||
+        setpoint_.acceleration != p.sized_follower.acceleration) {
+      p.sized_length = sync_length_profile0(p, leader);
+      p.sized_leader_velocity = leader.velocity;
+      p.sized_follower = setpoint_;
+    }
+    length = p.sized_length;
     x_a = p.master_sync - p.direction * length;
   } else if (p.profile == 1) {
     x_a = p.master_sync - p.direction * length;
@@ -563,25 +600,39 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
     const ModuloRange follower{modulo(), db_.Modulo.StartValue, db_.Modulo.Length};
     const double r = ratio(active_.numerator, active_.denominator);
     bool start = false;
+    // The stop travel: the follower's distance from the start of desynchronization to standstill.
+    const double step = std::fabs(v) * T;  // the follower's travel in one cycle: a start is seen within it
+    double stop_travel = 0.0;
     if (d.profile == 0) {
-      const double braking = limits::braking_distance(std::fabs(v), sync_setpoint_.acceleration * dir,
-                                                      d.limits.deceleration, d.limits.jerk);
-      d.y_stop = modulo_occurrence(d.slave_position, follower, sync_setpoint_.position, dir, 0.0);
-      if (follower.enabled && dir * (d.y_stop - sync_setpoint_.position) < braking)
-        d.y_stop += dir * follower.length;
+      stop_travel = limits::braking_distance(std::fabs(v), sync_setpoint_.acceleration * dir,
+                                             d.limits.deceleration, d.limits.jerk);
+    } else {
+      // Profile 1: over L of leader travel the gear's follower covers slope·L/2 (spec 07 §6.7).
+      if (sign_or(leader.velocity, 0.0) == 0.0) return;
+      stop_travel = std::fabs(r) * d.stop_distance / 2.0;
+    }
+    // The stop position has to lie at least the stop travel ahead. A modulo follower takes the next
+    // occurrence that does (spec 07 §6.7, §6.1 item 3); a linear one already inside the stop travel (or past
+    // the stop position) could only reach it by reversing: the job ends with 16#8037 and the gearing goes on
+    // (decision Y11). Margin: profile 0 looks one cycle ahead and starts before the follower is inside (up to
+    // the look-ahead's rounding tolerance); profile 1 starts in the cycle nearest the crossing, up to half a
+    // cycle's travel inside.
+    const double margin =
+        d.profile == 0 ? 1e-6 * std::max(1.0, std::fabs(sync_setpoint_.position) + stop_travel) : step;
+    const double min_ahead = std::max(stop_travel - margin, 0.0);
+    d.y_stop = modulo_occurrence(d.slave_position, follower, sync_setpoint_.position, dir, min_ahead);
+    if (dir * (d.y_stop - sync_setpoint_.position) < min_ahead) {
+      end_desync(JobState::kError, error_id::kInvalidSlavePosition);
+      return;
+    }
+    if (d.profile == 0) {
       const auto look =
           limits::stop_at_limit_look_ahead(sync_setpoint_.position, v, sync_setpoint_.acceleration, d.y_stop,
                                            d.limits.deceleration, d.limits.jerk, T);
       start = look.stop_now;
     } else {
-      // Profile 1: over L of leader travel the gear's follower covers slope·L/2 (spec 07 §6.7).
       const double leader_dir = sign_or(leader.velocity, 0.0);
-      if (leader_dir == 0.0) return;
-      const double travel = std::fabs(r) * d.stop_distance / 2.0;
-      d.y_stop = modulo_occurrence(d.slave_position, follower, sync_setpoint_.position, dir, 0.0);
-      if (follower.enabled && dir * (d.y_stop - sync_setpoint_.position) < travel)
-        d.y_stop += dir * follower.length;
-      start = dir * (d.y_stop - sync_setpoint_.position) <= travel + std::fabs(v) * T * 0.5;
+      start = dir * (d.y_stop - sync_setpoint_.position) <= stop_travel + 0.5 * step;
       if (start) {
         d.blend.start(leader.position, leader_dir * d.stop_distance, leader.position, d.y_stop, 0.0,
                       sync_setpoint_, leader.velocity, leader.acceleration);
@@ -594,16 +645,18 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
     d.source = active_.source;
     const MotionState at = sync_setpoint_;
     end_active(JobState::kAborted, 0);
-    setpoint_ = at;
     motion_ = Motion{};
     motion_.id = d.id;
     motion_.kind = JobKind::kGearOut;
     if (d.profile == 0) {
+      // The braking is planned from the previous cycle's setpoint, which the generator steps into this cycle
+      // (planned from this cycle's gear-line value it would skip one cycle's travel: a velocity spike).
       ProfileLimits l = d.limits;
       l.velocity = std::max(std::fabs(at.velocity), 1e-9);
       l.acceleration = std::max(l.acceleration, l.deceleration);
       plan_position(d.y_stop, l);
     } else {
+      setpoint_ = at;
       generator_ = Generator::kSynchronous;
     }
     return;

@@ -584,6 +584,29 @@ TEST(ScenarioLoader, TraceNames) {
   EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no simulated drive");
 }
 
+// A synchronous axis' StatusSynchronizedMotion.* (spec 07 §1.9) is traceable; an unknown member, or the
+// structure on another TO type, is a problem naming the TO.
+TEST(ScenarioLoader, SynchronousMotionTraceNames) {
+  auto traced = [](const char* name) {
+    Json d = base();
+    d["technology_objects"].push_back(Json::parse(R"({ "name": "L", "type": "TO_PositioningAxis",
+      "config": { "VirtualAxis.Mode": 1 } })"));
+    d["technology_objects"].push_back(Json::parse(R"({ "name": "F", "type": "TO_SynchronousAxis",
+      "config": { "VirtualAxis.Mode": 1 }, "LeadingValueInterconnections": [ { "Leader": "L" } ] })"));
+    d["trace"] = Json::array({name});
+    return d;
+  };
+  EXPECT_TRUE(problems_of(traced("F.StatusSynchronizedMotion.FunctionState")).empty());
+  EXPECT_TRUE(problems_of(traced("F.StatusSynchronizedMotion.EffectiveLeadingValue.Velocity")).empty());
+  EXPECT_TRUE(problems_of(traced("F.StatusSynchronizedMotion.StatusWord.X4")).empty());
+  EXPECT_EQ(problem_of(traced("F.StatusSynchronizedMotion.Nothing")),
+            "trace[0]: 'StatusSynchronizedMotion.Nothing' is not a variable of TO_SynchronousAxis F");
+  EXPECT_EQ(problem_of(traced("F.StatusSynchronizedMotion.StatusWord.X32")),
+            "trace[0]: 'StatusSynchronizedMotion.StatusWord.X32' is not a variable of TO_SynchronousAxis F");
+  EXPECT_EQ(problem_of(traced("L.StatusSynchronizedMotion.FunctionState")),
+            "trace[0]: 'StatusSynchronizedMotion.FunctionState' is not a variable of TO_PositioningAxis L");
+}
+
 TEST(ScenarioLoader, Expectations) {
   auto expecting = [](const char* expect) {
     Json d = base();

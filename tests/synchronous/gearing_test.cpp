@@ -2,6 +2,7 @@
 // Set-up in gearing_fixture.hpp. "At t" = the cycle the condition first holds, ±1 cycle as §8 allows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -554,6 +555,177 @@ TEST(Gearing, GP6GearOutCancelAndNoGearing) {
   EXPECT_TRUE(m.gear_out.Done);
   m.run(1);
   EXPECT_TRUE(m.gear_pos.CommandAborted);
+}
+
+// A follower geared 1/1 with MC_GearIn while both stand, then the leader at 100 (F = L from then on).
+void geared_at_100(GearingMachine& m) {
+  m.gear.Execute = true;
+  m.run(2);  // the call in cycle 1 starts the job, cycle 2 locks it (GI-1)
+  ASSERT_TRUE(m.gear.InGear);
+  leader_at(m, 100.0);
+}
+
+// MC_GearOut with the follower already inside the stop travel (spec 07 §6.7, §6.1 item 3, decision Y11).
+// Profile 1 over MasterStopDistance 100 needs 1·100/2 = 50 of follower travel; SlavePosition 20 ahead of a
+// linear follower cannot be reached without reversing: the job ends with 16#8037 and the gearing goes on, F =
+// L (before the fix a blend started that overshot the stop position by about 5 and came back).
+TEST(Gearing, GP8GearOutProfile1InsideTheStopTravelLinear) {
+  GearingMachine m;
+  geared_at_100(m);
+  m.run(100);
+  const double f0 = m.f().Position;
+  m.gear_out.SlavePosition = f0 + 20.0;
+  m.gear_out.SyncProfileReference = 1;
+  m.gear_out.MasterStopDistance = 100.0;
+  m.gear_out.Execute = true;
+  m.run(2);  // started by the call in the first cycle, checked in the second
+  EXPECT_TRUE(m.gear_out.Error);
+  EXPECT_EQ(m.gear_out.ErrorID, eid::kInvalidSlavePosition);
+  EXPECT_FALSE(m.gear_out.StartSyncOut);
+  const double offset = m.f().Position - m.l().Position;
+  for (int i = 0; i < 1000; ++i) {
+    m.run(1);
+    ASSERT_TRUE(m.gear.InGear) << "cycle " << i;
+    ASSERT_NEAR(m.f().Position - m.l().Position, offset, 1e-9) << "cycle " << i;
+    ASSERT_NEAR(m.f().Velocity, 100.0, 1e-9) << "cycle " << i;  // never braking, never reversing
+  }
+  EXPECT_NEAR(m.f().Position, f0 + 100.2, 1e-6);  // 1002 cycles at 0.1 per cycle
+  EXPECT_EQ(m.F->synchronized_motion().FunctionState, 1);
+}
+
+// The same with profile 0: braking distance 100² / (2·100) = 50 > 20: 16#8037, the gearing goes on.
+TEST(Gearing, GP8GearOutProfile0InsideTheBrakingDistanceLinear) {
+  GearingMachine m;
+  geared_at_100(m);
+  m.run(100);
+  const double f0 = m.f().Position;
+  m.gear_out.SlavePosition = f0 + 20.0;
+  m.gear_out.SyncProfileReference = 0;
+  m.gear_out.Deceleration = 100.0;
+  m.gear_out.Jerk = 0.0;
+  m.gear_out.Execute = true;
+  m.run(2);
+  EXPECT_EQ(m.gear_out.ErrorID, eid::kInvalidSlavePosition);
+  m.run(500);
+  EXPECT_TRUE(m.gear.InGear);
+  EXPECT_NEAR(m.f().Position, f0 + 50.2, 1e-6);
+}
+
+// A stop position behind a linear follower (it moves away from it) is "past it": 16#8037 too.
+TEST(Gearing, GP8GearOutStopPositionBehindLinear) {
+  GearingMachine m;
+  geared_at_100(m);
+  m.run(100);
+  m.gear_out.SlavePosition = m.f().Position - 5.0;
+  m.gear_out.SyncProfileReference = 1;
+  m.gear_out.MasterStopDistance = 10.0;
+  m.gear_out.Execute = true;
+  m.run(2);
+  EXPECT_EQ(m.gear_out.ErrorID, eid::kInvalidSlavePosition);
+  EXPECT_TRUE(m.gear.InGear);
+}
+
+// A modulo follower inside the stop travel waits for the next occurrence of SlavePosition that lies at least
+// the stop travel ahead (spec 07 §6.1 item 3, §6.7): F (0..360) at 100 mm/s, SlavePosition 20 ahead, stop
+// travel 50: it stops at SlavePosition one revolution later, having started 50 before it, and never reverses.
+TEST(Gearing, GP8GearOutProfile1InsideTheStopTravelModulo) {
+  GearingMachine m(virtual_linear(), virtual_rotary_modulo());
+  geared_at_100(m);
+  m.run(100);  // F shows about 10.x
+  const double shown = m.f().Position;
+  const double slave_position = shown + 20.0;
+  m.gear_out.SlavePosition = slave_position;
+  m.gear_out.SyncProfileReference = 1;
+  m.gear_out.MasterStopDistance = 100.0;
+  m.gear_out.Execute = true;
+  const double l0 = m.l().Position;
+  ASSERT_GT(m.run_until([&] { return m.gear_out.StartSyncOut; }, 10000), 0);
+  EXPECT_FALSE(m.gear_out.Error);
+  // Started 50 before the occurrence 360 further on: the leader (= unwrapped F) moved 360 + 20 - 50 = 330.
+  EXPECT_NEAR(m.l().Position - l0, 330.0, 0.11);
+  double previous = m.l().Position;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  EXPECT_GE(m.f().Velocity, -1e-9);  // no reversal
+                  previous = m.l().Position;
+                  return m.gear_out.Done;
+                },
+                2000),
+            0);
+  EXPECT_NEAR(m.f().Position, slave_position, 1e-6);
+  EXPECT_NEAR(previous - l0, 330.0 + 100.0, 0.11);
+}
+
+// A start seen exactly at the crossing on a modulo follower (the remaining distance a rounding below the stop
+// travel) starts there; it used to move the stop position one revolution further each time and never stop.
+TEST(Gearing, GP8GearOutProfile1ModuloStartAtTheCrossing) {
+  GearingMachine m(virtual_linear(), virtual_rotary_modulo());
+  geared_at_100(m);
+  m.gear_out.SlavePosition = 120.0;
+  m.gear_out.SyncProfileReference = 1;
+  m.gear_out.MasterStopDistance = 100.0;
+  m.gear_out.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.gear_out.Done; }, 10000), 0);
+  EXPECT_NEAR(m.f().Position, 120.0, 1e-6);
+  EXPECT_LT(m.l().Position, 120.0 + 50.0 + 0.2);  // the first pass, not a later revolution
+}
+
+// MC_GearOut profile 0 starts braking without skipping a cycle's travel (spec 07 §6.7): the follower's step
+// per cycle never exceeds the synchronous one (2·100·T) when the stop profile takes over.
+TEST(Gearing, GP5GearOutProfile0StartHasNoVelocitySpike) {
+  GearingMachine m;
+  m.gear.RatioNumerator = 2;
+  geared_at_100(m);
+  m.gear_out.SlavePosition = 1000.0;
+  m.gear_out.SyncProfileReference = 0;
+  m.gear_out.Deceleration = 1000.0;
+  m.gear_out.Jerk = 0.0;
+  m.gear_out.Execute = true;
+  double last = m.f().Position;
+  double largest_step = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  largest_step = std::max(largest_step, m.f().Position - last);
+                  last = m.f().Position;
+                  return m.gear_out.Done;
+                },
+                20000),
+            0);
+  EXPECT_LE(largest_step, 0.2 + 1e-9);
+  EXPECT_NEAR(m.f().Position, 1000.0, 1e-6);
+}
+
+// GearInPos profile 0 stays within the job's Velocity and Acceleration (decision Y6, spec 07 §2.2 "the
+// configured follower limits apply", §6.8): L at 100, F at rest at 0, 1/1 onto (300, 100) with Velocity 300,
+// Acceleration 2000. The fixed-point length estimate it replaced oscillated and gave a blend of 686 mm/s and
+// 8000 mm/s².
+TEST(Gearing, GP9GearInPosProfile0WithinTheJobDynamics) {
+  GearingMachine m;
+  m.gear_pos.MasterSyncPosition = 300.0;
+  m.gear_pos.SlaveSyncPosition = 100.0;
+  m.gear_pos.SyncProfileReference = 0;
+  m.gear_pos.Velocity = 300.0;
+  m.gear_pos.Acceleration = 2000.0;
+  m.gear_pos.Deceleration = 2000.0;
+  m.gear_pos.Jerk = 0.0;
+  m.gear_pos.Execute = true;
+  m.run(1);
+  leader_at(m, 100.0);
+  double v_max = 0.0;
+  double a_max = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  v_max = std::max(v_max, std::fabs(m.f().Velocity));
+                  a_max = std::max(a_max, std::fabs(m.f().Acceleration));
+                  return m.gear_pos.InSync;
+                },
+                5000),
+            0);
+  EXPECT_LE(v_max, 300.0);
+  EXPECT_LE(a_max, 2000.0);
+  EXPECT_GT(v_max, 250.0);  // and not needlessly slow: close to the job's Velocity
+  EXPECT_NEAR(m.l().Position, 300.0, 0.11);
+  EXPECT_NEAR(m.f().Position - (m.l().Position - 200.0), 0.0, 1e-6);
 }
 
 // GV-1: MC_GearInVelocity(100/100, ContinuousUpdate, Acceleration 1000), L at 100, F at rest: InSync after

@@ -23,6 +23,7 @@ inline constexpr std::uint16_t kInvalidMasterStartDistance =
     0x8026;  // MasterStartDistance / MasterStopDistance
 inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
 inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
+inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;   // MC_GearOut stop position not reachable
 inline constexpr std::uint16_t kNoGearing = 0x8077;              // MC_GearOut without MC_GearIn/GearInPos
 inline constexpr std::uint16_t kHomingDuringGearInPos = 0x80A1;  // MC_Home while MC_GearInPos is active
 // tomc's own (spec 03 §5 [IMPL]):

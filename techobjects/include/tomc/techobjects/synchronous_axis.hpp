@@ -11,6 +11,7 @@
 // leader needs no unwrapping, and user positions in leader coordinates are mapped onto the next occurrence.
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -164,6 +165,10 @@ class SynchronousAxis final : public PositioningAxis {
     std::int32_t sync_direction = 3;
     double direction = 1.0;  // the leader's direction of travel towards the start
     ProfileLimits limits{};  // profile 0
+    // Profile 0: the last synchronization length and what it was computed from (reused while they stay).
+    double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
+    MotionState sized_follower{};
+    double sized_length = 0.0;
   };
   struct Desync {  // MC_GearOut
     JobId id = 0;
