@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tomc/diagnostics/positioning_panel.hpp"
 #include "tomc/techobjects/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
 #include "tomc/techobjects/speed_axis.hpp"
@@ -115,7 +116,8 @@ void Diagnostics::add(to::SpeedAxis& axis) {
 }
 
 void Diagnostics::add(to::PositioningAxis& axis) {
-  add(std::make_unique<TechnologyObjectView<to::PositioningAxis>>(axis), nullptr);
+  add(std::make_unique<TechnologyObjectView<to::PositioningAxis>>(axis),
+      std::make_unique<PositioningAxisPanel>(axis));
 }
 
 void Diagnostics::add(to::ExternalEncoder& encoder) {

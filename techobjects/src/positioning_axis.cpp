@@ -195,6 +195,7 @@ void PositioningAxis::configure_monitoring() noexcept {
 // Helpers
 
 double PositioningAxis::override_factor() const noexcept {
+  if (control_.override_ineffective()) return 1.0;  // spec 02 §9.3: the panel has its own "adapt velocity"
   return std::clamp(db_.Override.Velocity, 0.0, 200.0) / 100.0;  // spec 01 §8.4: 0..200 %
 }
 
@@ -393,7 +394,11 @@ void PositioningAxis::start_positioning(Motion motion) noexcept {
 
 PowerState PositioningAxis::power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept {
   PowerState s;
-  if (start_mode != 0 && start_mode != 1) {
+  if (const auto e = control_.program_job_rejection()) {
+    // The panel holds control priority: the program's MC_Power changes nothing (spec 02 §9.2, decision W2).
+    s.Error = enable;
+    s.ErrorID = enable ? e : 0;
+  } else if (start_mode != 0 && start_mode != 1) {
     s.Error = true;
     s.ErrorID = error_id::kInvalidStartMode;
   } else if (stop_mode < 0 || stop_mode > 3) {
@@ -411,6 +416,7 @@ PowerState PositioningAxis::power(bool enable, std::int32_t start_mode, std::int
 }
 
 Submission PositioningAxis::reset(bool restart) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (restart && (phase_ != PowerPhase::kDisabled || enable_)) {
     return Submission::reject(error_id::kRestartNeedsDisabledAxis);
   }
@@ -421,6 +427,7 @@ Submission PositioningAxis::reset(bool restart) noexcept {
 }
 
 Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
   if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
   if (modulo() && (in.Direction < 1 || in.Direction > 3))
@@ -455,6 +462,7 @@ Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept
 }
 
 Submission PositioningAxis::move_relative(const MoveRelativeInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Distance)) return Submission::reject(error_id::kInvalidPosition);
   if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
   ProfileLimits limits;
@@ -484,6 +492,7 @@ Submission PositioningAxis::move_relative(const MoveRelativeInputs& in) noexcept
 }
 
 Submission PositioningAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
   if (in.Direction < 0 || in.Direction > 2) return Submission::reject(error_id::kInvalidDirection);
   ProfileLimits limits;
@@ -515,6 +524,7 @@ Submission PositioningAxis::move_velocity(const MoveVelocityInputs& in) noexcept
 }
 
 Submission PositioningAxis::halt(const HaltInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (in.Mode != 0 && in.Mode != 1) return Submission::reject(error_id::kInvalidMode);
   ProfileLimits limits;
   if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Deceleration,
@@ -537,6 +547,7 @@ Submission PositioningAxis::halt(const HaltInputs& in) noexcept {
 }
 
 Submission PositioningAxis::stop(const StopInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   const int weight = stop_weight_of_mc_stop_mode(in.Mode);
   if (weight == 0) return Submission::reject(error_id::kInvalidMode);
   ProfileLimits limits;
@@ -589,6 +600,7 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
   const bool mine = running != 0 && running == motion_.id && motion_.kind == JobKind::kJog;
   if (!mine) {
     if (!any) return Submission{};
+    if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
     if (both) return Submission::reject(error_id::kJogWrongDirection);
     if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
     ProfileLimits limits;
@@ -625,6 +637,7 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
 
 Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
                                          std::uint16_t stw2_mask) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   constexpr std::uint16_t kUserStw1 = 0xFB00;
   constexpr std::uint16_t kUserStw2 = 0x0FFF;
   if ((stw1_mask & ~kUserStw1) != 0 || (stw2_mask & ~kUserStw2) != 0)
@@ -638,6 +651,7 @@ Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_
 }
 
 Submission PositioningAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   switch (parameter_number) {
     case 1000: {
       // PositionLimits_HW.Active: effective at once; TRUE survives until a TO restart (spec 02 §4.4).

@@ -808,6 +808,7 @@ void PositioningAxis::update_status() noexcept {
   const PositioningOutcome outcome = positioning_.status().outcome;
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
+  assign(sw, StatusWordBit::kControlPanelActive, control_.held());
   assign(sw, StatusWordBit::kHomingDone, homed());
   // P: Done after the positioning window check (spec 04 §8 rule 2), or no motion job at all.
   assign(sw, StatusWordBit::kDone,

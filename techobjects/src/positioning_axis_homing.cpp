@@ -230,6 +230,7 @@ void PositioningAxis::run_passive_homing() noexcept {
 }
 
 Submission PositioningAxis::home(const HomeInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (!std::isfinite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
   if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
   if (in.Sensor != 0 && static_cast<std::uint32_t>(in.Sensor) != db_.OperativeSensor) {

@@ -331,6 +331,7 @@ Submission SynchronousAxis::start_gearing(JobKind kind, const LeadingValueSource
 }
 
 Submission SynchronousAxis::gear_in(const GearInInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearIn, in.Master, in.RatioNumerator, in.RatioDenominator,
                                      in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -340,6 +341,7 @@ Submission SynchronousAxis::gear_in(const GearInInputs& in) noexcept {
 }
 
 Submission SynchronousAxis::gear_in_velocity(const GearInVelocityInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearInVelocity, in.Master, in.RatioNumerator,
                                      in.RatioDenominator, in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -352,6 +354,7 @@ Submission SynchronousAxis::gear_in_velocity(const GearInVelocityInputs& in) noe
 }
 
 Submission SynchronousAxis::gear_in_pos(const GearInPosInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (in.RatioNumerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
   if (in.RatioDenominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 3) {
@@ -401,6 +404,7 @@ Submission SynchronousAxis::gear_in_pos(const GearInPosInputs& in) noexcept {
 }
 
 Submission SynchronousAxis::gear_out(const GearOutInputs& in) noexcept {
+  if (const auto e = control_.program_job_rejection()) return Submission::reject(e);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 5) {
     return Submission::reject(error_id::kInvalidSyncProfileReference);
   }

@@ -85,14 +85,35 @@ TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
   })");
   const DemoRun r = tomc({"demo", "--config", path});
   EXPECT_EQ(r.status, 2) << r.err;
-  for (const char* expected :
-       {"technology_objects[0].config.DynamicLimits.MaxVelocity",
-        "technology_objects[1].drive: missing (a TO_PositioningAxis needs a drive",
-        "program.C: no technology object", "program.A.dwell_s", "diagnostics.port",
-        "diagnostics.colour: unknown key", "extra: unknown key"}) {
+  for (const char* expected : {"technology_objects[0].config.DynamicLimits.MaxVelocity",
+                               "technology_objects[1].drive: missing (a TO_PositioningAxis needs a drive",
+                               "program.C: no technology object", "program.A.dwell_s", "diagnostics.port",
+                               "diagnostics.colour: unknown key", "extra: unknown key"}) {
     EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
   }
   EXPECT_EQ(tomc({"demo", "--config", write_file("not_json", "{ nope")}).status, 2);
+}
+
+// The program of positioning axes and external encoders (docs/diagnostics.md "tomc demo").
+TEST(DemoCli, PositioningProgramProblemsAreNamed) {
+  const std::string path = write_file("bad_positioning_program", R"({
+    "technology_objects": [
+      {"name": "P", "type": "TO_PositioningAxis", "drive": {"adapter": "simulated", "telegram": 3}},
+      {"name": "E", "type": "TO_ExternalEncoder", "drive": {"adapter": "simulated", "encoder_telegram": 81}}
+    ],
+    "program": {
+      "P": {"home_mode": 5, "positions": [1, "x"], "distance": 10, "velocity": -1, "speed": 2},
+      "E": {"positions": [1]}
+    }
+  })");
+  const DemoRun r = tomc({"demo", "--config", path});
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* expected :
+       {"program.P.home_mode: expected 0 (set position) or 3", "program.P.positions[1]",
+        "program.P.distance: either positions or distance", "program.P.velocity",
+        "program.P.speed: unknown key", "program.E: an external encoder has no program"}) {
+    EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
+  }
 }
 
 // A machine of one's own, in the tomc sim format, read-only (no token), on any free port, for one second.

@@ -10,6 +10,7 @@
 #include <new>
 
 #include "diagnostics_fixture.hpp"
+#include "positioning_panel_fixture.hpp"
 
 namespace {
 std::atomic<std::uint64_t> g_allocations{0};
@@ -128,6 +129,40 @@ TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
   EXPECT_EQ(in_cycle, 0u);
   EXPECT_GT(completed_traces, 0);
   EXPECT_TRUE(m.axes[0]->control_priority().held());
+}
+
+// The positioning axis' panel: homing (set position and active), absolute and relative positioning, jog and
+// stop, in the cycle without allocation.
+TEST(DiagnosticsAllocation, PositioningPanelDoesNotAllocate) {
+  tomc::testing::PositioningDiagnosticsMachine m;
+  std::uint64_t in_cycle = 0;
+  auto post = [&](PanelCommandKind kind, std::int32_t direction = 0, double value = 0.0,
+                  std::int32_t mode = 0) {
+    diagnostics::PanelCommand c;
+    c.session = 9;
+    c.kind = kind;
+    c.direction = direction;
+    c.value = value;
+    c.mode = mode;
+    ASSERT_NE(m.diagnostics.post(c), 0u);
+  };
+  post(PanelCommandKind::kTake, 0, 60.0);
+  post(PanelCommandKind::kEnable);
+  for (int i = 0; i < kCycles / 5; ++i) {
+    const int phase = i % 2000;
+    if (phase == 100) post(PanelCommandKind::kHome, 0, 0.0, (i / 2000) % 2 == 0 ? 0 : 3);
+    if (phase == 900) post(PanelCommandKind::kMoveAbsolute, 0, 20.0 * ((i / 2000) % 3));
+    if (phase == 1400) post(PanelCommandKind::kMoveRelative, -1, 5.0);
+    if (phase == 1700) post(PanelCommandKind::kJog, 1);
+    if (phase == 1800) post(PanelCommandKind::kStop);
+    if (i % 200 == 0) post(PanelCommandKind::kLifebeat);
+    const auto before = g_allocations.load(std::memory_order_relaxed);
+    m.runtime.step();
+    in_cycle += g_allocations.load(std::memory_order_relaxed) - before;
+    if (i % 20 == 0) m.diagnostics.poll();
+  }
+  EXPECT_EQ(in_cycle, 0u);
+  EXPECT_TRUE(m.axis->control_priority().held());
 }
 
 }  // namespace

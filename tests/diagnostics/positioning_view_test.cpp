@@ -1,6 +1,7 @@
 // The diagnostics views of TO_PositioningAxis and TO_ExternalEncoder (spec 04 §9.2, §9.3): every variable of
 // their reflection tables published, the layout items evaluated on real objects, the positioning axis'
-// telegram words (telegram 3: G1_XIST1 etc.), no control panel yet.
+// telegram words (telegram 3: G1_XIST1 etc.); the positioning axis has a control panel with homing and
+// positioning (positioning_panel_test.cpp), the external encoder none.
 #include <gtest/gtest.h>
 
 #include "tomc/diagnostics/diagnostics.hpp"
@@ -85,7 +86,8 @@ TEST(PositioningViews, PositioningAxisAndExternalEncoder) {
   for (const auto& c : d.view(0).telegram_channels())
     has_xist1 = has_xist1 || c.signal == telegrams::Signal::G1_XIST1;
   EXPECT_TRUE(has_xist1);
-  EXPECT_EQ(d.panel(0), nullptr);
+  ASSERT_NE(d.panel(0), nullptr);
+  EXPECT_NE(d.panel(0)->capabilities() & diagnostics::capability::kMoveAbsolute, 0u);
   EXPECT_EQ(d.view(1).type(), to::TechnologyObjectType::kExternalEncoder);
   EXPECT_EQ(state[1].snapshot.values.size(), d.view(1).variables().size());
   EXPECT_DOUBLE_EQ(item(d, state[1].snapshot, 1, "Actual values", "Actual position"),

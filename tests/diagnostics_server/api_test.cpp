@@ -6,12 +6,14 @@
 #include <httplib.h>
 
 #include <chrono>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <thread>
 
 #include "../diagnostics/diagnostics_fixture.hpp"
+#include "../diagnostics/positioning_panel_fixture.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/techobjects/realtime_runner.hpp"
 
@@ -35,28 +37,9 @@ double speed_setpoint(const Json& objects, const Json& status, std::size_t objec
   return v.is_number() ? v.get<double>() : 0.0;
 }
 
-struct Served {
-  explicit Served(std::string token = kToken, std::size_t axes = 1)
-      : machine(axes, diagnostics::DiagnosticsConfig{5, 4096, 500}) {
-    // The program's inputs are set before the cycle starts: afterwards only the API changes the machine.
-    for (std::size_t i = 1; i < axes; ++i) {
-      machine.programs[i]->power.Enable = true;
-      machine.programs[i]->move.Velocity = 300.0;
-      machine.programs[i]->run = true;
-    }
-    diagnostics::ServerOptions options;
-    options.port = 0;
-    options.token = std::move(token);
-    options.runner_statistics = [this] { return runner.statistics(); };
-    server = std::make_unique<diagnostics::Server>(machine.diagnostics, options);
-    server->start();
-    runner.start();
-    objects = get("/api/objects").second;
-  }
-  ~Served() {
-    server->stop();
-    runner.stop();
-  }
+// HTTP helpers against a running server.
+struct Http {
+  const diagnostics::Server* server = nullptr;
   httplib::Client client() const {
     httplib::Client c("127.0.0.1", server->port());
     c.set_read_timeout(5, 0);
@@ -78,11 +61,6 @@ struct Served {
     if (!r) return {0, nullptr};
     return {r->status, Json::parse(r->body, nullptr, false)};
   }
-  std::pair<int, Json> panel(const std::string& command, Json extra = Json::object()) const {
-    extra["command"] = command;
-    extra["session"] = kSession;
-    return post("/api/panel/Axis1", extra.dump());
-  }
   // Polls /api/status until `predicate(status)` holds (at most `timeout`).
   template <typename Predicate>
   Json wait_status(Predicate predicate, std::chrono::milliseconds timeout = 5000ms) const {
@@ -101,12 +79,91 @@ struct Served {
     ADD_FAILURE() << "condition not met; last status: " << last.dump().substr(0, 400);
     return last;
   }
+};
+
+struct Served : Http {
+  explicit Served(std::string token = kToken, std::size_t axes = 1)
+      : machine(axes, diagnostics::DiagnosticsConfig{5, 4096, 500}) {
+    // The program's inputs are set before the cycle starts: afterwards only the API changes the machine.
+    for (std::size_t i = 1; i < axes; ++i) {
+      machine.programs[i]->power.Enable = true;
+      machine.programs[i]->move.Velocity = 300.0;
+      machine.programs[i]->run = true;
+    }
+    diagnostics::ServerOptions options;
+    options.port = 0;
+    options.token = std::move(token);
+    options.runner_statistics = [this] { return runner.statistics(); };
+    owned_server = std::make_unique<diagnostics::Server>(machine.diagnostics, options);
+    server = owned_server.get();
+    owned_server->start();
+    runner.start();
+    objects = get("/api/objects").second;
+  }
+  ~Served() {
+    owned_server->stop();
+    runner.stop();
+  }
+  std::pair<int, Json> panel(const std::string& command, Json extra = Json::object()) const {
+    extra["command"] = command;
+    extra["session"] = kSession;
+    return post("/api/panel/Axis1", extra.dump());
+  }
 
   tomc::testing::DiagnosticsMachine machine;
   techobjects::RealTimeRunner runner{techobjects::RealTimeRunnerConfig{1ms, 0, false},
                                      [this] { machine.runtime.step(); }};
-  std::unique_ptr<diagnostics::Server> server;
+  std::unique_ptr<diagnostics::Server> owned_server;
   Json objects;
+};
+
+// The positioning axis "Slide" (positioning_panel_fixture.hpp) served in real time.
+struct ServedSlide : Http {
+  ServedSlide() : machine(diagnostics::DiagnosticsConfig{5, 4096, 500}) {
+    diagnostics::ServerOptions options;
+    options.port = 0;
+    options.token = kToken;
+    owned_server = std::make_unique<diagnostics::Server>(machine.diagnostics, options);
+    server = owned_server.get();
+    owned_server->start();
+    runner.start();
+  }
+  ~ServedSlide() {
+    owned_server->stop();
+    runner.stop();
+  }
+  std::pair<int, Json> panel(const std::string& command, Json extra = Json::object(),
+                             const char* token = kToken) const {
+    extra["command"] = command;
+    extra["session"] = kSession;
+    return post("/api/panel/Slide", extra.dump(), token);
+  }
+  // A data-block variable of the slide from /api/objects/Slide/variables.
+  double variable(std::string_view path) const {
+    const Json v = get("/api/objects/Slide/variables").second;
+    for (const auto& x : v["variables"]) {
+      if (x["path"] == path && x["value"].is_number()) return x["value"].get<double>();
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Polls the variable until it equals `value` (5 s at most).
+  bool wait_variable(std::string_view path, double value) const {
+    const auto deadline = std::chrono::steady_clock::now() + 5s;
+    while (std::chrono::steady_clock::now() < deadline) {
+      if (variable(path) == value) return true;
+      std::this_thread::sleep_for(20ms);
+    }
+    ADD_FAILURE() << path << " did not reach " << value << " (last " << variable(path) << ")";
+    return false;
+  }
+  static std::uint32_t status_word(const Json& j) {
+    return static_cast<std::uint32_t>(j["objects"][0]["words"]["StatusWord"].get<double>());
+  }
+
+  tomc::testing::PositioningDiagnosticsMachine machine;
+  techobjects::RealTimeRunner runner{techobjects::RealTimeRunnerConfig{1ms, 0, false},
+                                     [this] { machine.runtime.step(); }};
+  std::unique_ptr<diagnostics::Server> owned_server;
 };
 
 // Index of a layout item of an object in /api/objects.
@@ -225,6 +282,76 @@ TEST(WebApi, LifebeatLossOverHttp) {
     return j["objects"][0]["panel"]["held"] == false && j["objects"][0]["panel"]["error_id"] == "16#8013";
   });
   EXPECT_EQ(j["objects"][0]["panel"]["error_text"].get<std::string>().find("lifebeat"), 0u);
+}
+
+// The positioning axis' panel over HTTP (spec 02 §9.2-§9.4): the token is needed; set position (MC_Home
+// Mode 0) makes the axis homed (StatusWord.X5); an absolute move reaches its target; parameters out of range
+// get 400 before they reach the cycle, and an error of the TO (16#8105, not homed) reaches the status.
+TEST(WebApi, PositioningPanelHomesAndPositions) {
+  ServedSlide s;
+  const auto objects = s.get("/api/objects").second;
+  const auto caps = objects["objects"][0]["capabilities"].get<std::vector<std::string>>();
+  for (const char* c : {"home_active", "home_set", "move_absolute", "move_relative", "jog"})
+    EXPECT_NE(std::find(caps.begin(), caps.end(), c), caps.end()) << c;
+  EXPECT_EQ(objects["objects"][0]["instructions"].size(), 8u);
+  EXPECT_EQ(s.panel("take", {{"lifebeat_s", 5.0}}, nullptr).first, 401);
+  EXPECT_EQ(s.panel("take", {{"lifebeat_s", 5.0}}, "wrong").first, 403);
+  ASSERT_EQ(s.panel("take", {{"lifebeat_s", 5.0}}).first, 200);
+  ASSERT_EQ(s.panel("enable").first, 200);
+  s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & 1u) != 0; });
+  // Not homed: accepted by the panel, refused by the TO; the ErrorID reaches the page.
+  ASSERT_EQ(s.panel("move_absolute", {{"position", 10.0}}).first, 200);
+  s.wait_status([](const Json& j) { return j["objects"][0]["panel"]["error_id"] == "16#8105"; });
+
+  struct Case {
+    const char* command;
+    Json parameters;
+  };
+  const std::vector<Case> bad = {
+      {"home", {{"mode", "passive"}, {"position", 0.0}}},
+      {"home", {{"mode", "set"}}},
+      {"home", {{"mode", "set"}, {"position", "zero"}}},
+      {"move_absolute", Json::object()},
+      {"move_absolute", {{"position", 1.0}, {"direction", 2}}},
+      {"move_relative", {{"distance", 1.0}, {"direction", 0}}},
+      {"move_relative", {{"distance", 1.0}, {"speed", 3}}},
+  };
+  for (const auto& c : bad) {
+    const auto [code, body] = s.panel(c.command, c.parameters);
+    EXPECT_EQ(code, 400) << c.command << " " << c.parameters.dump();
+    EXPECT_TRUE(body.contains("error")) << body.dump();
+  }
+
+  ASSERT_EQ(s.panel("home", {{"mode", "set"}, {"position", 40.0}}).first, 200);
+  s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & (1u << 5)) != 0; });
+  EXPECT_NEAR(s.variable("ActualPosition"), 40.0, 0.01);
+  ASSERT_EQ(s.panel("move_absolute", {{"position", 60.0}}).first, 200);
+  EXPECT_TRUE(s.wait_variable("Position", 60.0));
+  ASSERT_EQ(s.panel("move_relative", {{"distance", 5.0}, {"direction", -1}}).first, 200);
+  EXPECT_TRUE(s.wait_variable("Position", 55.0));
+  s.wait_status([](const Json& j) { return j["objects"][0]["panel"]["motion"] == "none"; });
+  ASSERT_EQ(s.panel("give_back").first, 200);
+  s.wait_status([](const Json& j) {
+    return j["objects"][0]["panel"]["held"] == false && (ServedSlide::status_word(j) & 1u) == 0;
+  });
+}
+
+// spec 02 §9.2: the page stops sending lifebeats while the positioning axis moves: it stops, is disabled,
+// master control returns to the program, 16#8013.
+TEST(WebApi, PositioningAxisLifebeatLossOverHttp) {
+  ServedSlide s;
+  ASSERT_EQ(s.panel("take", {{"lifebeat_s", 0.5}}).first, 200);
+  ASSERT_EQ(s.panel("enable").first, 200);
+  s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & 1u) != 0; });
+  ASSERT_EQ(s.panel("jog", {{"direction", 1}}).first, 200);
+  s.wait_status([](const Json& j) {
+    return (ServedSlide::status_word(j) & (1u << 9)) != 0;  // X9 JogCommand
+  });
+  const Json j = s.wait_status([](const Json& j) {
+    return j["objects"][0]["panel"]["held"] == false && j["objects"][0]["panel"]["error_id"] == "16#8013";
+  });
+  s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & (1u | 16u)) == 0; });
+  EXPECT_GT(s.variable("ActualPosition"), 0.0);
 }
 
 TEST(WebApi, TraceAndExports) {

@@ -4,7 +4,9 @@
 // then: the page loads and shows the axes; the demo program releases the conveyor; the page takes master
 // control, enables and jogs it and sees its speed change; records a trace and sees the plot; and when the
 // page goes away, the lifebeat monitoring stops the axis and returns master control (16#8013). Screenshots and
-// the trace PNG are kept in the artifacts folder.
+// the trace PNG are kept in the artifacts folder. Then, on a second page, the linear positioning axis: its program
+// switch releases it, the page takes master control, enables it, jogs it and sees ActualPosition change,
+// positions it absolutely, and gives master control back to the program.
 import { chromium } from 'playwright-core';
 import { spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -180,6 +182,57 @@ try {
   await page2.locator('#connection.ok').waitFor({ timeout: 10000 });
   await page2.waitForFunction(() => document.getElementById('panel-message').textContent.includes('16#8013'));
   await page2.screenshot({ path: join(artifacts, '04-after-lifebeat.png') });
+  page2.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(m.text()); });
+  page2.on('pageerror', (e) => consoleErrors.push(String(e)));
+  page = page2;  // for the failure screenshot
+
+  // 6. The linear positioning axis (Slide, a 10 mm/rev leadscrew): the program homed it and moves it in a loop;
+  //    its switch releases it; the page takes master control, enables and jogs it: ActualPosition changes.
+  await page2.click('button.object[data-object="Slide"]');
+  await page2.waitForFunction(() => document.getElementById('object-title').textContent === 'Slide (TO_PositioningAxis)');
+  check(await page2.locator('#move-absolute').isVisible(), 'absolute positioning shown for a positioning axis');
+  check(await page2.locator('#home-active').isVisible(), 'active homing shown for a positioning axis');
+  await until('the program to have homed the slide', () => ledOn(page2, 'Axis status/Homed'), 15000);
+  await page2.click('[data-switch="Slide.automatic"]');
+  await until('the program to stop and disable the slide', async () =>
+    !(await ledOn(page2, 'Axis status/Enabled')) && (await shownValue(page2, 'Setpoints/Setpoint velocity')) === 0, 15000);
+  await page2.click('#panel-take');
+  await page2.locator('#panel-state[data-held="mine"]').waitFor();
+  check(await ledOn(page2, 'Axis status/Axis control panel active'), 'StatusWord.X4 of the slide shown');
+  await page2.click('#panel-enable');
+  await until('the panel to enable the slide', () => ledOn(page2, 'Axis status/Enabled'));
+  const start = await shownValue(page2, 'Actual values/Actual position');
+  // Towards the middle of the travel (software limits -5 .. 305 mm): no limit switch in the way.
+  const jogId = start < 150 ? '#jog-forward' : '#jog-backward';
+  const sign = start < 150 ? 1 : -1;
+  await page2.locator(jogId).hover();
+  await page2.mouse.down();
+  await until('the slide to move under the jog', async () =>
+    sign * ((await shownValue(page2, 'Actual values/Actual position')) - start) > 5);
+  await page2.screenshot({ path: join(artifacts, '05-slide-jogging.png') });
+  await page2.mouse.up();
+  await until('the slide to stop after the jog button was released',
+              async () => (await shownValue(page2, 'Setpoints/Setpoint velocity')) === 0);
+  const jogged = await shownValue(page2, 'Actual values/Actual position');
+  log(`slide jogged from ${start} mm to ${jogged} mm`);
+
+  // Absolute positioning with the panel's dynamics (MC_MoveAbsolute).
+  await page2.fill('#move-target', '150');
+  await page2.click('#move-absolute');
+  await until('the slide to reach 150 mm', async () =>
+    Math.abs((await shownValue(page2, 'Actual values/Actual position')) - 150) < 0.5 &&
+    (await shownValue(page2, 'Setpoints/Setpoint position')) === 150, 20000);
+  await page2.screenshot({ path: join(artifacts, '06-slide-positioned.png') });
+  log('slide positioned at 150 mm');
+
+  // Give back: the panel disables the slide; the program takes it again when its switch is on.
+  await page2.click('#panel-giveback');
+  await page2.locator('#panel-state[data-held="none"]').waitFor();
+  check(!(await ledOn(page2, 'Axis status/Enabled')), 'the slide is disabled after the give-back');
+  await page2.click('[data-switch="Slide.automatic"]');
+  await until('the program to run the slide again', () => ledOn(page2, 'Axis status/Enabled'), 10000);
+  log('master control of the slide returned to the program');
+
   // The refused take of step 2 is logged by Chromium as a failed resource (409); nothing else may appear.
   const unexpected = consoleErrors.filter(e => !e.includes('status of 409'));
   check(unexpected.length === 0, 'no console errors: ' + unexpected.join(' | '));

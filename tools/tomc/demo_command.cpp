@@ -145,7 +145,8 @@ using Json = scenario::Json;
 struct DemoConfig {
   double cycle_time_s = 0.001;
   std::vector<scenario::MachineObject> objects;
-  std::vector<std::pair<std::string, DemoSequence>> sequences;  // by object name
+  std::vector<std::pair<std::string, DemoSequence>> sequences;       // speed axes, by object name
+  std::vector<std::pair<std::string, DemoPositioning>> positioning;  // positioning axes, by object name
   diagnostics::ServerOptions server;
   diagnostics::DiagnosticsConfig diagnostics;
 };
@@ -179,6 +180,115 @@ std::optional<double> positive_number(const Json& v, const std::string& path, sc
     return std::nullopt;
   }
   return v.get<double>();
+}
+
+// program.<speed axis>: {"velocities": [...], "dwell_s": s}
+void load_speed_program(const Json& entry, const std::string& path, const std::string& name,
+                        DemoConfig& config, scenario::Problems& problems) {
+  only_keys(entry, path, {"velocities", "dwell_s"}, problems);
+  DemoSequence sequence;
+  if (const auto v = entry.find("velocities"); v != entry.end()) {
+    if (!v->is_array() || v->empty() || v->size() > 100) {
+      problems.add(scenario::join_path(path, "velocities"), "expected an array of 1 .. 100 numbers");
+    } else {
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        if (!(*v)[i].is_number()) {
+          problems.add(scenario::join_path(path, "velocities") + "[" + std::to_string(i) + "]",
+                       "expected a number");
+        } else {
+          sequence.velocities.push_back((*v)[i].get<double>());
+        }
+      }
+    }
+  }
+  if (const auto d = entry.find("dwell_s"); d != entry.end()) {
+    if (const auto s = positive_number(*d, scenario::join_path(path, "dwell_s"), problems))
+      sequence.dwell_s = *s;
+  }
+  config.sequences.emplace_back(name, std::move(sequence));
+}
+
+// The default loop of a positioning axis without a "program" entry: homing by setting the position 0; a
+// modulo axis turns in quarter turns, a linear axis moves between 10 % and 90 % of its software limits (0 and
+// 100 of its length unit without them).
+DemoPositioning default_positioning(const techobjects::PositioningAxis& axis) {
+  const auto& d = axis.data();
+  DemoPositioning plan;
+  if (d.Modulo.Enable) {
+    plan.distance = d.Modulo.Length / 4.0;
+  } else if (d.PositionLimits_SW.Active) {
+    const double span = d.PositionLimits_SW.MaxPosition - d.PositionLimits_SW.MinPosition;
+    plan.positions = {d.PositionLimits_SW.MinPosition + 0.1 * span,
+                      d.PositionLimits_SW.MinPosition + 0.9 * span};
+  } else {
+    plan.positions = {0.0, 100.0};
+  }
+  return plan;
+}
+
+// program.<positioning axis>: {"home_mode": 0|3, "home_position": x, "positions": [...] | "distance": d,
+// "velocity": v, "dwell_s": s}
+void load_positioning_program(const Json& entry, const std::string& path, const std::string& name,
+                              const techobjects::PositioningAxis* axis, DemoConfig& config,
+                              scenario::Problems& problems) {
+  only_keys(entry, path, {"home_mode", "home_position", "positions", "distance", "velocity", "dwell_s"},
+            problems);
+  DemoPositioning plan = axis != nullptr ? default_positioning(*axis) : DemoPositioning{};
+  const auto number = [&](const char* key, double& out) {
+    const auto v = entry.find(key);
+    if (v == entry.end()) return false;
+    if (!v->is_number() || !std::isfinite(v->get<double>())) {
+      problems.add(scenario::join_path(path, key), "expected a number, got " + kind_of(*v));
+      return false;
+    }
+    out = v->get<double>();
+    return true;
+  };
+  if (const auto m = entry.find("home_mode"); m != entry.end()) {
+    if (!m->is_number_integer() || (m->get<std::int64_t>() != 0 && m->get<std::int64_t>() != 3)) {
+      problems.add(scenario::join_path(path, "home_mode"), "expected 0 (set position) or 3 (active homing)");
+    } else {
+      plan.home_mode = m->get<std::int32_t>();
+    }
+  }
+  number("home_position", plan.home_position);
+  const bool has_positions = entry.contains("positions");
+  if (has_positions) {
+    plan.positions.clear();
+    plan.distance = 0.0;
+    const Json& v = entry["positions"];
+    if (!v.is_array() || v.empty() || v.size() > 100) {
+      problems.add(scenario::join_path(path, "positions"), "expected an array of 1 .. 100 numbers");
+    } else {
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_number()) {
+          problems.add(scenario::join_path(path, "positions") + "[" + std::to_string(i) + "]",
+                       "expected a number");
+        } else {
+          plan.positions.push_back(v[i].get<double>());
+        }
+      }
+    }
+  }
+  double distance = 0.0;
+  if (number("distance", distance)) {
+    if (has_positions) {
+      problems.add(scenario::join_path(path, "distance"), "either positions or distance, not both");
+    } else if (distance == 0.0) {
+      problems.add(scenario::join_path(path, "distance"), "expected a distance other than 0");
+    } else {
+      plan.positions.clear();
+      plan.distance = distance;
+    }
+  }
+  if (const auto v = entry.find("velocity"); v != entry.end()) {
+    if (const auto x = positive_number(*v, scenario::join_path(path, "velocity"), problems))
+      plan.velocity = *x;
+  }
+  if (const auto d = entry.find("dwell_s"); d != entry.end()) {
+    if (const auto x = positive_number(*d, scenario::join_path(path, "dwell_s"), problems)) plan.dwell_s = *x;
+  }
+  config.positioning.emplace_back(name, std::move(plan));
 }
 
 // Reads the file into a runtime: cycle_time and technology_objects as tomc sim reads them, then the optional
@@ -232,27 +342,17 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
           problems.add(path, "expected an object, got " + kind_of(entry));
           continue;
         }
-        only_keys(entry, path, {"velocities", "dwell_s"}, problems);
-        DemoSequence sequence;
-        if (const auto v = entry.find("velocities"); v != entry.end()) {
-          if (!v->is_array() || v->empty() || v->size() > 100) {
-            problems.add(scenario::join_path(path, "velocities"), "expected an array of 1 .. 100 numbers");
-          } else {
-            for (std::size_t i = 0; i < v->size(); ++i) {
-              if (!(*v)[i].is_number()) {
-                problems.add(scenario::join_path(path, "velocities") + "[" + std::to_string(i) + "]",
-                             "expected a number");
-              } else {
-                sequence.velocities.push_back((*v)[i].get<double>());
-              }
-            }
-          }
+        const auto object = std::find_if(config.objects.begin(), config.objects.end(),
+                                         [&](const scenario::MachineObject& o) { return o.name == name; });
+        // By kind: a definition with problems has no object, but its program is still checked.
+        using Kind = scenario::TechnologyObjectKind;
+        if (object->kind == Kind::kSpeedAxis) {
+          load_speed_program(entry, path, name, config, problems);
+        } else if (object->kind == Kind::kPositioningAxis || object->kind == Kind::kSynchronousAxis) {
+          load_positioning_program(entry, path, name, object->positioning_axis, config, problems);
+        } else {
+          problems.add(path, "an external encoder has no program (it is enabled and read)");
         }
-        if (const auto d = entry.find("dwell_s"); d != entry.end()) {
-          if (const auto s = positive_number(*d, scenario::join_path(path, "dwell_s"), problems))
-            sequence.dwell_s = *s;
-        }
-        config.sequences.emplace_back(name, std::move(sequence));
       }
     }
   }
@@ -362,28 +462,39 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
     return kExitBadInput;
   }
 
-  // The machine: every TO on the page, the demo program per axis with its "automatic" switch.
+  // The machine: every TO on the page with its panel, the demo program per TO, an "automatic" switch per
+  // axis.
   diagnostics::Diagnostics diagnostics(config.diagnostics);
-  std::vector<std::unique_ptr<DemoAxisProgram>> programs;
+  std::vector<std::unique_ptr<DemoProgram>> programs;
   for (const scenario::MachineObject& object : config.objects) {
-    if (object.speed_axis == nullptr) {
-      // Positioning/synchronous axes and external encoders: their views (no panel or demo program yet).
-      if (object.positioning_axis != nullptr) diagnostics.add(*object.positioning_axis);
-      if (object.external_encoder != nullptr) diagnostics.add(*object.external_encoder);
+    if (object.speed_axis != nullptr) {
+      diagnostics.add(*object.speed_axis);
+      DemoSequence sequence = default_sequence(*object.speed_axis);
+      for (const auto& [name, s] : config.sequences) {
+        if (name != object.name) continue;
+        if (!s.velocities.empty()) sequence.velocities = s.velocities;
+        sequence.dwell_s = s.dwell_s;
+      }
+      programs.push_back(std::make_unique<DemoAxisProgram>(*object.speed_axis, std::move(sequence)));
+    } else if (object.positioning_axis != nullptr) {  // also a synchronous axis
+      diagnostics.add(*object.positioning_axis);
+      DemoPositioning plan = default_positioning(*object.positioning_axis);
+      for (const auto& [name, p] : config.positioning) {
+        if (name == object.name) plan = p;
+      }
+      programs.push_back(std::make_unique<DemoPositioningProgram>(*object.positioning_axis, std::move(plan)));
+    } else if (object.external_encoder != nullptr) {
+      diagnostics.add(*object.external_encoder);
+      programs.push_back(std::make_unique<DemoEncoderProgram>(*object.external_encoder));
+    } else {
       continue;
     }
-    diagnostics.add(*object.speed_axis);
-    DemoSequence sequence = default_sequence(*object.speed_axis);
-    for (const auto& [name, s] : config.sequences) {
-      if (name != object.name) continue;
-      if (!s.velocities.empty()) sequence.velocities = s.velocities;
-      sequence.dwell_s = s.dwell_s;
+    if (auto* automatic = programs.back()->automatic()) {
+      diagnostics.add_switch(object.name + ".automatic",
+                             "the demo program runs " + object.name +
+                                 " in its loop; switch off to release the axis for the control panel",
+                             *automatic);
     }
-    programs.push_back(std::make_unique<DemoAxisProgram>(*object.speed_axis, std::move(sequence)));
-    diagnostics.add_switch(object.name + ".automatic",
-                           "the demo program runs " + object.name +
-                               " in its loop; switch off to release the axis for the control panel",
-                           programs.back()->automatic());
   }
   runtime->set_user_program([&programs](techobjects::Runtime& rt) {
     for (auto& p : programs)

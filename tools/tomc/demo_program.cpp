@@ -53,4 +53,125 @@ void DemoAxisProgram::operator()(const techobjects::CycleClock& clock) noexcept 
   reset_(axis_);
 }
 
+// ---- positioning axis ----
+
+DemoPositioningProgram::DemoPositioningProgram(techobjects::PositioningAxis& axis, DemoPositioning plan)
+    : axis_(axis), plan_(std::move(plan)) {
+  power_.StartMode = 1;
+  power_.StopMode = 2;  // leaving the loop stops with maximum dynamics, then disables
+  home_.Mode = static_cast<std::int16_t>(plan_.home_mode);
+  home_.Position = plan_.home_position;
+  absolute_.Velocity = relative_.Velocity = plan_.velocity;
+  absolute_.Direction = 3;  // a modulo axis takes the shortest way (ignored on a linear axis)
+  relative_.Distance = plan_.distance;
+}
+
+// A new job needs a rising Execute edge: one call with FALSE, then TRUE stays until the next job.
+void DemoPositioningProgram::start_home() noexcept {
+  end_jobs();
+  home_.Execute = true;
+  step_ = Step::kHoming;
+  step_time_s_ = 0.0;
+}
+
+void DemoPositioningProgram::start_move() noexcept {
+  end_jobs();
+  if (plan_.distance != 0.0) {
+    relative_.Execute = true;
+  } else if (!plan_.positions.empty()) {
+    absolute_.Position = plan_.positions[target_ % plan_.positions.size()];
+    absolute_.Execute = true;
+  }
+  step_ = Step::kMoving;
+  step_time_s_ = 0.0;
+}
+
+void DemoPositioningProgram::end_jobs() noexcept {
+  home_.Execute = absolute_.Execute = relative_.Execute = false;
+  home_(axis_);
+  absolute_(axis_);
+  relative_(axis_);
+}
+
+void DemoPositioningProgram::operator()(const techobjects::CycleClock& clock) noexcept {
+  const double dt = clock.servo_cycle_s;  // the demo's user program runs every servo cycle
+  const bool automatic = automatic_.load(std::memory_order_relaxed);
+  power_.Enable = automatic;
+  power_(axis_);
+  const bool enabled = automatic && power_.Status;
+  step_time_s_ += dt;
+  if (!enabled) {
+    if (step_ != Step::kDisabled) end_jobs();
+    step_ = Step::kDisabled;
+  } else {
+    const bool homed = techobjects::test(axis_.data().StatusWord, techobjects::StatusWordBit::kHomingDone);
+    const bool relative = plan_.distance != 0.0;
+    const bool move_done = relative ? relative_.Done : absolute_.Done;
+    const bool move_failed =
+        relative ? relative_.Error || relative_.CommandAborted : absolute_.Error || absolute_.CommandAborted;
+    switch (step_) {
+      case Step::kDisabled:
+        if (homed) {
+          start_move();
+        } else {
+          start_home();
+        }
+        break;
+      case Step::kHoming:
+        if (home_.Done) {
+          start_move();
+        } else if (home_.Error || home_.CommandAborted) {
+          step_ = Step::kFault;
+          step_time_s_ = 0.0;
+        }
+        break;
+      case Step::kMoving:
+        if (move_done) {
+          ++moves_;
+          ++target_;
+          step_ = Step::kDwell;
+          step_time_s_ = 0.0;
+        } else if (move_failed) {
+          step_ = Step::kFault;
+          step_time_s_ = 0.0;
+        }
+        break;
+      case Step::kDwell:
+        if (step_time_s_ >= plan_.dwell_s) start_move();
+        break;
+      case Step::kFault:
+        // A refused or aborted job: start again (homing if needed) after a second without a pending error.
+        if (step_time_s_ >= 1.0 &&
+            !techobjects::test(axis_.data().StatusWord, techobjects::StatusWordBit::kError)) {
+          end_jobs();
+          step_ = Step::kDisabled;
+        }
+        break;
+    }
+  }
+  home_(axis_);
+  absolute_(axis_);
+  relative_(axis_);
+  const bool error = techobjects::test(axis_.data().StatusWord, techobjects::StatusWordBit::kError);
+  error_time_s_ = automatic && error ? error_time_s_ + dt : 0.0;
+  reset_.Execute = error_time_s_ >= kAcknowledgeAfterS;
+  if (reset_.Execute) error_time_s_ = 0.0;
+  reset_(axis_);
+}
+
+// ---- external encoder ----
+
+DemoEncoderProgram::DemoEncoderProgram(techobjects::ExternalEncoder& encoder) : encoder_(encoder) {
+  power_.Enable = true;
+}
+
+void DemoEncoderProgram::operator()(const techobjects::CycleClock& clock) noexcept {
+  power_(encoder_);
+  const bool error = techobjects::test(encoder_.data().StatusWord, techobjects::StatusWordBit::kError);
+  error_time_s_ = error ? error_time_s_ + clock.servo_cycle_s : 0.0;
+  reset_.Execute = error_time_s_ >= kAcknowledgeAfterS;
+  if (reset_.Execute) error_time_s_ = 0.0;
+  reset_(encoder_);
+}
+
 }  // namespace tomc::cli

@@ -9,6 +9,8 @@
 //
 //   diagnostics::Diagnostics diagnostics;
 //   diagnostics.add(conveyor);            // a SpeedAxis: view + control panel
+//   diagnostics.add(slide);               // a PositioningAxis/SynchronousAxis: view + panel with homing,
+//                                         // positioning
 //   diagnostics.attach(runtime);          // before runtime.start()
 //   ... diagnostics.poll() every few tens of ms (the web server does), read with diagnostics.read(...)
 
@@ -89,8 +91,7 @@ class Diagnostics {
 
   // ---- set-up (before attach) ----
   void add(techobjects::SpeedAxis& axis);  // view + control panel
-  // View only (also a SynchronousAxis): its control panel comes with the control-priority hook of the
-  // positioning axis (docs/architecture.md "Diagnostics").
+  // View + control panel with homing and positioning (PositioningAxisPanel); also a SynchronousAxis.
   void add(techobjects::PositioningAxis& axis);
   void add(techobjects::ExternalEncoder& encoder);  // view (no panel: an encoder is not moved)
   // Any technology object: its view and, for an axis, its panel (nullptr: none).

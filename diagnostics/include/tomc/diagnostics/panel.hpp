@@ -281,6 +281,7 @@ class BasicAxisPanel : public AxisPanel {
   // The panel velocity with "Adapt velocity" applied (spec 02 §9.3: configured velocity x factor).
   double velocity() const noexcept { return dynamics_.velocity * adapt_percent_ / 100.0; }
   void set_motion(PanelMotion motion) noexcept { motion_ = motion; }
+  PanelMotion motion() const noexcept { return motion_; }
   // A new job of an Execute-edge instruction: a falling edge first if Execute is still TRUE.
   template <typename Instruction>
   void start(Instruction& fb) noexcept {

@@ -26,6 +26,7 @@
 #include "tomc/techobjects/alarms.hpp"
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/backlash.hpp"
+#include "tomc/techobjects/control_priority.hpp"
 #include "tomc/techobjects/drive_connection.hpp"
 #include "tomc/techobjects/dynamic_filter.hpp"
 #include "tomc/techobjects/encoder_channel.hpp"
@@ -104,6 +105,13 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
   AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
   const AxisDigitalInputs& digital_inputs() const noexcept { return inputs_; }
+
+  // ---- the axis control panel (spec 02 §9.2), as on the speed axis ----
+  ControlPriority& control_priority() noexcept { return control_; }
+  const ControlPriority& control_priority() const noexcept { return control_; }
+  // Precondition of taking control priority: the user program has released the axis (MC_Power.Enable =
+  // FALSE) and the TO is disabled (decision W1).
+  bool program_released() const noexcept { return !enable_ && phase_ == PowerPhase::kDisabled; }
 
   // ---- jobs (called by instructions from the user program) ----
   PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
@@ -346,6 +354,9 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   DynamicFilter dynamic_filter_;
   MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
   ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
+
+  // control priority of the axis control panel (spec 02 §9.2)
+  ControlPriority control_;
 
   // power
   PowerPhase phase_ = PowerPhase::kDisabled;

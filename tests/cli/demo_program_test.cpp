@@ -1,0 +1,104 @@
+// The user program of `tomc demo` on a positioning axis and an external encoder (tools/tomc/demo_program.*),
+// stepped by hand: the axis is powered, homed (MC_Home Mode 0 or 3) and positioned in a loop (MC_MoveAbsolute
+// between positions, MC_MoveRelative steps on a modulo axis); the switch "automatic" off disables it so that
+// the axis control panel can take master control (spec 02 §9.2, decision W15), on again resumes the loop.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "demo_program.hpp"
+#include "tomc/drives/simulated_drive.hpp"
+
+namespace {
+
+using namespace tomc;
+using cli::DemoPositioning;
+using cli::DemoPositioningProgram;
+using techobjects::StatusWordBit;
+
+struct DemoMachine {
+  explicit DemoMachine(techobjects::PositioningAxisData data, DemoPositioning plan, double units_per_rev)
+      : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
+    drives::DeviceConfig device;
+    device.drive_telegram = 3;
+    drives::SimulatedDriveParameters p;
+    p.load_units_per_revolution = units_per_rev;
+    auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, p));
+    axis = &runtime.emplace<techobjects::PositioningAxis>("Axis", &io, data);
+    program = std::make_unique<DemoPositioningProgram>(*axis, std::move(plan));
+    runtime.set_user_program([this](techobjects::Runtime& rt) { (*program)(rt.clock()); });
+    runtime.start();
+  }
+  template <typename Predicate>
+  int run_until(Predicate done, int limit) {
+    for (int i = 1; i <= limit; ++i) {
+      runtime.step();
+      if (done()) return i;
+    }
+    return -1;
+  }
+  bool bit(StatusWordBit b) const { return techobjects::test(axis->data().StatusWord, b); }
+
+  techobjects::Runtime runtime;
+  techobjects::PositioningAxis* axis = nullptr;
+  std::unique_ptr<DemoPositioningProgram> program;
+};
+
+TEST(DemoProgram, LinearAxisIsHomedActivelyAndMovesBetweenTwoPositions) {
+  techobjects::PositioningAxisData data;
+  DemoPositioning plan;
+  plan.home_mode = 3;  // the motor encoder's zero mark (default Sensor[1].ActiveHoming.Mode)
+  plan.positions = {20.0, 60.0};
+  plan.velocity = 100.0;
+  plan.dwell_s = 0.2;
+  DemoMachine m(data, plan, 10.0);
+  ASSERT_GT(m.run_until([&] { return m.program->step() == DemoPositioningProgram::Step::kHoming; }, 500), 0);
+  ASSERT_GT(
+      m.run_until([&] { return m.bit(StatusWordBit::kHomingDone) && !m.bit(StatusWordBit::kHomingCommand); },
+                  20000),
+      0);
+  ASSERT_GT(m.run_until([&] { return m.program->moves() == 1; }, 5000), 0);
+  EXPECT_DOUBLE_EQ(m.axis->data().Position, 20.0);
+  ASSERT_GT(m.run_until([&] { return m.program->moves() == 2; }, 5000), 0);
+  EXPECT_DOUBLE_EQ(m.axis->data().Position, 60.0);
+  ASSERT_GT(m.run_until([&] { return m.program->moves() == 3; }, 5000), 0);
+  EXPECT_DOUBLE_EQ(m.axis->data().Position, 20.0);
+  EXPECT_FALSE(m.bit(StatusWordBit::kError));
+
+  // Released for the panel: the program disables the axis; the panel could take it now.
+  m.program->automatic()->store(false);
+  ASSERT_GT(m.run_until([&] { return m.axis->program_released(); }, 5000), 0);
+  EXPECT_EQ(m.program->step(), DemoPositioningProgram::Step::kDisabled);
+  // Back in automatic: still homed, the loop goes on without homing again.
+  m.program->automatic()->store(true);
+  ASSERT_GT(m.run_until([&] { return m.program->step() == DemoPositioningProgram::Step::kMoving; }, 500), 0);
+  const auto moves = m.program->moves();
+  ASSERT_GT(m.run_until([&] { return m.program->moves() == moves + 1; }, 10000), 0);
+}
+
+TEST(DemoProgram, ModuloAxisTurnsInRelativeSteps) {
+  techobjects::PositioningAxisData data;
+  data.Properties.MotionType = static_cast<std::int32_t>(techobjects::PropertiesMotionType::kRotary);
+  data.Units.LengthUnit = 1005;
+  data.Units.VelocityUnit = 1521;
+  data.Modulo.Enable = true;
+  data.Modulo.Length = 360.0;
+  data.DynamicLimits.MaxVelocity = data.DynamicLimits.Velocity = 3600.0;
+  data.DynamicLimits.MaxAcceleration = data.DynamicLimits.MaxDeceleration = 36000.0;
+  data.DynamicLimits.MaxJerk = 0.0;
+  data.DynamicDefaults.Acceleration = data.DynamicDefaults.Deceleration = 3600.0;
+  DemoPositioning plan;
+  plan.distance = 90.0;
+  plan.velocity = 360.0;
+  plan.dwell_s = 0.1;
+  DemoMachine m(data, plan, 360.0);
+  for (int step = 1; step <= 5; ++step) {
+    ASSERT_GT(m.run_until([&] { return m.program->moves() == static_cast<std::size_t>(step); }, 5000), 0)
+        << step;
+    EXPECT_NEAR(m.axis->data().Position, std::fmod(90.0 * step, 360.0), 1e-9) << step;
+  }
+  EXPECT_FALSE(m.bit(StatusWordBit::kError));
+}
+
+}  // namespace
