@@ -15,6 +15,8 @@ std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInp
   if (in.Mode != 0 && in.Mode != 1) return error_id::kInvalidMode;
   if (!std::isfinite(in.Limit) || in.Limit > 1.0e12) return error_id::kInvalidTorqueLimit;
   if (!torque_.active) {
+    // The axis control panel has master control: the user program starts no job (spec 02 §9.2, W2).
+    if (const auto e = control_.program_job_rejection()) return e;
     // Start conditions (spec 01 §8.10, §12 scenario 36): no MC_Stop, no error that prevents enabling.
     if (stop_.id != 0 && stop_.execute) return error_id::kLockedByStop;
     if (alarms_.strongest_reaction() == AlarmReaction::kRemoveEnable) return error_id::kAxisBlockedByAlarm;

@@ -285,6 +285,28 @@ TEST(TorqueLimiting, PositionBasedMonitorings) {
   }
 }
 
+// spec 02 §9.2 (decision W2): while the axis control panel holds master control, the program's
+// MC_TorqueLimiting does not start (16#8012); once the panel gives control back it does.
+TEST(TorqueLimiting, RejectedWhileThePanelHoldsMasterControl) {
+  TorqueMachine m;
+  m.run(2);
+  ASSERT_TRUE(m.axis->program_released());
+  m.axis->control_priority().grant();
+  m.torque.Enable = true;
+  m.torque.Limit = 1.0;  // of the 4 Nm reference: MOMRED 75 %
+  m.run(2);
+  EXPECT_TRUE(m.torque.Error);
+  EXPECT_EQ(m.torque.ErrorID, techobjects::error_id::kControlPanelActive);
+  EXPECT_EQ(m.momred(), 0);
+  m.axis->control_priority().give_back();
+  m.torque.Enable = false;
+  m.run(1);
+  m.torque.Enable = true;
+  m.run(2);
+  EXPECT_TRUE(m.torque.Busy);
+  EXPECT_GT(m.momred(), 0);
+}
+
 // spec 03 L3: the torque function stays effective when a TO alarm occurs, as long as Enable stays TRUE.
 TEST(TorqueLimiting, StaysEffectiveThroughAlarms) {
   TorqueMachine m;
