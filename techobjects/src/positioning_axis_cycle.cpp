@@ -745,7 +745,11 @@ void PositioningAxis::complete_jobs() noexcept {
   if (limit_stop_ && settled && at_zero) limit_stop_ = false;
   if (phase_ == PowerPhase::kDisabling) {
     const bool drive_off = virtual_axis() || !drive_.in_operation();
-    if ((stop_mode_ == 0 || stop_mode_ == 2) && settled && at_zero) phase_ = PowerPhase::kDisabled;
+    // A virtual or simulated axis' actual value lags its setpoint (spec 01 §2.5): it is disabled once the
+    // actual value has arrived too, so that the follow-up after disabling takes no step back.
+    const bool caught_up = !virtual_axis() || std::fabs(actual_position_ - setpoint_.position) < 1e-9;
+    if ((stop_mode_ == 0 || stop_mode_ == 2) && settled && at_zero && caught_up)
+      phase_ = PowerPhase::kDisabled;
     if (stop_mode_ == 1 && drive_off &&
         std::fabs(actual_velocity_) < db_.StandstillSignal.VelocityThreshold / units_.velocity)
       phase_ = PowerPhase::kDisabled;

@@ -51,6 +51,30 @@ TEST(PositioningVirtualAxis, DisablingWithStopMode1EndsAtOnce) {
   }
 }
 
+// spec 02 §3.1/§3.2: StopMode 0 brakes on the setpoint, then the TO is disabled and its setpoint follows the
+// actual value. The actual value of a virtual or simulated axis lags its setpoint, so the TO is disabled once
+// it has arrived: the position after disabling is where the braking ramp ended, no step back (a leader's step
+// would pass to its followers).
+TEST(PositioningVirtualAxis, DisablingWithStopMode0KeepsTheEndOfTheRamp) {
+  for (bool simulation : {false, true}) {
+    PositioningAxisMachine m(virtual_data(simulation), tomc::testing::linear_drive(), 3, false);
+    moving_virtual_axis(m);
+    m.power.StopMode = 0;
+    m.power.Enable = false;
+    double ramp_end = 0.0;
+    ASSERT_GT(m.run_until(
+                  [&] {
+                    if (m.db().Velocity == 0.0 && ramp_end == 0.0) ramp_end = m.db().Position;
+                    return !m.power.Busy;
+                  },
+                  500),
+              0);
+    m.run(20);
+    EXPECT_DOUBLE_EQ(m.db().Position, ramp_end) << simulation;
+    EXPECT_DOUBLE_EQ(m.db().ActualPosition, ramp_end) << simulation;
+  }
+}
+
 TEST(PositioningVirtualAxis, RemoveEnableStopsTheAxis) {
   for (bool simulation : {false, true}) {
     PositioningAxisMachine m(virtual_data(simulation), tomc::testing::linear_drive(), 3, false);
