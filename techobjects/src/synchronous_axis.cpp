@@ -445,6 +445,24 @@ bool SynchronousAxis::start_pending_sync(const LeadingValue& leader) noexcept {
   if (p.profile == 0) {
     length = sync_length_profile0(p, leader);
     x_a = p.master_sync - p.direction * length;
+    // The start position moves with the computed length. Synchronization starts only when the leader crosses
+    // it, within one cycle's travel (spec 07 §6.5); a start position already passed (at the job's start, or
+    // because the length grew) is not caught up with a step of the follower: a modulo leader waits for the
+    // next pass, a linear one remains pending (decision Y11).
+    const double past = p.direction * (leader.position - x_a);
+    if (past < 0.0) {
+      p.armed = true;
+      return false;
+    }
+    if (!p.armed || past > std::fabs(leader.velocity) * ipo_cycle_s_ * (1.0 + 1e-9) + 1e-12) {
+      p.armed = false;
+      const ModuloRange range =
+          interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
+      if (range.enabled && range.length > 0.0) {
+        p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
+      }
+      return false;
+    }
   } else if (p.profile == 1) {
     x_a = p.master_sync - p.direction * length;
   } else {  // 3: subsequent — the blend starts at MasterSyncPosition and ends a distance later
@@ -572,7 +590,13 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
       const auto look =
           limits::stop_at_limit_look_ahead(sync_setpoint_.position, v, sync_setpoint_.acceleration, d.y_stop,
                                            d.limits.deceleration, d.limits.jerk, T);
-      start = look.stop_now;
+      // The start position is reached by travelling towards it (spec 07 §2.4 "until the following value
+      // reaches it, the job is pending", §6.7 "crossing in the travel direction"): a linear follower whose
+      // SlavePosition lies behind it, or already within its braking distance, waits instead of turning back
+      // (decision Y12).
+      const bool armed = d.armed_direction == dir;
+      d.armed_direction = !look.stop_now && dir * (d.y_stop - sync_setpoint_.position) >= 0.0 ? dir : 0.0;
+      start = look.stop_now && armed;
     } else {
       // Profile 1: over L of leader travel the gear's follower covers slope·L/2 (spec 07 §6.7).
       const double leader_dir = sign_or(leader.velocity, 0.0);
@@ -581,7 +605,11 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
       d.y_stop = modulo_occurrence(d.slave_position, follower, sync_setpoint_.position, dir, 0.0);
       if (follower.enabled && dir * (d.y_stop - sync_setpoint_.position) < travel)
         d.y_stop += dir * follower.length;
-      start = dir * (d.y_stop - sync_setpoint_.position) <= travel + std::fabs(v) * T * 0.5;
+      const bool within = dir * (d.y_stop - sync_setpoint_.position) <= travel + std::fabs(v) * T * 0.5;
+      // As profile 0: only by reaching the start position in the direction of travel (spec 07 §2.4, §6.7).
+      const bool armed = d.armed_direction == dir;
+      d.armed_direction = within ? 0.0 : dir;
+      start = within && armed;
       if (start) {
         d.blend.start(leader.position, leader_dir * d.stop_distance, leader.position, d.y_stop, 0.0,
                       sync_setpoint_, leader.velocity, leader.acceleration);

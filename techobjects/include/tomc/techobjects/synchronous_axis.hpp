@@ -164,6 +164,7 @@ class SynchronousAxis final : public PositioningAxis {
     std::int32_t sync_direction = 3;
     double direction = 1.0;  // the leader's direction of travel towards the start
     ProfileLimits limits{};  // profile 0
+    bool armed = false;      // profile 0: the leader was before the (moving) start position
   };
   struct Desync {  // MC_GearOut
     JobId id = 0;
@@ -176,6 +177,7 @@ class SynchronousAxis final : public PositioningAxis {
     double y_stop = 0.0;
     LeaderDomainBlend blend{};
     bool start_sync_out = false;
+    double armed_direction = 0.0;  // the follower was before its start position, travelling this way
     int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
   };
 
