@@ -36,8 +36,10 @@
 //     above the limit is admissible only while it does not grow. A cycle through standstill is judged by
 //     |v0|/MaxDeceleration + |v1|/MaxAcceleration <= T.
 //  G3 spec 07 §1.9, §6.8  during synchronous travel the exceedance is indicated, not alarmed:
-//     StatusSynchronizedMotion.StatusWord.X0 = |v| > MaxVelocity (and X0..X2 all FALSE without synchronous
-//     operation), and no alarm 501/502/503 is raised in a cycle of unbroken synchronous travel.
+//     StatusSynchronizedMotion.StatusWord.X0 = |v| > MaxVelocity, X1 / X2 = |a| beyond MaxAcceleration /
+//     MaxDeceleration while |v| grows / shrinks (X0..X2 all FALSE without synchronous operation), and no
+//     alarm 501/502/503 is raised in a cycle of unbroken synchronous travel; MC_GearIn synchronization
+//     raises no 501 (spec 07 §2.1: the velocity is limited without it).
 //  G4 every value of the follower's data block the checks read, and of the leading value, is finite; the
 //     handshake of every instance is consistent (spec 03 §3.2): never two of Done / Error / CommandAborted,
 //     Busy FALSE with any of them, InGear / InSync / StartSync only while Busy.
@@ -106,6 +108,7 @@ struct Stats {
   long synchronizing_cycles = 0;     // MC_GearIn synchronization, limited
   long elevated_cycles = 0;          // above a limit, admissibly (not growing after a pass-through phase)
   long indicated_cycles = 0;         // synchronous travel with X0 set
+  long indicated_acceleration_cycles = 0;  // ... with X1 or X2 set
   long gear_in = 0, gear_in_velocity = 0, gear_in_pos_synchronous = 0, gear_out_done = 0, aborted = 0;
   long rejected = 0;  // jobs with Error
   long alarms_608 = 0;
@@ -659,8 +662,16 @@ class Run {
     const auto raised = new_alarms();
     if (now.function_state != 0 || sm.WaitingFunctionState != 0 || now.synchronous) {
       if (now.synchronous && now.function_state != 4) {
+        // X0 |v| > MaxVelocity, X1 accelerating beyond MaxAcceleration, X2 decelerating beyond
+        // MaxDeceleration (spec 07 §6.8 [IMPL] semantics, decision Y7: the condition of the cycle).
         EXPECT_EQ((sm.StatusWord & 1u) != 0, std::fabs(d.Velocity) > l.MaxVelocity * (1.0 + 1e-9)) << where();
+        const double va = d.Velocity * d.Acceleration;
+        EXPECT_EQ((sm.StatusWord & 2u) != 0, va > 0.0 && std::fabs(d.Acceleration) > l.MaxAcceleration)
+            << where();
+        EXPECT_EQ((sm.StatusWord & 4u) != 0, va < 0.0 && std::fabs(d.Acceleration) > l.MaxDeceleration)
+            << where();
         if ((sm.StatusWord & 1u) != 0) ++stats_.indicated_cycles;
+        if ((sm.StatusWord & 6u) != 0) ++stats_.indicated_acceleration_cycles;
       }
     } else {
       EXPECT_EQ(sm.StatusWord & 7u, 0u) << where() << ": X0..X2 without synchronous operation";
@@ -671,6 +682,12 @@ class Run {
             techobjects::kAlarmDynamicsLimitedJerk}) {
         EXPECT_FALSE(raised.count(n)) << where() << ": alarm " << n << " in synchronous travel";
       }
+    }
+    // MC_GearIn synchronization limits the velocity without alarm 501 (spec 07 §2.1, §6.3).
+    if (now.function_state == 1 && synchronizing && prev_.valid && prev_.function_state == 1 &&
+        prev_.epoch == now.epoch) {
+      EXPECT_FALSE(raised.count(techobjects::kAlarmDynamicsLimitedVelocity))
+          << where() << ": alarm 501 during MC_GearIn synchronization";
     }
     if (raised.count(techobjects::kAlarmSynchronizationError)) ++stats_.alarms_608;
 
@@ -895,6 +912,7 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
   total.limited_cycles += s.limited_cycles;
   total.synchronizing_cycles += s.synchronizing_cycles;
   total.indicated_cycles += s.indicated_cycles;
+  total.indicated_acceleration_cycles += s.indicated_acceleration_cycles;
   total.gear_in_pos_synchronous += s.gear_in_pos_synchronous;
   total.gear_out_done += s.gear_out_done;
   total.aborted += s.aborted;
@@ -913,6 +931,7 @@ TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
   EXPECT_GT(total.limited_cycles, 8L * kCycles / 10);
   EXPECT_GT(total.synchronizing_cycles, kCycles / 100);
   EXPECT_GT(total.indicated_cycles, 0);
+  EXPECT_GT(total.indicated_acceleration_cycles, 0);
   EXPECT_GT(total.gear_in_pos_synchronous, 4);
   EXPECT_GT(total.gear_out_done, 2);
   EXPECT_GT(total.aborted, 20);
