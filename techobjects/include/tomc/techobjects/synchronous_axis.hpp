@@ -209,6 +209,8 @@ class SynchronousAxis final : public PositioningAxis {
   JobId last_synchronous_job_ = 0;  // for the outputs of a job that ended
   SyncJobOutputs last_outputs_{};
   MotionState sync_setpoint_{};
+  LeadingValue cycle_leader_{};  // the leading value run_synchronous() sampled in this MC_Interpolator
+  int cycle_leader_source_ = -1;
   StatusSynchronizedMotion status_{};
 };
 
