@@ -486,6 +486,24 @@ bool SynchronousAxis::start_pending_sync(const LeadingValue& leader) noexcept {
     }
     length = p.sized_length;
     x_a = p.master_sync - p.direction * length;
+    // The start position moves with the computed length. Synchronization starts only when the leader crosses
+    // it, within one cycle's travel (spec 07 §6.5); a start position already passed (at the job's start, or
+    // because the length grew) is not caught up with a step of the follower: a modulo leader waits for the
+    // next pass, a linear one remains pending (decision Y12).
+    const double past = p.direction * (leader.position - x_a);
+    if (past < 0.0) {
+      p.armed = true;
+      return false;
+    }
+    if (!p.armed || past > std::fabs(leader.velocity) * ipo_cycle_s_ * (1.0 + 1e-9) + 1e-12) {
+      p.armed = false;
+      const ModuloRange range =
+          interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
+      if (range.enabled && range.length > 0.0) {
+        p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
+      }
+      return false;
+    }
   } else if (p.profile == 1) {
     x_a = p.master_sync - p.direction * length;
   } else {  // 3: subsequent — the blend starts at MasterSyncPosition and ends a distance later
@@ -679,12 +697,17 @@ void SynchronousAxis::step_desync(const LeadingValue& leader) noexcept {
 }
 
 void SynchronousAxis::run_synchronous() noexcept {
+  cycle_leader_source_ = -1;
   if (active_.id == 0 && pending_sync_.id == 0 && desync_.id == 0) return;
   if (phase_ != PowerPhase::kEnabled || blocked()) return;  // the alarm/disable paths end the jobs
   const int source = active_.id != 0  ? active_.source
                      : desync_.active ? desync_.source
                                       : pending_sync_.source;
   const LeadingValue leader = sample(source);
+  // The leader ran before this axis: its value stays the same for the rest of this MC_Interpolator, so the
+  // status update reuses it (one virtual leading_value() call per cycle instead of three).
+  cycle_leader_ = leader;
+  cycle_leader_source_ = source;
   if (source >= 0 && !leader.valid) {
     raise(kAlarmLeadingAxisDefective, 1);  // e.g. the external encoder of an actual-value coupling failed
     apply_alarm_reactions();
@@ -697,7 +720,7 @@ void SynchronousAxis::run_synchronous() noexcept {
     (void)start_pending_sync(sample(pending_sync_.source));
   }
   if (active_.id != 0) {
-    step_active(sample(active_.source));
+    step_active(active_.source == source ? leader : sample(active_.source));
     if (alarms_.strongest_reaction() != AlarmReaction::kNone) {
       apply_alarm_reactions();
       return;
@@ -717,7 +740,7 @@ void SynchronousAxis::update_synchronous_status() noexcept {
   s.WaitingFunctionState = pending_sync_.id != 0 ? 2 : (desync_.id != 0 && !desync_.active) ? 4 : 0;
   s.ActualMaster = static_cast<std::uint16_t>(source >= 0 ? source + 1 : 0);
   if (source >= 0) {
-    const LeadingValue v = sample(source);
+    const LeadingValue v = source == cycle_leader_source_ ? cycle_leader_ : sample(source);
     s.EffectiveLeadingValue.Position = v.position;
     s.EffectiveLeadingValue.Velocity = v.velocity * units_.velocity;
     s.EffectiveLeadingValue.Acceleration = v.acceleration * units_.acceleration;
@@ -752,6 +775,7 @@ void SynchronousAxis::update_synchronous_status() noexcept {
       assign(db_.ErrorWord, ErrorWordBit::kSynchronousError, true);
     }
   }
+  cycle_leader_source_ = -1;  // a status update from a job call (user program) samples afresh
 }
 
 double SynchronousAxis::read(std::string_view path) const noexcept {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tomc::techobjects {
 
@@ -15,12 +16,20 @@ SynchronizationStep synchronization_step(const MotionState& f, double vT, double
     s.locked = true;
     return s;
   }
-  if (l.jerk > 0.0) {
+  // A start acceleration that pushes |v| outward makes |v| overshoot by a0²/(2j) before the jerk can turn it
+  // (a follower leaving synchronous travel keeps the leader's acceleration, spec 07 §2.1 "the current
+  // dynamics are blended into the new job"). As for every replanned job of the axis (profiles.hpp, decision
+  // S4), the jerk is raised so that the overshoot stays within the velocity limit (MC_GearIn: MaxVelocity,
+  // spec 07 §6.8), or dropped (trapezoid) when |v| is beyond it already.
+  const double v_limit = l.velocity > 0.0 ? l.velocity : std::numeric_limits<double>::infinity();
+  const double jerk = replanning_jerk(f.velocity, f.acceleration, l.jerk, v_limit, vT == 0.0);
+  if (jerk > 0.0) {
     // Jerk-limited: the time-optimal velocity profile to vT from the present state, one cycle of it (the
     // profile brings the acceleration to 0 exactly at vT, never exceeding the jerk).
     VelocityProfile p;
     ProfileLimits pl = l;
     pl.velocity = 0.0;  // no clamp: the caller limited vT already
+    pl.jerk = jerk;
     if (p.plan(f, vT, pl)) {
       if (p.duration() <= T + 1e-12) {
         s.state = MotionState{p.at(p.duration()).position + vT * (T - p.duration()), vT, aT};
@@ -41,6 +50,24 @@ SynchronizationStep synchronization_step(const MotionState& f, double vT, double
   if ((dv > 0.0 && v > vT) || (dv < 0.0 && v < vT)) {
     v = vT;
     a = (v - f.velocity) / T;
+  }
+  // A step that brakes through standstill: the deceleration limit holds only until v = 0, from there |v|
+  // grows again and the acceleration limit holds (spec 07 §6.3; with MaxDeceleration > MaxAcceleration one
+  // ramp at the deceleration through zero would accelerate the follower beyond MaxAcceleration).
+  if (!grows && v != 0.0 && (v > 0.0) != (f.velocity > 0.0) && l.deceleration > 0.0 && l.acceleration > 0.0) {
+    const double t0 = std::fabs(f.velocity) / l.deceleration;  // to standstill, within this step
+    const double direction = dv > 0.0 ? 1.0 : -1.0;
+    double t1 = T - t0;  // accelerating in the new direction
+    double v_end = direction * l.acceleration * t1;
+    if (std::fabs(v_end) >= std::fabs(vT) && (vT > 0.0) == (direction > 0.0)) {
+      v_end = vT;  // reached within the step: at vT for the rest of it
+      t1 = std::fabs(vT) / l.acceleration;
+    }
+    s.state = MotionState{f.position + 0.5 * f.velocity * t0 + 0.5 * v_end * t1 + v_end * (T - t0 - t1),
+                          v_end, direction * l.acceleration};
+    s.locked = std::fabs(v_end - vT) <= eps_v;
+    if (s.locked) s.state.acceleration = aT;
+    return s;
   }
   s.state = MotionState{f.position + (f.velocity + v) * 0.5 * T, v, a};
   s.locked = std::fabs(v - vT) <= eps_v;

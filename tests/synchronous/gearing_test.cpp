@@ -535,6 +535,96 @@ TEST(Gearing, GP7GearOutOverALeadingValueDistance) {
   EXPECT_FALSE(m.gear_out.Error);
 }
 
+// spec 07 §2.4, §6.7, decisions Y11/Y13: a linear follower moving away from SlavePosition (here behind it)
+// can reach it only by turning back: MC_GearOut ends with 16#8037 and the follower stays in synchronous
+// travel — it never turns back to the stop position (with profile 0 it did, found by gearing_property_test: a
+// reversal at the job's deceleration, above MaxAcceleration). Profiles 0 and 1.
+TEST(Gearing, GearOutToAStopPositionBehindTheFollowerIsRefused) {
+  for (const std::int32_t profile : {0, 1}) {
+    SCOPED_TRACE(profile);
+    GearingMachine m;
+    m.gear_pos.RatioNumerator = 2;
+    m.gear_pos.MasterSyncPosition = 0.0;
+    m.gear_pos.SyncProfileReference = 3;
+    m.gear_pos.MasterStartDistance = 10.0;
+    m.gear_pos.Execute = true;
+    m.run(1);
+    m.move_L.Velocity = 100.0;
+    m.move_L.Acceleration = 1.0e9;
+    m.move_L.Execute = true;
+    ASSERT_GT(m.run_until([&] { return m.gear_pos.InSync && m.f().Position >= 500.0; }, 5000), 0);
+    m.gear_out.SlavePosition = 100.0;  // 400 behind, F moving +200 mm/s
+    m.gear_out.SyncProfileReference = profile;
+    m.gear_out.MasterStopDistance = 100.0;
+    m.gear_out.Deceleration = 1000.0;
+    m.gear_out.Execute = true;
+    for (int i = 0; i < 500; ++i) {
+      m.run(1);
+      ASSERT_FALSE(m.gear_out.StartSyncOut) << i;
+      ASSERT_NEAR(m.f().Velocity, 200.0, 1e-9) << i;
+    }
+    EXPECT_TRUE(m.gear_out.Error);
+    EXPECT_EQ(m.gear_out.ErrorID, techobjects::error_id::kInvalidSlavePosition);
+    EXPECT_FALSE(m.gear_out.Busy);
+    EXPECT_TRUE(m.gear_pos.InSync);
+  }
+}
+
+// spec 07 §6.5 (decision Y12): MC_GearInPos profile 0 starts when the leader crosses its start position
+// (MasterSyncPosition minus the computed synchronization length). A start position the leader has passed
+// already is not caught up with: a linear leader leaves the job pending, the follower does not jump (it did:
+// found by gearing_property_test, a step of thousands of mm onto the gear line); a modulo leader synchronizes
+// on its next pass, continuously.
+TEST(Gearing, GearInPosProfile0StartPositionAlreadyPassed) {
+  {
+    GearingMachine m;
+    leader_at(m, 100.0);
+    m.gear_pos.SyncProfileReference = 0;
+    m.gear_pos.MasterSyncPosition = m.l().Position + 1.0;  // length >= v²/A = 10: the start lies behind L
+    m.gear_pos.SlaveSyncPosition = 0.0;
+    m.gear_pos.Velocity = 500.0;
+    m.gear_pos.Acceleration = 1000.0;
+    m.gear_pos.Deceleration = 1000.0;
+    m.gear_pos.Jerk = 0.0;
+    m.gear_pos.Execute = true;
+    for (int i = 0; i < 500; ++i) {
+      m.run(1);
+      ASSERT_FALSE(m.gear_pos.Error) << i;
+      ASSERT_FALSE(m.gear_pos.StartSync) << i;
+      ASSERT_EQ(m.f().Position, 0.0) << i;
+    }
+    EXPECT_TRUE(m.gear_pos.Busy);
+    EXPECT_EQ(m.F->synchronized_motion().WaitingFunctionState, 2);
+  }
+  {
+    GearingMachine m(virtual_rotary_modulo(), virtual_rotary_modulo());
+    leader_at(m, 100.0);
+    m.gear_pos.SyncProfileReference = 0;
+    m.gear_pos.MasterSyncPosition = std::fmod(m.l().Position + 1.0, 360.0);
+    m.gear_pos.SlaveSyncPosition = 90.0;
+    m.gear_pos.Velocity = 500.0;
+    m.gear_pos.Acceleration = 1000.0;
+    m.gear_pos.Deceleration = 1000.0;
+    m.gear_pos.Jerk = 0.0;
+    m.gear_pos.Execute = true;
+    double previous = m.F->setpoint().position;
+    bool started = false;
+    int cycles = 0;
+    for (; cycles < 8000 && !m.gear_pos.InSync; ++cycles) {
+      m.run(1);
+      started = started || m.gear_pos.StartSync;
+      // No step: at most the job's Velocity (500 °/s = 0.5° per cycle) plus rounding.
+      ASSERT_LE(std::fabs(m.F->setpoint().position - previous), 0.5 + 1e-6) << cycles;
+      previous = m.F->setpoint().position;
+    }
+    EXPECT_TRUE(started);
+    EXPECT_TRUE(m.gear_pos.InSync);
+    EXPECT_GT(cycles, 3000);  // the next pass: 360° at 100 °/s, less the synchronization length
+    EXPECT_NEAR(m.f().Position,
+                std::fmod(90.0 + (m.l().Position - m.gear_pos.MasterSyncPosition) + 720.0, 360.0), 1e-6);
+  }
+}
+
 // GP-6: GearOut profile 5 cancels a pending GearInPos (CommandAborted, GearOut Done); GearOut without gearing
 // -> 16#8077.
 TEST(Gearing, GP6GearOutCancelAndNoGearing) {

@@ -1,6 +1,7 @@
 // The motion laws of gearing (spec 07 §6.3, §6.4): the synchronization step and the leader-domain blend.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "tomc/techobjects/synchronous_motion.hpp"
@@ -34,6 +35,48 @@ TEST(SynchronousMotion, DecelerationLimitWhileSlowingDown) {
     if (s.locked) break;
   }
   EXPECT_EQ(cycles + 1, 100);
+}
+
+// spec 07 §6.3 ("lim = A if |v| is to grow else D"): a step that brakes through standstill uses the
+// deceleration only down to v = 0 and the acceleration from there. From −8.6 towards +18.6 with A 8000, D
+// 10000, T 1 ms: 0.86 ms braking, then 0.14 ms at 8000 -> v = +1.12, a = +8000 (not +1.4 at 10000, which
+// would exceed the acceleration limit while |v| grows; found by gearing_property_test).
+TEST(SynchronousMotion, BrakingThroughStandstillAcceleratesWithTheAccelerationLimit) {
+  const MotionState f{0.0, -8.6, -100.0};
+  const auto s = synchronization_step(f, 18.6, 0.0, ProfileLimits{1000.0, 8000.0, 10000.0, 0.0}, 0.001);
+  EXPECT_FALSE(s.locked);
+  EXPECT_NEAR(s.state.velocity, 8000.0 * (0.001 - 8.6 / 10000.0), 1e-12);
+  EXPECT_DOUBLE_EQ(s.state.acceleration, 8000.0);
+  // Position: the braking triangle plus the accelerating one.
+  EXPECT_NEAR(s.state.position, 0.5 * -8.6 * 0.00086 + 0.5 * 1.12 * 0.00014, 1e-12);
+  // Reaching the target within the step: at it for the rest of the step, locked.
+  const auto t = synchronization_step(MotionState{0.0, -1.0, 0.0}, 0.5, 0.0,
+                                      ProfileLimits{1000.0, 8000.0, 10000.0, 0.0}, 0.001);
+  EXPECT_TRUE(t.locked);
+  EXPECT_DOUBLE_EQ(t.state.velocity, 0.5);
+  const double t0 = 1.0 / 10000.0, t1 = 0.5 / 8000.0;
+  EXPECT_NEAR(t.state.position, -0.5 * t0 + 0.5 * 0.5 * t1 + 0.5 * (0.001 - t0 - t1), 1e-12);
+}
+
+// spec 07 §6.8 (MC_GearIn synchronization: MaxVelocity) with a jerk limit and a start state from synchronous
+// travel whose acceleration pushes |v| outward (found by gearing_property_test): the jerk is raised as for a
+// replanned job (decision S4) so that |v| stays within the limit; a |v| beyond it already does not grow.
+TEST(SynchronousMotion, JerkLimitedStartFromSynchronousTravelKeepsTheVelocityLimit) {
+  const ProfileLimits limits{600.0, 8000.0, 10000.0, 1.0e6};
+  MotionState f{0.0, -569.656828, -23896.207};
+  double worst = 0.0;
+  bool locked = false;
+  for (int i = 0; i < 5000 && !locked; ++i) {
+    const auto s = synchronization_step(f, 296.0, 0.0, limits, 0.001);
+    f = s.state;
+    locked = s.locked;
+    worst = std::max(worst, std::fabs(f.velocity));
+  }
+  EXPECT_TRUE(locked);
+  EXPECT_LE(worst, 600.0 * (1.0 + 1e-9));  // without the raised jerk: about 855
+  f = MotionState{0.0, -875.264092, -2463.541};
+  const auto s = synchronization_step(f, -600.0, 0.0, limits, 0.001);
+  EXPECT_LE(std::fabs(s.state.velocity), 875.264092);
 }
 
 // With a jerk limit the acceleration changes by at most jerk·T per cycle and is 0 at the lock.

@@ -169,6 +169,7 @@ class SynchronousAxis final : public PositioningAxis {
     double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
     MotionState sized_follower{};
     double sized_length = 0.0;
+    bool armed = false;  // profile 0: the leader was before the (moving) start position
   };
   struct Desync {  // MC_GearOut
     JobId id = 0;
@@ -212,6 +213,8 @@ class SynchronousAxis final : public PositioningAxis {
   JobId last_synchronous_job_ = 0;  // for the outputs of a job that ended
   SyncJobOutputs last_outputs_{};
   MotionState sync_setpoint_{};
+  LeadingValue cycle_leader_{};  // the leading value run_synchronous() sampled in this MC_Interpolator
+  int cycle_leader_source_ = -1;
   StatusSynchronizedMotion status_{};
 };
 

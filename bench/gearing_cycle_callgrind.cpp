@@ -1,0 +1,26 @@
+// Fixed workload for callgrind: MC_Servo + MC_Interpolator of 16 TO_SynchronousAxis followers, each on its
+// simulated drive (telegram 3, codec included), geared 1:1 with MC_GearIn to one leader at 100 mm/s, in
+// steady synchronous travel (gearing_machine.hpp). The leader, the drive models and the user program run
+// outside the counted function. scripts/bench: instructions per follower and cycle.
+#include <cstdio>
+
+#include "gearing_machine.hpp"
+
+constexpr int kCycles = 10000;
+constexpr int kFollowers = 16;
+
+extern "C" __attribute__((noinline, noipa)) void gearing_cycle(tomc::bench::FollowerGroup& group,
+                                                               const tomc::techobjects::CycleClock& clock,
+                                                               int phase) {
+  group.run(clock, phase);
+}
+
+int main() {
+  tomc::bench::GearingMachine m(kFollowers);
+  m.group().hook = gearing_cycle;
+  for (int i = 0; i < kCycles; ++i)
+    m.step();
+  std::printf("cycles=%d units=%d in_gear=%d velocity=%g\n", kCycles, kFollowers,
+              m.programs().back().gear.InGear ? 1 : 0, m.group().followers.back()->data().Velocity);
+  return 0;
+}

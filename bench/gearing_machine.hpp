@@ -1,0 +1,146 @@
+#pragma once
+// The machine the gearing benchmarks measure (issue 9): one leader, a TO_PositioningAxis on its simulated
+// PROFIdrive drive (telegram 3) running MC_MoveVelocity at 100 mm/s, and N TO_SynchronousAxis followers, each
+// on its own simulated drive (telegram 3, the codec running as in the runtime), geared 1:1 with MC_GearIn
+// (setpoint coupling) and measured in steady synchronous travel (InGear: the gear line is evaluated every
+// cycle, nothing is planned). Data blocks: the default (mm, 10 mm leadscrew, MaxJerk 1e5 mm/s³). A user
+// program of MC_Power and MC_GearIn per follower (MC_Power and MC_MoveVelocity for the leader) runs every
+// cycle.
+//
+// The followers are registered through one TechnologyObject (FollowerGroup) whose servo()/interpolate() run
+// every follower's MC_Servo/MC_Interpolator and which names the leader as its leading value, so that the
+// runtime evaluates the leader first (spec 07 §6.1): benchmarks time just the followers (TO with telegram
+// codec, without the drive models), callgrind counts them through the extern "C" function the workload names.
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "tomc/drives/simulated_drive.hpp"
+#include "tomc/instructions/mc_gear_in.hpp"
+#include "tomc/instructions/mc_move_velocity.hpp"
+#include "tomc/instructions/mc_power.hpp"
+#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/synchronous_axis.hpp"
+
+namespace tomc::bench {
+
+using techobjects::PositioningAxis;
+using techobjects::SynchronousAxis;
+
+class FollowerGroup final : public techobjects::TechnologyObject {
+ public:
+  using Hook = void (*)(FollowerGroup&, const techobjects::CycleClock&, int phase);
+
+  explicit FollowerGroup(techobjects::TechnologyObject* leader) : leader_{{leader}} {}
+  std::string_view name() const noexcept override { return "FollowerGroup"; }
+  std::span<techobjects::TechnologyObject* const> leaders() const noexcept override { return leader_; }
+  void servo(const techobjects::CycleClock& clock) noexcept override { phase(clock, 0); }
+  void interpolate(const techobjects::CycleClock& clock) noexcept override { phase(clock, 1); }
+  void run(const techobjects::CycleClock& clock, int phase) noexcept {
+    if (phase == 0) {
+      for (auto& f : followers)
+        f->servo(clock);
+    } else {
+      for (auto& f : followers)
+        f->interpolate(clock);
+    }
+  }
+
+  std::vector<std::unique_ptr<SynchronousAxis>> followers;
+  bool timed = false;
+  std::chrono::steady_clock::duration elapsed{};
+  Hook hook = nullptr;
+
+ private:
+  void phase(const techobjects::CycleClock& clock, int phase) noexcept {
+    const auto t0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
+    if (hook != nullptr) {
+      hook(*this, clock, phase);
+    } else {
+      run(clock, phase);
+    }
+    if (timed) elapsed += std::chrono::steady_clock::now() - t0;
+  }
+
+  std::array<techobjects::TechnologyObject*, 1> leader_;
+};
+
+struct FollowerProgram {
+  instructions::MC_Power<SynchronousAxis> power;
+  instructions::MC_GearIn<SynchronousAxis> gear;
+};
+
+class GearingMachine {
+ public:
+  explicit GearingMachine(int followers) : runtime_(techobjects::RuntimeConfig{0.001, 1, 1}) {
+    const techobjects::PositioningAxisData data;  // the default data block
+    auto drive = [&]() -> techobjects::DeviceIo& {
+      drives::DeviceConfig device;
+      device.drive_telegram = 3;
+      drives::SimulatedDriveParameters p;
+      p.load_units_per_revolution = 10.0;  // the 10 mm leadscrew of the data block
+      return runtime_.add_device(std::make_unique<drives::SimulatedDrive>(device, p));
+    };
+    leader_ = &runtime_.emplace<PositioningAxis>("Leader", &drive(), data);
+    auto group = std::make_unique<FollowerGroup>(leader_);
+    group_ = group.get();
+    for (int i = 0; i < followers; ++i) {
+      group_->followers.push_back(std::make_unique<SynchronousAxis>(
+          "Follower", &drive(), data,
+          std::vector<techobjects::LeadingValueInterconnection>{
+              {leader_, leader_, techobjects::LeadingValueCoupling::kSetpoint}}));
+    }
+    runtime_.add_technology_object(std::move(group));
+    programs_.resize(static_cast<std::size_t>(followers));
+    runtime_.set_user_program([this](techobjects::Runtime&) { user_program(); });
+    runtime_.start();
+    power_.Enable = true;
+    move_.Velocity = 100.0;
+    for (auto& p : programs_) {
+      p.power.Enable = true;
+      p.gear.Master = leader_;
+    }
+    // Enabled, the leader at its velocity, every follower InGear (synchronized on the moving leader).
+    for (int k = 0; k < 1000; ++k)
+      runtime_.step();
+    for (std::size_t i = 0; i < programs_.size(); ++i) {
+      const auto& f = *group_->followers[i];
+      if (!programs_[i].gear.InGear ||
+          std::fabs(f.setpoint().velocity - leader_->setpoint().velocity) > 1e-9) {
+        throw std::runtime_error("gearing machine: a follower is not in synchronous travel after set-up");
+      }
+    }
+  }
+
+  void step() noexcept { runtime_.step(); }
+  FollowerGroup& group() noexcept { return *group_; }
+  const PositioningAxis& leader() const noexcept { return *leader_; }
+  const std::vector<FollowerProgram>& programs() const noexcept { return programs_; }
+
+ private:
+  void user_program() noexcept {
+    power_(*leader_);
+    move_.Execute = power_.Status;
+    move_(*leader_);
+    for (std::size_t i = 0; i < programs_.size(); ++i) {
+      auto& p = programs_[i];
+      auto& f = *group_->followers[i];
+      p.power(f);
+      p.gear.Execute = p.power.Status && move_.InVelocity;
+      p.gear(f);
+    }
+  }
+
+  techobjects::Runtime runtime_;
+  PositioningAxis* leader_ = nullptr;
+  FollowerGroup* group_ = nullptr;
+  instructions::MC_Power<PositioningAxis> power_;
+  instructions::MC_MoveVelocity<PositioningAxis> move_;
+  std::vector<FollowerProgram> programs_;
+};
+
+}  // namespace tomc::bench
