@@ -5,11 +5,8 @@
 #include "tomc/techobjects/axis_units.hpp"
 #include "tomc/techobjects/error_ids.hpp"
 #include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/telegrams/normalisation.hpp"
 
 namespace tomc::techobjects {
-
-namespace tg = tomc::telegrams;
 
 std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept {
   if (in.Mode != 0 && in.Mode != 1) return error_id::kInvalidMode;
@@ -39,25 +36,8 @@ std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInp
 }
 
 TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs& in) noexcept {
-  TorqueLimitingState s;
-  if (!in.Enable) {  // the falling edge ends limiting and detection; an error clears with it (spec 03 L3)
-    torque_.active = false;
-    torque_.error = 0;
-    return s;
-  }
-  if (torque_.error == 0) {
-    if (const auto e = torque_limiting_rejection(in)) {
-      torque_.active = false;
-      torque_.error = e;
-    } else {
-      torque_.active = true;
-      torque_.mode = in.Mode;  // Limit and Mode are taken on every call (spec 03 §4.18.3 note 5)
-      torque_.limit = in.Limit;
-    }
-  }
-  s.Error = torque_.error != 0;
-  s.ErrorID = torque_.error;
-  s.Busy = torque_.active;
+  TorqueLimitingState s =
+      torque_.call(in, [this](const TorqueLimitingInputs& i) { return torque_limiting_rejection(i); });
   s.InClamping = torque_.active && clamping_.clamped();
   s.InLimitation = torque_.active && in_limitation_;
   return s;
@@ -71,15 +51,13 @@ bool PositioningAxis::position_monitorings_suspended() const noexcept {
 void PositioningAxis::servo_torque_limiting() noexcept {
   const bool active = torque_.active;
   if (device_ != nullptr) {
-    auto& sp = drive_.drive_setpoint();
-    double reduction_momred = 0.0;
-    if (active && drive_has_momred_) {
-      const bool linear_motor =
-          db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
-      const bool linear_axis =
-          db_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kLinear);
-      const bool load_side =
-          db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
+    const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+    const bool linear_axis =
+        db_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kLinear);
+    const bool load_side =
+        db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
+    double motor_limit = 0.0;
+    if (active) {
       const bool force = linear_motor || (linear_axis && load_side);
       const double limit = torque_.limit >= 0.0 ? torque_.limit
                                                 : (force ? db_.TorqueLimiting.LimitDefaults.Force
@@ -93,21 +71,12 @@ void PositioningAxis::servo_torque_limiting() noexcept {
       m.efficiency = db_.Actor.Efficiency;
       const auto metres = length_unit_scale(db_.Units.LengthUnit);
       m.leadscrew_per_rev = db_.Mechanics.LeadScrew * units_.leadscrew * (metres ? metres->base : 0.0);
-      const double reference = linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
-                                            : db_.Actor.DriveParameter.ReferenceTorque;
-      // A percentage reduction of the reference torque/force, the same for both directions (spec 01 §8.10).
-      reduction_momred = tg::momred_from_torque_limit(motor_torque_limit(limit, m), reference);
+      motor_limit = motor_torque_limit(limit, m);
     }
-    sp.MOMRED = static_cast<std::uint16_t>(reduction_momred);
-    // STW2.8 "travel to fixed stop": set while MC_TorqueLimiting is active, so that the drive does not fault
-    // at the limit (spec 01 §8.13 table, last row: MC_TorqueLimiting sets it, MC_TorqueRange does not).
-    if (active != torque_.stw2_fixed_stop) {
-      sp.STW2.set(tg::Stw2Bit::kTravelToFixedStop, active);
-      torque_.stw2_fixed_stop = active;
-    }
-    // InLimitation: MELDW.1 "torque utilisation < threshold (p2194)" cleared (spec 06 §3.5, spec 04 §5).
-    in_limitation_ = active && drive_has_meldw_ &&
-                     !drive_.drive_actual().MELDW.test(tg::MeldwBit::kTorqueUtilisationBelowThreshold);
+    const double reference = linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
+                                          : db_.Actor.DriveParameter.ReferenceTorque;
+    in_limitation_ =
+        drive_torque_limit(drive_, torque_, motor_limit, reference, drive_has_momred_, drive_has_meldw_);
   } else {
     in_limitation_ = false;
   }

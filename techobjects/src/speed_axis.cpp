@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/error_ids.hpp"
+#include "tomc/telegrams/layout.hpp"
 #include "tomc/telegrams/normalisation.hpp"
 
 namespace tomc::techobjects {
@@ -39,7 +40,14 @@ SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& st
   if (start_.VirtualAxis.Mode == kModeOn || start_.Simulation.Mode == kModeOn) device_ = nullptr;
   drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_.Actor.DriveParameter.ReferenceTorque;
-  if (device_ != nullptr) drive_ = DriveConnection(*device_, drive_config_);
+  if (device_ != nullptr) {
+    drive_ = DriveConnection(*device_, drive_config_);
+    const std::uint16_t telegram = device_->adapter->config().drive_telegram;
+    const auto setpoint = tg::find_layout(telegram, tg::Direction::kSetpoint);
+    const auto actual = tg::find_layout(telegram, tg::Direction::kActual);
+    drive_has_momred_ = setpoint && setpoint->carries(tg::Signal::MOMRED);
+    drive_has_meldw_ = actual && actual->carries(tg::Signal::MELDW);
+  }
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
 }
 
@@ -521,10 +529,41 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
   }
   db_.VelocitySetpoint = sign * rpm / 60.0 / gear * unit;
   if (device_ != nullptr) {
+    // MC_TorqueLimiting (spec 01 §8.10): the speed axis is rotary; load side through the gear (and
+    // efficiency).
+    double motor_limit = 0.0;
+    if (torque_.active) {
+      TorqueLimitMechanics m;
+      m.load_side = db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
+      m.gear_ratio = gear;
+      m.efficiency = db_.Actor.Efficiency;
+      const double limit = torque_.limit >= 0.0 ? torque_.limit : db_.TorqueLimiting.LimitDefaults.Torque;
+      motor_limit = motor_torque_limit(limit, m);
+    }
+    in_limitation_ =
+        drive_torque_limit(drive_, torque_, motor_limit, db_.Actor.DriveParameter.ReferenceTorque,
+                           drive_has_momred_, drive_has_meldw_);
     drive_.request(request);
     drive_.set_speed_setpoint(rpm);
     drive_.write();
   }
+}
+
+TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) noexcept {
+  TorqueLimitingState s = torque_.call(in, [this](const TorqueLimitingInputs& i) -> std::uint16_t {
+    // Fixed-stop detection needs position control: positioning and synchronous axes (spec 03 §4.18.3).
+    if (i.Mode != 0) return error_id::kInvalidMode;
+    if (!std::isfinite(i.Limit) || i.Limit > 1.0e12) return error_id::kInvalidTorqueLimit;
+    if (!torque_.active) {  // start conditions (spec 01 §8.10, §12 scenario 36; decision F7)
+      if (const auto e = control_.program_job_rejection()) return e;
+      if (stop_.id != 0 && stop_.execute) return error_id::kLockedByStop;
+      if (alarms_.strongest_reaction() == AlarmReaction::kRemoveEnable) return error_id::kAxisBlockedByAlarm;
+    }
+    if (device_ != nullptr && !drive_has_momred_) return error_id::kNoTorqueReduction;  // F1
+    return 0;
+  });
+  s.InLimitation = torque_.active && in_limitation_;
+  return s;
 }
 
 void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
@@ -662,6 +701,8 @@ void SpeedAxis::update_status() noexcept {
   assign(sw, StatusWordBit::kEnable, enabled);
   assign(sw, StatusWordBit::kError, alarms_.any_error());
   assign(sw, StatusWordBit::kControlPanelActive, control_.held());
+  assign(sw, StatusWordBit::kTorqueLimitingCommand, torque_.active);
+  assign(sw, StatusWordBit::kInLimitation, in_limitation_);
   // SA: Done = motion finished and setpoint velocity 0 (spec 04 §8 rule 2).
   assign(sw, StatusWordBit::kDone, !generator_active_ && std::fabs(setpoint_.velocity) < kStandstillEpsilon);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
@@ -717,6 +758,7 @@ void SpeedAxis::restart() noexcept {
   stop_ = StopJob{};
   generator_active_ = false;
   setpoint_ = MotionState{};
+  torque_.stw2_fixed_stop = false;  // the restarted connection cleared the STW bits; set again if active
   drive_config_.reference_speed_rpm = start_.Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_.Actor.DriveParameter.ReferenceTorque;
   if (device_ != nullptr) drive_.restart(drive_config_);  // the PROFIdrive link runs on

@@ -3,7 +3,26 @@
 #include <cmath>
 #include <numbers>
 
+#include "tomc/telegrams/normalisation.hpp"
+
 namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+bool drive_torque_limit(DriveConnection& drive, TorqueLimitingRequest& request, double motor_limit,
+                        double reference, bool has_momred, bool has_meldw) noexcept {
+  const bool active = request.active;
+  auto& sp = drive.drive_setpoint();
+  sp.MOMRED = active && has_momred ? tg::momred_from_torque_limit(motor_limit, reference) : std::uint16_t{0};
+  // Set while MC_TorqueLimiting is active, so that the drive does not fault at the limit (spec 01 §8.13
+  // table, last row: MC_TorqueLimiting sets it, MC_TorqueRange does not).
+  if (active != request.stw2_fixed_stop) {
+    sp.STW2.set(tg::Stw2Bit::kTravelToFixedStop, active);
+    request.stw2_fixed_stop = active;
+  }
+  return active && has_meldw &&
+         !drive.drive_actual().MELDW.test(tg::MeldwBit::kTorqueUtilisationBelowThreshold);
+}
 
 double motor_torque_limit(double limit, const TorqueLimitMechanics& m) noexcept {
   if (m.linear_motor || !m.load_side) return limit;  // spec 01 §8.10: linear motor and motor side as given

@@ -405,9 +405,9 @@ const auto kGearOut = std::to_array<Parameter<GearOut>>({
 });
 
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
-constexpr std::array<std::string_view, 8> kSpeedAxisInstructions{
-    "MC_Power", "MC_Reset", "MC_MoveVelocity", "MC_MoveJog",
-    "MC_Halt",  "MC_Stop",  "MC_SetAxisSTW",   "MC_WriteParameter",
+constexpr std::array<std::string_view, 9> kSpeedAxisInstructions{
+    "MC_Power", "MC_Reset",      "MC_MoveVelocity",   "MC_MoveJog",        "MC_Halt",
+    "MC_Stop",  "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
@@ -508,6 +508,7 @@ std::unique_ptr<Instance> make_motion(std::string_view instruction) {
   if (instruction == "MC_Halt") return make(kHalt<Axis>);
   if (instruction == "MC_Stop") return make(kStop<Axis>);
   if (instruction == "MC_SetAxisSTW") return make(kSetAxisStw<Axis>);
+  if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<Axis>);
   return nullptr;
 }
 
@@ -521,7 +522,6 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<PositioningAxis>);
       if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
       if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
-      if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<PositioningAxis>);
       return make_motion<PositioningAxis>(instruction);
     case TechnologyObjectKind::kSynchronousAxis:
       if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<SynchronousAxis>);
@@ -531,7 +531,6 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_GearInPos") return make(kGearInPos);
       if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
       if (instruction == "MC_GearOut") return make(kGearOut);
-      if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<SynchronousAxis>);
       return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

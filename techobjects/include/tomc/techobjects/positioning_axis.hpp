@@ -415,14 +415,7 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   CommunicationTimes communication_times_start_{};
 
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
-  struct TorqueLimitingJob {
-    bool active = false;           // Enable TRUE and accepted
-    std::int32_t mode = 0;         // 0 limiting, 1 fixed-stop detection
-    double limit = -1.0;           // as given (< 0: the defaults)
-    std::uint16_t error = 0;       // latched until Enable goes FALSE
-    bool stw2_fixed_stop = false;  // STW2.8 set by the limiting (cleared when it ends)
-  };
-  TorqueLimitingJob torque_{};
+  TorqueLimitingRequest torque_{};
   ClampingMonitor clamping_{};
   bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
   bool in_limitation_ = false;

@@ -19,6 +19,7 @@
 #include "tomc/techobjects/profiles.hpp"
 #include "tomc/techobjects/runtime.hpp"
 #include "tomc/techobjects/speed_axis_data.hpp"
+#include "tomc/techobjects/torque_limiting.hpp"
 #include "tomc/techobjects/variables.hpp"
 
 namespace tomc::techobjects {
@@ -121,6 +122,9 @@ class SpeedAxis final : public TechnologyObject {
   // MC_WriteParameter (spec 03 §4.15): 1010/1011/1012 communication times (s, after restart), 1020
   // Actor.RemoveEnableReaction (immediately). 1000 belongs to positioning axes.
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // MC_TorqueLimiting (spec 03 §4.18.3): Mode 0 torque limiting through MOMRED (telegrams 10x); fixed-stop
+  // detection (Mode 1) is for positioning and synchronous axes only.
+  TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
   // Ti, To, T_DC (seconds) in effect; they enter the following error of position-controlled axes.
   using CommunicationTimes = techobjects::CommunicationTimes;
   const CommunicationTimes& communication_times() const noexcept { return communication_times_; }
@@ -214,6 +218,11 @@ class SpeedAxis final : public TechnologyObject {
   bool limited_dynamics_ = false;
   CommunicationTimes communication_times_{};
   CommunicationTimes communication_times_start_{};
+  // MC_TorqueLimiting
+  TorqueLimitingRequest torque_{};
+  bool in_limitation_ = false;
+  bool drive_has_momred_ = false;  // resolved at construction
+  bool drive_has_meldw_ = false;
 };
 
 }  // namespace tomc::techobjects

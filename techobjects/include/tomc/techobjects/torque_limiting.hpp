@@ -4,6 +4,8 @@
 // and the clamping state machine of "travel to fixed stop".
 #include <cstdint>
 
+#include "tomc/techobjects/drive_connection.hpp"
+
 namespace tomc::techobjects {
 
 // Additional value of alarm 541 when the position leaves Clamping.PositionTolerance (decision F4; 1 and 2
@@ -25,6 +27,45 @@ struct TorqueLimitingState {
   bool Error = false;
   std::uint16_t ErrorID = 0;
 };
+
+// The TO's side of an MC_TorqueLimiting job, shared by the axis types.
+struct TorqueLimitingRequest {
+  bool active = false;           // Enable TRUE and accepted
+  std::int32_t mode = 0;         // 0 limiting, 1 fixed-stop detection
+  double limit = -1.0;           // as given (< 0: the defaults)
+  std::uint16_t error = 0;       // latched until Enable goes FALSE (decision F7)
+  bool stw2_fixed_stop = false;  // STW2.8 set by the limiting (cleared when it ends)
+
+  // One MC_TorqueLimiting call (spec 03 §4.18.3, L3): Enable FALSE ends the job and clears its error; with
+  // Enable TRUE the inputs are checked by `rejection` (0 = accepted) and taken on every call.
+  template <typename Rejection>
+  TorqueLimitingState call(const TorqueLimitingInputs& in, Rejection rejection) noexcept {
+    if (!in.Enable) {
+      active = false;
+      error = 0;
+      return TorqueLimitingState{};
+    }
+    if (error == 0) {
+      error = rejection(in);
+      active = error == 0;
+      if (active) {
+        mode = in.Mode;
+        limit = in.Limit;
+      }
+    }
+    TorqueLimitingState s;
+    s.Error = error != 0;
+    s.ErrorID = error;
+    s.Busy = active;
+    return s;
+  }
+};
+
+// MC_Servo: the limit to the drive as MOMRED (a percentage reduction of `reference`, the same both ways) and
+// STW2.8 "travel to fixed stop" while the job is active (decision F2); `motor_limit` in N·m (N for a linear
+// motor). Returns InLimitation: MELDW.1 "torque utilisation below threshold (p2194)" cleared.
+bool drive_torque_limit(DriveConnection& drive, TorqueLimitingRequest& request, double motor_limit,
+                        double reference, bool has_momred, bool has_meldw) noexcept;
 
 // What the limit refers to (spec 01 §8.10 table).
 struct TorqueLimitMechanics {
