@@ -50,6 +50,13 @@ bool PositioningAxis::position_monitorings_suspended() const noexcept {
 
 void PositioningAxis::servo_torque_limiting() noexcept {
   const bool active = torque_.active;
+  if (!active) {  // the common case, kept short: only what the end of a job has to clear
+    in_limitation_ = false;
+    clamping_.reset();
+    if (device_ != nullptr && (torque_.stw2_fixed_stop || drive_.drive_setpoint().MOMRED != 0))
+      (void)drive_torque_limit(drive_, torque_, 0.0, 1.0, drive_has_momred_, drive_has_meldw_);
+    return;
+  }
   if (device_ != nullptr) {
     const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
     const bool linear_axis =

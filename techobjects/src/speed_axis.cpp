@@ -532,6 +532,8 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
     // MC_TorqueLimiting (spec 01 §8.10): the speed axis is rotary; load side through the gear (and
     // efficiency).
     double motor_limit = 0.0;
+    const bool torque_output =
+        torque_.active || torque_.stw2_fixed_stop || drive_.drive_setpoint().MOMRED != 0;
     if (torque_.active) {
       TorqueLimitMechanics m;
       m.load_side = db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
@@ -540,9 +542,9 @@ void SpeedAxis::servo(const CycleClock&) noexcept {
       const double limit = torque_.limit >= 0.0 ? torque_.limit : db_.TorqueLimiting.LimitDefaults.Torque;
       motor_limit = motor_torque_limit(limit, m);
     }
-    in_limitation_ =
-        drive_torque_limit(drive_, torque_, motor_limit, db_.Actor.DriveParameter.ReferenceTorque,
-                           drive_has_momred_, drive_has_meldw_);
+    in_limitation_ = torque_output && drive_torque_limit(drive_, torque_, motor_limit,
+                                                         db_.Actor.DriveParameter.ReferenceTorque,
+                                                         drive_has_momred_, drive_has_meldw_);
     drive_.request(request);
     drive_.set_speed_setpoint(rpm);
     drive_.write();
