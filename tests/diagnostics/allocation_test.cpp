@@ -9,43 +9,9 @@
 #include <cstdlib>
 #include <new>
 
+#include "counting_allocator.hpp"
 #include "diagnostics_fixture.hpp"
 #include "positioning_panel_fixture.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace {
 
@@ -59,10 +25,10 @@ constexpr int kCycles = 50'000;
 #endif
 
 TEST(DiagnosticsAllocation, CountingAllocatorSeesAllocations) {
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   tomc::testing::DiagnosticsMachine m;
   m.diagnostics.poll();
-  EXPECT_GT(g_allocations.load(), before);
+  EXPECT_GT(tomc::testing::allocation_count(), before);
 }
 
 TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
@@ -90,9 +56,9 @@ TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
 
   std::uint64_t in_cycle = 0;
   auto step = [&] {
-    const auto before = g_allocations.load(std::memory_order_relaxed);
+    const auto before = tomc::testing::allocation_count();
     m.runtime.step();
-    in_cycle += g_allocations.load(std::memory_order_relaxed) - before;
+    in_cycle += tomc::testing::allocation_count() - before;
   };
   auto post = [&](PanelCommandKind kind, std::int32_t direction = 0, double value = 0.0) {
     diagnostics::PanelCommand c;
@@ -156,9 +122,9 @@ TEST(DiagnosticsAllocation, PositioningPanelDoesNotAllocate) {
     if (phase == 1700) post(PanelCommandKind::kJog, 1);
     if (phase == 1800) post(PanelCommandKind::kStop);
     if (i % 200 == 0) post(PanelCommandKind::kLifebeat);
-    const auto before = g_allocations.load(std::memory_order_relaxed);
+    const auto before = tomc::testing::allocation_count();
     m.runtime.step();
-    in_cycle += g_allocations.load(std::memory_order_relaxed) - before;
+    in_cycle += tomc::testing::allocation_count() - before;
     if (i % 20 == 0) m.diagnostics.poll();
   }
   EXPECT_EQ(in_cycle, 0u);

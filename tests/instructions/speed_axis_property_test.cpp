@@ -11,39 +11,8 @@
 #include <new>
 #include <random>
 
+#include "counting_allocator.hpp"
 #include "speed_axis_fixture.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-// GCC sees the malloc in these replacements inlined next to std::free and warns of a mismatch that is not
-// one.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -146,7 +115,7 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
   Violations v;
   std::vector<double> previous(kAxes, 0.0);
   std::vector<int> was_enabled(kAxes, 0);
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int cycle = 0; cycle < kCycles; ++cycle) {
     for (int i = 0; i < kAxes; ++i) {
       auto& m = *machines[static_cast<std::size_t>(i)];
@@ -158,7 +127,7 @@ TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
           techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kEnable) ? 1 : 0;
     }
   }
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(v.velocity, 0);
   EXPECT_EQ(v.acceleration, 0) << "worst |a| " << v.worst_acceleration;
   EXPECT_EQ(v.reaction, 0);

@@ -8,42 +8,8 @@
 #include <cstdlib>
 #include <new>
 
+#include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace {
 
@@ -87,9 +53,9 @@ TEST(BacklashFilterAllocation, ReversingAxisWithBacklashAndFilterAllocatesNothin
   };
   m.run(2);
 
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   m.run(kCycles);
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
   // The cycle did the work in question: many reversals, each crossing the backlash, no alarm.
   EXPECT_GT(moves, kCycles / 400);

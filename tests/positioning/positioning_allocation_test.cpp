@@ -18,45 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -399,7 +362,7 @@ TEST(PositioningAllocation, EveryJobKindRunsWithoutAllocating) {
   }
   std::vector<std::uint64_t> alarm_sequence(axes.size(), 0);
 
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int cycle = 0; cycle < kCycles; ++cycle) {
     for (std::size_t i = 0; i < axes.size(); ++i) {
       auto& m = *axes[i].m;
@@ -433,7 +396,7 @@ TEST(PositioningAllocation, EveryJobKindRunsWithoutAllocating) {
       p.edges.see(kAborted, m.move_absolute.CommandAborted || m.move_absolute2.CommandAborted);
     }
   }
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles of " << axes.size() << " axes";
 
   // The script reached what it is about on every axis, in at least two full loops.

@@ -40,39 +40,8 @@
 #include <random>
 #include <string>
 
+#include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-// GCC sees the malloc in these replacements inlined next to std::free and warns of a mismatch that is not
-// one.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -628,12 +597,12 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
   SCOPED_TRACE("seed " + std::to_string(seed) + ", " + s.name);
   Run run(s, seed);
   ASSERT_TRUE(run.machine().power.Status) << "enabled at the start";
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int k = 0; k < kCycles && !::testing::Test::HasFailure(); ++k)
     run.cycle(k);
   // (A failed expectation allocates its message: counted only while everything else held.)
   if (!::testing::Test::HasFailure()) {
-    EXPECT_EQ(g_allocations.load() - before, 0u) << "allocations in the cyclic path";
+    EXPECT_EQ(tomc::testing::allocation_count() - before, 0u) << "allocations in the cyclic path";
   }
   const Stats& st = run.stats();
   std::printf(

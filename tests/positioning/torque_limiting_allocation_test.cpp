@@ -8,43 +8,9 @@
 #include <cstdlib>
 #include <new>
 
+#include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace {
 
@@ -71,7 +37,7 @@ TEST(TorqueLimitingAllocation, ClampReleaseAndLimitChangesAllocateNothing) {
   long clamps = 0, releases = 0, limitations = 0;
   bool was_clamped = false, was_limited = false;
   double direction = 1.0;
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int cycle = 0; cycle < kCycles; ++cycle) {
     // Into the stop at 40 mm/s, alternately the positive and the negative one; when clamped, away to 0.
     if (!m.move_velocity.Busy && !m.move_absolute.Busy && !torque.InClamping) {
@@ -95,7 +61,7 @@ TEST(TorqueLimitingAllocation, ClampReleaseAndLimitChangesAllocateNothing) {
     was_clamped = torque.InClamping;
     was_limited = torque.InLimitation;
   }
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
   EXPECT_EQ(m.db().ErrorDetail.Number, 0u);
   EXPECT_FALSE(torque.Error);

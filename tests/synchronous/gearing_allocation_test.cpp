@@ -22,48 +22,11 @@
 #include <string>
 #include <vector>
 
+#include "counting_allocator.hpp"
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/external_encoder.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
 
 namespace {
 
@@ -465,7 +428,7 @@ TEST(GearingAllocation, EveryGearingJobKindRunsWithoutAllocating) {
   bool started = false;
   long loops = 0;
 
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int cycle = 0; cycle < kCycles; ++cycle) {
     const Step& st = steps[step];
     if (!started) {
@@ -502,7 +465,7 @@ TEST(GearingAllocation, EveryGearingJobKindRunsWithoutAllocating) {
     see(kResetDone, f1.reset.Done);
     see(kChainInGear, m.f2.gear.InGear && m.f2.gear.Master == m.F1);
   }
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
 
   // The script reached what it is about, in at least two full loops.

@@ -9,43 +9,9 @@
 #include <new>
 
 #include "../support/speed_command_object.hpp"
+#include "counting_allocator.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/runtime.hpp"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
 
 namespace {
 
@@ -59,13 +25,13 @@ constexpr int kCycles = 1'000'000;
 
 TEST(Allocation, CountingAllocatorSeesSetUp) {
   // The counter works: set-up of a runtime allocates.
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   Runtime rt(RuntimeConfig{});
   tomc::drives::DeviceConfig device;
   device.drive_telegram = 3;
   rt.add_device(
       std::make_unique<tomc::drives::SimulatedDrive>(device, tomc::drives::SimulatedDriveParameters{}));
-  EXPECT_GT(g_allocations.load(), before);
+  EXPECT_GT(tomc::testing::allocation_count(), before);
 }
 
 TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
@@ -86,10 +52,10 @@ TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
   rt.set_user_program([&](Runtime&) { ++user_cycles; });
   rt.start();
 
-  const auto before = g_allocations.load();
+  const auto before = tomc::testing::allocation_count();
   for (int i = 0; i < kCycles; ++i)
     rt.step();
-  const auto allocated = g_allocations.load() - before;
+  const auto allocated = tomc::testing::allocation_count() - before;
 
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
   EXPECT_EQ(user_cycles, static_cast<std::uint64_t>(kCycles));
