@@ -196,7 +196,10 @@ TEST(WebApi, ObjectsAndStatus) {
   EXPECT_NE(std::find(caps.begin(), caps.end(), "jog"), caps.end());
   EXPECT_EQ(std::find(caps.begin(), caps.end(), "move_absolute"), caps.end());
 
-  const Json status = s.wait_status([](const Json& j) { return j["objects"][0]["valid"] == true; });
+  // The first snapshot is of cycle 0: wait for one of a later cycle, so that "cycle" shows progress (on a
+  // loaded machine the page can be asked between the first and the second publication).
+  const Json status = s.wait_status(
+      [](const Json& j) { return j["objects"][0]["valid"] == true && j["cycle"].get<std::uint64_t>() > 0; });
   const Json& a = status["objects"][0];
   EXPECT_EQ(a["name"], "Axis1");
   EXPECT_TRUE(a["words"]["StatusWord"].is_number());
