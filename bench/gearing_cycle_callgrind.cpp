@@ -21,6 +21,6 @@ int main() {
   for (int i = 0; i < kCycles; ++i)
     m.step();
   std::printf("cycles=%d units=%d in_gear=%d velocity=%g\n", kCycles, kFollowers,
-              m.programs().back().gear.InGear ? 1 : 0, m.group().followers.back()->data().Velocity);
+              m.programs().back().gear.InGear ? 1 : 0, m.group().axes.back()->data().Velocity);
   return 0;
 }

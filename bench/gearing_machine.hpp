@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "axis_group.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
@@ -31,43 +32,7 @@ namespace tomc::bench {
 using techobjects::PositioningAxis;
 using techobjects::SynchronousAxis;
 
-class FollowerGroup final : public techobjects::TechnologyObject {
- public:
-  using Hook = void (*)(FollowerGroup&, const techobjects::CycleClock&, int phase);
-
-  explicit FollowerGroup(techobjects::TechnologyObject* leader) : leader_{{leader}} {}
-  std::string_view name() const noexcept override { return "FollowerGroup"; }
-  std::span<techobjects::TechnologyObject* const> leaders() const noexcept override { return leader_; }
-  void servo(const techobjects::CycleClock& clock) noexcept override { phase(clock, 0); }
-  void interpolate(const techobjects::CycleClock& clock) noexcept override { phase(clock, 1); }
-  void run(const techobjects::CycleClock& clock, int phase) noexcept {
-    if (phase == 0) {
-      for (auto& f : followers)
-        f->servo(clock);
-    } else {
-      for (auto& f : followers)
-        f->interpolate(clock);
-    }
-  }
-
-  std::vector<std::unique_ptr<SynchronousAxis>> followers;
-  bool timed = false;
-  std::chrono::steady_clock::duration elapsed{};
-  Hook hook = nullptr;
-
- private:
-  void phase(const techobjects::CycleClock& clock, int phase) noexcept {
-    const auto t0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    if (hook != nullptr) {
-      hook(*this, clock, phase);
-    } else {
-      run(clock, phase);
-    }
-    if (timed) elapsed += std::chrono::steady_clock::now() - t0;
-  }
-
-  std::array<techobjects::TechnologyObject*, 1> leader_;
-};
+using FollowerGroup = AxisGroupOf<SynchronousAxis>;  // names the leader (spec 07 §6.1)
 
 struct FollowerProgram {
   instructions::MC_Power<SynchronousAxis> power;
@@ -86,10 +51,10 @@ class GearingMachine {
       return runtime_.add_device(std::make_unique<drives::SimulatedDrive>(device, p));
     };
     leader_ = &runtime_.emplace<PositioningAxis>("Leader", &drive(), data);
-    auto group = std::make_unique<FollowerGroup>(leader_);
+    auto group = std::make_unique<FollowerGroup>("FollowerGroup", leader_);
     group_ = group.get();
     for (int i = 0; i < followers; ++i) {
-      group_->followers.push_back(std::make_unique<SynchronousAxis>(
+      group_->axes.push_back(std::make_unique<SynchronousAxis>(
           "Follower", &drive(), data,
           std::vector<techobjects::LeadingValueInterconnection>{
               {leader_, leader_, techobjects::LeadingValueCoupling::kSetpoint}}));
@@ -108,7 +73,7 @@ class GearingMachine {
     for (int k = 0; k < 1000; ++k)
       runtime_.step();
     for (std::size_t i = 0; i < programs_.size(); ++i) {
-      const auto& f = *group_->followers[i];
+      const auto& f = *group_->axes[i];
       if (!programs_[i].gear.InGear ||
           std::fabs(f.setpoint().velocity - leader_->setpoint().velocity) > 1e-9) {
         throw std::runtime_error("gearing machine: a follower is not in synchronous travel after set-up");
@@ -128,7 +93,7 @@ class GearingMachine {
     move_(*leader_);
     for (std::size_t i = 0; i < programs_.size(); ++i) {
       auto& p = programs_[i];
-      auto& f = *group_->followers[i];
+      auto& f = *group_->axes[i];
       p.power(f);
       p.gear.Execute = p.power.Status && move_.InVelocity;
       p.gear(f);

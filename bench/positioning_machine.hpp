@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "axis_group.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
@@ -31,43 +32,7 @@ namespace tomc::bench {
 
 using techobjects::PositioningAxis;
 
-// MC_Servo / MC_Interpolator of every axis, optionally timed (steady_clock around the whole group, so the
-// clock's own cost is paid twice per phase and cycle, not per axis).
-class AxisGroup final : public techobjects::TechnologyObject {
- public:
-  // A callgrind workload routes the phases through its counted function: hook(this, clock, 0 servo / 1
-  // interpolator), which calls run().
-  using Hook = void (*)(AxisGroup&, const techobjects::CycleClock&, int phase);
-
-  std::string_view name() const noexcept override { return "AxisGroup"; }
-  void servo(const techobjects::CycleClock& clock) noexcept override { phase(clock, 0); }
-  void interpolate(const techobjects::CycleClock& clock) noexcept override { phase(clock, 1); }
-  void run(const techobjects::CycleClock& clock, int phase) noexcept {
-    if (phase == 0) {
-      for (auto& a : axes)
-        a->servo(clock);
-    } else {
-      for (auto& a : axes)
-        a->interpolate(clock);
-    }
-  }
-
-  std::vector<std::unique_ptr<PositioningAxis>> axes;
-  bool timed = false;
-  std::chrono::steady_clock::duration elapsed{};
-  Hook hook = nullptr;
-
- private:
-  void phase(const techobjects::CycleClock& clock, int phase) noexcept {
-    const auto t0 = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-    if (hook != nullptr) {
-      hook(*this, clock, phase);
-    } else {
-      run(clock, phase);
-    }
-    if (timed) elapsed += std::chrono::steady_clock::now() - t0;
-  }
-};
+using AxisGroup = AxisGroupOf<PositioningAxis>;
 
 struct AxisProgram {
   instructions::MC_Power<PositioningAxis> power;
@@ -80,7 +45,7 @@ class PositioningMachine {
   // period 0: steady motion; n > 0: a new MC_MoveAbsolute every n cycles.
   PositioningMachine(int axes, bool with_drive, int period)
       : runtime_(techobjects::RuntimeConfig{0.001, 1, 1}), period_(period) {
-    auto group = std::make_unique<AxisGroup>();
+    auto group = std::make_unique<AxisGroup>("AxisGroup");
     group_ = group.get();
     const techobjects::PositioningAxisData data;  // the default data block
     for (int i = 0; i < axes; ++i) {
