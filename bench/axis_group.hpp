@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::bench {
 

@@ -15,7 +15,7 @@
 #include "../diagnostics/diagnostics_fixture.hpp"
 #include "../diagnostics/positioning_panel_fixture.hpp"
 #include "tomc/diagnostics/server.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace {
 

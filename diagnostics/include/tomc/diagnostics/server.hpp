@@ -14,7 +14,7 @@
 #include <string>
 
 #include "tomc/diagnostics/diagnostics.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace tomc::diagnostics {
 

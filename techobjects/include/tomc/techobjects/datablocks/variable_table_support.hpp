@@ -1,0 +1,132 @@
+#pragma once
+// Helpers shared by the reflection tables of every TO type (speed axis, positioning axis, external encoder):
+// data-type limits (spec 04 §0.2 "where a range is missing, the data-type limits apply"), the C++ type of
+// each data type (spec 04 §0.4), and compile-time checks of a table.
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <type_traits>
+
+#include "tomc/techobjects/datablocks/speed_axis_data.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
+
+namespace tomc::techobjects {
+
+// ---- building blocks of the reflection tables (also usable by other TO tables) ----
+namespace detail {
+
+// Data-type limits (spec 04 §0.2: "where a range is missing, the data-type limits apply").
+inline constexpr double kLrealMin = std::numeric_limits<double>::lowest();
+inline constexpr double kLrealMax = std::numeric_limits<double>::max();
+inline constexpr double kByteMax = 255.0;
+inline constexpr double kWordMax = 65535.0;
+inline constexpr double kUdintMax = 4294967295.0;
+inline constexpr double kDintMin = -2147483648.0;
+inline constexpr double kDintMax = 2147483647.0;
+inline constexpr double kIntMin = -32768.0;
+inline constexpr double kIntMax = 32767.0;
+
+constexpr double type_minimum(VariableType type) noexcept {
+  switch (type) {
+    case VariableType::kInt:
+      return kIntMin;
+    case VariableType::kDint:
+      return kDintMin;
+    case VariableType::kLreal:
+      return kLrealMin;
+    default:
+      return 0.0;
+  }
+}
+constexpr double type_maximum(VariableType type) noexcept {
+  switch (type) {
+    case VariableType::kBool:
+      return 1.0;
+    case VariableType::kByte:
+      return kByteMax;
+    case VariableType::kWord:
+    case VariableType::kUint:
+    case VariableType::kDbAny:
+      return kWordMax;
+    case VariableType::kDword:
+    case VariableType::kUdint:
+      return kUdintMax;
+    case VariableType::kInt:
+      return kIntMax;
+    case VariableType::kDint:
+      return kDintMax;
+    case VariableType::kLreal:
+      return kLrealMax;
+  }
+  return 0.0;
+}
+
+// The C++ type of each data type (spec 04 §0.4).
+template <typename T>
+constexpr bool cpp_type_matches(VariableType type) noexcept {
+  switch (type) {
+    case VariableType::kBool:
+      return std::is_same_v<T, bool>;
+    case VariableType::kByte:
+      return std::is_same_v<T, std::uint8_t>;
+    case VariableType::kWord:
+    case VariableType::kUint:
+    case VariableType::kDbAny:
+      return std::is_same_v<T, std::uint16_t>;
+    case VariableType::kDword:
+    case VariableType::kUdint:
+      return std::is_same_v<T, std::uint32_t>;
+    case VariableType::kInt:
+      return std::is_same_v<T, std::int16_t>;
+    case VariableType::kDint:
+      return std::is_same_v<T, std::int32_t>;
+    case VariableType::kLreal:
+      return std::is_same_v<T, double>;
+  }
+  return false;
+}
+
+// Only called with values check_value() accepted, so the conversion is exact and in range.
+template <typename T>
+constexpr T from_double(double value) noexcept {
+  if constexpr (std::is_same_v<T, bool>) {
+    return value != 0.0;
+  } else {
+    return static_cast<T>(value);
+  }
+}
+
+// Every range is non-empty, inside its data type, and every permitted value lies in the range.
+constexpr bool ranges_valid(std::span<const VariableInfo> table) noexcept {
+  for (const VariableInfo& info : table) {
+    if (!(info.minimum <= info.maximum)) return false;
+    if (info.minimum < type_minimum(info.type) || info.maximum > type_maximum(info.type)) return false;
+    for (const double v : info.allowed_values) {
+      if (!(v >= info.minimum && v <= info.maximum)) return false;
+    }
+  }
+  return true;
+}
+
+// ---- permitted values the TO tables share (spec 04 §3.3, §3.11) ----
+// Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.2.4, spec 04 §3.3).
+inline constexpr std::array<double, 4> kRemoveEnableReactionValues{0x1, 0x3, 0x5, 0x7};
+inline constexpr std::array<double, 1> kTimeUnits{unit_code::kSecond};
+inline constexpr std::array<double, 8> kTorqueUnits{unit_code::kNewtonMetre,    unit_code::kKilonewtonMetre,
+                                                    unit_code::kPoundForceInch, unit_code::kPoundForceFoot,
+                                                    unit_code::kOunceForceInch, unit_code::kOunceForceFoot,
+                                                    unit_code::kPoundalInch,    unit_code::kPoundalFoot};
+inline constexpr std::array<double, 5> kForceUnits{unit_code::kNewton, unit_code::kKilonewton,
+                                                   unit_code::kPoundForce, unit_code::kOunceForce,
+                                                   unit_code::kPoundal};
+inline constexpr std::array<double, 5> kMassUnits{
+    unit_code::kKilogram, unit_code::kGram, unit_code::kMilligram, unit_code::kTonne, unit_code::kPound};
+inline constexpr std::array<double, 2> kInertiaUnits{unit_code::kKilogramSquareMetre,
+                                                     unit_code::kPoundSquareFoot};
+inline constexpr std::span<const double> kAny{};
+
+}  // namespace detail
+
+}  // namespace tomc::techobjects
