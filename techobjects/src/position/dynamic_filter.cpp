@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 namespace tomc::techobjects {
 
@@ -48,10 +49,33 @@ double DynamicFilter::History::sum(std::size_t n) const noexcept {
 
 // ---- DynamicFilter ----
 
+DynamicFilter& DynamicFilter::operator=(const DynamicFilter& other) {
+  if (this == &other) return *this;
+  config_ = other.config_;
+  active_ = other.active_;
+  started_ = other.started_;
+  t1_ = other.t1_;
+  t2_ = other.t2_;
+  tt_ = other.tt_;
+  coefficients_ = other.coefficients_;
+  delay_cycles_ = other.delay_cycles_;
+  delay_whole_ = other.delay_whole_;
+  delay_fraction_ = other.delay_fraction_;
+  moving_average_ = other.moving_average_;
+  channels_ = other.channels_ ? std::make_unique<std::array<Channel, 3>>(*other.channels_) : nullptr;
+  return *this;
+}
+
+bool DynamicFilter::reserve_histories() noexcept {
+  if (!channels_) channels_.reset(new (std::nothrow) std::array<Channel, 3>{});
+  return channels_ != nullptr;
+}
+
 bool DynamicFilter::configure(const DynamicFilterConfig& config) noexcept {
   if (config.Mode < 0 || config.Mode > 2) return false;
   if (!std::isfinite(config.ServoCycle) || config.ServoCycle <= 0.0) return false;
   if (!valid_time(config.T1) || !valid_time(config.T2) || !valid_time(config.Tt)) return false;
+  if (config.Mode != 0 && !reserve_histories()) return false;
   config_ = config;
   const double ts = config.ServoCycle;
   const double limit = kMaxCycles * ts;  // spec 02 §7.6: 16 × servo cycle, no alarm
@@ -129,23 +153,23 @@ double DynamicFilter::step(Channel& c, double u) const noexcept {
 }
 
 MotionState DynamicFilter::update(const MotionState& in, bool run) noexcept {
-  if (!run || !active_) {
+  if (!run || !active_ || !channels_) {
     started_ = false;
     return in;
   }
   if (!started_) {
-    fill(channels_[0], in.position);
-    fill(channels_[1], in.velocity);
-    fill(channels_[2], in.acceleration);
+    fill((*channels_)[0], in.position);
+    fill((*channels_)[1], in.velocity);
+    fill((*channels_)[2], in.acceleration);
     started_ = true;
   }
-  return MotionState{step(channels_[0], in.position), step(channels_[1], in.velocity),
-                     step(channels_[2], in.acceleration)};
+  return MotionState{step((*channels_)[0], in.position), step((*channels_)[1], in.velocity),
+                     step((*channels_)[2], in.acceleration)};
 }
 
 void DynamicFilter::shift(double delta) noexcept {
-  if (!started_ || delta == 0.0) return;
-  Channel& c = channels_[0];
+  if (!started_ || delta == 0.0 || !channels_) return;
+  Channel& c = (*channels_)[0];
   for (Stage& s : c.stages) {
     s.input.shift(delta);
     s.state += delta;

@@ -16,39 +16,6 @@ bool non_negative_finite(double v) noexcept {
 
 }  // namespace
 
-// ---- SetpointDelayLine ----
-
-void SetpointDelayLine::fill(double value) noexcept {
-  buffer_.fill(value);
-  head_ = 0;
-}
-
-void SetpointDelayLine::push(double value) noexcept {
-  head_ = (head_ + 1) % kMaxSetpointDelayCycles;
-  buffer_[head_] = value;
-}
-
-double SetpointDelayLine::at(std::size_t age) const noexcept {
-  return buffer_[(head_ + kMaxSetpointDelayCycles - age) % kMaxSetpointDelayCycles];
-}
-
-double SetpointDelayLine::delayed(double delay_cycles) const noexcept {
-  return delayed(tap(delay_cycles));
-}
-
-SetpointDelayLine::Tap SetpointDelayLine::tap(double delay_cycles) noexcept {
-  const double d = std::clamp(std::isfinite(delay_cycles) ? delay_cycles : 0.0, 0.0, kMaxDelayCycles);
-  const auto n = static_cast<std::size_t>(std::floor(d));
-  return Tap{n, d - static_cast<double>(n)};
-}
-
-double SetpointDelayLine::delayed(const Tap& tap) const noexcept {
-  const std::size_t n = tap.samples;
-  const double r = tap.fraction;
-  if (n >= kMaxSetpointDelayCycles - 1 || r == 0.0) return at(n);
-  return (1.0 - r) * at(n) + r * at(n + 1);
-}
-
 // ---- PositionController ----
 
 PositionController::PositionController() noexcept {

@@ -60,6 +60,7 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
     fail("PositionControl.InitialOperativeSensor", "names an encoder whose Sensor[n].Existent is FALSE");
   }
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
+  if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
   drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
   if (device_ != nullptr) {
@@ -149,7 +150,7 @@ void PositioningAxis::configure_components() noexcept {
   pc.Ti = core_.communication_times.Ti;
   pc.To = core_.communication_times.To;
   pc.Tdc = core_.communication_times.Tdc;
-  (void)controller_.configure(pc);
+  if (auto* controller = this->controller()) (void)controller->configure(pc);
   configure_monitoring();
   configure_extrapolation();
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
@@ -663,19 +664,28 @@ WriteResult PositioningAxis::write(std::string_view path, double value) noexcept
     if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
     if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
         path.starts_with("FollowingError.")) {
-      PositionControlConfig pc = controller_.config();
-      pc.Kv = db_.PositionControl.Kv;
-      pc.Kpc = db_.PositionControl.Kpc;
-      pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
-      pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
-      (void)controller_.configure(pc);
+      if (auto* controller = this->controller()) {
+        PositionControlConfig pc = controller->config();
+        pc.Kv = db_.PositionControl.Kv;
+        pc.Kpc = db_.PositionControl.Kpc;
+        pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
+        pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
+        (void)controller->configure(pc);
+      }
     }
   }
   return r;
 }
 
 WriteResult PositioningAxis::write_start_value(std::string_view path, double value) noexcept {
-  return kTable.write_start_value(*start_, db_, path, value);
+  WriteResult r = kTable.write_start_value(*start_, db_, path, value);
+  // A start value that switches the dynamic filter on reserves its histories now (a user call), so that the
+  // MC_Reset Restart that applies it allocates nothing in MC_Interpolator (decision M2).
+  if (r.ok() && path == "SetpointFilter.DynamicFilter.Mode" && value != 0.0 &&
+      !dynamic_filter_.reserve_histories()) {
+    r.value = ValueError::kOutOfRange;  // no memory for the histories: refused, never silently unfiltered
+  }
+  return r;
 }
 
 double PositioningAxis::read(std::string_view path) const noexcept {

@@ -119,7 +119,7 @@ void PositioningAxis::simulate_actual_values() noexcept {
   if (follows_actual()) {
     // Following the actual value (disabled, StopMode 1/3, remove enable) nothing moves a virtual or
     // simulated axis: it stands where it is.
-    simulation_delay_.fill(actual_position_);
+    if (auto* loop = simulation_delay()) loop->fill(actual_position_);
     actual_velocity_ = 0.0;
   } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
     const auto& pc = db_.PositionControl;
@@ -127,8 +127,9 @@ void PositioningAxis::simulate_actual_values() noexcept {
     const double tt = pc.Kpc > 0.0
                           ? core_.ipo_cycle_s + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
                           : core_.ipo_cycle_s + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
-    simulation_delay_.push(filtered_.position);
-    actual_position_ = simulation_delay_.delayed(tt / servo_cycle_s_);
+    auto* loop = simulation_delay();  // always there on an axis without a device
+    loop->push(filtered_.position);
+    actual_position_ = loop->delayed(tt / servo_cycle_s_);
     actual_velocity_ = (actual_position_ - previous) / servo_cycle_s_;
   } else {
     actual_position_ = filtered_.position;  // x_f: "the dynamic filter is active" (seed 004 §6.1.5)
@@ -152,15 +153,14 @@ void PositioningAxis::control() noexcept {
   if (active && position_controlled_ && device_ == nullptr) {
     // Virtual axis / simulation (spec 01 §2.5, §2.6): no control loop; the following error is what the
     // simulated delay leaves (0 on a virtual axis, whose actual value is the setpoint of the cycle before).
-    controller_.reset();
     out.following_error = db_.VirtualAxis.Mode == kModeOn ? 0.0 : setpoint_.position - actual_position_;
     velocity = filtered_.velocity;
   } else if (active && position_controlled_) {
-    out = controller_.update(
+    out = controller()->update(
         PositionControlInput{setpoint_.position, filtered_.position, filtered_.velocity, actual_position_});
     velocity = out.velocity_setpoint;
   } else {
-    controller_.reset();
+    if (auto* controller = this->controller()) controller->reset();
     if (active) velocity = setpoint_.velocity;  // non-position-controlled operation (spec 02 §7.7)
   }
   db_.StatusServo.BalancedPosition = active && position_controlled_ ? out.balanced_position : 0.0;
@@ -260,9 +260,9 @@ void PositioningAxis::shift_position(double delta) noexcept {
   positioning_target_ += delta;
   limit_stop_position_ += delta;
   clamping_.shift(delta);
-  controller_.shift(delta);  // histories move with the coordinates: no following-error step, no transient
+  // Histories move with the coordinates: no following-error step, no transient.
+  std::visit([delta](auto& loop) { loop.shift(delta); }, control_loop_);
   dynamic_filter_.shift(delta);
-  simulation_delay_.shift(delta);
   software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
 }
 
@@ -344,7 +344,7 @@ void PositioningAxis::update_power_phase() noexcept {
       position_controlled_ = core_.start_mode == 1;
       setpoint_ = MotionState{actual_position_, 0.0, 0.0};
       generator_ = Generator::kIdle;
-      controller_.reset();
+      if (auto* controller = this->controller()) controller->reset();
       positioning_.cancel();
       break;
     case PowerEvent::kDisabling:
@@ -409,7 +409,9 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
   l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
-  if (velocity_profile_.plan(start, target, l)) {
+  VelocityProfile planned;
+  if (planned.plan(start, target, l)) {
+    profile_ = planned;
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kVelocity;
@@ -419,7 +421,9 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
   ProfileLimits l = limits;
   l.jerk = replanning_jerk(setpoint_.velocity, setpoint_.acceleration, l.jerk, velocity_limit(), false);
-  if (position_profile_.plan(setpoint_, target, l)) {
+  PositionProfile planned;
+  if (planned.plan(setpoint_, target, l)) {
+    profile_ = planned;
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
@@ -435,23 +439,23 @@ void PositioningAxis::generate_setpoint() noexcept {
   switch (generator_) {
     case Generator::kVelocity: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= velocity_profile_.duration() - 1e-9) {
-        const MotionState end = velocity_profile_.at(velocity_profile_.duration());
+      if (profile_time_ >= velocity_profile().duration() - 1e-9) {
+        const MotionState end = velocity_profile().at(velocity_profile().duration());
         setpoint_ = MotionState{
-            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile_.duration()),
+            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
             end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
       } else {
-        setpoint_ = velocity_profile_.at(profile_time_);
+        setpoint_ = velocity_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
     }
     case Generator::kPosition: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= position_profile_.duration() - 1e-9) {
+      if (profile_time_ >= position_profile().duration() - 1e-9) {
         setpoint_ = MotionState{
-            position_profile_.at(position_profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
+            position_profile().at(position_profile().duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
         const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
         if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
@@ -463,7 +467,7 @@ void PositioningAxis::generate_setpoint() noexcept {
           }
         }
       } else {
-        setpoint_ = position_profile_.at(profile_time_);
+        setpoint_ = position_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
@@ -487,20 +491,20 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
   const double t = profile_time_ + dt;
   MotionState s{setpoint_.position + setpoint_.velocity * dt, setpoint_.velocity, 0.0};
   if (generator_ == Generator::kVelocity) {
-    const double end = velocity_profile_.duration();
+    const double end = velocity_profile().duration();
     if (t >= end - 1e-9) {
-      const MotionState e = velocity_profile_.at(end);
+      const MotionState e = velocity_profile().at(end);
       s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
     } else {
-      s = velocity_profile_.at(t);
+      s = velocity_profile().at(t);
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kPosition) {
-    const double end = position_profile_.duration();
+    const double end = position_profile().duration();
     if (t >= end - 1e-9) {
-      s = MotionState{position_profile_.at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+      s = MotionState{position_profile().at(end + 1.0).position + profile_offset_, 0.0, 0.0};
     } else {
-      s = position_profile_.at(t);
+      s = position_profile().at(t);
       s.position += profile_offset_;
     }
   }
@@ -688,7 +692,7 @@ void PositioningAxis::update_status() noexcept {
           : 0;
   db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
   db_.StatusPositioning.SetpointExecutionTime =
-      generator_ == Generator::kPosition ? std::max(0.0, position_profile_.duration() - profile_time_) : 0.0;
+      generator_ == Generator::kPosition ? std::max(0.0, position_profile().duration() - profile_time_) : 0.0;
 
   std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
   std::uint32_t sw2 = 0;

@@ -14,6 +14,7 @@
 #include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/drive/encoder_channel.hpp"
@@ -44,6 +45,11 @@ class ExternalEncoder final : public TechnologyObject, public LeadingValueSource
     start_.move_to(services.start_values);
   }
   void interpolate(const CycleClock& clock) noexcept override;
+
+  // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes();
+  }
 
   // ---- the data block ----
   const ExternalEncoderData& data() const noexcept { return db_; }

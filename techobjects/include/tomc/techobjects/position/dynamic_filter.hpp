@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "tomc/techobjects/motion/profiles.hpp"
 
@@ -65,7 +66,19 @@ class DynamicFilter {
   // Rejects (returns false, keeps the previous configuration) a Mode outside 0 ... 2, a negative or
   // non-finite time or a servo cycle <= 0. Times above 16·T_s are limited (no error: spec 02 §7.6). The
   // history is kept, so DIR changes of T1/T2/Tt at run time (spec 04 §3.22) take effect without a step.
+  // The histories (1.3 KB) exist only once a Mode 1/2 is configured (issue 14, memory per axis): the first
+  // such configure() allocates them (set-up; an axis does it at construction and when the start value of
+  // SetpointFilter.DynamicFilter.Mode is written, so that the restart that applies it allocates nothing).
   bool configure(const DynamicFilterConfig& config) noexcept;
+  bool has_histories() const noexcept { return channels_ != nullptr; }
+  std::size_t history_bytes() const noexcept { return channels_ ? sizeof(*channels_) : 0; }
+  // Allocates the histories ahead of a Mode 1/2 that a restart will apply (false: out of memory).
+  bool reserve_histories() noexcept;
+  DynamicFilter() = default;
+  DynamicFilter(const DynamicFilter& other) { *this = other; }
+  DynamicFilter& operator=(const DynamicFilter& other);
+  DynamicFilter(DynamicFilter&&) noexcept = default;
+  DynamicFilter& operator=(DynamicFilter&&) noexcept = default;
   const DynamicFilterConfig& config() const noexcept { return config_; }
 
   // One servo cycle. With `run` FALSE (follow-up, no position control: the filter acts in position control
@@ -135,7 +148,7 @@ class DynamicFilter {
   std::size_t delay_whole_ = 0;  // its whole cycles
   double delay_fraction_ = 0.0;  // and the fraction (linear interpolation to the next older sample)
   bool moving_average_ = false;
-  std::array<Channel, 3> channels_{};
+  std::unique_ptr<std::array<Channel, 3>> channels_;  // position, velocity, acceleration; null while off
 };
 
 }  // namespace tomc::techobjects

@@ -35,13 +35,19 @@
 //
 // Real time: all member functions are noexcept, allocation-free and bounded (O(1) per cycle).
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace tomc::techobjects {
 
-// Capacity of the setpoint delay line in servo cycles (current sample included): delays up to 63 cycles.
-inline constexpr std::size_t kMaxSetpointDelayCycles = 64;
+// Capacity of the position controller's setpoint delay lines in servo cycles (current sample included): delays
+// up to 31 cycles (T_i + T_o + T_DC + T_servo and AdditionalSetpointDelayTime; decision M3). Longer delays are
+// clamped and reported by configure().
+inline constexpr std::size_t kMaxSetpointDelayCycles = 32;
+// The simulated control loop of a simulated axis (Simulation.Mode = 1): T_t up to 63 cycles.
+inline constexpr std::size_t kSimulationDelayCycles = 64;
 
 // Filled from PositioningAxisData (spec 04 §3.20, §3.23, §3.24) and the communication times (spec 01 §3.5).
 struct PositionControlConfig {
@@ -81,34 +87,56 @@ struct PositionControlOutput {
   double dsc_kpc = 0.0;
 };
 
-// Fixed-capacity delay line with linear interpolation for fractional delays.
-class SetpointDelayLine {
+// Fixed-capacity delay line with linear interpolation for fractional delays. The capacity is the longest delay
+// + 1 in servo cycles (issue 14, memory per axis: the position controller's lines hold kMaxSetpointDelayCycles,
+// the simulated control loop of a simulated axis kSimulationDelayCycles).
+template <std::size_t Capacity>
+class BasicSetpointDelayLine {
  public:
+  static constexpr std::size_t kCapacity = Capacity;
   // Fills the whole history with value (used at start so there is no step).
-  void fill(double value) noexcept;
+  void fill(double value) noexcept {
+    buffer_.fill(value);
+    head_ = 0;
+  }
   // Moves every stored sample by delta (a position shift by homing keeps the history's shape).
   void shift(double delta) noexcept {
     for (auto& v : buffer_)
       v += delta;
   }
-  void push(double value) noexcept;
-  // Value delay_cycles ago (0 = the last pushed value); 0 <= delay_cycles <= kMaxSetpointDelayCycles − 1,
-  // clamped otherwise. Linear interpolation between neighbouring samples.
-  double delayed(double delay_cycles) const noexcept;
+  void push(double value) noexcept {
+    head_ = (head_ + 1) % Capacity;
+    buffer_[head_] = value;
+  }
+  // Value delay_cycles ago (0 = the last pushed value); 0 <= delay_cycles <= Capacity − 1, clamped otherwise.
+  // Linear interpolation between neighbouring samples.
+  double delayed(double delay_cycles) const noexcept { return delayed(tap(delay_cycles)); }
   // A delay resolved once (sample index and interpolation weight) for a delay that stays the same over many
   // cycles: delayed(tap(d)) == delayed(d).
   struct Tap {
     std::size_t samples = 0;
     double fraction = 0.0;
   };
-  static Tap tap(double delay_cycles) noexcept;
-  double delayed(const Tap& tap) const noexcept;
+  static Tap tap(double delay_cycles) noexcept {
+    constexpr double kMax = static_cast<double>(Capacity - 1);
+    const double d = std::clamp(std::isfinite(delay_cycles) ? delay_cycles : 0.0, 0.0, kMax);
+    const auto n = static_cast<std::size_t>(std::floor(d));
+    return Tap{n, d - static_cast<double>(n)};
+  }
+  double delayed(const Tap& tap) const noexcept {
+    const std::size_t n = tap.samples;
+    const double r = tap.fraction;
+    if (n >= Capacity - 1 || r == 0.0) return at(n);
+    return (1.0 - r) * at(n) + r * at(n + 1);
+  }
 
  private:
-  double at(std::size_t age) const noexcept;
-  std::array<double, kMaxSetpointDelayCycles> buffer_{};
+  double at(std::size_t age) const noexcept { return buffer_[(head_ + Capacity - age) % Capacity]; }
+  std::array<double, Capacity> buffer_{};
   std::size_t head_ = 0;  // index of the newest sample
 };
+// The position controller's delay line (delays up to kMaxSetpointDelayCycles − 1 cycles).
+using SetpointDelayLine = BasicSetpointDelayLine<kMaxSetpointDelayCycles>;
 
 class PositionController {
  public:

@@ -20,11 +20,13 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include "tomc/techobjects/position/actual_value_chain.hpp"
 #include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/position/backlash.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
@@ -65,6 +67,11 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
     start_.move_to(services.start_values);
   }
   void interpolate(const CycleClock& clock) noexcept override;
+
+  // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes() + dynamic_filter_.history_bytes();
+  }
 
   // ---- the data block ----
   const PositioningAxisData& data() const noexcept { return db_; }
@@ -284,13 +291,18 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   EncoderMechanics encoder_mechanics_{};
   EncoderSource encoder_source_ = EncoderSource::kDriveG1;
   EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
-  PositionController controller_;
+  // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
+  // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
+  std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
+  PositionController* controller() noexcept { return std::get_if<PositionController>(&control_loop_); }
+  BasicSetpointDelayLine<kSimulationDelayCycles>* simulation_delay() noexcept {
+    return std::get_if<BasicSetpointDelayLine<kSimulationDelayCycles>>(&control_loop_);
+  }
   FollowingErrorMonitor following_error_;
   PositioningMonitor positioning_;
   StandstillSignal standstill_;
   limits::SoftwareLimitMonitor software_limits_;
   limits::HardwareLimitMonitor hardware_limits_;
-  SetpointDelayLine simulation_delay_{};
   // ---- backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6) ----
   BacklashCompensation backlash_;
   DynamicFilter dynamic_filter_;
@@ -303,8 +315,11 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   Motion motion_{};
   Motion pending_{};  // BufferMode 1
   Generator generator_ = Generator::kIdle;
-  VelocityProfile velocity_profile_{};
-  PositionProfile position_profile_{};
+  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
+  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
+  std::variant<VelocityProfile, PositionProfile> profile_;
+  const VelocityProfile& velocity_profile() const noexcept { return *std::get_if<VelocityProfile>(&profile_); }
+  const PositionProfile& position_profile() const noexcept { return *std::get_if<PositionProfile>(&profile_); }
   double profile_time_ = 0.0;
   MotionState setpoint_{};                  // continuous position units
   bool positioning_start_pending_ = false;  // servo starts the positioning monitor with this target

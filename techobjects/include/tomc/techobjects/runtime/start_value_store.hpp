@@ -33,6 +33,8 @@ class StartValues {
   Data& operator*() noexcept { return *values_; }
   const Data* operator->() const noexcept { return values_; }
   Data* operator->() noexcept { return values_; }
+  // Bytes of heap the TO still owns for them (0 once the runtime's store has them).
+  std::size_t owned_bytes() const noexcept { return own_ ? sizeof(Data) : 0; }
   void move_to(StartValueStore& store) {
     if (own_) values_ = &store.adopt(std::move(own_));
   }

@@ -12,6 +12,7 @@
 
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/axis/job.hpp"
@@ -41,6 +42,11 @@ class SpeedAxis final : public TechnologyObject {
     start_.move_to(services.start_values);
   }
   void interpolate(const CycleClock& clock) noexcept override;
+
+  // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes();
+  }
 
   // ---- the data block ----
   const SpeedAxisData& data() const noexcept { return db_; }
