@@ -145,11 +145,10 @@ TEST(ScenarioConfig, LoaderWritesStartValues) {
 // ---- drive ----
 
 TEST(ScenarioDrive, AdapterAndTelegram) {
-  EXPECT_NE(
-      problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
-          .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
-                "\"dds_gateway\""),
-      std::string::npos);
+  EXPECT_NE(problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
+                .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
+                      "\"dds_gateway\""),
+            std::string::npos);
   EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")).find("drive.adapter: 'analog'"),
             std::string::npos);
   EXPECT_EQ(problem_of(with_drive(R"({"adapter": "simulated"})")),
@@ -621,10 +620,11 @@ TEST(ScenarioLoader, MisplacedLeadingValueInterconnections) {
     return p.find("config.LeadingValueInterconnections") != std::string::npos;
   });
   ASSERT_NE(found, problems.end());
-  EXPECT_EQ(*found,
-            "technology_objects[2].config.LeadingValueInterconnections: not a variable of TO_SynchronousAxis: "
-            "LeadingValueInterconnections belongs beside 'config', at "
-            "technology_objects[2].LeadingValueInterconnections");
+  EXPECT_EQ(
+      *found,
+      "technology_objects[2].config.LeadingValueInterconnections: not a variable of TO_SynchronousAxis: "
+      "LeadingValueInterconnections belongs beside 'config', at "
+      "technology_objects[2].LeadingValueInterconnections");
 
   Json p = base();
   p["technology_objects"].push_back(Json::parse(R"({ "name": "P", "type": "TO_PositioningAxis",

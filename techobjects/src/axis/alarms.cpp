@@ -8,7 +8,8 @@ namespace {
 using C = AlarmClass;
 using R = AlarmReaction;
 
-// The ErrorWord/WarningWord bit numbers of spec 04 §5.3/§5.4 that alarms show (the same number in both words).
+// The ErrorWord/WarningWord bit numbers of spec 04 §5.3/§5.4 that alarms show (the same number in both
+// words).
 namespace B {
 constexpr std::int8_t kDrive = 4;            // DriveFault / DriveWarning
 constexpr std::int8_t kSensor = 5;           // SensorFault
@@ -26,26 +27,35 @@ constexpr AlarmDefinition kAlarms[] = {
     {kAlarmDriveFault, C::kAcknowledge, R::kRemoveEnable, "drive fault (ZSW1.3 fault present)", B::kDrive},
     {kAlarmDriveNotReady, C::kAcknowledge, R::kRemoveEnable,
      "drive not ready: control not requested or left operation", B::kDrive},
-    {kAlarmDriveCommunication, C::kAcknowledge, R::kRemoveEnable, "communication with the drive lost", B::kCommunication},
-    {kAlarmDriveSignOfLife, C::kAcknowledge, R::kRemoveEnable, "drive sign-of-life failure", B::kCommunication},
+    {kAlarmDriveCommunication, C::kAcknowledge, R::kRemoveEnable, "communication with the drive lost",
+     B::kCommunication},
+    {kAlarmDriveSignOfLife, C::kAcknowledge, R::kRemoveEnable, "drive sign-of-life failure",
+     B::kCommunication},
     {kAlarmModuloTooFast, C::kAcknowledge, R::kRemoveEnable,
      "modulo axis faster than Modulo.Length / servo cycle", B::kDynamic},
     {kAlarmDriveSto, C::kAcknowledge, R::kRemoveEnable, "drive STO / autonomous OFF2", B::kDrive},
-    {kAlarmSensorFault, C::kAcknowledge, R::kRemoveEnable, "encoder error (Gx_ZSW.15, code in Gx_XIST2)", B::kSensor},
+    {kAlarmSensorFault, C::kAcknowledge, R::kRemoveEnable, "encoder error (Gx_ZSW.15, code in Gx_XIST2)",
+     B::kSensor},
     {kAlarmAdjustmentLost, C::kAcknowledge, R::kNone,
-     "absolute-encoder adjustment not restored (backup missing or corrupt): the axis is not homed", B::kHoming},
+     "absolute-encoder adjustment not restored (backup missing or corrupt): the axis is not homed",
+     B::kHoming},
     {kAlarmDynamicsLimitedVelocity, C::kWarning, R::kNone,
      "programmed velocity limited to the dynamic limits", B::kDynamic},
-    {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone,
-     "programmed acceleration/deceleration limited", B::kDynamic},
+    {kAlarmDynamicsLimitedAcceleration, C::kWarning, R::kNone, "programmed acceleration/deceleration limited",
+     B::kDynamic},
     {kAlarmDynamicsLimitedJerk, C::kWarning, R::kNone, "programmed jerk limited", B::kDynamic},
-    {kAlarmFollowingError, C::kAcknowledge, R::kRemoveEnable, "permissible following error exceeded", B::kFollowingError},
-    {kAlarmFollowingErrorWarning, C::kWarning, R::kNone, "following-error warning level reached", B::kFollowingError},
+    {kAlarmFollowingError, C::kAcknowledge, R::kRemoveEnable, "permissible following error exceeded",
+     B::kFollowingError},
+    {kAlarmFollowingErrorWarning, C::kWarning, R::kNone, "following-error warning level reached",
+     B::kFollowingError},
     {kAlarmHardwareLimit, C::kAcknowledge, R::kRemoveEnable, "hardware limit switch approached", kNoWordBit},
-    {kAlarmSoftwareLimitReached, C::kAcknowledge, R::kStopMaxDynamics, "software limit switch reached", kNoWordBit},
-    {kAlarmSoftwareLimitExceeded, C::kAcknowledge, R::kRemoveEnable, "software limit switch passed", kNoWordBit},
+    {kAlarmSoftwareLimitReached, C::kAcknowledge, R::kStopMaxDynamics, "software limit switch reached",
+     kNoWordBit},
+    {kAlarmSoftwareLimitExceeded, C::kAcknowledge, R::kRemoveEnable, "software limit switch passed",
+     kNoWordBit},
     {kAlarmPositioning, C::kAcknowledge, R::kRemoveEnable, "positioning monitoring", B::kPositioning},
-    {kAlarmDriveSafeStop, C::kAcknowledge, R::kFollowSetpoint, "drive-autonomous SS1/SS2 OFF3 braking", B::kDrive},
+    {kAlarmDriveSafeStop, C::kAcknowledge, R::kFollowSetpoint, "drive-autonomous SS1/SS2 OFF3 braking",
+     B::kDrive},
     {kAlarmHomingFailed, C::kAcknowledge, R::kStopMaxDynamics, "homing could not be completed", B::kHoming},
     {kAlarmLeadingAxisDefective, C::kAcknowledge, R::kStopMaxDynamics,
      "leading axis not assigned (not a configured leading value) or defective", B::kSynchronous},

@@ -145,13 +145,14 @@ std::optional<std::uint16_t> AxisCore::resolve_dynamics(double velocity, double 
 }
 
 double AxisCore::override_factor(const TO_Struct_Override& o) const noexcept {
-  if (control.override_ineffective()) return 1.0;  // spec 02 §9.3: the panel has its own "adapt velocity"
+  if (control.override_ineffective()) return 1.0;     // spec 02 §9.3: the panel has its own "adapt velocity"
   return std::clamp(o.Velocity, 0.0, 200.0) / 100.0;  // spec 01 §8.4: 0..200 %
 }
 
 std::optional<Submission> AxisCore::stop_request(const StopInputs& in, const TO_Struct_DynamicDefaults& d,
                                                  const TO_Struct_DynamicLimits& l, DynamicUnits u,
-                                                 int& weight, ProfileLimits& limits) noexcept {
+                                                 std::span<const RunningJob> running, int& weight,
+                                                 ProfileLimits& limits) noexcept {
   if (const auto e = control.program_job_rejection()) return Submission::reject(e);
   weight = stop_weight_of_mc_stop_mode(in.Mode);
   if (weight == 0) return Submission::reject(error_id::kInvalidMode);  // Mode 1 and anything else
@@ -170,6 +171,10 @@ std::optional<Submission> AxisCore::stop_request(const StopInputs& in, const TO_
   if (stop_outweighed(weight)) {
     return Submission::accept(jobs.create(AxisJobKind::kStop, JobState::kAborted));
   }
+  ArbitrationContext ctx;
+  ctx.new_stop_weight = weight;
+  ctx.running_stop_weight = stop.weight;
+  if (arbitrate(NewJob::kStop, running, ctx).reject) return Submission::reject(error_id::kRejectedByRunningJob);
   return std::nullopt;
 }
 

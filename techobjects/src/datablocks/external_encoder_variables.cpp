@@ -70,39 +70,15 @@ constexpr std::array<double, 2> kReactionValues{static_cast<double>(ExternalEnco
                                                 static_cast<double>(ExternalEncoderReaction::kRemoveEnable)};
 
 // One row: `path_literal` is the manual path, `member` the ExternalEncoderData member expression it names.
-#define TOMC_E_ROW(path_literal, member, data_type, access_code, variable_role, lo, hi, allowed, wp)       \
-  VariableInfo {                                                                                           \
-    .path = path_literal, .type = VariableType::data_type, .access = Access::access_code, .minimum = (lo), \
-    .maximum = (hi), .allowed_values = (allowed), .role = VariableRole::variable_role,                     \
-    .write_parameter = (wp), .owner = TechnologyObjectType::kExternalEncoder,                              \
-    .read_fn = [](const void* data) noexcept -> double {                                                   \
-      static_assert(detail::cpp_type_matches<decltype(std::declval<const ExternalEncoderData&>().member)>( \
-                        VariableType::data_type),                                                          \
-                    "data type of " path_literal " does not match its C++ member");                        \
-      return static_cast<double>(static_cast<const ExternalEncoderData*>(data)->member);                   \
-    },                                                                                                     \
-    .write_fn = [](void* data, double value) noexcept {                                                    \
-      auto& target = static_cast<ExternalEncoderData*>(data)->member;                                      \
-      target = detail::from_double<std::remove_reference_t<decltype(target)>>(value);                      \
-    }                                                                                                      \
-  }
+#define TOMC_E_ROW(...) TOMC_DB_ROW(ExternalEncoderData, kExternalEncoder, __VA_ARGS__)
 // A scalar member: the path is the member expression.
 #define TOMC_E_VARIABLE(member, ...) TOMC_E_ROW(#member, member, __VA_ARGS__)
 // A member of element n (1-based) of an ARRAY [1..m]: path "<array>[n].<member>", C++ element n - 1.
 #define TOMC_E_ELEMENT(array, n, member, ...) \
   TOMC_E_ROW(#array "[" #n "]." #member, array[n - 1].member, __VA_ARGS__)
 
-// A VREF (spec 04 §0.4) as its four members, configuration, with the access of the VREF. The tables give
-// "0 ... 65535" for the VREF as a whole; that range is the DB number's, the other members keep their
-// data-type limits.
-#define TOMC_E_VREF_ROWS(path_literal, member, access_code)                                                  \
-  TOMC_E_ROW(path_literal ".RID", member.RID, kDword, access_code, kConfiguration, 0.0, kUdintMax, kAny, 0), \
-      TOMC_E_ROW(path_literal ".AREA", member.AREA, kByte, access_code, kConfiguration, 0.0, kByteMax, kAny, \
-                 0),                                                                                         \
-      TOMC_E_ROW(path_literal ".DB_NUMBER", member.DB_NUMBER, kUint, access_code, kConfiguration, 0.0,       \
-                 kWordMax, kAny, 0),                                                                         \
-      TOMC_E_ROW(path_literal ".OFFSET", member.OFFSET, kUdint, access_code, kConfiguration, 0.0, kUdintMax, \
-                 kAny, 0)
+#define TOMC_E_VREF_ROWS(path_literal, member, access_code) \
+  TOMC_DB_VREF_ROWS(TOMC_E_ROW, path_literal, member, access_code)
 #define TOMC_E_VREF(member, access_code) TOMC_E_VREF_ROWS(#member, member, access_code)
 #define TOMC_E_ELEMENT_VREF(array, n, member, access_code) \
   TOMC_E_VREF_ROWS(#array "[" #n "]." #member, array[n - 1].member, access_code)

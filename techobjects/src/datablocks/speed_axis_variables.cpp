@@ -34,30 +34,10 @@ constexpr std::array<double, 3> kVelocityUnits{unit_code::kPerSecond, unit_code:
                                                unit_code::kPerHour};
 
 // One row: `member` is the SpeedAxisData member expression and, stringized, the manual path.
-#define TOMC_SPEED_AXIS_VARIABLE(member, data_type, access_code, variable_role, lo, hi, allowed, wp)        \
-  VariableInfo {                                                                                            \
-    .path = #member, .type = VariableType::data_type, .access = Access::access_code, .minimum = (lo),       \
-    .maximum = (hi), .allowed_values = (allowed), .role = VariableRole::variable_role,                      \
-    .write_parameter = (wp), .owner = TechnologyObjectType::kSpeedAxis,                                     \
-    .read_fn = [](const void* data) noexcept -> double {                                                    \
-      static_assert(                                                                                        \
-          cpp_type_matches<decltype(std::declval<const SpeedAxisData&>().member)>(VariableType::data_type), \
-          "data type of " #member " does not match its C++ member");                                        \
-      return static_cast<double>(static_cast<const SpeedAxisData*>(data)->member);                          \
-    },                                                                                                      \
-    .write_fn = [](void* data, double value) noexcept {                                                     \
-      auto& target = static_cast<SpeedAxisData*>(data)->member;                                             \
-      target = from_double<std::remove_reference_t<decltype(target)>>(value);                               \
-    }                                                                                                       \
-  }
-
-// A VREF (spec 04 §0.4) as its four members, all RON configuration. The tables give "0 ... 65535" for the
-// VREF as a whole; that range is the DB number's, the other members keep their data-type limits.
-#define TOMC_SPEED_AXIS_VREF(member)                                                                   \
-  TOMC_SPEED_AXIS_VARIABLE(member.RID, kDword, kRON, kConfiguration, 0.0, kUdintMax, kAny, 0),         \
-      TOMC_SPEED_AXIS_VARIABLE(member.AREA, kByte, kRON, kConfiguration, 0.0, kByteMax, kAny, 0),      \
-      TOMC_SPEED_AXIS_VARIABLE(member.DB_NUMBER, kUint, kRON, kConfiguration, 0.0, kWordMax, kAny, 0), \
-      TOMC_SPEED_AXIS_VARIABLE(member.OFFSET, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kAny, 0)
+#define TOMC_S_ROW(...) TOMC_DB_ROW(SpeedAxisData, kSpeedAxis, __VA_ARGS__)
+#define TOMC_SPEED_AXIS_VARIABLE(member, ...) TOMC_S_ROW(#member, member, __VA_ARGS__)
+// A VREF (spec 04 §0.4) as its four members, all RON configuration.
+#define TOMC_SPEED_AXIS_VREF(member) TOMC_DB_VREF_ROWS(TOMC_S_ROW, #member, member, kRON)
 
 // clang-format off
 constexpr auto kSpeedAxisVariables = std::to_array<VariableInfo>({

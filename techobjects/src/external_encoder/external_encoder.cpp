@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/setup_checks.hpp"
 #include "tomc/techobjects/datablocks/data_block_access.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 
@@ -21,21 +22,11 @@ ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const Exter
       connection_config_(connection),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kEncoderG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
-    throw std::invalid_argument(name_ + "." + std::string(path) + ": " + std::string(message));
+    fail_start_value(name_, path, message);
   };
-  for (const auto& v : external_encoder_variables()) {
-    if (v.role != VariableRole::kConfiguration) continue;
-    const ValueError e = check_value(v, v.read(*start_));
-    if (e != ValueError::kNone) fail(v.path, to_string(e));
-  }
-  units_ = axis_unit_factors(start_->Units.LengthUnit, start_->Units.VelocityUnit);
-  if (!units_.valid) fail("Units.VelocityUnit", "does not measure the same quantity as Units.LengthUnit");
-  const bool rotary =
-      start_->Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kRotary);
-  if (rotary != (length_unit_scale(start_->Units.LengthUnit)->dimension == UnitDimension::kAngle)) {
-    fail("Units.LengthUnit", rotary ? "a rotary encoder needs an angle unit (°, rad)"
-                                    : "a linear encoder needs a length unit (m, mm, in, ...)");
-  }
+  check_start_values(name_, external_encoder_variables(), *start_);
+  units_ = checked_unit_factors(name_, start_->Units.LengthUnit, start_->Units.VelocityUnit,
+                                start_->Properties.MotionType, "encoder");
   if (device_ == nullptr)
     fail("Sensor.Interface", "an external encoder needs a device with telegram 81 or 83");
   const auto& cfg = device_->adapter->config();
@@ -336,7 +327,8 @@ bool ExternalEncoder::inject_alarm(std::uint32_t number, std::uint32_t additiona
 }
 
 namespace {
-constexpr DataBlockTable<ExternalEncoderData> kTable{&find_external_encoder_variable, &find_external_encoder_bit};
+constexpr DataBlockTable<ExternalEncoderData> kTable{&find_external_encoder_variable,
+                                                     &find_external_encoder_bit};
 }  // namespace
 
 WriteResult ExternalEncoder::write(std::string_view path, double value) noexcept {

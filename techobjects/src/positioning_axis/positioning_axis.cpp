@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/setup_checks.hpp"
 #include "tomc/techobjects/datablocks/data_block_access.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/telegrams/codec.hpp"
@@ -39,22 +40,11 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
       drive_config_(drive),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kDriveG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
-    throw std::invalid_argument(name_ + "." + std::string(path) + ": " + std::string(message));
+    fail_start_value(name_, path, message);
   };
-  for (const auto& v : positioning_axis_variables()) {
-    if (v.role != VariableRole::kConfiguration) continue;
-    const ValueError e = check_value(v, v.read(*start_));
-    if (e != ValueError::kNone) fail(v.path, to_string(e));
-  }
-  units_ = axis_unit_factors(start_->Units.LengthUnit, start_->Units.VelocityUnit);
-  if (!units_.valid) fail("Units.VelocityUnit", "does not measure the same quantity as Units.LengthUnit");
-  const auto length = length_unit_scale(start_->Units.LengthUnit);
-  const bool rotary =
-      start_->Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kRotary);
-  if (rotary != (length->dimension == UnitDimension::kAngle)) {
-    fail("Units.LengthUnit", rotary ? "a rotary axis needs an angle unit (°, rad)"
-                                    : "a linear axis needs a length unit (m, mm, in, ...)");
-  }
+  check_start_values(name_, positioning_axis_variables(), *start_);
+  units_ = checked_unit_factors(name_, start_->Units.LengthUnit, start_->Units.VelocityUnit,
+                                start_->Properties.MotionType, "axis");
   const std::uint32_t op = start_->PositionControl.InitialOperativeSensor;
   if (op < 1 || op > 4 || !start_->Sensor[op - 1].Existent) {
     fail("PositionControl.InitialOperativeSensor", "names an encoder whose Sensor[n].Existent is FALSE");
@@ -91,13 +81,16 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
     const std::uint16_t telegram = device_->adapter->config().drive_telegram;
     if (!carries(telegram, tg::Signal::XERR, tg::Direction::kSetpoint) ||
         !carries(telegram, tg::Signal::KPC, tg::Direction::kSetpoint)) {
-      fail("PositionControl.EnableDSC", "DSC needs XERR and KPC in the setpoint telegram: drive telegram 5, 6, "
-                                        "105 or 106, not " + std::to_string(telegram) + " (seed 004 §6.13.1)");
+      fail("PositionControl.EnableDSC",
+           "DSC needs XERR and KPC in the setpoint telegram: drive telegram 5, 6, "
+           "105 or 106, not " +
+               std::to_string(telegram) + " (seed 004 §6.13.1)");
     }
     if (encoder_source_ != EncoderSource::kDriveG1) {
       fail("PositionControl.EnableDSC",
            "DSC needs the drive's motor encoder (G1 of the drive telegram) as the operative encoder: set "
-           "Sensor[" + std::to_string(op) + "].Interface.Number to 1 (seed 004 §6.13.1)");
+           "Sensor[" +
+               std::to_string(op) + "].Interface.Number to 1 (seed 004 §6.13.1)");
     }
   }
   if (device_ != nullptr) {
@@ -172,8 +165,8 @@ void PositioningAxis::configure_backlash_and_filter() noexcept {
 
 // Extrapolation of the actual value as a leading value (spec 07 §1.4, extrapolation_config).
 void PositioningAxis::configure_extrapolation() noexcept {
-  extrapolation_.configure(
-      extrapolation_config(db_.Extrapolation, core_.communication_times.Ti, core_.ipo_cycle_s, units_.velocity));
+  extrapolation_.configure(extrapolation_config(db_.Extrapolation, core_.communication_times.Ti,
+                                                core_.ipo_cycle_s, units_.velocity));
 }
 
 // The monitors' DIR variables (positions in position units, velocities converted from the data block's
@@ -193,8 +186,6 @@ void PositioningAxis::configure_monitoring() noexcept {
 // ---------------------------------------------------------------------------------------------------------
 // Helpers
 
-
-
 // spec 01 §8.5: v_eff = min(v_cmd · Override, v_limit) — the override applies before the limit clamp.
 double PositioningAxis::positioning_velocity(const Motion& motion) const noexcept {
   return std::min(motion.command_velocity * override_factor(), velocity_limit());
@@ -203,8 +194,6 @@ double PositioningAxis::positioning_velocity(const Motion& motion) const noexcep
 bool PositioningAxis::homed() const noexcept {
   return homed_;
 }
-
-
 
 // spec 03 §2.1, spec 04 §8 rule 1: < 0 -> DynamicDefaults, = 0 invalid (jerk: trapezoid), > 0 as given;
 // limited to DynamicLimits with warnings 501/502/503. Velocity < 0 -> DynamicDefaults.Velocity; pass NaN to
@@ -468,19 +457,14 @@ Submission PositioningAxis::halt(const HaltInputs& in) noexcept {
 }
 
 Submission PositioningAxis::stop(const StopInputs& in) noexcept {
-  int weight = 0;
-  ProfileLimits limits;
-  if (const auto decided =
-          core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units(), weight, limits)) {
-    return *decided;
-  }
   std::size_t n = 0;
   const auto running = running_jobs(n);
-  ArbitrationContext ctx;
-  ctx.new_stop_weight = weight;
-  ctx.running_stop_weight = core_.stop.weight;
-  const Decision d = arbitrate(NewJob::kStop, std::span<const RunningJob>(running.data(), n), ctx);
-  if (d.reject) return Submission::reject(error_id::kRejectedByRunningJob);
+  int weight = 0;
+  ProfileLimits limits;
+  if (const auto decided = core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units(),
+                                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
+    return *decided;
+  }
   abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
   abort_motion(0);
   abort_pending(0);
@@ -636,7 +620,6 @@ bool PositioningAxis::inject_alarm(std::uint32_t number, std::uint32_t additiona
                                    AlarmReaction reaction) noexcept {
   return core_.alarms.raise(number, additional_value, reaction, core_.cycle);
 }
-
 
 void PositioningAxis::raise_with(std::uint32_t number, std::uint32_t additional,
                                  std::int32_t reaction) noexcept {

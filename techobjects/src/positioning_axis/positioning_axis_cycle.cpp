@@ -124,9 +124,9 @@ void PositioningAxis::simulate_actual_values() noexcept {
   } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
     const auto& pc = db_.PositionControl;
     const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
-    const double tt = pc.Kpc > 0.0
-                          ? core_.ipo_cycle_s + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
-                          : core_.ipo_cycle_s + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
+    const double tt =
+        pc.Kpc > 0.0 ? core_.ipo_cycle_s + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
+                     : core_.ipo_cycle_s + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
     auto* loop = simulation_delay();  // always there on an axis without a device
     loop->push(filtered_.position);
     actual_position_ = loop->delayed(tt / servo_cycle_s_);
@@ -145,8 +145,9 @@ void PositioningAxis::simulate_actual_values() noexcept {
 }
 
 void PositioningAxis::control() noexcept {
-  const bool drive_follows_to = core_.phase == PowerPhase::kEnabled ||
-                                (core_.phase == PowerPhase::kDisabling && core_.stop_mode != 1 && core_.stop_mode != 3);
+  const bool drive_follows_to =
+      core_.phase == PowerPhase::kEnabled ||
+      (core_.phase == PowerPhase::kDisabling && core_.stop_mode != 1 && core_.stop_mode != 3);
   const bool active = drive_follows_to && !follows_actual();
   double velocity = 0.0;  // load velocity to the drive, position units / s
   PositionControlOutput out{};
@@ -246,7 +247,6 @@ void PositioningAxis::servo_monitoring() noexcept {
   db_.ActualAcceleration = (actual_velocity_ - last_actual_velocity_) / servo_cycle_s_ * units_.acceleration;
   last_actual_velocity_ = actual_velocity_;
 }
-
 
 // Direct homing moves the actual value and the setpoint together, so that no compensating motion results
 // (spec 02 §5.7 [Derived]); a profile in progress moves with them.
@@ -643,9 +643,9 @@ void PositioningAxis::complete_jobs() noexcept {
     // A virtual or simulated axis' actual value lags its setpoint (spec 01 §2.5): it is disabled once the
     // actual value has arrived too, so that the follow-up after disabling takes no step back.
     const bool caught_up = !virtual_axis() || std::fabs(actual_position_ - setpoint_.position) < 1e-9;
-    core_.finish_disabling(settled && at_zero && caught_up,
-                           drive_off && std::fabs(actual_velocity_) <
-                                            db_.StandstillSignal.VelocityThreshold / units_.velocity);
+    core_.finish_disabling(
+        settled && at_zero && caught_up,
+        drive_off && std::fabs(actual_velocity_) < db_.StandstillSignal.VelocityThreshold / units_.velocity);
   }
 }
 

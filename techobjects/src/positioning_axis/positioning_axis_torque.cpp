@@ -2,8 +2,8 @@
 // clamping (Mode 1), spec 01 §8.10/§8.11, spec 03 §4.18.3, seed 004 §6.7.9.1/§6.7.9.2. Decisions F1–F7.
 #include <cmath>
 
-#include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::techobjects {
@@ -16,7 +16,8 @@ std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInp
     if (const auto e = core_.control.program_job_rejection()) return e;
     // Start conditions (spec 01 §8.10, §12 scenario 36): no MC_Stop, no error that prevents enabling.
     if (core_.stop.id != 0 && core_.stop.execute) return error_id::kLockedByStop;
-    if (core_.alarms.strongest_reaction() == AlarmReaction::kRemoveEnable) return error_id::kAxisBlockedByAlarm;
+    if (core_.alarms.strongest_reaction() == AlarmReaction::kRemoveEnable)
+      return error_id::kAxisBlockedByAlarm;
   }
   // Limiting needs a drive telegram with torque reduction (telegrams 10x); a virtual or simulated axis
   // accepts the job and outputs nothing (spec 01 §2.5 table).
@@ -45,7 +46,7 @@ TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs&
 
 bool PositioningAxis::position_monitorings_suspended() const noexcept {
   return core_.torque.active && db_.TorqueLimiting.PositionBasedMonitorings ==
-                               static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
+                                    static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
 }
 
 void PositioningAxis::servo_torque_limiting() noexcept {
@@ -67,8 +68,8 @@ void PositioningAxis::servo_torque_limiting() noexcept {
     if (active) {
       const bool force = linear_motor || (linear_axis && load_side);
       const double limit = core_.torque.limit >= 0.0 ? core_.torque.limit
-                                                : (force ? db_.TorqueLimiting.LimitDefaults.Force
-                                                         : db_.TorqueLimiting.LimitDefaults.Torque);
+                                                     : (force ? db_.TorqueLimiting.LimitDefaults.Force
+                                                              : db_.TorqueLimiting.LimitDefaults.Torque);
       TorqueLimitMechanics m;
       m.linear_axis = linear_axis;
       m.linear_motor = linear_motor;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/setup_checks.hpp"
 #include "tomc/techobjects/datablocks/data_block_access.hpp"
 #include "tomc/telegrams/layout.hpp"
 #include "tomc/telegrams/normalisation.hpp"
@@ -30,13 +31,7 @@ bool finite(double x) {
 SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& start_values,
                      const DriveConnectionConfig& drive)
     : name_(std::move(name)), device_(device), start_(start_values), db_(start_values), drive_config_(drive) {
-  for (const auto& v : speed_axis_variables()) {
-    if (v.role != VariableRole::kConfiguration) continue;
-    const ValueError e = check_value(v, v.read(*start_));
-    if (e != ValueError::kNone) {
-      throw std::invalid_argument(name_ + "." + std::string(v.path) + ": " + std::string(to_string(e)));
-    }
-  }
+  check_start_values(name_, speed_axis_variables(), *start_);
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
   drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
@@ -73,8 +68,8 @@ double SpeedAxis::velocity_limit() const noexcept {
   return AxisCore::velocity_limit(db_.DynamicLimits, units());
 }
 
-std::optional<std::uint16_t> SpeedAxis::resolve_dynamics(double acceleration, double deceleration, double jerk,
-                                                         ProfileLimits& out) noexcept {
+std::optional<std::uint16_t> SpeedAxis::resolve_dynamics(double acceleration, double deceleration,
+                                                         double jerk, ProfileLimits& out) noexcept {
   return core_.resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), acceleration, deceleration, jerk,
                                 db_.DynamicDefaults, db_.DynamicLimits, units(), out);
 }
@@ -86,13 +81,19 @@ JobStatus SpeedAxis::job_status(JobId id) const noexcept {
 // ---------------------------------------------------------------------------------------------------------
 // Job API
 
-std::uint16_t SpeedAxis::arbitrate_motion(NewJob row) noexcept {
+std::array<RunningJob, 2> SpeedAxis::running_jobs(std::size_t& n) const noexcept {
   std::array<RunningJob, 2> running{};
-  std::size_t n = 0;
+  n = 0;
   if (motion_.id != 0) {
     running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
   }
   if (core_.stop_running()) running[n++] = RunningJob::kStop;
+  return running;
+}
+
+std::uint16_t SpeedAxis::arbitrate_motion(NewJob row) noexcept {
+  std::size_t n = 0;
+  const auto running = running_jobs(n);
   ArbitrationContext ctx;
   ctx.running_job_ends_by_itself = motion_.kind == JobKind::kHalt;
   ctx.virtual_or_simulated_axis = virtual_axis();
@@ -153,10 +154,11 @@ Submission SpeedAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
   if (in.Direction == 2) v = -std::fabs(v);
   // Current = TRUE keeps the present velocity and direction (spec 03 §4.8).
   const double command = in.Current ? setpoint_.velocity / std::max(override_factor(), 1e-12) : v;
-  motion_ = Motion{core_.jobs.create(JobKind::kMoveVelocity, JobState::kActive), JobKind::kMoveVelocity, limits,
-                   command, 0.0};
+  motion_ = Motion{core_.jobs.create(JobKind::kMoveVelocity, JobState::kActive), JobKind::kMoveVelocity,
+                   limits, command, 0.0};
   const double target = std::clamp(command * override_factor(), -limits.velocity, limits.velocity);
-  if (std::fabs(command * override_factor()) > limits.velocity + 1e-12) core_.raise(kAlarmDynamicsLimitedVelocity);
+  if (std::fabs(command * override_factor()) > limits.velocity + 1e-12)
+    core_.raise(kAlarmDynamicsLimitedVelocity);
   motion_.planned_target = target;
   plan_velocity(target, limits, false);
   return Submission::accept(motion_.id);
@@ -179,22 +181,14 @@ Submission SpeedAxis::halt(const HaltInputs& in) noexcept {
 }
 
 Submission SpeedAxis::stop(const StopInputs& in) noexcept {
+  std::size_t n = 0;
+  const auto running = running_jobs(n);
   int weight = 0;
   ProfileLimits limits;
-  if (const auto decided =
-          core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, units(), weight, limits)) {
+  if (const auto decided = core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, units(),
+                                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
     return *decided;
   }
-  ArbitrationContext ctx;
-  std::array<RunningJob, 2> running{};
-  std::size_t n = 0;
-  if (motion_.id != 0)
-    running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
-  if (core_.stop.id != 0) running[n++] = RunningJob::kStop;
-  ctx.new_stop_weight = weight;
-  ctx.running_stop_weight = core_.stop.weight;
-  const Decision d = arbitrate(NewJob::kStop, std::span<const RunningJob>(running.data(), n), ctx);
-  if (d.reject) return Submission::reject(error_id::kRejectedByRunningJob);
   abort_motion(0);
   const JobId id = core_.start_stop(weight, limits);
   plan_velocity(0.0, limits, in.AbortAcceleration);
@@ -244,7 +238,8 @@ Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, 
 
 Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
-  if (parameter_number != 1020) return core_.write_communication_time(parameter_number, value, db_.StatusWord);
+  if (parameter_number != 1020)
+    return core_.write_communication_time(parameter_number, value, db_.StatusWord);
   const VariableInfo* v = find_by_write_parameter(speed_axis_variables(), 1020);
   if (v == nullptr || v->write(db_, value) != ValueError::kNone) {
     return Submission::reject(error_id::kInvalidParameterValue);
@@ -266,7 +261,8 @@ TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) n
     if (!core_.torque.active) {  // start conditions (spec 01 §8.10, §12 scenario 36; decision F7)
       if (const auto e = core_.control.program_job_rejection()) return e;
       if (core_.stop_locks()) return error_id::kLockedByStop;
-      if (core_.alarms.strongest_reaction() == AlarmReaction::kRemoveEnable) return error_id::kAxisBlockedByAlarm;
+      if (core_.alarms.strongest_reaction() == AlarmReaction::kRemoveEnable)
+        return error_id::kAxisBlockedByAlarm;
     }
     if (device_ != nullptr && !drive_has_momred_) return error_id::kNoTorqueReduction;  // F1
     return 0;

@@ -1,6 +1,6 @@
 // Memory per technology object (issue 14; DEVELOPERS.md target "<= 8 KiB per axis TO"): a positioning axis,
-// object plus everything it owns, stays within 8,192 bytes; the speed axis and the external encoder take less.
-// memory_footprint() is checked against the heap that constructing a TO really takes, so that an owned
+// object plus everything it owns, stays within 8,192 bytes; the speed axis and the external encoder take
+// less. memory_footprint() is checked against the heap that constructing a TO really takes, so that an owned
 // allocation cannot go unaccounted. Figures: docs/performance.md "Memory per axis".
 #include <gtest/gtest.h>
 #include <malloc.h>
@@ -28,7 +28,8 @@ struct Machine {
   Machine() : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
     drives::DeviceConfig device;
     device.drive_telegram = 3;
-    auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+    auto& io =
+        runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
     driven = &runtime.emplace<PositioningAxis>("Slide", &io, tomc::testing::linear_axis_data());
     auto virtual_data = tomc::testing::linear_axis_data();
     virtual_data.VirtualAxis.Mode = techobjects::kModeOn;

@@ -663,8 +663,8 @@ TEST(PositioningAxis, DscSendsXerrAndKpc) {
 }
 
 // seed 004 §6.13.1, spec 06 §2: DSC needs XERR/KPC in the setpoint telegram (5, 6, 105, 106) and the motor
-// encoder as the TO's encoder. Telegrams 3, 4, 102 and 103 carry G1_XIST1 but no XERR/KPC: before issue 14 they
-// were accepted, the axis sent precontrol only and never reached its target (alarm 521). Table-driven.
+// encoder as the TO's encoder. Telegrams 3, 4, 102 and 103 carry G1_XIST1 but no XERR/KPC: before issue 14
+// they were accepted, the axis sent precontrol only and never reached its target (alarm 521). Table-driven.
 TEST(PositioningAxis, DscIsAConfigurationErrorWithoutXerrAndKpc) {
   struct Row {
     std::uint16_t telegram;

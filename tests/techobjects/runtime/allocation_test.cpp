@@ -8,8 +8,8 @@
 #include <memory>
 #include <new>
 
-#include "speed_command_object.hpp"
 #include "counting_allocator.hpp"
+#include "speed_command_object.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 

@@ -372,7 +372,8 @@ TEST(SpeedAxis, RestartAppliesStartValues) {
   EXPECT_DOUBLE_EQ(m.axis->data().DynamicLimits.MaxVelocity, 2000.0);
   EXPECT_FALSE(
       techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kOnlineStartValuesChanged));
-  // The restart does not disturb the running PROFIdrive link: no sign-of-life fault, and the axis enables again.
+  // The restart does not disturb the running PROFIdrive link: no sign-of-life fault, and the axis enables
+  // again.
   m.run(50);
   EXPECT_EQ(m.drive->active_fault(), 0u);
   m.power.Enable = true;
@@ -554,8 +555,8 @@ TEST(SpeedAxis, PriorityCellsOfTheSpeedAxisInstructions) {
   EXPECT_GT(m.run_until([&] { return m.stop.Done; }, 1000), 0);
 }
 
-// spec 04 §3.11 / spec 01 §5.4–§5.5: the velocity unit, the load gear (motor : load revolutions) and the drive
-// direction inversion reach the drive as the matching motor speed.
+// spec 04 §3.11 / spec 01 §5.4–§5.5: the velocity unit, the load gear (motor : load revolutions) and the
+// drive direction inversion reach the drive as the matching motor speed.
 TEST(SpeedAxis, UnitsLoadGearAndInversion) {
   struct Case {
     std::uint32_t unit;
@@ -589,7 +590,8 @@ TEST(SpeedAxis, UnitsLoadGearAndInversion) {
     m.move.Execute = true;
     ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 2000), 0);
     m.run(30);
-    EXPECT_NEAR(m.drive->motor_speed_rpm(), c.motor_rpm, 1.0) << c.unit << " " << c.numerator << " " << c.inverse;
+    EXPECT_NEAR(m.drive->motor_speed_rpm(), c.motor_rpm, 1.0)
+        << c.unit << " " << c.numerator << " " << c.inverse;
     EXPECT_NEAR(m.axis->data().ActualSpeed, c.motor_rpm, 1.0);
     EXPECT_DOUBLE_EQ(m.axis->data().Velocity, c.velocity);
   }
@@ -612,7 +614,8 @@ TEST(SpeedAxis, AlarmReactionsWithBrakingRamps) {
     m.move.Deceleration = 50.0;
     m.move.Execute = true;
     ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
-    // Raised before the cycle: the interpolator of that cycle applies the reaction (issue 4: in the same cycle).
+    // Raised before the cycle: the interpolator of that cycle applies the reaction (issue 4: in the same
+    // cycle).
     ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmSoftwareLimitReached, 0, c.reaction));
     m.run(1);
     EXPECT_TRUE(m.move.Error);
@@ -638,8 +641,8 @@ TEST(SpeedAxis, AlarmReactionsWithBrakingRamps) {
   }
 }
 
-// seed 004 §6.9.4 example 2: MC_Stop Mode 3 is active and an alarm with reaction 2 comes: the max-dynamics stop
-// replaces it and MC_Stop reports CommandAborted (not Error).
+// seed 004 §6.9.4 example 2: MC_Stop Mode 3 is active and an alarm with reaction 2 comes: the max-dynamics
+// stop replaces it and MC_Stop reports CommandAborted (not Error).
 TEST(SpeedAxis, HeavierAlarmReactionReplacesMcStop) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
@@ -697,7 +700,8 @@ TEST(SpeedAxis, FollowSetpointReaction) {
   m.move.Execute = true;
   ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
   m.run(20);
-  ASSERT_TRUE(m.axis->inject_alarm(techobjects::kAlarmDriveSafeStop, 0, techobjects::AlarmReaction::kFollowSetpoint));
+  ASSERT_TRUE(
+      m.axis->inject_alarm(techobjects::kAlarmDriveSafeStop, 0, techobjects::AlarmReaction::kFollowSetpoint));
   m.run(1);
   EXPECT_TRUE(m.move.Error);
   EXPECT_NEAR(m.axis->data().Velocity, m.axis->data().ActualSpeed, 1e-6);  // load = motor here (gear 1:1)

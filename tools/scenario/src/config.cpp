@@ -84,7 +84,8 @@ void load_config(const Json& config, std::string_view path, std::string_view typ
         const std::string_view parent = path.substr(0, path.rfind('.'));
         problems.add(at, type_name == "TO_SynchronousAxis"
                              ? "not a variable of TO_SynchronousAxis: LeadingValueInterconnections belongs "
-                               "beside 'config', at " + std::string(parent) + ".LeadingValueInterconnections"
+                               "beside 'config', at " +
+                                   std::string(parent) + ".LeadingValueInterconnections"
                              : "not a variable of " + std::string(type_name) +
                                    ": only a TO_SynchronousAxis has LeadingValueInterconnections (beside "
                                    "its 'config')");

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "json_reader.hpp"
-#include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
 
 namespace tomc::scenario {
 

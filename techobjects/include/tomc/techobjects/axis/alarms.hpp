@@ -1,8 +1,8 @@
 #pragma once
 // Technology alarms (seed 004 §6.6, §6.9.2; spec 02 §1.1, §1.3; spec 04 §0.5, §7): number, class (W/F/R),
 // reaction (0..5) and the alarm's additional value; the alarms pending on one TO, the one ErrorDetail shows,
-// and the runtime-wide log that diagnostics read later. Fixed capacity, no allocation: alarms are raised in MC_Servo and
-// MC_Interpolator.
+// and the runtime-wide log that diagnostics read later. Fixed capacity, no allocation: alarms are raised in
+// MC_Servo and MC_Interpolator.
 
 #include <array>
 #include <cstdint>
@@ -36,7 +36,6 @@ struct AlarmDefinition {
   std::int8_t word_bit = -1;
 };
 inline constexpr std::int8_t kNoWordBit = -1;
-
 
 // The alarms tomc raises (docs/errors.md lists them with their sources). nullptr for an unknown number.
 const AlarmDefinition* find_alarm(std::uint32_t number) noexcept;
@@ -92,8 +91,8 @@ struct AlarmEvent {
 };
 
 // The alarm history of a runtime: the last kCapacity events of all its TOs, oldest overwritten first (one
-// ring per runtime instead of one per TO; each TO keeps only its pending alarms). Written on the cycle; read by
-// diagnostics on the same thread (a snapshot publisher hands it to other threads, issue 7).
+// ring per runtime instead of one per TO; each TO keeps only its pending alarms). Written on the cycle; read
+// by diagnostics on the same thread (a snapshot publisher hands it to other threads, issue 7).
 class AlarmLog {
  public:
   static constexpr std::size_t kCapacity = 1024;
@@ -114,7 +113,8 @@ class AlarmLog {
 // The events of one TO in its runtime's AlarmLog, numbered per TO (AlarmList::log()).
 class AlarmLogView {
  public:
-  AlarmLogView(const AlarmLog* log, std::uint32_t source, std::uint64_t last, std::uint64_t last_in_log) noexcept
+  AlarmLogView(const AlarmLog* log, std::uint32_t source, std::uint64_t last,
+               std::uint64_t last_in_log) noexcept
       : log_(log), source_(source), last_(last), last_in_log_(last_in_log) {}
   // As AlarmLog::copy_since, with the TO's own sequence numbers (AlarmEvent::sequence = source_sequence).
   std::size_t copy_since(std::uint64_t after, std::span<AlarmEvent> out) const noexcept;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
@@ -68,9 +69,9 @@ struct DynamicUnits {
 
 // What a change of the strongest pending alarm asks of the TO (AxisCore::reaction_change()).
 enum class ReactionChange : std::uint8_t {
-  kNone,        // the reaction in force did not change
-  kReleased,    // weaker or none after MC_Reset: the TO is no longer blocked (the phase is updated)
-  kEscalated,   // a stronger reaction: end the jobs, then stop_ramp()/stop_keeps_control() decide the motion
+  kNone,       // the reaction in force did not change
+  kReleased,   // weaker or none after MC_Reset: the TO is no longer blocked (the phase is updated)
+  kEscalated,  // a stronger reaction: end the jobs, then stop_ramp()/stop_keeps_control() decide the motion
 };
 
 // What update_power_phase() asks of the TO.
@@ -108,8 +109,8 @@ class AxisCore {
   // ---- job prerequisites (spec 03 §3.2) and dynamics (spec 03 §2.1, spec 01 §8.1/§8.5) ----
   std::uint16_t motion_prerequisites() const noexcept;
   // < 0 -> DynamicDefaults, = 0 invalid (jerk: no jerk limit), > 0 as given; limited to DynamicLimits with
-  // warnings 501/502/503. MaxJerk > 0 also caps a job without jerk limit (docs/decisions.md S3). Velocity NaN:
-  // the caller's (MoveVelocity, Jog, Halt), `out.velocity` = the velocity limit.
+  // warnings 501/502/503. MaxJerk > 0 also caps a job without jerk limit (docs/decisions.md S3). Velocity
+  // NaN: the caller's (MoveVelocity, Jog, Halt), `out.velocity` = the velocity limit.
   std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
                                                 double jerk, const TO_Struct_DynamicDefaults& defaults,
                                                 const TO_Struct_DynamicLimits& limits, DynamicUnits units,
@@ -122,11 +123,13 @@ class AxisCore {
   }
   // The checks of a new MC_Stop every axis shares (spec 03 §4.13): 16#8012 under the panel, Mode 1 or an
   // unknown Mode invalid, the dynamics per Mode (0 emergency ramp without jerk limit, 2 maximum dynamics, 3
-  // as given), the axis enabled, and a stronger alarm reaction in force (accepted as CommandAborted, seed
-  // §6.9.4). A Submission when that decides; nullopt to go on with the arbitration (`weight` and `limits`
-  // filled).
+  // as given), the axis enabled, a stronger alarm reaction in force (accepted as CommandAborted, seed
+  // §6.9.4), then the §9.19.1 row MC_Stop against the TO's `running` jobs (a stop of a lower weight cannot
+  // replace a running one: 16#8016). A Submission when that decides; nullopt: the TO ends its jobs and calls
+  // start_stop(weight, limits).
   std::optional<Submission> stop_request(const StopInputs& in, const TO_Struct_DynamicDefaults& d,
-                                         const TO_Struct_DynamicLimits& l, DynamicUnits u, int& weight,
+                                         const TO_Struct_DynamicLimits& l, DynamicUnits u,
+                                         std::span<const RunningJob> running, int& weight,
                                          ProfileLimits& limits) noexcept;
   // ---- ramps (spec 02 §3.1, §3.7): internal units ----
   static ProfileLimits emergency_ramp(const TO_Struct_DynamicDefaults& d, DynamicUnits u) noexcept;
@@ -167,8 +170,8 @@ class AxisCore {
   // `ready`: the drive is in operation with valid actual values (always TRUE on a virtual axis).
   PowerEvent update_power_phase(bool ready) noexcept;
   // The ramp of a disable with StopMode 0 (emergency) or 2 (maximum dynamics); nullopt for 1/3.
-  std::optional<ProfileLimits> disable_ramp(const TO_Struct_DynamicDefaults& d, const TO_Struct_DynamicLimits& l,
-                                            DynamicUnits u) const noexcept;
+  std::optional<ProfileLimits> disable_ramp(const TO_Struct_DynamicDefaults& d,
+                                            const TO_Struct_DynamicLimits& l, DynamicUnits u) const noexcept;
   // MC_Interpolator while disabling: settled = the setpoint ramp ended at standstill (StopMode 0/2),
   // drive_stopped = the drive left operation and stands (StopMode 1).
   void finish_disabling(bool settled, bool drive_stopped) noexcept;
@@ -184,7 +187,8 @@ class AxisCore {
   // InLimitation, X30 AxisSimulation, X3 kept; StatusWord2 X0 StopCommand; the ErrorWord/WarningWord bits of
   // the pending alarms (a column of the alarm table) and ErrorDetail.
   void update_words(std::uint32_t& status_word, std::uint32_t& status_word2, std::uint32_t& error_word,
-                    std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail, bool simulation) const noexcept;
+                    std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
+                    bool simulation) const noexcept;
 
   // ---- state: read by the TO's own steps ----
   AlarmList alarms;

@@ -55,8 +55,8 @@ inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.
 inline constexpr std::uint16_t kInvalidParameterNumber =
     0x8130;  // MC_WriteParameter: index not writable on this TO
 inline constexpr std::uint16_t kInvalidParameterValue = 0x8131;  // MC_WriteParameter: value not permitted
-inline constexpr std::uint16_t kInvalidBitMask = 0x8132;   // MC_SetAxisSTW: mask outside the writable bits
-inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;  // MC_SetAxisSTW on a virtual/simulated axis
+inline constexpr std::uint16_t kInvalidBitMask = 0x8132;      // MC_SetAxisSTW: mask outside the writable bits
+inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;     // MC_SetAxisSTW on a virtual/simulated axis
 inline constexpr std::uint16_t kInvalidTorqueLimit = 0x8140;  // MC_TorqueLimiting.Limit not finite or > 1E12
 // MC_TorqueLimiting Mode 0: the drive telegram carries no torque reduction (MOMRED, telegrams 10x)
 inline constexpr std::uint16_t kNoTorqueReduction = 0x8141;

@@ -53,34 +53,11 @@ struct ExternalEncoderData {
     std::int32_t ActualVelocityMode =
         static_cast<std::int32_t>(SensorActualVelocityMode::kDifferentiatePosition);
 
-    struct TO_Struct_SensorInterface {
-      Vref AddressIn;            // RON; chosen: all zero (no address assigned)
-      Vref AddressOut;           // RON; chosen: all zero
-      std::uint32_t Number = 1;  // RON, 1...2; chosen: 1 = G1 of the encoder telegram
-    } Interface;
+    TO_Struct_SensorInterface Interface;
 
-    struct TO_Struct_SensorParameter {
-      double Resolution = 0.001;                  // RES; chosen: 0.001 (only a linear encoder uses it)
-      std::uint32_t StepsPerRevolution = 2048;    // RES; chosen: 2048, as the simulated encoder
-      std::uint32_t FineResolutionXist1 = 11;     // RES; chosen: 11 bits, as the simulated encoder
-      std::uint32_t FineResolutionXist2 = 9;      // RES; chosen: 9 bits, as the simulated encoder
-      std::uint32_t DeterminableRevolutions = 0;  // RES; manual: 0 for an incremental encoder (Type above)
-      double DistancePerRevolution = 360.0;  // RES; chosen: 360° per revolution (only MountingMode 2 uses it)
-      // RES; manual: 1 = full 32-bit Gx_XIST1
-      std::int32_t BehaviorGx_XIST1 = static_cast<std::int32_t>(SensorXist1Behavior::kFull32Bit);
-      double ReferenceSpeed = 3000.0;    // RES; chosen: 3000 1/min, as the simulated drive's NIST reference
-      double ReferenceVelocity = 500.0;  // RES; chosen: 500 (linear encoder only, unused)
-    } Parameter;
+    TO_Struct_SensorParameter Parameter{.DistancePerRevolution = 360.0};
 
-    struct TO_Struct_SensorPassiveHoming {
-      // RES; chosen: 0 = zero mark via PROFIdrive telegram (the simulated encoder has one per revolution)
-      std::int32_t Mode = static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegram);
-      bool SideInput = true;  // CAL; printed "Sidelnput" (spec 04 §14 item 4); chosen: TRUE = positive side
-      // CAL; chosen: 2 = current direction of motion (an encoder cannot choose its direction)
-      std::int32_t Direction = static_cast<std::int32_t>(HomingDirection::kCurrentDirection);
-      Vref DigitalInputAddress;  // RON; chosen: all zero
-      bool SwitchLevel = true;   // RON on E (RES on P); chosen: TRUE = high level
-    } PassiveHoming;
+    TO_Struct_SensorPassiveHoming PassiveHoming;
   } Sensor;
 
   // ---- §3.7 CrossPlcSynchronousOperation (man. §10.4.3) ----

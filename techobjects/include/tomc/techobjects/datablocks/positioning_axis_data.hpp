@@ -49,10 +49,7 @@ struct PositioningAxisData {
   std::int32_t ActualModuloCycle = 0;  // modulo cycle of the actual value
   double VelocitySetpoint = 0.0;       // velocity setpoint output to the drive, -1.0E12 ... 1.0E12
 
-  // ---- §3.1 Simulation (man. §10.3.2) ----
-  struct TO_Struct_AxisSimulation {
-    std::uint32_t Mode = kModeOff;  // RES; chosen: 0 = normal operation (the simulated drive is connected)
-  } Simulation;
+  TO_Struct_AxisSimulation Simulation;
 
   // ---- §3.2 VirtualAxis (man. §10.3.3) ----
   TO_Struct_VirtualAxis VirtualAxis;
@@ -75,18 +72,7 @@ struct PositioningAxisData {
     std::uint16_t RemoveEnableReaction =
         static_cast<std::uint16_t>(RemoveEnableMode::kOff3QuickStopCompatibleV7);
 
-    struct TO_Struct_ActorInterface {
-      Vref AddressIn;                  // RON; chosen: all zero (no address assigned)
-      Vref AddressOut;                 // RON; chosen: all zero
-      bool EnableDriveOutput = false;  // RES; chosen: FALSE (only analog drives use it)
-      Vref EnableDriveOutputAddress;   // RON; chosen: all zero
-      bool DriveReadyInput = false;    // RES; chosen: FALSE (only analog drives use it)
-      Vref DriveReadyInputAddress;     // RON; chosen: all zero
-      bool EnableTorqueData =
-          false;                  // RES; manual: TRUE only if telegram 750 is configured; none is by default
-      Vref TorqueDataAddressIn;   // RON; chosen: all zero
-      Vref TorqueDataAddressOut;  // RON; chosen: all zero
-    } Interface;
+    TO_Struct_ActorInterface Interface;
 
     // Valid with MotorType = 0.
     struct TO_Struct_ActorDriveParameter {
@@ -137,26 +123,9 @@ struct PositioningAxisData {
     std::int32_t ActualVelocityMode =
         static_cast<std::int32_t>(SensorActualVelocityMode::kDifferentiatePosition);
 
-    struct TO_Struct_SensorInterface {
-      Vref AddressIn;            // RON; chosen: all zero (no address assigned)
-      Vref AddressOut;           // RON; chosen: all zero
-      std::uint32_t Number = 1;  // RON, 1...2; chosen: 1 = G1 of the drive telegram
-    } Interface;
+    TO_Struct_SensorInterface Interface;
 
-    struct TO_Struct_SensorParameter {
-      double Resolution = 0.001;  // RES; chosen: 1 µm (only a linear encoder uses it; 0 is outside the range)
-      std::uint32_t StepsPerRevolution = 2048;    // RES; chosen: 2048 = the simulated encoder
-      std::uint32_t FineResolutionXist1 = 11;     // RES; chosen: 11 bits = the simulated encoder
-      std::uint32_t FineResolutionXist2 = 9;      // RES; chosen: 9 bits = the simulated encoder
-      std::uint32_t DeterminableRevolutions = 0;  // RES; manual: 0 for an incremental encoder (Type above)
-      // RES; chosen: 10 mm = Mechanics.LeadScrew (only MountingMode 2 uses it)
-      double DistancePerRevolution = 10.0;
-      // RES; manual: 1 = full 32-bit Gx_XIST1 (the simulated encoder's XIST1 is 32 bits wide)
-      std::int32_t BehaviorGx_XIST1 = static_cast<std::int32_t>(SensorXist1Behavior::kFull32Bit);
-      double ReferenceSpeed = 3000.0;  // RES; chosen: 3000 1/min = the drive's p2000 (NIST_B reference)
-      double ReferenceVelocity =
-          500.0;  // RES; chosen: 500 mm/s (linear encoder only) = DynamicLimits.MaxVelocity
-    } Parameter;
+    TO_Struct_SensorParameter Parameter;
 
     // Motor-shaft encoders only (TO >= V6.0).
     struct TO_Struct_Backlash {
@@ -178,15 +147,7 @@ struct PositioningAxisData {
       bool SwitchLevel = true;          // RES; chosen: TRUE = high level (a high-active 24 V input)
     } ActiveHoming;
 
-    struct TO_Struct_SensorPassiveHoming {
-      // RES; chosen: 0 = zero mark via PROFIdrive telegram, as ActiveHoming.Mode
-      std::int32_t Mode = static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegram);
-      bool SideInput = true;  // CAL; printed "SidelInput"; chosen: TRUE = positive side
-      // CAL; chosen: 2 = current direction of motion (passive homing follows whatever motion runs)
-      std::int32_t Direction = static_cast<std::int32_t>(HomingDirection::kCurrentDirection);
-      Vref DigitalInputAddress;  // RON; chosen: all zero
-      bool SwitchLevel = true;   // RES; chosen: TRUE = high level
-    } PassiveHoming;
+    TO_Struct_SensorPassiveHoming PassiveHoming;
 
     // Rotary encoders only.
     struct TO_Struct_SensorMeasuringGear {

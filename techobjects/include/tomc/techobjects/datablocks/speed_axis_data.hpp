@@ -31,11 +31,7 @@ struct SpeedAxisData {
   double Acceleration = 0.0;      // acceleration setpoint
   double VelocitySetpoint = 0.0;  // speed setpoint output to the drive, -1.0E12 ... 1.0E12
 
-  // ---- §3.1 Simulation (man. §10.2.2) ----
-  struct TO_Struct_AxisSimulation {
-    std::uint32_t Mode =
-        kModeOff;  // RES; chosen: 0 = normal operation (a real or simulated drive is connected)
-  } Simulation;
+  TO_Struct_AxisSimulation Simulation;
 
   // ---- §3.2 VirtualAxis (man. §10.2.3) ----
   TO_Struct_VirtualAxis VirtualAxis;
@@ -52,18 +48,7 @@ struct SpeedAxisData {
     std::uint16_t RemoveEnableReaction =
         static_cast<std::uint16_t>(RemoveEnableMode::kOff3QuickStopCompatibleV7);
 
-    struct TO_Struct_ActorInterface {
-      Vref AddressIn;                  // RON; chosen: all zero (no address assigned)
-      Vref AddressOut;                 // RON; chosen: all zero
-      bool EnableDriveOutput = false;  // RES; chosen: FALSE (only analog drives use it)
-      Vref EnableDriveOutputAddress;   // RON; chosen: all zero
-      bool DriveReadyInput = false;    // RES; chosen: FALSE (only analog drives use it)
-      Vref DriveReadyInputAddress;     // RON; chosen: all zero
-      bool EnableTorqueData =
-          false;                  // RES; manual: TRUE only if telegram 750 is configured; none is by default
-      Vref TorqueDataAddressIn;   // RON; chosen: all zero
-      Vref TorqueDataAddressOut;  // RON; chosen: all zero
-    } Interface;
+    TO_Struct_ActorInterface Interface;
 
     struct TO_Struct_ActorDriveParameter {
       double ReferenceSpeed = 3000.0;  // RES; chosen: 3000 1/min = p2000 of tomc's simulated drive
@@ -96,12 +81,20 @@ struct SpeedAxisData {
   // Speed in Units.VelocityUnit, acceleration in 1/s², jerk in 1/s³ (spec 04 §3.11 derived units).
   // Speed in Units.VelocityUnit, acceleration in 1/s², jerk in 1/s³ (spec 04 §3.11 derived units). Speed-axis
   // defaults (chosen): MaxVelocity = Actor.DriveParameter.MaxSpeed, Velocity = MaxVelocity.
-  TO_Struct_DynamicLimits DynamicLimits{.MaxVelocity = 3000.0, .Velocity = 3000.0, .MaxAcceleration = 100.0, .MaxDeceleration = 100.0, .MaxJerk = 1000.0};
+  TO_Struct_DynamicLimits DynamicLimits{.MaxVelocity = 3000.0,
+                                        .Velocity = 3000.0,
+                                        .MaxAcceleration = 100.0,
+                                        .MaxDeceleration = 100.0,
+                                        .MaxJerk = 1000.0};
 
   // ---- §3.15 DynamicDefaults (man. §10.2.9) ----
   // Speed-axis defaults (chosen): Velocity half the maximum, Acceleration/Deceleration half the maxima, no
   // jerk limitation, EmergencyDeceleration >= MaxDeceleration as spec 04 §3.15 recommends.
-  TO_Struct_DynamicDefaults DynamicDefaults{.Velocity = 1500.0, .Acceleration = 50.0, .Deceleration = 50.0, .Jerk = 0.0, .EmergencyDeceleration = 200.0};
+  TO_Struct_DynamicDefaults DynamicDefaults{.Velocity = 1500.0,
+                                            .Acceleration = 50.0,
+                                            .Deceleration = 50.0,
+                                            .Jerk = 0.0,
+                                            .EmergencyDeceleration = 200.0};
 
   // ---- §3.19 Override (man. §10.2.10) ----
   TO_Struct_Override Override;

@@ -3,7 +3,8 @@
 // DB variables (spec 04 §6.1), the unit codes (spec 04 §3.11), VREF, and the TO_Struct_* structures that more
 // than one TO type carries (spec 04 §3, §4: `Extrapolation` of P/Y and E, `DynamicLimits` of S and P/Y, ...).
 // The default values are the positioning axis' (positioning_axis_data.hpp explains each choice); a TO whose
-// start values differ gives them where it declares the member (speed_axis_data.hpp, external_encoder_data.hpp).
+// start values differ gives them where it declares the member (speed_axis_data.hpp,
+// external_encoder_data.hpp).
 
 #include <array>
 #include <cstdint>
@@ -91,7 +92,6 @@ inline constexpr std::uint32_t kPound = 1540;
 inline constexpr std::uint32_t kKilogramSquareMetre = 1118;
 inline constexpr std::uint32_t kPoundSquareFoot = 1541;
 }  // namespace unit_code
-
 
 // ---- values of the enumerated DB variables of P/Y and E (spec 04 §6.1) ----
 // Shared with speed_axis_data.hpp: kModeOff/kModeOn, ActorType, DataAdaptionMode (also Sensor.DataAdaption),
@@ -343,6 +343,56 @@ struct TO_Struct_TorqueLimiting {
 struct TO_Struct_ErrorDetail {
   std::uint32_t Number = 0;
   std::int32_t Reaction = static_cast<std::int32_t>(AlarmReaction::kNone);  // 0 ... 5
+};
+
+// ---- parts of Sensor[n] (P/Y), Sensor (E), Actor (S, P/Y) and Simulation (S, P/Y) ----
+
+struct TO_Struct_SensorInterface {
+  Vref AddressIn;            // RON; chosen: all zero (no address assigned)
+  Vref AddressOut;           // RON; chosen: all zero
+  std::uint32_t Number = 1;  // RON, 1...2; chosen: 1 = G1 of the drive telegram
+};
+
+struct TO_Struct_SensorParameter {
+  double Resolution = 0.001;  // RES; chosen: 1 µm (only a linear encoder uses it; 0 is outside the range)
+  std::uint32_t StepsPerRevolution = 2048;    // RES; chosen: 2048 = the simulated encoder
+  std::uint32_t FineResolutionXist1 = 11;     // RES; chosen: 11 bits = the simulated encoder
+  std::uint32_t FineResolutionXist2 = 9;      // RES; chosen: 9 bits = the simulated encoder
+  std::uint32_t DeterminableRevolutions = 0;  // RES; manual: 0 for an incremental encoder (Type above)
+  // RES; chosen: 10 mm = Mechanics.LeadScrew (only MountingMode 2 uses it)
+  double DistancePerRevolution = 10.0;
+  // RES; manual: 1 = full 32-bit Gx_XIST1 (the simulated encoder's XIST1 is 32 bits wide)
+  std::int32_t BehaviorGx_XIST1 = static_cast<std::int32_t>(SensorXist1Behavior::kFull32Bit);
+  double ReferenceSpeed = 3000.0;  // RES; chosen: 3000 1/min = the drive's p2000 (NIST_B reference)
+  double ReferenceVelocity =
+      500.0;  // RES; chosen: 500 mm/s (linear encoder only) = DynamicLimits.MaxVelocity
+};
+
+struct TO_Struct_SensorPassiveHoming {
+  // RES; chosen: 0 = zero mark via PROFIdrive telegram, as ActiveHoming.Mode
+  std::int32_t Mode = static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegram);
+  bool SideInput = true;  // CAL; printed "SidelInput"; chosen: TRUE = positive side
+  // CAL; chosen: 2 = current direction of motion (passive homing follows whatever motion runs)
+  std::int32_t Direction = static_cast<std::int32_t>(HomingDirection::kCurrentDirection);
+  Vref DigitalInputAddress;  // RON; chosen: all zero
+  bool SwitchLevel = true;   // RES; chosen: TRUE = high level
+};
+
+struct TO_Struct_ActorInterface {
+  Vref AddressIn;                  // RON; chosen: all zero (no address assigned)
+  Vref AddressOut;                 // RON; chosen: all zero
+  bool EnableDriveOutput = false;  // RES; chosen: FALSE (only analog drives use it)
+  Vref EnableDriveOutputAddress;   // RON; chosen: all zero
+  bool DriveReadyInput = false;    // RES; chosen: FALSE (only analog drives use it)
+  Vref DriveReadyInputAddress;     // RON; chosen: all zero
+  bool EnableTorqueData = false;   // RES; manual: TRUE only if telegram 750 is configured; none is by default
+  Vref TorqueDataAddressIn;        // RON; chosen: all zero
+  Vref TorqueDataAddressOut;       // RON; chosen: all zero
+};
+
+// ---- §3.1 Simulation (man. §10.3.2) ----
+struct TO_Struct_AxisSimulation {
+  std::uint32_t Mode = kModeOff;  // RES; chosen: 0 = normal operation (the simulated drive is connected)
 };
 
 }  // namespace tomc::techobjects

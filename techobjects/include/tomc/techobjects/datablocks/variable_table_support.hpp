@@ -130,3 +130,39 @@ inline constexpr std::span<const double> kAny{};
 }  // namespace detail
 
 }  // namespace tomc::techobjects
+
+// ---- the rows of a reflection table, one macro for every TO type ----
+// One row: `Data` the data-block type, `owner` its TechnologyObjectType, `path_literal` the manual path,
+// `member` the Data member expression it names; a static_assert holds the row's data type against the C++
+// member type. Each table defines its own short form (TOMC_P_ROW = TOMC_DB_ROW(PositioningAxisData, ...)).
+#define TOMC_DB_ROW(Data, owner_type, path_literal, member, data_type, access_code, variable_role, lo, hi, \
+                    allowed, wp)                                                                           \
+  ::tomc::techobjects::VariableInfo {                                                                      \
+    .path = path_literal, .type = ::tomc::techobjects::VariableType::data_type,                            \
+    .access = ::tomc::techobjects::Access::access_code, .minimum = (lo), .maximum = (hi),                  \
+    .allowed_values = (allowed), .role = ::tomc::techobjects::VariableRole::variable_role,                 \
+    .write_parameter = (wp), .owner = ::tomc::techobjects::TechnologyObjectType::owner_type,               \
+    .read_fn = [](const void* data) noexcept -> double {                                                   \
+      static_assert(                                                                                       \
+          ::tomc::techobjects::detail::cpp_type_matches<decltype(std::declval<const Data&>().member)>(     \
+              ::tomc::techobjects::VariableType::data_type),                                               \
+          "data type of " path_literal " does not match its C++ member");                                  \
+      return static_cast<double>(static_cast<const Data*>(data)->member);                                  \
+    },                                                                                                     \
+    .write_fn = [](void* data, double value) noexcept {                                                    \
+      auto& target = static_cast<Data*>(data)->member;                                                     \
+      target = ::tomc::techobjects::detail::from_double<std::remove_reference_t<decltype(target)>>(value); \
+    }                                                                                                      \
+  }
+// A VREF (spec 04 §0.4) as its four members, configuration, with the access of the VREF, through the table's
+// row macro ROW(path, member, ...). The tables give "0 ... 65535" for the VREF as a whole; that range is the
+// DB number's, the other members keep their data-type limits.
+#define TOMC_DB_VREF_ROWS(ROW, path_literal, member, access_code)                               \
+  ROW(path_literal ".RID", member.RID, kDword, access_code, kConfiguration, 0.0,                \
+      ::tomc::techobjects::detail::kUdintMax, ::tomc::techobjects::detail::kAny, 0),            \
+      ROW(path_literal ".AREA", member.AREA, kByte, access_code, kConfiguration, 0.0,           \
+          ::tomc::techobjects::detail::kByteMax, ::tomc::techobjects::detail::kAny, 0),         \
+      ROW(path_literal ".DB_NUMBER", member.DB_NUMBER, kUint, access_code, kConfiguration, 0.0, \
+          ::tomc::techobjects::detail::kWordMax, ::tomc::techobjects::detail::kAny, 0),         \
+      ROW(path_literal ".OFFSET", member.OFFSET, kUdint, access_code, kConfiguration, 0.0,      \
+          ::tomc::techobjects::detail::kUdintMax, ::tomc::techobjects::detail::kAny, 0)

@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "tomc/drives/drive_adapter.hpp"
-#include "tomc/techobjects/position/actual_value_chain.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
+#include "tomc/techobjects/position/actual_value_chain.hpp"
 
 namespace tomc::techobjects {
 

@@ -11,22 +11,22 @@
 #include <string>
 #include <string_view>
 
-#include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/job.hpp"
+#include "tomc/techobjects/axis/job_inputs.hpp"
+#include "tomc/techobjects/axis/job_table.hpp"
 #include "tomc/techobjects/axis/memory_footprint.hpp"
-#include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/techobjects/datablocks/external_encoder_data.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/drive/encoder_channel.hpp"
-#include "tomc/techobjects/datablocks/external_encoder_data.hpp"
-#include "tomc/techobjects/axis/job.hpp"
-#include "tomc/techobjects/axis/job_table.hpp"
-#include "tomc/techobjects/synchronous/leading_value.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/position/passive_homing.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
-#include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/runtime/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
 
 namespace tomc::techobjects {
 

@@ -42,9 +42,9 @@
 
 namespace tomc::techobjects {
 
-// Capacity of the position controller's setpoint delay lines in servo cycles (current sample included): delays
-// up to 31 cycles (T_i + T_o + T_DC + T_servo and AdditionalSetpointDelayTime; decision M3). Longer delays are
-// clamped and reported by configure().
+// Capacity of the position controller's setpoint delay lines in servo cycles (current sample included):
+// delays up to 31 cycles (T_i + T_o + T_DC + T_servo and AdditionalSetpointDelayTime; decision M3). Longer
+// delays are clamped and reported by configure().
 inline constexpr std::size_t kMaxSetpointDelayCycles = 32;
 // The simulated control loop of a simulated axis (Simulation.Mode = 1): T_t up to 63 cycles.
 inline constexpr std::size_t kSimulationDelayCycles = 64;
@@ -87,9 +87,10 @@ struct PositionControlOutput {
   double dsc_kpc = 0.0;
 };
 
-// Fixed-capacity delay line with linear interpolation for fractional delays. The capacity is the longest delay
-// + 1 in servo cycles (issue 14, memory per axis: the position controller's lines hold kMaxSetpointDelayCycles,
-// the simulated control loop of a simulated axis kSimulationDelayCycles).
+// Fixed-capacity delay line with linear interpolation for fractional delays. The capacity is the longest
+// delay
+// + 1 in servo cycles (issue 14, memory per axis: the position controller's lines hold
+// kMaxSetpointDelayCycles, the simulated control loop of a simulated axis kSimulationDelayCycles).
 template <std::size_t Capacity>
 class BasicSetpointDelayLine {
  public:

@@ -113,7 +113,8 @@ class PositioningMonitor {
   // End of setpoint interpolation (target reached or position-controlled stop): monitoring restarts.
   void start(double target_position) noexcept;
   void cancel() noexcept;
-  // Monitoring switched off (torque limiting with PositionBasedMonitorings = 0): Done without the window check.
+  // Monitoring switched off (torque limiting with PositionBasedMonitorings = 0): Done without the window
+  // check.
   void complete() noexcept;
   PositioningStatus update(double actual_position) noexcept;
   PositioningStatus status() const noexcept { return status_; }

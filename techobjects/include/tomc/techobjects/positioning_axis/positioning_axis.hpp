@@ -22,32 +22,32 @@
 #include <string_view>
 #include <variant>
 
-#include "tomc/techobjects/position/actual_value_chain.hpp"
-#include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
-#include "tomc/techobjects/axis/memory_footprint.hpp"
-#include "tomc/techobjects/motion/axis_units.hpp"
-#include "tomc/techobjects/position/backlash.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
-#include "tomc/techobjects/drive/drive_connection.hpp"
-#include "tomc/techobjects/position/dynamic_filter.hpp"
-#include "tomc/techobjects/drive/encoder_channel.hpp"
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
 #include "tomc/techobjects/axis/job_table.hpp"
-#include "tomc/techobjects/synchronous/leading_value.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
+#include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
+#include "tomc/techobjects/drive/drive_connection.hpp"
+#include "tomc/techobjects/drive/encoder_channel.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/position/actual_value_chain.hpp"
+#include "tomc/techobjects/position/backlash.hpp"
+#include "tomc/techobjects/position/dynamic_filter.hpp"
 #include "tomc/techobjects/position/limit_switches.hpp"
 #include "tomc/techobjects/position/passive_homing.hpp"
 #include "tomc/techobjects/position/position_control.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
-#include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
-#include "tomc/techobjects/motion/profiles.hpp"
 #include "tomc/techobjects/runtime/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
-#include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
 
 namespace tomc::techobjects {
 
@@ -318,8 +318,12 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
   // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
   std::variant<VelocityProfile, PositionProfile> profile_;
-  const VelocityProfile& velocity_profile() const noexcept { return *std::get_if<VelocityProfile>(&profile_); }
-  const PositionProfile& position_profile() const noexcept { return *std::get_if<PositionProfile>(&profile_); }
+  const VelocityProfile& velocity_profile() const noexcept {
+    return *std::get_if<VelocityProfile>(&profile_);
+  }
+  const PositionProfile& position_profile() const noexcept {
+    return *std::get_if<PositionProfile>(&profile_);
+  }
   double profile_time_ = 0.0;
   MotionState setpoint_{};                  // continuous position units
   bool positioning_start_pending_ = false;  // servo starts the positioning monitor with this target
@@ -355,8 +359,8 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
   ClampingMonitor clamping_{};
   bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
-  bool drive_has_momred_ = false;  // the drive telegram carries MOMRED (resolved at construction)
-  bool drive_has_meldw_ = false;   // ... and MELDW
+  bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
+  bool drive_has_meldw_ = false;      // ... and MELDW
 };
 
 }  // namespace tomc::techobjects

@@ -3,7 +3,8 @@
 // (ARCHITECTURE-GUIDE §2): MC_PreServo hook, MC_Servo, MC_PostServo hook, MC_Interpolator, post-interpolator
 // hook (diagnostics: axis control panel, snapshots, traces), user program.
 // step() is deterministic on virtual time (an integer cycle counter times the cycle time). After start()
-// nothing in step() allocates, locks, throws or does I/O (tests/techobjects/runtime/allocation_test.cpp proves it).
+// nothing in step() allocates, locks, throws or does I/O (tests/techobjects/runtime/allocation_test.cpp
+// proves it).
 
 #include <cstdint>
 #include <functional>

@@ -12,18 +12,18 @@
 
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
-#include "tomc/techobjects/axis/memory_footprint.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
-#include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
 #include "tomc/techobjects/axis/job_table.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
+#include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/datablocks/speed_axis_data.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
+#include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
-#include "tomc/techobjects/datablocks/speed_axis_data.hpp"
-#include "tomc/techobjects/axis/torque_limiting.hpp"
-#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace tomc::techobjects {
 
@@ -107,18 +107,19 @@ class SpeedAxis final : public TechnologyObject {
   };
 
   // The cycle, step by step (speed_axis.cpp).
-  void read_actual_values() noexcept;        // MC_Servo: drive frames -> ActualSpeed, supervision
-  void write_setpoint() noexcept;            // MC_Servo: drive request, speed setpoint, torque limit
-  void take_reset() noexcept;                // MC_Interpolator: MC_Reset, restart
-  void apply_alarm_reactions() noexcept;     // the reaction in force and its ramp
-  void update_power_phase() noexcept;        // enable/disable per StopMode
-  void update_live_motion() noexcept;        // jog inputs and the override
-  void generate_setpoint() noexcept;         // profile or follow-up, job completion
-  void update_status() noexcept;             // the data block's setpoints and words
+  void read_actual_values() noexcept;     // MC_Servo: drive frames -> ActualSpeed, supervision
+  void write_setpoint() noexcept;         // MC_Servo: drive request, speed setpoint, torque limit
+  void take_reset() noexcept;             // MC_Interpolator: MC_Reset, restart
+  void apply_alarm_reactions() noexcept;  // the reaction in force and its ramp
+  void update_power_phase() noexcept;     // enable/disable per StopMode
+  void update_live_motion() noexcept;     // jog inputs and the override
+  void generate_setpoint() noexcept;      // profile or follow-up, job completion
+  void update_status() noexcept;          // the data block's setpoints and words
   void restart() noexcept;
   // helpers
-  std::uint16_t arbitrate_motion(NewJob row) noexcept;  // 0 = accepted (aborts applied)
-  void abort_motion(std::uint16_t error_id) noexcept;   // ends the base motion (0 = CommandAborted)
+  std::array<RunningJob, 2> running_jobs(std::size_t& n) const noexcept;  // for the §9.19.1 columns
+  std::uint16_t arbitrate_motion(NewJob row) noexcept;                    // 0 = accepted (aborts applied)
+  void abort_motion(std::uint16_t error_id) noexcept;  // ends the base motion (0 = CommandAborted)
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   std::optional<std::uint16_t> resolve_dynamics(double acceleration, double deceleration, double jerk,
                                                 ProfileLimits& out) noexcept;

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "tomc/techobjects/synchronous/leading_value.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
 #include "tomc/techobjects/synchronous/sync_priority.hpp"
 #include "tomc/techobjects/synchronous/synchronous_motion.hpp"
 
