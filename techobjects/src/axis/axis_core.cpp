@@ -14,9 +14,6 @@ namespace tg = tomc::telegrams;
 
 namespace {
 
-// A condition still present this long after MC_Reset is raised again (drive supervision).
-constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
-
 bool finite(double x) noexcept {
   return std::isfinite(x);
 }
@@ -144,11 +141,6 @@ std::optional<std::uint16_t> AxisCore::resolve_dynamics(double velocity, double 
   return std::nullopt;
 }
 
-double AxisCore::override_factor(const TO_Struct_Override& o) const noexcept {
-  if (control.override_ineffective()) return 1.0;     // spec 02 §9.3: the panel has its own "adapt velocity"
-  return std::clamp(o.Velocity, 0.0, 200.0) / 100.0;  // spec 01 §8.4: 0..200 %
-}
-
 std::optional<Submission> AxisCore::stop_request(const StopInputs& in, const TO_Struct_DynamicDefaults& d,
                                                  const TO_Struct_DynamicLimits& l, DynamicUnits u,
                                                  std::span<const RunningJob> running, int& weight,
@@ -174,7 +166,8 @@ std::optional<Submission> AxisCore::stop_request(const StopInputs& in, const TO_
   ArbitrationContext ctx;
   ctx.new_stop_weight = weight;
   ctx.running_stop_weight = stop.weight;
-  if (arbitrate(NewJob::kStop, running, ctx).reject) return Submission::reject(error_id::kRejectedByRunningJob);
+  if (arbitrate(NewJob::kStop, running, ctx).reject)
+    return Submission::reject(error_id::kRejectedByRunningJob);
   return std::nullopt;
 }
 
@@ -197,6 +190,7 @@ ProfileLimits AxisCore::default_ramp(const TO_Struct_DynamicDefaults& d, Dynamic
 // Alarm reactions (spec 02 §1, seed §6.9.4)
 
 ReactionChange AxisCore::reaction_change() noexcept {
+  if (reaction_in_force == AlarmReaction::kNone && alarms.alarms().empty()) return ReactionChange::kNone;
   const AlarmReaction r = alarms.strongest_reaction();
   if (r == reaction_in_force) return ReactionChange::kNone;
   const bool escalation = reaction_rank(r) > reaction_rank(reaction_in_force);
@@ -244,10 +238,6 @@ std::optional<ProfileLimits> AxisCore::reaction_ramp(const ProfileLimits& curren
 // ---------------------------------------------------------------------------------------------------------
 // The drive
 
-bool AxisCore::held_off() const noexcept {
-  return acknowledged_at_ != 0 && cycle < acknowledged_at_ + kReRaiseHoldOffCycles;
-}
-
 void AxisCore::supervise_drive(const DriveConnection& drive) noexcept {
   const bool held_off = this->held_off();
   const auto fault = drive.communication_fault();
@@ -289,13 +279,6 @@ tg::DriveRequest AxisCore::drive_request(std::int32_t remove_enable_reaction) co
       break;
   }
   return stop_mode == 3 ? tg::DriveRequest::kCoastStop : tg::DriveRequest::kOff;
-}
-
-bool AxisCore::follows_actual() const noexcept {
-  return phase == PowerPhase::kDisabled || phase == PowerPhase::kEnabling ||
-         reaction_in_force == AlarmReaction::kRemoveEnable ||
-         reaction_in_force == AlarmReaction::kFollowSetpoint ||
-         (phase == PowerPhase::kDisabling && (stop_mode == 1 || stop_mode == 3));
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -385,12 +368,17 @@ void AxisCore::update_words(std::uint32_t& status_word, std::uint32_t& status_wo
                             std::uint32_t& error_word, std::uint32_t& warning_word,
                             TO_Struct_ErrorDetail& detail, bool simulation) const noexcept {
   assign(status_word, StatusWordBit::kEnable, phase == PowerPhase::kEnabled && !enable_removed());
-  assign(status_word, StatusWordBit::kError, alarms.any_error());
+  const bool pending = !alarms.alarms().empty();
+  assign(status_word, StatusWordBit::kError, pending && alarms.any_error());
   assign(status_word, StatusWordBit::kControlPanelActive, control.held());
   assign(status_word, StatusWordBit::kTorqueLimitingCommand, torque.active);
   assign(status_word, StatusWordBit::kInLimitation, in_limitation);
   assign(status_word, StatusWordBit::kAxisSimulation, simulation);
   assign(status_word2, StatusWord2Bit::kStopCommand, stop.id != 0);
+  if (!pending) {  // the usual cycle: nothing to look up
+    detail = TO_Struct_ErrorDetail{};
+    return;
+  }
   alarm_words(alarms.alarms(), error_word, warning_word);
   const PendingAlarm* top = alarms.error_detail();
   detail.Number = top == nullptr ? 0 : top->number;

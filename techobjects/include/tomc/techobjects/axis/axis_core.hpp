@@ -117,7 +117,10 @@ class AxisCore {
                                                 ProfileLimits& out) noexcept;
   // The override in force (spec 01 §8.4: 0 ... 200 %; none while the axis control panel adapts the velocity,
   // spec 02 §9.3) and the velocity limit min(MaxVelocity, Velocity) (spec 01 §8.3) in internal units.
-  double override_factor(const TO_Struct_Override& o) const noexcept;
+  double override_factor(const TO_Struct_Override& o) const noexcept {
+    if (control.override_ineffective()) return 1.0;  // spec 02 §9.3: the panel has its own "adapt velocity"
+    return std::clamp(o.Velocity, 0.0, 200.0) / 100.0;  // spec 01 §8.4: 0..200 %
+  }
   static double velocity_limit(const TO_Struct_DynamicLimits& l, DynamicUnits u) noexcept {
     return std::min(l.MaxVelocity, l.Velocity) / u.velocity;
   }
@@ -152,7 +155,9 @@ class AxisCore {
                                              const TO_Struct_DynamicLimits& l, DynamicUnits u) const noexcept;
   // ---- the drive (spec 02 §3.1, §3.4) ----
   // Within the hold-off after an MC_Reset: a condition still present is not raised again yet.
-  bool held_off() const noexcept;
+  bool held_off() const noexcept {
+    return acknowledged_at_ != 0 && cycle < acknowledged_at_ + kReRaiseHoldOffCycles;
+  }
   // MC_Servo: drive alarms 401/402/405/406, once per appearance and again after MC_Reset's hold-off.
   void supervise_drive(const DriveConnection& drive) noexcept;
   // What the drive is asked to do: remove enable -> Actor.RemoveEnableReaction (OFF1/OFF2/OFF3), enabling
@@ -165,7 +170,12 @@ class AxisCore {
   }
   // The setpoint follows the actual value (spec 02 §3.2): disabled, enabling, remove enable, follow setpoint,
   // or disabling with StopMode 1/3.
-  bool follows_actual() const noexcept;
+  bool follows_actual() const noexcept {
+    return phase == PowerPhase::kDisabled || phase == PowerPhase::kEnabling ||
+           reaction_in_force == AlarmReaction::kRemoveEnable ||
+           reaction_in_force == AlarmReaction::kFollowSetpoint ||
+           (phase == PowerPhase::kDisabling && (stop_mode == 1 || stop_mode == 3));
+  }
   // ---- the power phase, MC_Interpolator ----
   // `ready`: the drive is in operation with valid actual values (always TRUE on a virtual axis).
   PowerEvent update_power_phase(bool ready) noexcept;
@@ -209,6 +219,8 @@ class AxisCore {
   double enable_timeout_s = 2.0;
 
  private:
+  // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
+  static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;
   std::uint64_t acknowledged_at_ = 0;
   bool drive_fault_seen_ = false;
