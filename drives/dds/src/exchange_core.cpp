@@ -46,6 +46,10 @@ std::size_t ExchangeCore::add_device(const std::string& name, const DeviceConfig
   d->name = name;
   d->config = config;
   d->byte_order = to_contract(config.codec.byte_order);
+  if (config.drive_telegram != 0) {
+    if (const auto layout = tg::find_layout(config.drive_telegram, tg::Direction::kActual); layout.ok())
+      d->zsw2_offset = layout.value().offset_of(tg::Signal::ZSW2);
+  }
   const DeviceFrames actual = make_frames(config, tg::Direction::kActual);
   d->answers.for_each_slot([&](Answer& a) { a.frames = actual; });
   devices_.push_back(std::move(d));
@@ -247,6 +251,19 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     a.has_setpoint = e.has_setpoint();
     a.setpoint_cycle = e.setpoint_cycle();
     extract(e.slots(), a.frames);
+    if (d.zsw2_offset >= 0 && sample.controller() == options_.controller && e.has_setpoint()) {
+      // ZSW2's high nibble; a word's high byte comes first unless the device's words are little-endian.
+      const auto& drive = a.frames[Slot::kDrive].bytes;
+      const auto at = static_cast<std::size_t>(d.zsw2_offset);
+      const bool low_first = d.config.codec.byte_order == tg::ByteOrder::kLittleBytes ||
+                             d.config.codec.byte_order == tg::ByteOrder::kLittle;
+      const auto high = std::to_integer<std::uint8_t>(drive[low_first ? at + 1 : at]);
+      const auto sign_of_life = static_cast<std::uint8_t>(high >> 4);
+      if (d.sign_of_life_answers.fetch_add(1, std::memory_order_relaxed) > 0 &&
+          sign_of_life != d.sign_of_life)
+        d.sign_of_life_changes.fetch_add(1, std::memory_order_relaxed);
+      d.sign_of_life = sign_of_life;
+    }
     d.answers.publish();
     d.answer_count.fetch_add(1, std::memory_order_relaxed);
     // Answered to this controller (a probe or a cycle): the whole loop works for this device.
@@ -297,7 +314,12 @@ bool ExchangeCore::wait_until_heard(std::chrono::nanoseconds timeout) {
 
 GatewayDeviceCounters ExchangeCore::counters(std::size_t device) const noexcept {
   const Device& d = *devices_[device];
-  return GatewayDeviceCounters{d.answer_count.load(), d.stale.load(), d.rejected.load(), d.restarts.load()};
+  return GatewayDeviceCounters{d.answer_count.load(),
+                               d.stale.load(),
+                               d.rejected.load(),
+                               d.restarts.load(),
+                               d.sign_of_life_answers.load(),
+                               d.sign_of_life_changes.load()};
 }
 
 std::string ExchangeCore::last_mismatch(std::size_t device) const {
