@@ -34,19 +34,56 @@ std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+struct RunResult {
+  int status = -1;
+  bool isolated = false;
+  std::string sim_out, sim_err, gateway;
+};
+
+// Runs the Cyclone gateway (with `gateway_options`) and then `tomc sim` on `scenario`, both in a fresh
+// network namespace holding only lo when possible, else on this host's loopback. Bounded: the gateway ends
+// itself after 60 s, tomc sim is killed after 60 s.
+RunResult run(const std::string& name, int domain, const std::string& partition, const std::string& scenario,
+              const std::string& gateway_options = "") {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tomc-cyclone-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scenario.json") << scenario;
+  std::ofstream(dir / "run.sh") << "ip link set lo up 2>/dev/null\n"
+                                << TOMC_CYCLONE_GATEWAY << " " << domain << " " << partition << " axis1 60 "
+                                << gateway_options << " >" << (dir / "gateway.log").string() << " 2>&1 &\n"
+                                << "gw=$!\n"
+                                << "timeout 60 " << TOMC_BINARY << " sim " << (dir / "scenario.json").string()
+                                << " --out " << (dir / "trace.csv").string() << " >"
+                                << (dir / "sim.out").string() << " 2>" << (dir / "sim.err").string() << "\n"
+                                << "rc=$?\nkill $gw\nwait $gw\nexit $rc\n";
+  RunResult r;
+  r.isolated = std::system("unshare -n true >/dev/null 2>&1") == 0;
+  const int raw = std::system(((r.isolated ? "unshare -n sh " : "sh ") + (dir / "run.sh").string()).c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.sim_out = slurp(dir / "sim.out");
+  r.sim_err = slurp(dir / "sim.err");
+  r.gateway = slurp(dir / "gateway.log");
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+std::string adapter(int domain, const std::string& partition, const std::string& extra) {
+  return R"({ "type": "dds_gateway", "domain": )" + std::to_string(domain) +
+         R"(, "device": "axis1", "partition": ")" + partition + R"(", )" + extra + " }";
+}
+
 TEST(CycloneInterop, SimDrivesAnAxisThroughACycloneDdsGateway) {
   const int domain = 171;
   const std::string partition = "tomc-cyclone-" + std::to_string(::getpid());
-  const auto dir = std::filesystem::temp_directory_path() / ("tomc-cyclone-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
   // Telegram 1; 300 1/min = 5 1/s at 50 1/s^2 takes 100 cycles from the edge in cycle 50.
-  std::ofstream(dir / "scenario.json") << R"({ "cycle_time": 0.001, "cycles": 400,
+  const std::string scenario =
+      R"({ "cycle_time": 0.001, "cycles": 400,
     "technology_objects": [ { "name": "Axis1", "type": "TO_SpeedAxis",
       "config": { "DynamicLimits.MaxJerk": 0.0 },
-      "drive": { "telegram": 1, "adapter": { "type": "dds_gateway", "domain": )"
-                                       << domain << R"(, "device": "axis1",
-                 "partition": ")" << partition
-                                       << R"(", "connect_timeout_s": 10, "answer_timeout_s": 0.5 } } } ],
+      "drive": { "telegram": 1, "adapter": )" +
+      adapter(domain, partition, R"("connect_timeout_s": 10, "answer_timeout_s": 0.5)") +
+      R"( } } ],
     "timeline": [
       { "cycle": 0, "instance": "power1", "instruction": "MC_Power", "axis": "Axis1", "inputs": { "Enable": true } },
       { "cycle": 50, "instance": "move1", "instruction": "MC_MoveVelocity", "axis": "Axis1",
@@ -60,32 +97,38 @@ TEST(CycloneInterop, SimDrivesAnAxisThroughACycloneDdsGateway) {
                                   "Axis1.ErrorDetail.Number": 0 }, "tolerance": 1.0 },
       { "cycle": 399, "values": { "Axis1.ActualSpeed": 300, "Axis1.StatusDrive.CommunicationOK": true,
                                   "Axis1.ErrorDetail.Number": 0 }, "tolerance": 1.0 } ] })";
-  // The gateway first, then tomc sim; the gateway ends itself after 60 s at the latest.
-  std::ofstream(dir / "run.sh") << "ip link set lo up 2>/dev/null\n"
-                                << TOMC_CYCLONE_GATEWAY << " " << domain << " " << partition << " axis1 60 >"
-                                << (dir / "gateway.log").string() << " 2>&1 &\n"
-                                << "gw=$!\n"
-                                << "timeout 60 " << TOMC_BINARY << " sim " << (dir / "scenario.json").string()
-                                << " --out " << (dir / "trace.csv").string() << " >"
-                                << (dir / "sim.out").string() << " 2>" << (dir / "sim.err").string() << "\n"
-                                << "rc=$?\nkill $gw\nwait $gw\nexit $rc\n";
-  // In a fresh network namespace when possible (only lo in it), else on this host's loopback.
-  const bool isolated = std::system("unshare -n true >/dev/null 2>&1") == 0;
-  const std::string command = (isolated ? "unshare -n sh " : "sh ") + (dir / "run.sh").string();
-  const int raw = std::system(command.c_str());
-  const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  const std::string context = "sim stderr:\n" + slurp(dir / "sim.err") + "sim stdout:\n" +
-                              slurp(dir / "sim.out") + "gateway:\n" + slurp(dir / "gateway.log");
-  std::printf("cyclone interop (%s): %s", isolated ? "own network namespace" : "host loopback",
-              slurp(dir / "gateway.log").c_str());
-  EXPECT_EQ(status, 0) << context;
-  EXPECT_EQ(slurp(dir / "sim.err"), "")
-      << "a warning means the Cyclone gateway did not answer before cycle 0\n"
-      << context;
-  EXPECT_NE(slurp(dir / "sim.out").find("400 cycles, 9 expected values checked, 0 failed"), std::string::npos)
-      << context;
-  EXPECT_NE(slurp(dir / "gateway.log").find(" 0 rejected"), std::string::npos) << context;
-  std::filesystem::remove_all(dir);
+  const RunResult r = run("drive", domain, partition, scenario);
+  const std::string context =
+      "sim stderr:\n" + r.sim_err + "sim stdout:\n" + r.sim_out + "gateway:\n" + r.gateway;
+  std::printf("cyclone interop (%s): %s", r.isolated ? "own network namespace" : "host loopback",
+              r.gateway.c_str());
+  EXPECT_EQ(r.status, 0) << context;
+  EXPECT_EQ(r.sim_err, "") << "a warning means the Cyclone gateway did not answer before cycle 0\n"
+                           << context;
+  EXPECT_NE(r.sim_out.find("400 cycles, 9 expected values checked, 0 failed"), std::string::npos) << context;
+  EXPECT_NE(r.gateway.find(" 0 rejected"), std::string::npos) << context;
+}
+
+// The same gateway offering XCDR2 only on its writers: the controller says that the gateway was discovered
+// but its endpoints do not match, and why — not "no gateway".
+TEST(CycloneInterop, AnXcdr2GatewayIsReportedAsNotMatching) {
+  const int domain = 172;
+  const std::string partition = "tomc-cyclone-" + std::to_string(::getpid());
+  const std::string scenario =
+      R"({ "cycle_time": 0.001, "cycles": 5,
+    "technology_objects": [ { "name": "Axis1", "type": "TO_SpeedAxis",
+      "drive": { "telegram": 1, "adapter": )" +
+      adapter(domain, partition, R"("connect_timeout_s": 2, "answer_timeout_s": 0.001)") + R"( } } ] })";
+  const RunResult r = run("xcdr2", domain, partition, scenario, "xcdr2");
+  EXPECT_EQ(r.status, 0) << r.sim_err;
+  EXPECT_NE(
+      r.sim_err.find("warning: axis1: endpoints do not match: DDS participant 'cyclone-gw' was discovered, "
+                     "but its endpoints do not match this controller's: its writer of tomc/gateway/"),
+      std::string::npos)
+      << r.sim_err << r.gateway;
+  EXPECT_NE(r.sim_err.find("writes XCDR2 (data representation); the contract requires XCDR1"),
+            std::string::npos)
+      << r.sim_err;
 }
 
 }  // namespace

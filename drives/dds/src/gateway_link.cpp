@@ -129,7 +129,10 @@ class DiscoveryListener final : public fdds::DomainParticipantListener {
     auto it =
         std::find_if(remotes.begin(), remotes.end(), [&](const Remote& r) { return r.prefix == prefix; });
     if (info.status == Status::DISCOVERED_PARTICIPANT || info.status == Status::CHANGED_QOS_PARTICIPANT) {
-      if (it == remotes.end()) remotes.push_back(Remote{prefix, info.info.m_participantName.to_string()});
+      if (it == remotes.end()) {
+        std::string name = info.info.m_participantName.to_string();
+        remotes.push_back(Remote{prefix, name.empty() ? std::string("(unnamed)") : name});
+      }
     } else if (it != remotes.end()) {
       remotes.erase(it);
       endpoints.erase(std::remove_if(endpoints.begin(), endpoints.end(),

@@ -3,8 +3,10 @@
  * with PROFIdrive telegram 1 (STW1/NSOLL_A -> ZSW1/NIST_A, big-endian) whose "drive" is the PROFIdrive state
  * machine S1..S4 of spec 06 §4.2 and a speed that follows its setpoint at once.
  *
- *   cyclone_gateway DOMAIN PARTITION DEVICE SECONDS
+ *   cyclone_gateway DOMAIN PARTITION DEVICE SECONDS [xcdr2]
  *
+ * `xcdr2` breaks the contract on purpose: the actual and status writers offer XCDR2 only, which a tomc
+ * controller must report as "endpoints do not match" (docs/gateway.md §1, §8).
  * Network (docs/gateway.md §11, Appendix B): unicast only, on 127.0.0.1, SPDP to 127.0.0.1 for participant
  * indices 0..31; no multicast. The configuration is given in code (dds_create_domain), so no CYCLONEDDS_URI
  * in the environment can change it. It runs until SIGTERM/SIGINT or SECONDS have passed, then exits 0.
@@ -229,8 +231,8 @@ static int on_setpoint(const tomc_gateway_SetpointCycle* s, int64_t now) {
 }
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    fprintf(stderr, "usage: cyclone_gateway DOMAIN PARTITION DEVICE SECONDS\n");
+  if (argc != 5 && !(argc == 6 && strcmp(argv[5], "xcdr2") == 0)) {
+    fprintf(stderr, "usage: cyclone_gateway DOMAIN PARTITION DEVICE SECONDS [xcdr2]\n");
     return 2;
   }
   const dds_domainid_t domain = (dds_domainid_t)atoi(argv[1]);
@@ -256,7 +258,10 @@ int main(int argc, char** argv) {
     fprintf(stderr, "cyclone_gateway: dds_create_domain: %s\n", dds_strretcode(dom));
     return 1;
   }
-  const dds_entity_t participant = dds_create_participant(domain, NULL, NULL);
+  dds_qos_t* named = dds_create_qos();
+  dds_qset_entity_name(named, gateway_name); /* what discovery shows the controller */
+  const dds_entity_t participant = dds_create_participant(domain, named, NULL);
+  dds_delete_qos(named);
   if (participant < 0) {
     fprintf(stderr, "cyclone_gateway: dds_create_participant: %s\n", dds_strretcode(participant));
     return 1;
@@ -268,6 +273,8 @@ int main(int argc, char** argv) {
   dds_delete_qos(pq);
 
   const dds_data_representation_id_t xcdr1[] = {DDS_DATA_REPRESENTATION_XCDR1};
+  const dds_data_representation_id_t xcdr2[] = {DDS_DATA_REPRESENTATION_XCDR2};
+  const int break_representation = argc == 6;
   dds_qos_t* cyclic = dds_create_qos();
   dds_qset_reliability(cyclic, DDS_RELIABILITY_BEST_EFFORT, 0);
   dds_qset_durability(cyclic, DDS_DURABILITY_VOLATILE);
@@ -287,6 +294,10 @@ int main(int argc, char** argv) {
   dds_qset_history(cyclic, DDS_HISTORY_KEEP_LAST, 4);
   const dds_entity_t reader = dds_create_reader(subscriber, setpoint_topic, cyclic, NULL);
   dds_qset_history(cyclic, DDS_HISTORY_KEEP_LAST, 1);
+  if (break_representation) {
+    dds_qset_data_representation(cyclic, 1, xcdr2);
+    dds_qset_data_representation(status_qos, 1, xcdr2);
+  }
   actual_writer = dds_create_writer(publisher, actual_topic, cyclic, NULL);
   status_writer = dds_create_writer(publisher, status_topic, status_qos, NULL);
   dds_delete_qos(cyclic);
