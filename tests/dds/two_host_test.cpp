@@ -226,7 +226,7 @@ nlohmann::ordered_json scenario(int cycles) {
   doc["cycles"] = cycles;
   Json adapter = {{"type", "dds_gateway"},        {"domain", kDomain},          {"device", "axis1"},
                   {"interface", kControllerVeth}, {"peers", {kGatewayAddress}}, {"connect_timeout_s", 20.0},
-                  {"answer_timeout_s", 0.005}};
+                  {"answer_timeout_s", 0.02}};  // a loaded CI machine must not miss 3 answers in a row
   doc["technology_objects"] = Json::array({Json{{"name", "Axis1"},
                                                 {"type", "TO_SpeedAxis"},
                                                 {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
@@ -304,7 +304,7 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "gateway.json")
       << R"({ "gateway": "gw-remote", "domain": )" << kDomain << R"(, "interface": ")" << kGatewayAddress
-      << R"(", "cycle_time": 0.001, "watchdog": 1.0,
+      << R"(", "cycle_time": 0.001, "watchdog": 5.0,
       "devices": [ { "name": "axis1", "drive": { "telegram": 2 } } ] })";
   const int cycles = 4000;
   std::ofstream(dir / "scenario.json") << scenario(cycles).dump(2);
@@ -350,8 +350,9 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
       cut_at = cycle;
       cut_time = Clock::now();
     }
-    // Back once the TO has raised its alarm and the link has been down for half a second (well below the
-    // gateway's 1 s watchdog is not required: either way MC_Reset must recover).
+    // Back once the TO has raised its alarm and the link has been down for half a second; the rows arrive in
+    // chunks, so the outage lasts a few seconds at most, below the gateway's 5 s watchdog: the gateway keeps
+    // serving this controller across the cut, as it would across a short cable fault.
     if (cut_at >= 0 && restored_at < 0 && row[column.at("Axis1.ErrorDetail.Number")] == 405.0 &&
         Clock::now() - cut_time > std::chrono::milliseconds(500)) {
       ASSERT_EQ(shell(hosts.in_controller(std::string("ip link set ") + kControllerVeth + " up")), 0);
