@@ -445,12 +445,15 @@ std::vector<DeviceReport> GatewayLink::connect(std::chrono::milliseconds timeout
     if (impl_->core->wait_until_heard(std::chrono::milliseconds(5))) break;
     // Stop waiting early when every silent device has a definite reason that waiting will not change.
     const auto reports = diagnose();
-    // A gateway's status must be there too, so the reasons come from what it announces.
-    bool settled = !gateways().empty();
+    // Reasons from a gateway's status need that status; an endpoint that cannot match (from discovery data)
+    // is definite without one.
+    const bool have_status = !gateways().empty();
+    bool settled = true;
     for (std::size_t i = 0; i < reports.size() && settled; ++i) {
       const DeviceDiagnosis d = reports[i].diagnosis;
-      settled = d == DeviceDiagnosis::kNotServed || d == DeviceDiagnosis::kConfigMismatch ||
-                d == DeviceDiagnosis::kOtherController || impl_->core->heard_by_us(i);
+      settled = impl_->core->heard_by_us(i) || d == DeviceDiagnosis::kEndpointMismatch ||
+                (have_status && (d == DeviceDiagnosis::kNotServed || d == DeviceDiagnosis::kConfigMismatch ||
+                                 d == DeviceDiagnosis::kOtherController));
     }
     if (settled || std::chrono::steady_clock::now() >= deadline) break;
   }
