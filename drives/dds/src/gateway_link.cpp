@@ -231,14 +231,14 @@ std::string endpoint_mismatch(const DiscoveryListener::Endpoint& e, const std::s
     if (e.topic == l.topic && e.reader == l.remote_is_reader) local = &l;
   }
   if (local == nullptr) return {};
+  // Another partition is another controller/gateway pair sharing the domain (§1): not this link's business
+  // (a gateway that is only there is named in the "no gateway" text instead).
+  std::vector<std::string> ours;
+  if (!partition.empty()) ours.push_back(partition);
+  if (!partitions_match(e.partitions, ours)) return {};
   const std::string what = std::string("its ") + (e.reader ? "reader of " : "writer of ") + e.topic;
   if (e.type != local->type) {
     return what + " has type '" + e.type + "', the contract's is '" + local->type + "'";
-  }
-  std::vector<std::string> ours;
-  if (!partition.empty()) ours.push_back(partition);
-  if (!partitions_match(e.partitions, ours)) {
-    return what + " is in " + partition_text(e.partitions) + ", this controller in " + partition_text(ours);
   }
   if (e.reader) {
     // The remote reader requests; this controller's writer offers (best effort, volatile, XCDR1).
@@ -330,6 +330,23 @@ struct GatewayLink::Impl {
              "' was discovered, but its endpoints do not match this controller's: " + why;
     }
     return {};
+  }
+  // Status writers in other partitions than this controller's, for "no gateway" texts: "'gw2' in partition
+  // 'line2'".
+  std::vector<std::string> gateways_elsewhere() const {
+    std::lock_guard<std::mutex> lock(discovery_listener.mutex);
+    std::vector<std::string> ours;
+    if (!config.partition.empty()) ours.push_back(config.partition);
+    std::vector<std::string> out;
+    for (const auto& e : discovery_listener.endpoints) {
+      if (e.reader || e.topic != kStatusTopic || partitions_match(e.partitions, ours)) continue;
+      std::string name = "?";
+      for (const auto& r : discovery_listener.remotes) {
+        if (r.prefix == e.guid.guidPrefix) name = r.name;
+      }
+      out.push_back("'" + name + "' in " + partition_text(e.partitions));
+    }
+    return out;
   }
   // The discovered participants' names, for "no gateway" texts.
   std::vector<std::string> remote_names() const {
@@ -539,12 +556,15 @@ std::vector<DeviceReport> GatewayLink::diagnose() const {
     } else if (statuses.empty()) {
       r.diagnosis = DeviceDiagnosis::kNoGateway;
       const auto names = impl_->remote_names();
-      r.text =
-          "no gateway has announced itself on DDS domain " + std::to_string(impl_->config.domain) +
-          (impl_->config.partition.empty() ? "" : " partition '" + impl_->config.partition + "'") +
-          impl_->network_text() +
-          (names.empty() ? " (no other DDS participant discovered)"
-                         : " (discovered: " + quoted_list(names) + "; none publishes " + kStatusTopic + ")");
+      r.text = "no gateway has announced itself on DDS domain " + std::to_string(impl_->config.domain) +
+               (impl_->config.partition.empty() ? "" : " partition '" + impl_->config.partition + "'") +
+               impl_->network_text() +
+               (names.empty() ? " (no other DDS participant discovered)"
+                              : " (discovered: " + quoted_list(names) + "; none publishes " + kStatusTopic +
+                                    " in this partition)");
+      if (const auto elsewhere = impl_->gateways_elsewhere(); !elsewhere.empty()) {
+        r.text += "; gateways in other partitions: " + quoted_list(elsewhere);
+      }
     } else if (serving == nullptr) {
       r.diagnosis = DeviceDiagnosis::kNotServed;
       std::string served;
