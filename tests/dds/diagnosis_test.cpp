@@ -161,8 +161,9 @@ TEST(Diagnosis, AGatewayInAnotherPartitionIsNoGatewayHere) {
 }
 
 // Drives `cycles` cycles of device axis1 (telegram 3) through `link`, with a counting master sign-of-life in
-// STW2 as a controller in isochronous mode sends it; returns the device's report afterwards.
-DeviceReport run_cycles(GatewayLink& link, DdsGatewayDrive& drive, int cycles) {
+// STW2 as a controller in isochronous mode sends it (or STW2 0 without `count`); returns the device's report
+// afterwards.
+DeviceReport run_cycles(GatewayLink& link, DdsGatewayDrive& drive, int cycles, bool count) {
   namespace tg = tomc::telegrams;
   const auto layout = tg::find_layout(3, tg::Direction::kSetpoint);
   const auto stw2 = static_cast<std::size_t>(layout.value().offset_of(tg::Signal::STW2));
@@ -170,14 +171,15 @@ DeviceReport run_cycles(GatewayLink& link, DdsGatewayDrive& drive, int cycles) {
   auto setpoint = tomc::drives::make_frames(drive.config(), tg::Direction::kSetpoint);
   for (int cycle = 0; cycle < cycles; ++cycle) {
     (void)drive.read_actual(actual);
-    setpoint[tomc::drives::Slot::kDrive].bytes[stw2] = static_cast<std::byte>(((cycle % 15) + 1) << 4);
+    setpoint[tomc::drives::Slot::kDrive].bytes[stw2] =
+        static_cast<std::byte>(count ? ((cycle % 15) + 1) << 4 : 0);
     drive.write_setpoint(setpoint);
     link.wait_for_answers(std::chrono::milliseconds(200));
   }
   return link.diagnose().at(0);
 }
 
-void sign_of_life_case(int domain, bool isochronous, DeviceDiagnosis expected) {
+void sign_of_life_case(int domain, bool controller_counts, bool isochronous, DeviceDiagnosis expected) {
   const auto dir = tomc::testing::test_directory("sol" + std::to_string(domain));
   tomc::testing::GatewayProcess gateway(
       dir,
@@ -194,7 +196,7 @@ void sign_of_life_case(int domain, bool isochronous, DeviceDiagnosis expected) {
   auto drive = link->make_drive("axis1", device);
   const auto reports = link->connect(std::chrono::seconds(10));
   ASSERT_EQ(reports.at(0).diagnosis, DeviceDiagnosis::kAnswering) << reports.at(0).text << gateway.log();
-  const DeviceReport r = run_cycles(*link, *drive, 100);
+  const DeviceReport r = run_cycles(*link, *drive, 100, controller_counts);
   EXPECT_EQ(r.diagnosis, expected) << r.text;
   const auto counters = drive->counters();
   EXPECT_GE(counters.sign_of_life_answers, 90u);
@@ -204,18 +206,23 @@ void sign_of_life_case(int domain, bool isochronous, DeviceDiagnosis expected) {
         r.text.find("'axis1' answers, but the drive's sign-of-life (ZSW2 bits 12..15) has not counted in"),
         std::string::npos)
         << r.text;
-  } else {
+  } else if (isochronous) {
     EXPECT_GE(counters.sign_of_life_changes, 80u);
   }
   std::filesystem::remove_all(dir);
 }
 
 TEST(Diagnosis, ASignOfLifeThatNeverCountsIsFlagged) {
-  sign_of_life_case(169, false, DeviceDiagnosis::kSignOfLifeNotCounting);
+  sign_of_life_case(169, true, false, DeviceDiagnosis::kSignOfLifeNotCounting);
 }
 
 TEST(Diagnosis, ACountingSignOfLifeIsNotFlagged) {
-  sign_of_life_case(170, true, DeviceDiagnosis::kAnswering);
+  sign_of_life_case(170, true, true, DeviceDiagnosis::kAnswering);
+}
+
+// Without isochronous operation neither side counts: nothing to flag.
+TEST(Diagnosis, NoSignOfLifeOnEitherSideIsNotFlagged) {
+  sign_of_life_case(173, false, false, DeviceDiagnosis::kAnswering);
 }
 
 }  // namespace

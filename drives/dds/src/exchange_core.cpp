@@ -26,6 +26,19 @@ ExchangeCore::ExchangeCore(ExchangeOptions options) : options_(options) {
   if (options_.cycle_time_ns == 0) throw std::invalid_argument("gateway exchange: cycle time must be > 0");
 }
 
+namespace {
+
+// Bits 12..15 of the 16-bit word at byte `offset` (STW2/ZSW2: the sign-of-life, spec 06 §5); a word's high
+// byte comes first unless the device's words are little-endian.
+int high_nibble(const Frame& frame, int offset, const DeviceConfig& config) noexcept {
+  const auto at = static_cast<std::size_t>(offset);
+  const bool low_first = config.codec.byte_order == tg::ByteOrder::kLittleBytes ||
+                         config.codec.byte_order == tg::ByteOrder::kLittle;
+  return std::to_integer<int>(frame.bytes[low_first ? at + 1 : at]) >> 4;
+}
+
+}  // namespace
+
 std::size_t ExchangeCore::add_device(const std::string& name, const DeviceConfig& config) {
   if (frozen_) throw std::invalid_argument("gateway exchange: devices are added before the exchange starts");
   if (name.empty() || name.size() > kMaxNameLength) {
@@ -49,6 +62,8 @@ std::size_t ExchangeCore::add_device(const std::string& name, const DeviceConfig
   if (config.drive_telegram != 0) {
     if (const auto layout = tg::find_layout(config.drive_telegram, tg::Direction::kActual); layout.ok())
       d->zsw2_offset = layout.value().offset_of(tg::Signal::ZSW2);
+    if (const auto layout = tg::find_layout(config.drive_telegram, tg::Direction::kSetpoint); layout.ok())
+      d->stw2_offset = layout.value().offset_of(tg::Signal::STW2);
   }
   const DeviceFrames actual = make_frames(config, tg::Direction::kActual);
   d->answers.for_each_slot([&](Answer& a) { a.frames = actual; });
@@ -190,8 +205,16 @@ bool ExchangeCore::take_setpoints(gateway::SetpointCycle& sample) noexcept {
   if (!frozen_ || !batches_.take()) return false;
   const SetpointBatch& batch = batches_.value();
   sample.cycle(batch.cycle);
-  for (std::size_t i = 0; i < devices_.size() && i < sample.devices().size(); ++i)
-    fill(devices_[i]->config, batch.devices[i], sample.devices()[i].slots());
+  for (std::size_t i = 0; i < devices_.size() && i < sample.devices().size(); ++i) {
+    Device& d = *devices_[i];
+    fill(d.config, batch.devices[i], sample.devices()[i].slots());
+    if (d.stw2_offset >= 0) {
+      const int sign_of_life = high_nibble(batch.devices[i][Slot::kDrive], d.stw2_offset, d.config);
+      if (d.master_sign_of_life >= 0 && sign_of_life != d.master_sign_of_life)
+        d.master_sign_of_life_changes.fetch_add(1, std::memory_order_relaxed);
+      d.master_sign_of_life = sign_of_life;
+    }
+  }
   return true;
 }
 
@@ -252,13 +275,8 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     a.setpoint_cycle = e.setpoint_cycle();
     extract(e.slots(), a.frames);
     if (d.zsw2_offset >= 0 && sample.controller() == options_.controller && e.has_setpoint()) {
-      // ZSW2's high nibble; a word's high byte comes first unless the device's words are little-endian.
-      const auto& drive = a.frames[Slot::kDrive].bytes;
-      const auto at = static_cast<std::size_t>(d.zsw2_offset);
-      const bool low_first = d.config.codec.byte_order == tg::ByteOrder::kLittleBytes ||
-                             d.config.codec.byte_order == tg::ByteOrder::kLittle;
-      const auto high = std::to_integer<std::uint8_t>(drive[low_first ? at + 1 : at]);
-      const auto sign_of_life = static_cast<std::uint8_t>(high >> 4);
+      const auto sign_of_life =
+          static_cast<std::uint8_t>(high_nibble(a.frames[Slot::kDrive], d.zsw2_offset, d.config));
       if (d.sign_of_life_answers.fetch_add(1, std::memory_order_relaxed) > 0 &&
           sign_of_life != d.sign_of_life)
         d.sign_of_life_changes.fetch_add(1, std::memory_order_relaxed);
@@ -319,7 +337,8 @@ GatewayDeviceCounters ExchangeCore::counters(std::size_t device) const noexcept 
                                d.rejected.load(),
                                d.restarts.load(),
                                d.sign_of_life_answers.load(),
-                               d.sign_of_life_changes.load()};
+                               d.sign_of_life_changes.load(),
+                               d.master_sign_of_life_changes.load()};
 }
 
 std::string ExchangeCore::last_mismatch(std::size_t device) const {

@@ -527,10 +527,11 @@ std::vector<DeviceReport> GatewayLink::diagnose() const {
       }
     }
     const std::string mismatch = core.last_mismatch(i);
-    if (answering && counters.sign_of_life_answers >= kSignOfLifeWindow &&
-        counters.sign_of_life_changes == 0) {
-      // The TO's sign-of-life monitor only raises alarm 406 once the drive's count has started; one that
-      // never starts is said here (docs/gateway.md G10).
+    if (answering && counters.master_sign_of_life_changes > 0 &&
+        counters.sign_of_life_answers >= kSignOfLifeWindow && counters.sign_of_life_changes == 0) {
+      // The controller counts its sign-of-life (isochronous operation) but the drive's never changed. The
+      // TO's sign-of-life monitor takes only zeros for "not yet sending" and raises no alarm: said here
+      // (docs/gateway.md G10).
       r.diagnosis = DeviceDiagnosis::kSignOfLifeNotCounting;
       r.text = "'" + r.device +
                "' answers, but the drive's sign-of-life (ZSW2 bits 12..15) has not counted in " +

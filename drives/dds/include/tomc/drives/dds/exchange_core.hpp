@@ -48,6 +48,9 @@ struct GatewayDeviceCounters {
   // counts it every cycle; one that never changes is flagged by GatewayLink::diagnose().
   std::uint64_t sign_of_life_answers = 0;
   std::uint64_t sign_of_life_changes = 0;
+  // How often this controller's master sign-of-life (STW2 bits 12..15) changed between two cycles sent: 0
+  // when the controller does not run the device isochronously, and then the drive need not count either.
+  std::uint64_t master_sign_of_life_changes = 0;
 };
 
 struct ExchangeStatistics {
@@ -156,6 +159,9 @@ class ExchangeCore {
     std::atomic<bool> heard_by_us{false};
     std::atomic<std::uint64_t> sign_of_life_answers{0};
     std::atomic<std::uint64_t> sign_of_life_changes{0};
+    std::atomic<std::uint64_t> master_sign_of_life_changes{0};
+    int stw2_offset = -1;           // byte offset of STW2 in the drive's setpoint telegram; -1: not carried
+    int master_sign_of_life = -1;   // sender thread only: the last one sent, -1 = none yet
     int zsw2_offset = -1;           // byte offset of ZSW2 in the drive's actual telegram; -1: not carried
     std::uint8_t sign_of_life = 0;  // guarded by route_mutex_: the last one seen
     std::string mismatch;           // guarded by route_mutex_
