@@ -263,14 +263,18 @@ nlohmann::ordered_json scenario(int cycles) {
   return doc;
 }
 
-TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
-  Hosts hosts;
+// Makes the two hosts and their link, or says why it cannot (then the caller skips, or fails where
+// namespaces were usable when the build was configured). Asserts that each namespace holds only lo and its
+// end of the link before anything is sent.
+void make_link(Hosts& hosts, bool& skipped) {
+  skipped = false;
   if (const std::string why = hosts.make(); !why.empty()) {
     const char* required = std::getenv("TOMC_REQUIRE_NETNS");
     if (required != nullptr && std::string(required) == "1") {
       FAIL() << "cannot make network namespaces (" << why
              << "), but they were usable when the build was configured";
     }
+    skipped = true;
     GTEST_SKIP() << "no network namespaces here: " << why;
   }
   // The link: made inside the controller namespace with its peer end moved straight into the gateway's, so it
@@ -299,6 +303,13 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   // Nothing is sent until each namespace is known to hold only lo and its own end of the link.
   ASSERT_EQ(interfaces_in(hosts, hosts.controller()), (std::set<std::string>{"lo", kControllerVeth}));
   ASSERT_EQ(interfaces_in(hosts, hosts.gateway()), (std::set<std::string>{"lo", kGatewayVeth}));
+}
+
+TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
+  Hosts hosts;
+  bool skipped = false;
+  make_link(hosts, skipped);
+  if (skipped || HasFatalFailure()) return;
 
   const auto dir = std::filesystem::temp_directory_path() / ("tomc-twohost-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -427,6 +438,72 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   EXPECT_EQ(igmp, 0u);
   EXPECT_EQ(other, 0u);
   EXPECT_EQ(frames, between + icmp + arp);
+  std::filesystem::remove_all(dir);
+}
+
+// Multicast only when asked for: with "multicast_discovery": true and no peers on either side the two hosts
+// still find each other — by SPDP multicast to 239.255.0.1 on the link, which the capture now sees — so the
+// option works, and the unicast-only test above shows that nothing of it happens by default.
+TEST(TwoHosts, MulticastDiscoveryWhenAskedFor) {
+  Hosts hosts;
+  bool skipped = false;
+  make_link(hosts, skipped);
+  if (skipped || HasFatalFailure()) return;
+  // Multicast leaves an interface only along a route; the test's own link is the only place it may go.
+  ASSERT_EQ(shell(hosts.in_controller(std::string("ip route add 224.0.0.0/4 dev ") + kControllerVeth)), 0);
+  ASSERT_EQ(shell(hosts.in_gateway(std::string("ip route add 224.0.0.0/4 dev ") + kGatewayVeth)), 0);
+  const int domain = kDomain + 1;
+  const auto dir = std::filesystem::temp_directory_path() / ("tomc-twohost-mc-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "gateway.json")
+      << R"({ "gateway": "gw-remote", "domain": )" << domain << R"(, "interface": ")" << kGatewayVeth
+      << R"(", "multicast_discovery": true, "cycle_time": 0.001, "watchdog": 5.0,
+      "devices": [ { "name": "axis1", "drive": { "telegram": 2 } } ] })";
+  std::ofstream(dir / "scenario.json") << R"({ "cycle_time": 0.001, "cycles": 300,
+    "technology_objects": [ { "name": "Axis1", "type": "TO_SpeedAxis",
+      "drive": { "telegram": 2, "adapter": { "type": "dds_gateway", "domain": )"
+                                       << domain << R"(, "device": "axis1",
+        "interface": ")" << kControllerAddress
+                                       << R"(", "multicast_discovery": true, "connect_timeout_s": 20,
+        "answer_timeout_s": 0.05 } } } ],
+    "timeline": [ { "cycle": 0, "instance": "power1", "instruction": "MC_Power", "axis": "Axis1",
+                    "inputs": { "Enable": true } } ],
+    "expect": [ { "cycle": 299, "values": { "power1.Status": true, "Axis1.StatusDrive.CommunicationOK": true,
+                                            "Axis1.ErrorDetail.Number": 0 } } ] })";
+  const auto deadline = Clock::now() + std::chrono::seconds(60);
+  Child capture({"ip", "netns", "exec", hosts.controller(), TOMC_LINK_CAPTURE, kControllerVeth,
+                 kControllerAddress, kGatewayAddress, std::to_string(domain)},
+                dir / "capture.err");
+  std::string line;
+  ASSERT_TRUE(capture.read_line(line, Clock::now() + std::chrono::seconds(10)) && line == "ready") << line;
+  Child gateway({"ip", "netns", "exec", hosts.gateway(), TOMC_BINARY, "gateway-sim", "--config",
+                 (dir / "gateway.json").string()},
+                dir / "gateway.err");
+  ASSERT_TRUE(gateway.read_line(line, Clock::now() + std::chrono::seconds(10))) << slurp(dir / "gateway.err");
+  Child sim({"ip", "netns", "exec", hosts.controller(), TOMC_BINARY, "sim", (dir / "scenario.json").string(),
+             "--out", (dir / "trace.csv").string()},
+            dir / "sim.err");
+  while (sim.read_line(line, deadline)) {
+  }
+  const int sim_status = sim.finish(false);
+  gateway.finish(true);
+  capture.finish(true);
+  std::string counts;
+  capture.read_line(counts, Clock::now() + std::chrono::seconds(2));
+  unsigned long long frames = 0, between = 0, rtps = 0, icmp = 0, unicast_other = 0, multicast = 0,
+                     broadcast = 0, igmp = 0, arp = 0, other = 0;
+  ASSERT_EQ(std::sscanf(
+                counts.c_str(),
+                "frames=%llu between=%llu rtps_ports=%llu icmp=%llu unicast_other=%llu multicast=%llu "
+                "broadcast=%llu igmp=%llu arp=%llu other=%llu",
+                &frames, &between, &rtps, &icmp, &unicast_other, &multicast, &broadcast, &igmp, &arp, &other),
+            10)
+      << counts;
+  std::printf("two hosts, multicast discovery: %s\n", counts.c_str());
+  EXPECT_EQ(sim_status, 0) << slurp(dir / "sim.err") << slurp(dir / "gateway.err");
+  EXPECT_EQ(slurp(dir / "sim.err"), "");
+  EXPECT_GT(multicast, 0u) << "asked for, but no multicast discovery on the link";
+  EXPECT_GT(between, 200u);
   std::filesystem::remove_all(dir);
 }
 
