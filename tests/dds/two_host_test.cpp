@@ -211,6 +211,15 @@ class Child {
   bool eof_ = false;
 };
 
+// The test's files, removed however the test ends (what they held is in the failure messages).
+struct TempDirectory {
+  std::filesystem::path path;
+  explicit TempDirectory(std::filesystem::path p) : path(std::move(p)) {
+    std::filesystem::create_directories(path);
+  }
+  ~TempDirectory() { std::filesystem::remove_all(path); }
+};
+
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -311,8 +320,9 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   make_link(hosts, skipped);
   if (skipped || HasFatalFailure()) return;
 
-  const auto dir = std::filesystem::temp_directory_path() / ("tomc-twohost-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const TempDirectory temp(std::filesystem::temp_directory_path() /
+                           ("tomc-twohost-" + std::to_string(::getpid())));
+  const auto& dir = temp.path;
   std::ofstream(dir / "gateway.json")
       << R"({ "gateway": "gw-remote", "domain": )" << kDomain << R"(, "interface": ")" << kGatewayAddress
       << R"(", "cycle_time": 0.001, "watchdog": 5.0,
@@ -438,7 +448,6 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   EXPECT_EQ(igmp, 0u);
   EXPECT_EQ(other, 0u);
   EXPECT_EQ(frames, between + icmp + arp);
-  std::filesystem::remove_all(dir);
 }
 
 // Multicast only when asked for: with "multicast_discovery": true and no peers on either side the two hosts
@@ -453,8 +462,9 @@ TEST(TwoHosts, MulticastDiscoveryWhenAskedFor) {
   ASSERT_EQ(shell(hosts.in_controller(std::string("ip route add 224.0.0.0/4 dev ") + kControllerVeth)), 0);
   ASSERT_EQ(shell(hosts.in_gateway(std::string("ip route add 224.0.0.0/4 dev ") + kGatewayVeth)), 0);
   const int domain = kDomain + 1;
-  const auto dir = std::filesystem::temp_directory_path() / ("tomc-twohost-mc-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const TempDirectory temp(std::filesystem::temp_directory_path() /
+                           ("tomc-twohost-mc-" + std::to_string(::getpid())));
+  const auto& dir = temp.path;
   std::ofstream(dir / "gateway.json")
       << R"({ "gateway": "gw-remote", "domain": )" << domain << R"(, "interface": ")" << kGatewayVeth
       << R"(", "multicast_discovery": true, "cycle_time": 0.001, "watchdog": 5.0,
@@ -504,7 +514,6 @@ TEST(TwoHosts, MulticastDiscoveryWhenAskedFor) {
   EXPECT_EQ(slurp(dir / "sim.err"), "");
   EXPECT_GT(multicast, 0u) << "asked for, but no multicast discovery on the link";
   EXPECT_GT(between, 200u);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
