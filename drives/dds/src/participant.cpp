@@ -1,4 +1,5 @@
-// The loopback-only participant and the contract's QoS (participant.hpp, docs/gateway.md).
+// The participant limited to one configured interface (loopback by default) and the contract's QoS
+// (participant.hpp, network.hpp, docs/gateway.md).
 #include "tomc/drives/dds/participant.hpp"
 
 #include <algorithm>
