@@ -35,7 +35,8 @@ namespace {
 
 constexpr std::string_view kDemoUsage =
     "usage: tomc demo [--config FILE] [--port N] [--bind ADDRESS] [--token TOKEN | --generate-token]\n"
-    "                 [--seconds S] [--gateway DOMAIN [--gateway-partition P]]\n"
+    "                 [--seconds S] [--gateway DOMAIN [--gateway-partition P]\n"
+    "                 [--gateway-interface IF --gateway-peer ADDRESS...]]\n"
     "\n"
     "Runs a simulated machine in real time with a user program that moves its axes in a loop, and serves "
     "the\n"
@@ -52,6 +53,9 @@ constexpr std::string_view kDemoUsage =
     "  --gateway DOMAIN   every drive through the Fast DDS gateway on DOMAIN (0..232), each TO's device\n"
     "                     named like the TO (e.g. tomc gateway-sim; docs/gateway.md)\n"
     "  --gateway-partition P  the gateway's DDS partition (default: none)\n"
+    "  --gateway-interface IF  the network interface (name or IPv4 address of this host) to the gateway\n"
+    "                     (default: loopback)\n"
+    "  --gateway-peer ADDRESS  the gateway's IPv4 unicast address (repeatable; needed with an interface)\n"
     "\n"
     "exit status: 0 stopped normally, 1 could not serve (e.g. port in use), 2 bad command line or config.\n";
 
@@ -64,6 +68,8 @@ struct DemoOptions {
   std::optional<double> seconds;
   std::optional<int> gateway_domain;
   std::string gateway_partition;
+  std::optional<std::string> gateway_interface;
+  std::vector<std::string> gateway_peers;
   bool help = false;
 };
 
@@ -111,6 +117,10 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
       const double s = number_of<double>(value_of(args, i, "--seconds"), "--seconds");
       if (!(s > 0.0) || !std::isfinite(s)) throw UsageError("demo: --seconds: a positive number");
       o.seconds = s;
+    } else if (is_option(a, "--gateway-interface")) {
+      o.gateway_interface = value_of(args, i, "--gateway-interface");
+    } else if (is_option(a, "--gateway-peer")) {
+      o.gateway_peers.push_back(value_of(args, i, "--gateway-peer"));
     } else if (is_option(a, "--gateway-partition")) {
       o.gateway_partition = value_of(args, i, "--gateway-partition");
     } else if (is_option(a, "--gateway")) {
@@ -124,6 +134,8 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
   if (o.token && o.generate_token) throw UsageError("demo: --token and --generate-token exclude each other");
   if (!o.gateway_partition.empty() && !o.gateway_domain)
     throw UsageError("demo: --gateway-partition needs --gateway");
+  if ((o.gateway_interface || !o.gateway_peers.empty()) && !o.gateway_domain)
+    throw UsageError("demo: --gateway-interface and --gateway-peer need --gateway");
   return o;
 }
 
@@ -403,7 +415,9 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
 
 // --gateway: every TO's drive becomes the device of the same name behind the gateway, with the telegrams the
 // file gives (the drive model's parameters belong to the gateway's configuration, docs/gateway.md).
-void route_drives_through_gateway(Json& root, int domain, const std::string& partition) {
+void route_drives_through_gateway(Json& root, const DemoOptions& o) {
+  const int domain = *o.gateway_domain;
+  const std::string& partition = o.gateway_partition;
   const auto objects = root.find("technology_objects");
   if (objects == root.end() || !objects->is_array()) return;  // reported by the loader
   for (auto& object : *objects) {
@@ -412,6 +426,9 @@ void route_drives_through_gateway(Json& root, int domain, const std::string& par
     Json drive = Json::object();
     Json adapter = {{"type", "dds_gateway"}, {"domain", domain}, {"device", object.value("name", "")}};
     if (!partition.empty()) adapter["partition"] = partition;
+    // Checked by the adapter loader like a file's: a wrong interface or peer is named there.
+    if (o.gateway_interface) adapter["interface"] = *o.gateway_interface;
+    if (!o.gateway_peers.empty()) adapter["peers"] = o.gateway_peers;
     drive["adapter"] = adapter;
     for (const char* key : {"telegram", "supplementary_telegram", "encoder_telegram"}) {
       if (old.contains(key)) drive[key] = old[key];
@@ -450,7 +467,7 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   }
   Json root = Json::parse(text, nullptr, false);
   if (root.is_discarded()) throw UsageError("demo: " + source + ": malformed JSON");
-  if (o.gateway_domain) route_drives_through_gateway(root, *o.gateway_domain, o.gateway_partition);
+  if (o.gateway_domain) route_drives_through_gateway(root, o);
   DemoConfig config;
   std::unique_ptr<techobjects::Runtime> runtime;
   scenario::Problems problems;

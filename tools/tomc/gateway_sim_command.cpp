@@ -9,6 +9,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cli_error.hpp"
 #include "commands.hpp"
@@ -21,13 +22,15 @@ namespace {
 
 constexpr std::string_view kGatewaySimUsage =
     "usage: tomc gateway-sim --config FILE [--domain N] [--partition NAME] [--name GATEWAY]\n"
-    "                        [--drop-every K] [--delay-us D]\n"
+    "                        [--interface IF] [--peer ADDRESS]... [--drop-every K] [--delay-us D]\n"
     "       tomc gateway-sim --send COMMAND [--value N] [--device NAME] --domain N [--partition NAME]\n"
-    "                        [--name GATEWAY]\n"
+    "                        [--name GATEWAY] [--interface IF --peer ADDRESS]\n"
     "\n"
-    "Serves the simulated drives of FILE (docs/gateway.md) over Fast DDS on loopback until SIGINT/SIGTERM.\n"
-    "The options override the file: DDS domain and partition, the gateway's name, drop every K-th answer,\n"
-    "publish every answer D microseconds late.\n"
+    "Serves the simulated drives of FILE (docs/gateway.md) over Fast DDS until SIGINT/SIGTERM, on loopback\n"
+    "unless an interface is given. The options override the file: DDS domain and partition, the gateway's\n"
+    "name, the interface (a name or an IPv4 address of this host) and the controllers' unicast addresses\n"
+    "(--peer, repeatable; optional for the simulator, which answers every controller that contacts it; the\n"
+    "simulator's address for --send), drop every K-th answer, publish every answer D microseconds late.\n"
     "\n"
     "--send injects a fault into a running simulator and waits until it reports it applied. COMMAND is\n"
     "drop-answers (--value: how many; 18446744073709551615 = until resume), delay-answers (--value: us),\n"
@@ -43,6 +46,8 @@ struct Options {
   std::optional<int> domain;
   std::optional<std::string> partition;
   std::optional<std::string> name;
+  std::optional<std::string> interface;
+  std::vector<std::string> peers;
   std::optional<std::uint32_t> drop_every;
   std::optional<std::uint32_t> delay_us;
   std::optional<gateway_sim::Command> send;
@@ -80,6 +85,10 @@ Options parse_options(std::span<const std::string_view> args) {
       o.partition = std::string(next());
     } else if (a == "--name") {
       o.name = std::string(next());
+    } else if (a == "--interface") {
+      o.interface = std::string(next());
+    } else if (a == "--peer") {
+      o.peers.emplace_back(next());
     } else if (a == "--drop-every") {
       o.drop_every = parse_number<std::uint32_t>(a, next(), 0, 1'000'000);
     } else if (a == "--delay-us") {
@@ -100,10 +109,25 @@ Options parse_options(std::span<const std::string_view> args) {
   return o;
 }
 
+// The network options over `network` (the file's, or loopback): every problem names its option.
+drives::dds::NetworkSettings network_of(const Options& o, drives::dds::NetworkSettings network,
+                                        bool require_peers) {
+  if (o.interface) network.interface = *o.interface;
+  if (!o.peers.empty()) network.peers = o.peers;
+  drives::dds::ResolvedNetwork resolved;
+  const auto problems = drives::dds::resolve_network(network, require_peers, resolved);
+  if (!problems.empty()) {
+    const auto& p = problems.front();
+    const std::string option = p.setting == "interface" ? "--interface" : "--peer";
+    throw UsageError("gateway-sim: " + option + ": " + p.message);
+  }
+  return network;
+}
+
 int send(const Options& o, std::ostream& out) {
   if (!o.domain) throw UsageError("gateway-sim: --send needs --domain");
   if (o.config) throw UsageError("gateway-sim: --send talks to a running simulator; --config is not used");
-  gateway_sim::GatewayCommander commander(*o.domain, o.partition.value_or(""));
+  gateway_sim::GatewayCommander commander(*o.domain, o.partition.value_or(""), network_of(o, {}, true));
   const std::string gateway = o.name.value_or("");
   if (!commander.send(gateway, *o.send, o.value, o.device)) {
     std::cerr << "tomc: gateway-sim: no gateway simulator" << (gateway.empty() ? "" : " '" + gateway + "'")
@@ -139,6 +163,7 @@ int gateway_sim_command(std::span<const std::string_view> args, std::ostream& ou
     if (o.name->empty() || o.name->size() > 63) throw UsageError("gateway-sim: --name: 1..63 characters");
     config.gateway = *o.name;
   }
+  if (o.interface || !o.peers.empty()) config.network = network_of(o, config.network, false);
   if (o.drop_every) config.drop_every = *o.drop_every;
   if (o.delay_us) config.delay_us = *o.delay_us;
 
@@ -156,8 +181,9 @@ int gateway_sim_command(std::span<const std::string_view> args, std::ostream& ou
     for (const auto& d : config.devices)
       names += (names.empty() ? "" : ", ") + d.name;
     out << "gateway-sim: '" << config.gateway << "' serves " << names << " on DDS domain " << config.domain
-        << (config.partition.empty() ? "" : " partition '" + config.partition + "'") << ", cycle "
-        << config.cycle_time * 1000.0 << " ms, pid " << ::getpid() << std::endl;
+        << (config.partition.empty() ? "" : " partition '" + config.partition + "'") << " via "
+        << (config.network.interface.empty() ? std::string("loopback") : config.network.interface)
+        << ", cycle " << config.cycle_time * 1000.0 << " ms, pid " << ::getpid() << std::endl;
     sigwait(&signals, &signal_number);
     const auto c = simulator.counters();
     out << "gateway-sim: stopped by signal " << signal_number << " after " << c.setpoints_applied

@@ -26,6 +26,19 @@ ExchangeCore::ExchangeCore(ExchangeOptions options) : options_(options) {
   if (options_.cycle_time_ns == 0) throw std::invalid_argument("gateway exchange: cycle time must be > 0");
 }
 
+namespace {
+
+// Bits 12..15 of the 16-bit word at byte `offset` (STW2/ZSW2: the sign-of-life, spec 06 §5); a word's high
+// byte comes first unless the device's words are little-endian.
+int high_nibble(const Frame& frame, int offset, const DeviceConfig& config) noexcept {
+  const auto at = static_cast<std::size_t>(offset);
+  const bool low_first = config.codec.byte_order == tg::ByteOrder::kLittleBytes ||
+                         config.codec.byte_order == tg::ByteOrder::kLittle;
+  return std::to_integer<int>(frame.bytes[low_first ? at + 1 : at]) >> 4;
+}
+
+}  // namespace
+
 std::size_t ExchangeCore::add_device(const std::string& name, const DeviceConfig& config) {
   if (frozen_) throw std::invalid_argument("gateway exchange: devices are added before the exchange starts");
   if (name.empty() || name.size() > kMaxNameLength) {
@@ -46,6 +59,12 @@ std::size_t ExchangeCore::add_device(const std::string& name, const DeviceConfig
   d->name = name;
   d->config = config;
   d->byte_order = to_contract(config.codec.byte_order);
+  if (config.drive_telegram != 0) {
+    if (const auto layout = tg::find_layout(config.drive_telegram, tg::Direction::kActual); layout.ok())
+      d->zsw2_offset = layout.value().offset_of(tg::Signal::ZSW2);
+    if (const auto layout = tg::find_layout(config.drive_telegram, tg::Direction::kSetpoint); layout.ok())
+      d->stw2_offset = layout.value().offset_of(tg::Signal::STW2);
+  }
   const DeviceFrames actual = make_frames(config, tg::Direction::kActual);
   d->answers.for_each_slot([&](Answer& a) { a.frames = actual; });
   devices_.push_back(std::move(d));
@@ -186,8 +205,16 @@ bool ExchangeCore::take_setpoints(gateway::SetpointCycle& sample) noexcept {
   if (!frozen_ || !batches_.take()) return false;
   const SetpointBatch& batch = batches_.value();
   sample.cycle(batch.cycle);
-  for (std::size_t i = 0; i < devices_.size() && i < sample.devices().size(); ++i)
-    fill(devices_[i]->config, batch.devices[i], sample.devices()[i].slots());
+  for (std::size_t i = 0; i < devices_.size() && i < sample.devices().size(); ++i) {
+    Device& d = *devices_[i];
+    fill(d.config, batch.devices[i], sample.devices()[i].slots());
+    if (d.stw2_offset >= 0) {
+      const int sign_of_life = high_nibble(batch.devices[i][Slot::kDrive], d.stw2_offset, d.config);
+      if (d.master_sign_of_life >= 0 && sign_of_life != d.master_sign_of_life)
+        d.master_sign_of_life_changes.fetch_add(1, std::memory_order_relaxed);
+      d.master_sign_of_life = sign_of_life;
+    }
+  }
   return true;
 }
 
@@ -247,6 +274,14 @@ void ExchangeCore::route(const gateway::ActualCycle& sample, std::int64_t now_ns
     a.has_setpoint = e.has_setpoint();
     a.setpoint_cycle = e.setpoint_cycle();
     extract(e.slots(), a.frames);
+    if (d.zsw2_offset >= 0 && sample.controller() == options_.controller && e.has_setpoint()) {
+      const auto sign_of_life =
+          static_cast<std::uint8_t>(high_nibble(a.frames[Slot::kDrive], d.zsw2_offset, d.config));
+      if (d.sign_of_life_answers.fetch_add(1, std::memory_order_relaxed) > 0 &&
+          sign_of_life != d.sign_of_life)
+        d.sign_of_life_changes.fetch_add(1, std::memory_order_relaxed);
+      d.sign_of_life = sign_of_life;
+    }
     d.answers.publish();
     d.answer_count.fetch_add(1, std::memory_order_relaxed);
     // Answered to this controller (a probe or a cycle): the whole loop works for this device.
@@ -297,7 +332,13 @@ bool ExchangeCore::wait_until_heard(std::chrono::nanoseconds timeout) {
 
 GatewayDeviceCounters ExchangeCore::counters(std::size_t device) const noexcept {
   const Device& d = *devices_[device];
-  return GatewayDeviceCounters{d.answer_count.load(), d.stale.load(), d.rejected.load(), d.restarts.load()};
+  return GatewayDeviceCounters{d.answer_count.load(),
+                               d.stale.load(),
+                               d.rejected.load(),
+                               d.restarts.load(),
+                               d.sign_of_life_answers.load(),
+                               d.sign_of_life_changes.load(),
+                               d.master_sign_of_life_changes.load()};
 }
 
 std::string ExchangeCore::last_mismatch(std::size_t device) const {

@@ -1,6 +1,8 @@
-// The loopback-only participant and the contract's QoS (participant.hpp, docs/gateway.md).
+// The participant limited to one configured interface (loopback by default) and the contract's QoS
+// (participant.hpp, network.hpp, docs/gateway.md).
 #include "tomc/drives/dds/participant.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
@@ -21,8 +23,6 @@ using eprosima::fastrtps::rtps::LocatorList_t;
 
 namespace {
 
-constexpr const char* kLoopback = "127.0.0.1";
-
 // Reliable writers announce their samples every 50 ms instead of Fast DDS's 3 s: a status or command sample
 // lost before the reader had fully matched is repaired within a few cycles of the watchdog, not seconds later
 // (TOOLCHAIN §11.6).
@@ -30,17 +30,24 @@ void fast_repair(fdds::DataWriterQos& qos) {
   qos.reliable_writer_qos().times.heartbeatPeriod = eprosima::fastrtps::Duration_t(0, 50'000'000);
 }
 
-// A UDPv4 locator that is "any address" (the transport then uses its whitelisted interfaces) or on 127/8.
-bool is_loopback_or_any(const Locator_t& l) {
-  if (l.kind != LOCATOR_KIND_UDPv4) return false;
-  return IPLocator::isAny(l) || l.address[12] == 127;
+// The contract's data representation (docs/gateway.md §3): writers write XCDR1 and readers accept it, stated
+// in the QoS so that a peer that offers or requests only XCDR2 does not match — and the discovery data says
+// why (gateway_link.cpp diagnose()).
+void xcdr1(fdds::DataRepresentationQosPolicy& policy) {
+  policy.m_value.clear();
+  policy.m_value.push_back(fdds::XCDR_DATA_REPRESENTATION);
 }
 
-void check_list(const LocatorList_t& list, const char* what, std::string& out) {
-  for (const Locator_t& l : list) {
-    if (!is_loopback_or_any(l)) out += std::string(what) + ": a locator that is not UDPv4 on 127.0.0.1\n";
-  }
+bool same_ipv4(const Locator_t& l, const std::string& address) {
+  return l.kind == LOCATOR_KIND_UDPv4 && IPLocator::toIPv4string(l) == address;
 }
+
+// A UDPv4 locator that is "any address" (the transport then uses its whitelisted interface) or the address.
+bool is_own_or_any(const Locator_t& l, const std::string& address) {
+  return l.kind == LOCATOR_KIND_UDPv4 && (IPLocator::isAny(l) || same_ipv4(l, address));
+}
+
+constexpr const char* kDiscoveryMulticast = "239.255.0.1";  // the RTPS default SPDP multicast group
 
 }  // namespace
 
@@ -52,15 +59,17 @@ std::string check_domain(int domain) {
   return {};
 }
 
-fdds::DomainParticipantQos loopback_participant_qos(const std::string& name) {
+fdds::DomainParticipantQos participant_qos(const std::string& name, int domain,
+                                           const ResolvedNetwork& network) {
   // Built from the code defaults, not from get_default_participant_qos(): an XML profile in the environment
   // (FASTRTPS_DEFAULT_PROFILES_FILE, ./DEFAULT_FASTRTPS_PROFILES.xml) cannot change the transports.
   fdds::DomainParticipantQos qos;
   qos.name(name);
   qos.transport().use_builtin_transports = false;
   auto udp = std::make_shared<UDPv4TransportDescriptor>();
-  udp->interfaceWhiteList.emplace_back(kLoopback);
-  udp->maxInitialPeersRange = 32;  // default 4: with unicast discovery only participant ids 0..3 were found
+  udp->interfaceWhiteList.emplace_back(network.address);
+  // Default 4: with unicast discovery only participant ids 0..3 were found.
+  udp->maxInitialPeersRange = static_cast<std::uint32_t>(kProbedParticipantIds);
   qos.transport().user_transports.push_back(udp);
 
   auto& builtin = qos.wire_protocol().builtin;
@@ -70,38 +79,73 @@ fdds::DomainParticipantQos loopback_participant_qos(const std::string& name) {
   Locator_t any;  // UDPv4, address 0, port 0: a non-empty list keeps Fast DDS from adding multicast locators
   any.kind = LOCATOR_KIND_UDPv4;
   builtin.metatrafficUnicastLocatorList.push_back(any);
-  Locator_t peer;  // port 0: the well-known discovery ports of every participant id
-  peer.kind = LOCATOR_KIND_UDPv4;
-  IPLocator::setIPv4(peer, 127, 0, 0, 1);
-  builtin.initialPeersList.push_back(peer);
+  for (const std::string& address : network.peers) {
+    Locator_t peer;  // port 0: the well-known discovery ports of every participant id
+    peer.kind = LOCATOR_KIND_UDPv4;
+    IPLocator::setIPv4(peer, address);
+    builtin.initialPeersList.push_back(peer);
+  }
+  if (network.multicast_discovery) {
+    Locator_t group;
+    IPLocator::createLocator(LOCATOR_KIND_UDPv4, kDiscoveryMulticast,
+                             rtps_ports(domain, 0).discovery_multicast, group);
+    builtin.metatrafficMulticastLocatorList.push_back(group);
+    builtin.initialPeersList.push_back(group);
+  }
   qos.wire_protocol().default_multicast_locator_list.clear();
   return qos;
 }
 
-std::string loopback_violations(const fdds::DomainParticipantQos& qos) {
+fdds::DomainParticipantQos loopback_participant_qos(const std::string& name) {
+  return participant_qos(name, 0, loopback_network());
+}
+
+std::string network_violations(const fdds::DomainParticipantQos& qos, const ResolvedNetwork& network) {
   std::string out;
+  const std::string& address = network.address;
   if (qos.transport().use_builtin_transports)
     out += "builtin transports enabled (UDPv4 on every interface)\n";
   if (qos.transport().user_transports.empty()) out += "no user transport\n";
   for (const auto& t : qos.transport().user_transports) {
     if (const auto* udp = dynamic_cast<const UDPv4TransportDescriptor*>(t.get())) {
-      if (udp->interfaceWhiteList.size() != 1 || udp->interfaceWhiteList.front() != kLoopback) {
-        out += "UDPv4 transport not whitelisted to exactly 127.0.0.1\n";
+      if (udp->interfaceWhiteList.size() != 1 || udp->interfaceWhiteList.front() != address) {
+        out += "UDPv4 transport not whitelisted to exactly " + address + "\n";
       }
     } else if (dynamic_cast<const SharedMemTransportDescriptor*>(t.get()) == nullptr) {
-      out += "a transport that is neither UDPv4 on 127.0.0.1 nor shared memory\n";
+      out += "a transport that is neither UDPv4 on " + address + " nor shared memory\n";
     }
   }
   const auto& builtin = qos.wire_protocol().builtin;
   if (builtin.metatrafficUnicastLocatorList.empty()) {
     out += "empty metatraffic unicast locator list (Fast DDS then adds multicast discovery)\n";
   }
-  if (!builtin.metatrafficMulticastLocatorList.empty()) out += "metatraffic multicast locators\n";
+  for (const Locator_t& l : builtin.metatrafficMulticastLocatorList) {
+    if (!network.multicast_discovery || l.kind != LOCATOR_KIND_UDPv4 ||
+        IPLocator::toIPv4string(l) != kDiscoveryMulticast) {
+      out += "metatraffic multicast locators\n";
+    }
+  }
   if (!qos.wire_protocol().default_multicast_locator_list.empty()) out += "default multicast locators\n";
-  check_list(builtin.metatrafficUnicastLocatorList, "metatraffic unicast", out);
-  check_list(builtin.initialPeersList, "initial peers", out);
-  check_list(qos.wire_protocol().default_unicast_locator_list, "default unicast", out);
+  for (const Locator_t& l : builtin.metatrafficUnicastLocatorList) {
+    if (!is_own_or_any(l, address))
+      out += "metatraffic unicast: a locator that is not UDPv4 on " + address + "\n";
+  }
+  for (const Locator_t& l : qos.wire_protocol().default_unicast_locator_list) {
+    if (!is_own_or_any(l, address))
+      out += "default unicast: a locator that is not UDPv4 on " + address + "\n";
+  }
+  for (const Locator_t& l : builtin.initialPeersList) {
+    const bool listed = std::any_of(network.peers.begin(), network.peers.end(),
+                                    [&](const std::string& p) { return same_ipv4(l, p); });
+    const bool group = network.multicast_discovery && l.kind == LOCATOR_KIND_UDPv4 &&
+                       IPLocator::toIPv4string(l) == kDiscoveryMulticast;
+    if (!listed && !group) out += "initial peers: a locator that is not a configured peer\n";
+  }
   return out;
+}
+
+std::string loopback_violations(const fdds::DomainParticipantQos& qos) {
+  return network_violations(qos, loopback_network());
 }
 
 fdds::DataWriterQos cyclic_writer_qos() {
@@ -111,6 +155,7 @@ fdds::DataWriterQos cyclic_writer_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 1;
   qos.data_sharing().off();  // /dev/shm segments would outlive a killed process (TOOLCHAIN §11.7)
+  xcdr1(qos.representation());
   return qos;
 }
 
@@ -122,6 +167,7 @@ fdds::DataReaderQos cyclic_reader_qos() {
   // More than 1: answers of two gateways may arrive between two takes of the listener; each is routed.
   qos.history().depth = 4;
   qos.data_sharing().off();
+  xcdr1(qos.type_consistency().representation);
   return qos;
 }
 
@@ -132,6 +178,7 @@ fdds::DataWriterQos status_writer_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 1;
   qos.data_sharing().off();
+  xcdr1(qos.representation());
   fast_repair(qos);
   return qos;
 }
@@ -143,6 +190,7 @@ fdds::DataReaderQos status_reader_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 4;
   qos.data_sharing().off();
+  xcdr1(qos.type_consistency().representation);
   return qos;
 }
 
@@ -153,6 +201,7 @@ fdds::DataWriterQos command_writer_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 16;
   qos.data_sharing().off();
+  xcdr1(qos.representation());
   fast_repair(qos);
   return qos;
 }
@@ -164,17 +213,23 @@ fdds::DataReaderQos command_reader_qos() {
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 16;
   qos.data_sharing().off();
+  xcdr1(qos.type_consistency().representation);
   return qos;
 }
 
-Participant::Participant(int domain, const std::string& name, const std::string& partition) {
+Participant::Participant(int domain, const std::string& name, const std::string& partition,
+                         const ResolvedNetwork& network, fdds::DomainParticipantListener* listener) {
   if (const auto problem = check_domain(domain); !problem.empty()) throw std::runtime_error(problem);
-  const fdds::DomainParticipantQos qos = loopback_participant_qos(name);
-  if (const auto leaks = loopback_violations(qos); !leaks.empty()) {
-    throw std::logic_error("DDS participant QoS is not loopback-only:\n" + leaks);
+  if (network.address.empty()) throw std::invalid_argument("DDS participant: no interface address");
+  const fdds::DomainParticipantQos qos = participant_qos(name, domain, network);
+  if (const auto leaks = network_violations(qos, network); !leaks.empty()) {
+    throw std::logic_error("DDS participant QoS is not limited to " + network.address + ":\n" + leaks);
   }
   auto* factory = fdds::DomainParticipantFactory::get_instance();
-  participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos);
+  // No status callbacks at participant level (the readers have their own listeners); discovery callbacks
+  // reach `listener` regardless of the mask.
+  participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos, listener,
+                                             fdds::StatusMask::none());
   if (participant_ == nullptr) {
     throw std::runtime_error("Fast DDS could not create a participant on domain " + std::to_string(domain));
   }

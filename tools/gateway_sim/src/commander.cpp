@@ -70,10 +70,12 @@ struct GatewayCommander::Impl {
   std::uint64_t next_number = 0;
 };
 
-GatewayCommander::GatewayCommander(int domain, const std::string& partition)
+GatewayCommander::GatewayCommander(int domain, const std::string& partition,
+                                   const drives::dds::NetworkSettings& network)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
-  m.participant = std::make_unique<dds::Participant>(domain, "tomc gateway commander", partition);
+  m.participant = std::make_unique<dds::Participant>(domain, "tomc gateway commander", partition,
+                                                     dds::resolve_network_or_throw(network, true));
   dds::Participant& p = *m.participant;
   m.writer = p.publisher().create_datawriter(&p.topic(dds::kCommandTopic, m.command_type),
                                              dds::command_writer_qos());

@@ -426,8 +426,10 @@ GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config)
       s.pzd().reserve(telegrams::kMaxFrameBytes);
   }
 
+  // A gateway need not know its controllers: with no peers it answers those that contact it.
+  const dds::ResolvedNetwork network = dds::resolve_network_or_throw(config.network, false);
   m.participant = std::make_unique<dds::Participant>(config.domain, "tomc gateway-sim " + config.gateway,
-                                                     config.partition);
+                                                     config.partition, network);
   dds::Participant& p = *m.participant;
   m.actual_writer =
       p.publisher().create_datawriter(&p.topic(dds::kActualTopic, m.actual_type), dds::cyclic_writer_qos());

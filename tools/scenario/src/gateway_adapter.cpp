@@ -49,6 +49,7 @@ void load_gateway_adapter(const Json& adapter, std::string_view path, GatewayAda
       settings.byte_order = static_cast<telegrams::ByteOrder>(*c);
     }
   }
+  detail::read_network(r, settings.network, true, problems);
   r.integer("max_answer_age_cycles", settings.max_answer_age_cycles, 0, 1000);
   r.real("connect_timeout_s", settings.connect_timeout_s, detail::Range{0.0, 600.0});
   r.real("answer_timeout_s", settings.answer_timeout_s, detail::Range{0.0, 10.0});
@@ -64,12 +65,16 @@ std::unique_ptr<drives::DriveAdapter> GatewayLinks::make_drive(const GatewayAdap
   std::size_t i = 0;
   for (; i < links_.size(); ++i) {
     const auto& c = links_[i]->config();
-    if (c.domain == settings.domain && c.partition == settings.partition) break;
+    if (c.domain == settings.domain && c.partition == settings.partition &&
+        c.network.interface == settings.network.interface && c.network.peers == settings.network.peers &&
+        c.network.multicast_discovery == settings.network.multicast_discovery)
+      break;
   }
   if (i == links_.size()) {
     dds::GatewayLinkConfig config;
     config.domain = settings.domain;
     config.partition = settings.partition;
+    config.network = settings.network;
     config.cycle_time_s = cycle_time_s;
     config.max_answer_age_cycles = settings.max_answer_age_cycles;
     links_.push_back(dds::GatewayLink::create(config));
@@ -106,6 +111,37 @@ void GatewayLinks::wait_for_answers() {
 }  // namespace tomc::scenario
 
 namespace tomc::scenario::detail {
+
+void read_network(ObjectReader& reader, drives::dds::NetworkSettings& network, bool require_peers,
+                  Problems& problems) {
+  const std::size_t before = problems.size();
+  if (const Json* v = reader.get("interface")) {
+    if (auto i = read_string(*v, reader.path_of("interface"), problems)) {
+      if (i->empty()) {
+        problems.add(reader.path_of("interface"), "an interface name or an IPv4 address of this host");
+      } else {
+        network.interface = *i;
+      }
+    }
+  }
+  if (const Json* v = reader.get("peers")) {
+    if (!v->is_array()) {
+      problems.add(reader.path_of("peers"),
+                   "expected an array of IPv4 addresses, got " + std::string(type_name(*v)));
+    } else {
+      network.peers.clear();
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        const std::string path = reader.path_of("peers[" + std::to_string(i) + "]");
+        if (auto peer = read_string((*v)[i], path, problems)) network.peers.push_back(*peer);
+      }
+    }
+  }
+  reader.boolean("multicast_discovery", network.multicast_discovery);
+  if (problems.size() != before) return;  // the host is asked only about well-formed settings
+  drives::dds::ResolvedNetwork resolved;
+  for (const auto& p : drives::dds::resolve_network(network, require_peers, resolved))
+    problems.add(reader.path_of(p.setting), p.message);
+}
 
 void reject_simulated_drive_keys(const Json& drive, ObjectReader& reader, Problems& problems) {
   if (!reader.valid()) return;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "gateway_adapter_detail.hpp"
 #include "json_reader.hpp"
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
@@ -37,6 +38,7 @@ void load_gateway_sim_config(const Json& document, GatewaySimConfig& config, Pro
   if (const Json* v = root.get("partition")) {
     if (auto p = detail::read_string(*v, "partition", problems)) config.partition = *p;
   }
+  detail::read_network(root, config.network, false, problems);
   root.real("cycle_time", config.cycle_time, detail::Range{0.0, 1.0, true});
   root.real("watchdog", config.watchdog, detail::Range{0.0, 60.0, true});
   root.integer("drop_every", config.drop_every, 0, 1'000'000);

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "tomc/drives/dds/network.hpp"
+
 namespace tomc::gateway_sim {
 
 enum class Command : std::uint8_t {
@@ -28,8 +30,11 @@ std::string_view to_string(Command command) noexcept;
 
 class GatewayCommander {
  public:
-  // A participant on `domain`/`partition` (loopback-only). Throws std::runtime_error when Fast DDS refuses.
-  GatewayCommander(int domain, const std::string& partition);
+  // A participant on `domain`/`partition` on `network` (loopback by default; elsewhere its peers must
+  // include the simulator's address). Throws std::invalid_argument for a wrong interface or peer,
+  // std::runtime_error when Fast DDS refuses.
+  GatewayCommander(int domain, const std::string& partition,
+                   const drives::dds::NetworkSettings& network = {});
   ~GatewayCommander();
   GatewayCommander(const GatewayCommander&) = delete;
   GatewayCommander& operator=(const GatewayCommander&) = delete;

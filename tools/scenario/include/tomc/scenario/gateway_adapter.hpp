@@ -2,6 +2,8 @@
 // The Fast DDS gateway adapter as a drive's `adapter` in a configuration file (docs/scenarios.md, "drive"):
 //
 //   "adapter": { "type": "dds_gateway", "domain": 42, "device": "axis1" }
+//   "adapter": { "type": "dds_gateway", "domain": 42, "device": "axis1",
+//                "interface": "eth1", "peers": ["192.168.10.20"] }        // a gateway on another host
 //
 // instead of the embedded simulated drive, and the links that build the adapters from such settings — the
 // function an embedding program or `tomc demo --gateway` uses (docs/gateway.md "Using it").
@@ -14,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tomc/drives/dds/network.hpp"
 #include "tomc/drives/drive_adapter.hpp"
 #include "tomc/telegrams/byte_order.hpp"
 
@@ -29,6 +32,8 @@ struct GatewayAdapterSettings {
   int domain = 0;
   std::string partition;
   std::string device;  // the device's name at the gateway
+  // "interface", "peers", "multicast_discovery": loopback unless given (docs/gateway.md §11).
+  drives::dds::NetworkSettings network;
   telegrams::ByteOrder byte_order = telegrams::ByteOrder::kBig;
   std::uint32_t max_answer_age_cycles = 1;
   double connect_timeout_s = 5.0;  // how long to wait for the gateway before the first cycle
@@ -39,7 +44,8 @@ struct GatewayAdapterSettings {
 void load_gateway_adapter(const nlohmann::ordered_json& adapter, std::string_view path,
                           GatewayAdapterSettings& settings, Problems& problems);
 
-// The gateway links of one program: one DDS participant per (domain, partition), shared by its devices.
+// The gateway links of one program: one DDS participant per (domain, partition, network), shared by its
+// devices.
 class GatewayLinks {
  public:
   GatewayLinks();

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tomc/drives/dds/network.hpp"
 #include "tomc/scenario/config.hpp"
 
 namespace tomc::scenario {
@@ -26,6 +27,8 @@ struct GatewaySimConfig {
   std::string gateway = "gateway";
   int domain = 0;
   std::string partition;
+  // "interface", "peers" (the controllers' addresses, optional), "multicast_discovery": loopback by default.
+  drives::dds::NetworkSettings network;
   double cycle_time = 0.001;  // the gateway's own clock (its PROFINET send clock)
   // A controller silent this long is gone: the gateway's clock drives the drives without setpoints (they then
   // run into their setpoint timeout) and another controller may take over.

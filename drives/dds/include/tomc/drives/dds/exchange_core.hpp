@@ -43,6 +43,14 @@ struct GatewayDeviceCounters {
   std::uint64_t stale = 0;     // answers taken in a cycle but too old, or for another or no controller
   std::uint64_t rejected = 0;  // answers whose telegrams, lengths or byte order differ from the configuration
   std::uint64_t restarts = 0;  // gateway restarts (a new ActualCycle.incarnation) seen by the cyclic side
+  // Answers to this controller's setpoints whose drive telegram carries ZSW2, and how often the drive's
+  // sign-of-life in it (bits 12..15, spec 06 §5) changed between two of them: a drive in isochronous mode
+  // counts it every cycle; one that never changes is flagged by GatewayLink::diagnose().
+  std::uint64_t sign_of_life_answers = 0;
+  std::uint64_t sign_of_life_changes = 0;
+  // How often this controller's master sign-of-life (STW2 bits 12..15) changed between two cycles sent: 0
+  // when the controller does not run the device isochronously, and then the drive need not count either.
+  std::uint64_t master_sign_of_life_changes = 0;
 };
 
 struct ExchangeStatistics {
@@ -149,7 +157,14 @@ class ExchangeCore {
     std::atomic<std::uint64_t> answered{0};
     std::atomic<std::uint64_t> last_fresh{0};
     std::atomic<bool> heard_by_us{false};
-    std::string mismatch;  // guarded by route_mutex_
+    std::atomic<std::uint64_t> sign_of_life_answers{0};
+    std::atomic<std::uint64_t> sign_of_life_changes{0};
+    std::atomic<std::uint64_t> master_sign_of_life_changes{0};
+    int stw2_offset = -1;           // byte offset of STW2 in the drive's setpoint telegram; -1: not carried
+    int master_sign_of_life = -1;   // sender thread only: the last one sent, -1 = none yet
+    int zsw2_offset = -1;           // byte offset of ZSW2 in the drive's actual telegram; -1: not carried
+    std::uint8_t sign_of_life = 0;  // guarded by route_mutex_: the last one seen
+    std::string mismatch;           // guarded by route_mutex_
   };
   struct SetpointBatch {
     std::uint64_t cycle = 0;

@@ -20,13 +20,15 @@
 #include <vector>
 
 #include "tomc/drives/dds/exchange_core.hpp"
+#include "tomc/drives/dds/network.hpp"
 #include "tomc/drives/drive_adapter.hpp"
 
 namespace tomc::drives::dds {
 
 struct GatewayLinkConfig {
-  int domain = 0;         // DDS domain id, 0..232; controller and gateway must use the same
-  std::string partition;  // DDS partition, "" = default; controller and gateway must use the same
+  int domain = 0;           // DDS domain id, 0..232; controller and gateway must use the same
+  std::string partition;    // DDS partition, "" = default; controller and gateway must use the same
+  NetworkSettings network;  // interface and the gateway's address(es); default loopback (network.hpp)
   std::string participant_name = "tomc controller";
   double cycle_time_s = 0.001;              // the servo cycle, announced to the gateway
   std::uint32_t max_answer_age_cycles = 1;  // ExchangeOptions::max_answer_age_cycles
@@ -34,13 +36,16 @@ struct GatewayLinkConfig {
 
 // Why a device does or does not get answers, for the commissioning engineer (diagnose(), connect()).
 enum class DeviceDiagnosis : std::uint8_t {
-  kAnswering,        // fresh answers arrive
-  kNoGateway,        // no gateway has announced itself on the domain/partition
-  kNotServed,        // gateways are there, none serves a device of this name
-  kConfigMismatch,   // a gateway serves it with other telegrams, lengths or byte order
-  kDisconnected,     // the gateway serves it but has no cyclic exchange with the device
-  kOtherController,  // the gateway is serving another controller
-  kSilent,           // the gateway serves it but its answers are missing or stale (stopped, restarting, late)
+  kAnswering,              // fresh answers arrive
+  kSignOfLifeNotCounting,  // fresh answers arrive, but the drive's sign-of-life (ZSW2) has never counted
+  kNoGateway,              // no gateway has announced itself on the domain/partition
+  kEndpointMismatch,  // a DDS participant was discovered, but its endpoints on the contract's topics do not
+                      // match this controller's (type name, partition, data representation, QoS)
+  kNotServed,         // gateways are there, none serves a device of this name
+  kConfigMismatch,    // a gateway serves it with other telegrams, lengths or byte order
+  kDisconnected,      // the gateway serves it but has no cyclic exchange with the device
+  kOtherController,   // the gateway is serving another controller
+  kSilent,  // the gateway serves it but its answers are missing or stale (stopped, restarting, late)
 };
 const char* to_string(DeviceDiagnosis diagnosis) noexcept;
 
@@ -54,8 +59,9 @@ class DdsGatewayDrive;
 
 class GatewayLink : public std::enable_shared_from_this<GatewayLink> {
  public:
-  // Creates the participant and entities (loopback-only, participant.hpp). Throws std::invalid_argument for a
-  // bad configuration and std::runtime_error when Fast DDS refuses.
+  // Creates the participant and entities (unicast on the configured interface only, participant.hpp). Throws
+  // std::invalid_argument for a bad configuration (naming a wrong or missing interface or peer address) and
+  // std::runtime_error when Fast DDS refuses.
   static std::shared_ptr<GatewayLink> create(const GatewayLinkConfig& config);
   ~GatewayLink();
   GatewayLink(const GatewayLink&) = delete;
