@@ -94,6 +94,22 @@ bool complete_response(const std::string& text) {
   return text.size() >= end + 4 + length;
 }
 
+// How many complete responses with a Content-Length body `text` holds, one after the other.
+int responses_in(std::string_view text) {
+  int count = 0;
+  while (complete_response(std::string(text))) {
+    const std::size_t end = text.find("\r\n\r\n");
+    std::string head(text.substr(0, end));
+    std::transform(head.begin(), head.end(), head.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::size_t cl = head.find("content-length:");
+    const std::size_t length =
+        cl == std::string::npos ? 0 : std::strtoul(head.c_str() + cl + 15, nullptr, 10);
+    text.remove_prefix(end + 4 + length);
+    ++count;
+  }
+  return count;
+}
+
 int status_of(const std::string& response) {
   if (response.rfind("HTTP/1.", 0) != 0 || response.size() < 12) return 0;
   return std::atoi(response.c_str() + 9);
@@ -278,6 +294,8 @@ TEST(ServerAbuse, StopGetsThroughUnder200SlowAndIdleConnections) {
     std::printf("; /api/status %.1f ms\n", status.ms);
     for (const double ms : latencies)
       EXPECT_LT(ms, 100.0) << "a STOP took " << ms << " ms under attack (issue 21: within 100 ms)";
+    // The 60 event streams got 16 (the cap) and 503 for the rest.
+    EXPECT_LE(h.server->statistics().http.event_streams, 16u);
   }
   // Acted on: the panel's motion is a stop (or already none) and the speed setpoint falls to 0.
   const auto deadline = Clock::now() + 5s;
@@ -292,6 +310,178 @@ TEST(ServerAbuse, StopGetsThroughUnder200SlowAndIdleConnections) {
   ASSERT_TRUE(last.is_object());
   EXPECT_EQ(last["objects"][0]["panel"]["motion"], "none");
   EXPECT_EQ(last["objects"][0]["panel"]["held"], true);  // STOP, not a lifebeat expiry
+}
+
+// Total header deadline (issue 21: a header line every 4 s kept the old server's worker for ever): a client
+// that trickles header lines is answered 408 and closed when the header deadline (here 300 ms) is over,
+// although it keeps sending.
+TEST(ServerAbuse, TrickledHeadersEndAtTheDeadline) {
+  diagnostics::ServerOptions options;
+  options.limits.header_timeout = 300ms;
+  Held h(options);
+  const int fd = connect_to(h.server->port());
+  ASSERT_GE(fd, 0);
+  ASSERT_TRUE(send_all(fd, "GET /api/status HTTP/1.1\r\nHost: 127.0.0.1\r\n"));
+  std::string answer;
+  bool closed = false;
+  for (int line = 0; line < 30 && !closed; ++line) {  // 3 s of trickling at most
+    ::send(fd, "X-Slow: 1\r\n", 11, MSG_NOSIGNAL);
+    answer += receive(fd, 100ms, [](const std::string&) { return false; });
+    pollfd p{fd, POLLIN, 0};
+    char c;
+    closed = ::poll(&p, 1, 0) > 0 && ::recv(fd, &c, 1, MSG_PEEK | MSG_DONTWAIT) == 0;
+  }
+  ::close(fd);
+  EXPECT_EQ(status_of(answer), 408) << answer;
+  EXPECT_TRUE(closed) << "the server kept a connection that never finished its headers";
+  EXPECT_GE(h.server->statistics().http.timed_out, 1u);
+}
+
+// Connection caps (global 32, per client 16): 100 idle and slow connections from this machine do not raise
+// the open connections above the caps (each new one evicts the oldest that holds no complete request), and
+// the engineer's STOP still gets through.
+TEST(ServerAbuse, CapsEvictTheOldestIncompleteConnections) {
+  diagnostics::ServerOptions options;
+  options.limits.max_connections = 32;
+  options.limits.max_connections_per_client = 16;
+  Held h(options);
+  h.turn();
+  {
+    const auto start = Clock::now();
+    Attack attack(h.server->port(), 50, 50, 0);
+    std::this_thread::sleep_for(200ms);
+    const auto t0 = Clock::now();
+    const Timed stop = h.panel("stop", {{"maximum", true}});
+    std::printf("attack set-up %.0f ms, STOP %.1f ms\n",
+                std::chrono::duration<double, std::milli>(t0 - start).count(), stop.ms);
+    EXPECT_EQ(stop.status, 200);
+    EXPECT_EQ(stop.body.is_object() ? stop.body.value("answer", "") : "", "accepted");
+    const auto stats = h.server->statistics().http;
+    EXPECT_LE(stats.max_open, 32u);
+    EXPECT_GE(stats.evicted, 100u - 16u);
+  }
+}
+
+// Chunked request bodies are bounded like any other (413), and the connection is closed after the error;
+// a small chunked body is taken.
+TEST(ServerAbuse, ChunkedBodiesAreBounded) {
+  Held h;
+  const std::string head = "POST /api/panel/Axis1 HTTP/1.1\r\nHost: 127.0.0.1\r\nAuthorization: Bearer " +
+                           std::string(kToken) + "\r\nTransfer-Encoding: chunked\r\n\r\n";
+  {
+    const int fd = connect_to(h.server->port());
+    ASSERT_GE(fd, 0);
+    send_all(fd, head);
+    const std::string chunk = "1000\r\n" + std::string(0x1000, ' ') + "\r\n";  // 4 KiB each
+    for (int i = 0; i < 18; ++i)                                               // 72 KiB > 64 KiB
+      if (!send_all(fd, chunk)) break;
+    const std::string answer = receive(fd, 3000ms, [](const std::string&) { return false; });  // until closed
+    EXPECT_EQ(status_of(answer), 413) << answer.substr(0, 200);
+    EXPECT_NE(answer.find("Connection: close"), std::string::npos);
+    ::close(fd);
+  }
+  {
+    const int fd = connect_to(h.server->port());
+    ASSERT_GE(fd, 0);
+    const std::string body =
+        R"({"command":"take","session":")" + std::string(kSession) + R"(","lifebeat_s":5})";
+    send_all(fd, head + "5\r\n" + body.substr(0, 5) + "\r\n" + std::to_string(0) + "\r\n\r\n");
+    const std::string answer = receive(fd, 3000ms, complete_response);
+    EXPECT_EQ(status_of(answer), 400) << answer;  // 5 bytes of JSON: malformed, refused by the API
+    ::close(fd);
+  }
+  {
+    const int fd = connect_to(h.server->port());
+    ASSERT_GE(fd, 0);
+    const std::string body =
+        R"({"command":"take","session":")" + std::string(kSession) + R"(","lifebeat_s":5})";
+    char size[16];
+    std::snprintf(size, sizeof size, "%zx", body.size() - 10);
+    send_all(fd, head + size + "\r\n" + body.substr(0, body.size() - 10) + "\r\na\r\n" +
+                     body.substr(body.size() - 10) + "\r\n0\r\n\r\n");
+    const std::string answer = receive(fd, 3000ms, complete_response);
+    EXPECT_EQ(status_of(answer), 200) << answer;
+    ::close(fd);
+  }
+}
+
+// After an error the server closes the connection; after a success it keeps it (keep-alive).
+TEST(ServerAbuse, ConnectionsCloseAfterErrorsOnly) {
+  Held h;
+  const int port = h.server->port();
+  {
+    const int fd = connect_to(port);
+    send_all(fd, "GET /api/nothing HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n");
+    const std::string answer = receive(fd, 3000ms, [](const std::string&) { return false; });  // until closed
+    EXPECT_EQ(status_of(answer), 404);
+    EXPECT_TRUE(complete_response(answer));
+    ::close(fd);
+  }
+  {
+    const int fd = connect_to(port);
+    send_all(fd, "NOT HTTP AT ALL\r\n\r\n");
+    const std::string answer = receive(fd, 3000ms, [](const std::string&) { return false; });
+    EXPECT_EQ(status_of(answer), 400);
+    ::close(fd);
+  }
+  {
+    const int fd = connect_to(port);
+    const std::string get = "GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+    send_all(fd, get);
+    const std::string first = receive(fd, 3000ms, complete_response);
+    EXPECT_EQ(status_of(first), 200);
+    send_all(fd, get + get);  // the same connection, two requests pipelined
+    const std::string both = receive(fd, 3000ms, [](const std::string& t) { return responses_in(t) == 2; });
+    EXPECT_EQ(responses_in(both), 2);
+    EXPECT_EQ(status_of(both), 200);
+    ::close(fd);
+  }
+}
+
+// Issue 21: 24 parallel trace.png requests of a large trace cost about 66 % of the servo cycles and 2.3 GB.
+// Exports now need the token, are rendered one at a time at idle priority and cached: 24 requests for the
+// same picture are one render. Overruns of the 1 ms cycle are printed for an idle second and for the
+// requests (not asserted: this machine's load is not the server's).
+TEST(ServerAbuse, ParallelTraceExportsRenderOnce) {
+  Held h;
+  const int port = h.server->port();
+  const Json request = {
+      {"channels", {"Axis1.Velocity", "Axis1.telegram.drive.NIST_B", "Axis1.StatusWord.X12"}},
+      {"trigger", {{"kind", "immediate"}}},
+      {"post_samples", 2000}};
+  ASSERT_EQ(timed_request(port, "POST", "/api/trace", request.dump(), kToken, 3000ms).status, 200);
+  const auto deadline = Clock::now() + 10s;
+  while (Clock::now() < deadline &&
+         h.status().value(Json::json_pointer("/trace/state"), std::string()) != "complete")
+    std::this_thread::sleep_for(50ms);
+  ASSERT_EQ(h.status().value(Json::json_pointer("/trace/state"), std::string()), "complete");
+  EXPECT_EQ(timed_request(port, "GET", "/api/trace.png", "", nullptr, 3000ms).status, 401);
+
+  const auto idle_before = h.runner.statistics().overruns;
+  std::this_thread::sleep_for(1s);
+  const auto idle = h.runner.statistics().overruns - idle_before;
+
+  const auto before = h.runner.statistics().overruns;
+  const auto start = Clock::now();
+  std::vector<int> statuses(24, 0);
+  std::vector<std::thread> clients;
+  for (int i = 0; i < 24; ++i) {
+    clients.emplace_back([&, i] {
+      statuses[static_cast<std::size_t>(i)] =
+          timed_request(port, "GET", "/api/trace.png?width=4000&height=3000", "", kToken, 20000ms).status;
+    });
+  }
+  for (auto& t : clients)
+    t.join();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const auto during = h.runner.statistics().overruns - before;
+  std::printf("servo overruns: %llu in 1 s idle; %llu in %.2f s of 24 parallel trace.png (4000x3000)\n",
+              static_cast<unsigned long long>(idle), static_cast<unsigned long long>(during), seconds);
+  for (const int status : statuses)
+    EXPECT_EQ(status, 200);
+  const auto stats = h.server->statistics();
+  EXPECT_EQ(stats.exports_rendered, 1u);
+  EXPECT_EQ(stats.exports_cached, 23u);
 }
 
 }  // namespace

@@ -373,6 +373,10 @@ TEST(WebApi, TraceAndExports) {
   EXPECT_EQ(trace["channels"][0], "Axis2.Velocity");
 
   auto c = s.client();
+  // Exports need the token (issue 21: they cost CPU and memory; anyone on the machine could ask for them).
+  EXPECT_EQ(c.Get("/api/trace.csv")->status, 401);
+  EXPECT_EQ(c.Get("/api/trace.png")->status, 401);
+  c.set_bearer_token_auth(kToken);
   auto csv = c.Get("/api/trace.csv");
   ASSERT_TRUE(csv);
   EXPECT_EQ(csv->status, 200);
@@ -470,7 +474,8 @@ TEST(WebApi, BadRequestsGet4xxAndDoNotDisturbTheRuntime) {
   EXPECT_EQ(c.Get("/api/nothing")->status, 404);
   EXPECT_EQ(c.Get("/api/objects/Nobody/variables")->status, 404);
   EXPECT_EQ(c.Get("/api/trace?max_points=abc")->status, 400);
-  EXPECT_EQ(c.Get("/api/trace.png?height=99999")->status, 400);
+  httplib::Headers bearer{{"Authorization", std::string("Bearer ") + kToken}};
+  EXPECT_EQ(c.Get("/api/trace.png?height=99999", bearer)->status, 400);
   // A body over 64 KiB.
   httplib::Headers auth{{"Authorization", std::string("Bearer ") + kToken}};
   const auto big = c.Post("/api/panel/Axis1", auth, std::string(70 * 1024, ' '), "application/json");
