@@ -272,6 +272,14 @@ RequestParser::State RequestParser::parse_head(std::string_view head) {
 }
 
 RequestParser::State RequestParser::parse_body(std::string_view input) {
+  const State state = parse_body_bytes(input);
+  // While the request is incomplete every byte of the input is part of it.
+  if (state == State::kIncomplete && input.size() > limits_.max_request_bytes())
+    return fail(413, "request larger than 64 KiB with its chunk framing");
+  return state;
+}
+
+RequestParser::State RequestParser::parse_body_bytes(std::string_view input) {
   for (;;) {
     switch (body_) {
       case Body::kNone:
@@ -824,7 +832,7 @@ struct Server::Impl {
         if (c.phase == Phase::kClosing) continue;  // dropped
         c.in.append(buffer, static_cast<std::size_t>(n));
         // Never more than one request's worth in memory: the parser refuses bigger ones.
-        if (c.in.size() > limits.request.max_header_bytes + limits.request.max_body_bytes * 2 + 4096) break;
+        if (c.in.size() > limits.request.max_request_bytes()) break;
         continue;
       }
       if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;

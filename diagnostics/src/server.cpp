@@ -345,6 +345,17 @@ struct Server::Impl {
       if (auto* problem = std::get_if<std::string>(&parsed)) return error(400, *problem);
       PanelCommand c = std::get<PanelCommand>(parsed);
       c.object = static_cast<std::uint32_t>(*i);
+      // Ranges against the axis' limits (issue 21); only for commands that carry a value to check, so that a
+      // STOP does not even take the reader's lock.
+      std::vector<double> values;
+      if (c.kind == PanelCommandKind::kSetDynamics || c.kind == PanelCommandKind::kHome ||
+          c.kind == PanelCommandKind::kMoveAbsolute) {
+        values = diagnostics.read([&](const Diagnostics::State& s) {
+          return s.objects[*i].valid ? s.objects[*i].snapshot.values : std::vector<double>{};
+        });
+      }
+      if (auto problem = api::check_panel_ranges(c, diagnostics.view(*i).variables(), values))
+        return error(400, *problem);
       const PanelAnswer answer = diagnostics.command(c);
       return reply(status_of(answer), Json{{"answer", answer_name(answer)}, {"message", to_string(answer)}});
     });

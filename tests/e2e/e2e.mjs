@@ -140,12 +140,16 @@ try {
   const legend = await page.locator('#trace-legend').textContent();
   check(legend.includes('Conveyor.Velocity') && legend.includes('Conveyor.ActualSpeed'), 'legend names the signals');
   await page.screenshot({ path: join(artifacts, '03-trace.png') });
-  const png = await page.request.get(demo.base + 'api/trace.png?width=1200&height=700');
+  // Exports need the token (issue 21).
+  const bearer = { headers: { Authorization: 'Bearer ' + demo.token } };
+  check((await page.request.get(demo.base + 'api/trace.png?width=1200&height=700')).status() === 401,
+        'trace.png without the token: 401');
+  const png = await page.request.get(demo.base + 'api/trace.png?width=1200&height=700', bearer);
   check(png.status() === 200, 'trace.png answered');
   const bytes = await png.body();
   check(bytes.subarray(1, 4).toString() === 'PNG', 'trace.png is a PNG');
   writeFileSync(join(artifacts, 'trace.png'), bytes);
-  const csv = await (await page.request.get(demo.base + 'api/trace.csv')).text();
+  const csv = await (await page.request.get(demo.base + 'api/trace.csv', bearer)).text();
   check(csv.split('\n')[0] === 'cycle,time,Conveyor.Velocity,Conveyor.ActualSpeed,Conveyor.StatusWord.X12', 'CSV header');
   const traceStatus = (await status(demo.base)).trace;
   check(csv.trim().split('\n').length === 1 + 1600 - traceStatus.lost,

@@ -31,6 +31,8 @@ namespace tomc::diagnostics::http {
 struct Limits {
   std::size_t max_header_bytes = 8 * 1024;  // request line + headers
   std::size_t max_body_bytes = 64 * 1024;   // after de-chunking
+  // On the wire, chunk framing included: a body sent in 1-byte chunks must not cost megabytes of buffer.
+  std::size_t max_request_bytes() const noexcept { return max_header_bytes + 2 * max_body_bytes + 4096; }
 };
 
 struct Request {
@@ -83,6 +85,7 @@ class RequestParser {
   State fail(int status, std::string message);
   State parse_head(std::string_view head);
   State parse_body(std::string_view input);
+  State parse_body_bytes(std::string_view input);
 
   Limits limits_;
   Request request_;
