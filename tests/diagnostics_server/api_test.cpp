@@ -609,4 +609,30 @@ TEST(WebApi, PanelValuesAreRangeChecked) {
   ASSERT_EQ(s.panel("give_back").first, 200);
 }
 
+// Issue 21: the Host allow-list (no DNS rebinding) holds for the configured names too: a name is answered
+// only when it is the bound address, a loopback name or in allowed_hosts.
+TEST(WebApi, HostAllowList) {
+  tomc::testing::DiagnosticsMachine machine(1);
+  for (const bool allowed : {false, true}) {
+    diagnostics::ServerOptions options;
+    options.port = 0;
+    if (allowed) options.allowed_hosts = {"plc7.local", "192.168.0.7:8080"};
+    diagnostics::Server server(machine.diagnostics, options);
+    server.start();
+    EXPECT_TRUE(server.warnings().empty());  // loopback: nothing to warn about
+    httplib::Client c("127.0.0.1", server.port());
+    const std::string port = ":" + std::to_string(server.port());
+    const auto status = [&](const std::string& host) {
+      auto r = c.Get("/api/info", httplib::Headers{{"Host", host}});
+      return r ? r->status : 0;
+    };
+    EXPECT_EQ(status("127.0.0.1" + port), 200);
+    EXPECT_EQ(status("localhost" + port), 200);
+    EXPECT_EQ(status("plc7.local" + port), allowed ? 200 : 421);
+    EXPECT_EQ(status("192.168.0.7:8080"), allowed ? 200 : 421);
+    EXPECT_EQ(status("attacker.example" + port), 421);
+    server.stop();
+  }
+}
+
 }  // namespace
