@@ -19,7 +19,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "../diagnostics/diagnostics_fixture.hpp"
+#include "tomc/diagnostics/http_server.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/techobjects/realtime_runner.hpp"
 
@@ -482,6 +485,75 @@ TEST(ServerAbuse, ParallelTraceExportsRenderOnce) {
   const auto stats = h.server->statistics();
   EXPECT_EQ(stats.exports_rendered, 1u);
   EXPECT_EQ(stats.exports_cached, 23u);
+}
+
+// "Control requests (STOP first)": while a control request is being handled, further ones wait in the control
+// queue; an urgent one (a STOP) is taken before those that came earlier. Reads and event streams have their
+// own lanes, so a blocked read does not hold up control either.
+TEST(ServerAbuse, UrgentControlRequestsGoFirst) {
+  diagnostics::http::Server http;
+  std::mutex mutex;
+  std::condition_variable cv;
+  bool release = false;
+  std::vector<std::string> order;
+  const auto blocking = [&](const diagnostics::http::Request& r) {
+    std::unique_lock lock(mutex);
+    order.push_back(r.body);
+    cv.wait(lock, [&] { return release; });
+    return diagnostics::http::Response{};
+  };
+  http.route("POST", "/control", diagnostics::http::Lane::kControl, blocking);
+  http.route("GET", "/read", diagnostics::http::Lane::kRead, blocking);
+  std::atomic<int> queued{0};  // the urgency is asked once per control request, as it is queued
+  http.set_urgent([&](const diagnostics::http::Request& r) {
+    ++queued;
+    return r.body == "stop";
+  });
+  const int port = http.bind("127.0.0.1", 0);
+  http.start();
+  const auto post = [&](const std::string& body) {
+    return std::thread([port, body] { timed_request(port, "POST", "/control", body, nullptr, 5000ms); });
+  };
+  const auto wait_for = [&](std::size_t n) {
+    const auto deadline = Clock::now() + 5s;
+    while (Clock::now() < deadline) {
+      {
+        std::lock_guard lock(mutex);
+        if (order.size() >= n) return true;
+      }
+      std::this_thread::sleep_for(5ms);
+    }
+    return false;
+  };
+  std::vector<std::thread> clients;
+  clients.push_back(std::thread([port] { timed_request(port, "GET", "/read", "", nullptr, 5000ms); }));
+  EXPECT_TRUE(wait_for(1));  // the read lane is busy
+  clients.push_back(post("first"));
+  EXPECT_TRUE(wait_for(2));  // the control lane is busy with "first"
+  const auto queued_reaches = [&](int n) {
+    const auto deadline = Clock::now() + 5s;
+    while (queued.load() < n && Clock::now() < deadline)
+      std::this_thread::sleep_for(2ms);
+    return queued.load() >= n;
+  };
+  int n = 1;
+  for (const char* body : {"a", "b", "c", "stop"}) {  // queued in this order, one after the other
+    clients.push_back(post(body));
+    if (!queued_reaches(++n)) {
+      ADD_FAILURE() << "'" << body << "' was not queued";
+      break;
+    }
+  }
+  {
+    std::lock_guard lock(mutex);
+    release = true;
+  }
+  cv.notify_all();
+  for (auto& t : clients)
+    t.join();
+  http.stop();
+  const std::vector<std::string> expected = {"", "first", "stop", "a", "b", "c"};
+  EXPECT_EQ(order, expected);
 }
 
 }  // namespace
