@@ -601,13 +601,47 @@ struct Server::Impl {
     return oldest;
   }
 
+  Clock::time_point listener_paused_until{};
+  bool listener_paused = false;
+
+  void pause_listener() {
+    epoll_event ev{};
+    ev.events = 0;
+    ev.data.u64 = kListenerId;
+    ::epoll_ctl(epoll_fd, EPOLL_CTL_MOD, listen_fd, &ev);
+    listener_paused = true;
+    listener_paused_until = Clock::now() + std::chrono::milliseconds(100);
+  }
+
+  void resume_listener_when_due(Clock::time_point now) {
+    if (!listener_paused || now < listener_paused_until) return;
+    epoll_event ev{};
+    ev.events = EPOLLIN;
+    ev.data.u64 = kListenerId;
+    ::epoll_ctl(epoll_fd, EPOLL_CTL_MOD, listen_fd, &ev);
+    listener_paused = false;
+  }
+
   void accept_all() {
     for (int i = 0; i < 256; ++i) {
       sockaddr_storage address{};
       socklen_t length = sizeof address;
       const int fd =
           ::accept4(listen_fd, reinterpret_cast<sockaddr*>(&address), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
-      if (fd < 0) return;  // EAGAIN, or out of descriptors: the rest wait in the backlog
+      if (fd < 0) {
+        if (errno == EMFILE || errno == ENFILE) {
+          // Out of descriptors: the listener would stay readable and spin this thread. Make room by evicting
+          // the oldest incomplete connection and take the new one; with nothing to evict, listen again a
+          // little later (the rest wait in the backlog).
+          if (Connection* v = victim(nullptr)) {
+            count(&ServerStatistics::evicted);
+            close_connection(v->id);
+            continue;
+          }
+          pause_listener();
+        }
+        return;  // EAGAIN: all taken
+      }
       count(&ServerStatistics::accepted);
       char text[INET6_ADDRSTRLEN] = "?";
       if (address.ss_family == AF_INET) {
@@ -963,6 +997,7 @@ struct Server::Impl {
       }
       const auto now = Clock::now();
       if (now >= next_check) {
+        resume_listener_when_due(now);
         check_deadlines();
         next_check = now + std::chrono::milliseconds(20);
       }
