@@ -159,6 +159,21 @@ struct Server::Impl {
                 {"warnings", s.setup_warnings}};
   }
 
+  // The HTTP server's own counters (docs/diagnostics.md "A slow client cannot block the server").
+  Json server_json() const {
+    const http::ServerStatistics h = http.statistics();
+    return Json{{"connections", h.open},
+                {"event_streams", h.event_streams},
+                {"accepted", h.accepted},
+                {"evicted", h.evicted},
+                {"refused", h.refused},
+                {"timed_out", h.timed_out},
+                {"errors", h.errors},
+                {"busy", h.busy},
+                {"exports_rendered", exports_rendered.load()},
+                {"exports_cached", exports_cached.load()}};
+  }
+
   std::string render_status() const {
     Json j = diagnostics.read([&](const Diagnostics::State& s) { return api::status(diagnostics, s); });
     j["read_only"] = options.token.empty();
@@ -195,9 +210,7 @@ struct Server::Impl {
     const std::string_view host = req.header("host");
     if (host.empty()) return req.minor_version == 0;  // HTTP/1.0 without Host: only the socket's address
     const std::string p = ":" + std::to_string(port);
-    auto named = [&](const std::string& name) {
-      return host == name + p || (port == 80 && host == name) || host == name;
-    };
+    auto named = [&](const std::string& name) { return host == name + p || host == name; };
     const std::string& a = options.bind_address;
     if (a != "0.0.0.0" && a != "::") {
       if (named(a.find(':') != std::string::npos ? "[" + a + "]" : a)) return true;
@@ -312,7 +325,8 @@ struct Server::Impl {
                              {"servo_cycle_s", diagnostics.servo_cycle_s()},
                              {"read_only", options.token.empty()},
                              {"event_period_s", std::chrono::duration<double>(options.event_period).count()},
-                             {"runner", runner_json()}});
+                             {"runner", runner_json()},
+                             {"server", server_json()}});
     });
     http.route("GET", "/api/objects", Lane::kInline,
                [this](const Request&) { return content(objects_json, kJson); });

@@ -299,8 +299,12 @@ TEST(ServerAbuse, StopGetsThroughUnder200SlowAndIdleConnections) {
     std::printf("; /api/status %.1f ms\n", status.ms);
     for (const double ms : latencies)
       EXPECT_LT(ms, 100.0) << "a STOP took " << ms << " ms under attack (issue 21: within 100 ms)";
-    // The 60 event streams got 16 (the cap) and 503 for the rest.
+    // The 60 event streams got 16 (the cap) and 503 for the rest; /api/info shows the server's counters.
     EXPECT_LE(h.server->statistics().http.event_streams, 16u);
+    const Timed info = timed_request(h.server->port(), "GET", "/api/info", "", nullptr, 3000ms);
+    ASSERT_EQ(info.status, 200);
+    EXPECT_GE(info.body["server"].value("accepted", 0), 200);
+    EXPECT_EQ(info.body["server"].value("event_streams", 0), 16);
   }
   // Acted on: the panel's motion is a stop (or already none) and the speed setpoint falls to 0.
   const auto deadline = Clock::now() + 5s;
