@@ -423,9 +423,10 @@ constexpr std::uint64_t kListenerId = 0;
 constexpr std::uint64_t kWakeId = 1;
 
 struct Job {
-  std::uint64_t connection;
+  std::uint64_t connection = 0;
   Request request;
-  const Route* route;
+  const Route* route = nullptr;
+  bool urgent = false;
 };
 
 struct LaneQueue {
@@ -517,8 +518,9 @@ struct Server::Impl {
 
   void run_lane(LaneQueue& q) {
     if (q.idle_priority) {
-      // Exports never compete with the real-time thread (issue 21): SCHED_IDLE runs only when nothing else
-      // wants the CPU. Allowed without privileges; if refused the thread runs at normal priority.
+      // Exports must not compete with the real-time thread nor the user program (issue 21): SCHED_IDLE is
+      // the scheduler's lowest weight (below nice 19), so the thread gets the CPU that others leave. Allowed
+      // without privileges; if refused the thread runs at normal priority.
       sched_param p{};
       p.sched_priority = 0;
       pthread_setschedparam(pthread_self(), SCHED_IDLE, &p);
@@ -548,13 +550,15 @@ struct Server::Impl {
 
   bool enqueue(Lane lane, Job job) {
     LaneQueue& q = queue_of(lane);
+    job.urgent = lane == Lane::kControl && urgent && urgent(job.request);
     {
       std::lock_guard lock(q.mutex);
       if (q.jobs.size() >= q.capacity) return false;
-      if (lane == Lane::kControl && urgent && urgent(job.request))
-        q.jobs.push_front(std::move(job));
-      else
-        q.jobs.push_back(std::move(job));
+      // An urgent job goes behind the urgent ones already waiting (first come, first served among STOPs) and
+      // before every other.
+      auto at = q.jobs.end();
+      if (job.urgent) at = std::find_if(q.jobs.begin(), q.jobs.end(), [](const Job& j) { return !j.urgent; });
+      q.jobs.insert(at, std::move(job));
     }
     q.ready.notify_one();
     return true;
@@ -795,6 +799,10 @@ struct Server::Impl {
   bool process_input(Connection& c) {
     if (c.phase != Phase::kReading || c.in.empty()) return true;
     if (c.idle) {
+      // Empty lines before a request are ignored (RFC 9112 §2.2: some clients send CRLF after a body).
+      const std::size_t start = c.in.find_first_not_of("\r\n");
+      c.in.erase(0, start == std::string::npos ? c.in.size() : start);
+      if (c.in.empty()) return true;
       c.idle = false;
       c.since = Clock::now();
     }
@@ -833,7 +841,7 @@ struct Server::Impl {
     }
     if (state != RequestParser::State::kComplete) return true;
 
-    Job job{c.id, std::move(c.parser.request()), c.route};
+    Job job{c.id, std::move(c.parser.request()), c.route, false};
     c.in.erase(0, c.parser.consumed());
     c.parser.reset();
     const bool keep = keep_alive(job.request);
@@ -860,7 +868,9 @@ struct Server::Impl {
 
   void on_readable(Connection& c) {
     char buffer[16 * 1024];
-    for (;;) {
+    // At most 16 reads per event (level-triggered: the rest comes with the next one), so that a client that
+    // sends as fast as it can does not keep the event thread to itself.
+    for (int reads = 0; reads < 16; ++reads) {
       const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
       if (n > 0) {
         if (c.phase == Phase::kClosing) continue;  // dropped
