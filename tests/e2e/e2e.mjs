@@ -237,6 +237,9 @@ try {
   await page2.mouse.down();
   await until('the slide to move under the jog', async () =>
     sign * ((await shownValue(page2, 'Actual values/Actual position')) - start) > 5);
+  // The panel shows where the slide is while it moves it (issue 21).
+  await until('the live position in the panel', async () =>
+    /position -?[0-9.]+ · velocity -?[0-9.]+ · following error/.test(await page2.locator('#panel-live').textContent()));
   await page2.screenshot({ path: join(artifacts, '05-slide-jogging.png') });
   await page2.mouse.up();
   await until('the slide to stop after the jog button was released',
