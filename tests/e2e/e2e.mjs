@@ -92,6 +92,16 @@ try {
   await page.screenshot({ path: join(artifacts, '01-page-loaded.png') });
   log('page shows the axes; the program runs the conveyor');
 
+  // No flicker (issue 21): what did not change is not rewritten, so that it can be selected and copied while
+  // the events arrive (10 per second).
+  await page.evaluate(() => {
+    window.kept = { value: document.querySelector('[data-item="Dynamic limits/Velocity"] .value').firstChild,
+                    instructions: document.getElementById('panel-instructions').firstChild };
+  });
+  await sleep(600);
+  check(await page.evaluate(() => Object.values(window.kept).every(n => n !== null && n.isConnected)),
+        'unchanged values and instruction rows are not rewritten by the events');
+
   // Issue 21, stale state: the token survives a reload (session storage; the URL fragment is gone by then);
   // a program switch the server refuses (here: no token) is not shown as changed.
   await page.reload({ waitUntil: 'domcontentloaded' });
