@@ -277,6 +277,20 @@ try {
   await until('the program to run the slide again', () => ledOn(page2, 'Axis status/Enabled'), 10000);
   log('master control of the slide returned to the program');
 
+  // 7. A commissioning laptop (1024 px) and a tablet (800 px): the tabs stay in one row, nothing is wider than
+  //    the screen (issue 21).
+  for (const width of [1024, 800]) {
+    await page2.setViewportSize({ width, height: 800 });
+    await until(`one row of tabs and no sideways scrolling at ${width} px`, () => page2.evaluate(() => {
+      const tops = [...document.querySelectorAll('#tabs button')].map(b => b.offsetTop);
+      const tabs = document.getElementById('tabs');
+      return tops.every(t => t === tops[0]) && tabs.scrollWidth <= tabs.clientWidth &&
+             document.documentElement.scrollWidth <= window.innerWidth;
+    }));
+  }
+  await page2.screenshot({ path: join(artifacts, '07-tablet.png') });
+  log('one row of tabs at 1024 and 800 px');
+
   // The refused take of step 2 (409) and the switch refused without the token (401) are logged by Chromium as
   // failed resources; nothing else may appear.
   const unexpected = consoleErrors.filter(e => !e.includes('status of 409') && !e.includes('status of 401'));
