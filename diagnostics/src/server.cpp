@@ -144,7 +144,8 @@ struct Server::Impl {
   // Trace exports: only the export lane touches the cache; the counters are read by statistics().
   using ExportKey = std::tuple<std::uint32_t, std::size_t, int, int, int>;  // generation, rows, state, w, h
   std::optional<ExportKey> png_key, csv_key;
-  std::string png_cache, csv_cache;
+  // Shared with the answers being sent: one copy of each export in memory however many clients ask.
+  std::shared_ptr<const std::string> png_cache, csv_cache;
   std::atomic<std::uint64_t> exports_rendered{0}, exports_cached{0};
 
   Json runner_json() const {
@@ -265,14 +266,17 @@ struct Server::Impl {
       // collector does not wait for the drawing.
       const TraceCapture capture = diagnostics.read([](const Diagnostics::State& s) { return s.trace; });
       const std::vector<std::uint8_t> png = render_trace_png(capture, *width, *height);
-      png_cache.assign(png.begin(), png.end());
+      png_cache = std::make_shared<const std::string>(png.begin(), png.end());
       png_key =
           ExportKey{capture.generation, capture.rows(), static_cast<int>(capture.state), *width, *height};
       ++exports_rendered;
     } else {
       ++exports_cached;
     }
-    return content(png_cache, "image/png");
+    Response r;
+    r.content_type = "image/png";
+    r.shared_body = png_cache;
+    return r;
   }
 
   Response trace_csv() {
@@ -280,13 +284,16 @@ struct Server::Impl {
       return ExportKey{s.trace.generation, s.trace.rows(), static_cast<int>(s.trace.state), 0, 0};
     });
     if (csv_key != key) {
-      csv_cache = diagnostics.read([](const Diagnostics::State& s) { return api::trace_csv(s.trace); });
+      csv_cache = std::make_shared<const std::string>(
+          diagnostics.read([](const Diagnostics::State& s) { return api::trace_csv(s.trace); }));
       csv_key = key;
       ++exports_rendered;
     } else {
       ++exports_cached;
     }
-    Response r = content(csv_cache, "text/csv");
+    Response r;
+    r.content_type = "text/csv";
+    r.shared_body = csv_cache;
     r.headers.emplace_back("Content-Disposition", "attachment; filename=\"trace.csv\"");
     return r;
   }

@@ -8,7 +8,7 @@
 //   kInline   on the event thread: must not block (microseconds)
 //   kControl  control actions (panel commands); "urgent" requests go to the front of the queue
 //   kRead     JSON that is built under the diagnostics reader's lock
-//   kExport   trace exports (PNG/CSV): one at a time, at idle scheduling priority
+//   kExport   trace exports (PNG/CSV): one at a time, at low priority (nice 10)
 //
 // Defences (docs/diagnostics.md "Security and errors"): a total deadline for the request headers and one for
 // the whole request, an idle timeout for keep-alive connections, a write timeout, a global and a per-client
@@ -57,6 +57,8 @@ struct Response {
   int status = 200;
   std::string content_type = "application/json";
   std::string body;
+  // Instead of `body`: a body shared with a cache (trace exports), sent without a copy per request.
+  std::shared_ptr<const std::string> shared_body;
   std::vector<std::pair<std::string, std::string>> headers;
   // The connection becomes a server-sent event stream (text/event-stream); `body` is ignored.
   bool event_stream = false;
