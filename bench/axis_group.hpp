@@ -6,12 +6,13 @@
 // runtime evaluates the leader first (spec 07 §6.1).
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
 
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::bench {
 
@@ -25,6 +26,15 @@ class AxisGroupOf final : public techobjects::TechnologyObject {
   std::string_view name() const noexcept override { return name_; }
   std::span<techobjects::TechnologyObject* const> leaders() const noexcept override {
     return {leader_.data(), leader_[0] == nullptr ? 0u : 1u};
+  }
+  // The runtime attaches the group; each axis gets the runtime's alarm log (a source number of its own) and
+  // hands its start values to the runtime's load memory, as if it had been added alone.
+  void attach(techobjects::RuntimeServices& services) override {
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      techobjects::RuntimeServices own = services;
+      own.object_number = services.object_number * 100000u + static_cast<std::uint32_t>(i);
+      axes[i]->attach(own);
+    }
   }
   void servo(const techobjects::CycleClock& clock) noexcept override { phase(clock, 0); }
   void interpolate(const techobjects::CycleClock& clock) noexcept override { phase(clock, 1); }

@@ -1,8 +1,8 @@
-// What the web diagnostics cost the cycle (issue 7 target: page at 10 Hz plus a 32-channel trace <= 1 % of the
-// cycle): Diagnostics::cycle() — the post-interpolator hook that runs the control panels, publishes snapshots
-// and records the trace — on a machine of 4 speed axes with their simulated drives, and the whole application
-// cycle with and without it. The reader's side (poll(): taking snapshots, draining the trace ring) runs outside
-// the timed region, as it runs on the web server's thread.
+// What the web diagnostics cost the cycle (issue 7 target: page at 10 Hz plus a 32-channel trace <= 1 % of
+// the cycle): Diagnostics::cycle() — the post-interpolator hook that runs the control panels, publishes
+// snapshots and records the trace — on a machine of 4 speed axes with their simulated drives, and the whole
+// application cycle with and without it. The reader's side (poll(): taking snapshots, draining the trace
+// ring) runs outside the timed region, as it runs on the web server's thread.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -13,8 +13,8 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace {
 
@@ -29,8 +29,10 @@ struct Machine {
     for (int i = 0; i < kAxes; ++i) {
       drives::DeviceConfig device;
       device.drive_telegram = 105;
-      auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
-      axes.push_back(&runtime.emplace<techobjects::SpeedAxis>("Axis" + std::to_string(i + 1), &io, techobjects::SpeedAxisData{}));
+      auto& io = runtime.add_device(
+          std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+      axes.push_back(&runtime.emplace<techobjects::SpeedAxis>("Axis" + std::to_string(i + 1), &io,
+                                                              techobjects::SpeedAxisData{}));
       diagnostics.add(*axes.back());
     }
     power.resize(kAxes);
@@ -54,8 +56,8 @@ struct Machine {
   void start_trace() {
     diagnostics::TraceRequest r;
     for (int a = 1; a <= kAxes; ++a) {
-      for (const char* p : {"Velocity", "ActualSpeed", "VelocitySetpoint", "StatusWord", "StatusWord.X12", "ErrorWord",
-                            "telegram.drive.NIST_B", "telegram.drive.ZSW1"})
+      for (const char* p : {"Velocity", "ActualSpeed", "VelocitySetpoint", "StatusWord", "StatusWord.X12",
+                            "ErrorWord", "telegram.drive.NIST_B", "telegram.drive.ZSW1"})
         r.channels.push_back("Axis" + std::to_string(a) + "." + p);
     }
     r.post_samples = diagnostics::kMaxTraceSamples;

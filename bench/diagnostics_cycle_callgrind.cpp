@@ -11,8 +11,8 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 using namespace tomc;
 
@@ -33,8 +33,10 @@ int main() {
   for (int i = 0; i < kAxes; ++i) {
     drives::DeviceConfig device;
     device.drive_telegram = 105;
-    auto& io = rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
-    axes.push_back(&rt.emplace<techobjects::SpeedAxis>("Axis" + std::to_string(i + 1), &io, techobjects::SpeedAxisData{}));
+    auto& io =
+        rt.add_device(std::make_unique<drives::SimulatedDrive>(device, drives::SimulatedDriveParameters{}));
+    axes.push_back(&rt.emplace<techobjects::SpeedAxis>("Axis" + std::to_string(i + 1), &io,
+                                                       techobjects::SpeedAxisData{}));
     d.add(*axes.back());
     power[i].Enable = true;
     move[i].Velocity = 1500.0;
@@ -53,8 +55,8 @@ int main() {
     rt.step();
   diagnostics::TraceRequest trace;
   for (int a = 1; a <= kAxes; ++a) {
-    for (const char* p : {"Velocity", "ActualSpeed", "VelocitySetpoint", "StatusWord", "StatusWord.X12", "ErrorWord",
-                          "telegram.drive.NIST_B", "telegram.drive.ZSW1"})
+    for (const char* p : {"Velocity", "ActualSpeed", "VelocitySetpoint", "StatusWord", "StatusWord.X12",
+                          "ErrorWord", "telegram.drive.NIST_B", "telegram.drive.ZSW1"})
       trace.channels.push_back("Axis" + std::to_string(a) + "." + p);
   }
   trace.post_samples = kCycles + 1000;

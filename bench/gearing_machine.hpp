@@ -24,8 +24,8 @@
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/synchronous_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace tomc::bench {
 

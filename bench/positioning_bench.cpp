@@ -100,6 +100,11 @@ void BM_PositioningMemory(benchmark::State& state) {
     }
   }
   state.counters["sizeof_PositioningAxis"] = static_cast<double>(sizeof(tomc::techobjects::PositioningAxis));
+  {  // the object plus what it owns once in a runtime (start values in the runtime's load memory; issue 14)
+    PositioningMachine one(1, with_drive, 0);
+    state.counters["footprint_PositioningAxis"] =
+        static_cast<double>(one.group().axes.front()->memory_footprint());
+  }
   state.counters["heap_bytes_per_axis"] = per_axis;  // TO, its program, and with drive = 1 its drive
 }
 

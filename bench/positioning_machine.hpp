@@ -25,8 +25,8 @@
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::bench {
 

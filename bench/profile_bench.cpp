@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tomc/techobjects/profiles.hpp"
+#include "tomc/techobjects/motion/profiles.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "../tests/support/speed_command_object.hpp"
 #include "tomc/drives/simulated_drive.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 using namespace tomc;
 

@@ -8,10 +8,10 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/backlash.hpp"
-#include "tomc/techobjects/dynamic_filter.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/position/backlash.hpp"
+#include "tomc/techobjects/position/dynamic_filter.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace {
 

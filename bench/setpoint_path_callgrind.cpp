@@ -3,8 +3,8 @@
 // acceleration), and of the backlash compensation while a motor reverses through its backlash.
 #include <cstdio>
 
-#include "tomc/techobjects/backlash.hpp"
-#include "tomc/techobjects/dynamic_filter.hpp"
+#include "tomc/techobjects/position/backlash.hpp"
+#include "tomc/techobjects/position/dynamic_filter.hpp"
 
 using namespace tomc;
 

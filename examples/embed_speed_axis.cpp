@@ -11,9 +11,9 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 using namespace tomc;
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "tomc/diagnostics/api.hpp"
-#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/telegrams/word_fields.hpp"
 
 namespace tomc::diagnostics::api {

@@ -7,9 +7,9 @@
 #include <thread>
 
 #include "tomc/diagnostics/positioning_panel.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace tomc::diagnostics {
 
@@ -227,7 +227,7 @@ void Diagnostics::publish(Object& object, std::uint64_t cycle) noexcept {
   if (const to::AlarmList* alarms = view.alarms()) {
     for (const to::PendingAlarm& a : alarms->alarms())
       s.alarms[s.alarm_count++] = a;
-    const to::AlarmLog& log = alarms->log();
+    const to::AlarmLogView log = alarms->log();
     const std::uint64_t last = log.last_sequence();
     const std::uint64_t after = last > kEventsPerSnapshot ? last - kEventsPerSnapshot : 0;
     s.event_count = static_cast<std::uint32_t>(log.copy_since(after, s.events));

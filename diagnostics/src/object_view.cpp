@@ -3,7 +3,7 @@
 
 #include <charconv>
 
-#include "tomc/techobjects/positioning_variables.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/telegrams/layout.hpp"
 
 namespace tomc::diagnostics {

@@ -18,9 +18,9 @@
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_stop.hpp"
-#include "tomc/techobjects/alarms.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/axis/alarms.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace {
 

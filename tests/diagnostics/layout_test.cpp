@@ -8,8 +8,8 @@
 
 #include "tomc/diagnostics/layout.hpp"
 #include "tomc/diagnostics/object_view.hpp"
-#include "tomc/techobjects/positioning_variables.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "diagnostics_fixture.hpp"
-#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/axis/error_ids.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::testing {
 

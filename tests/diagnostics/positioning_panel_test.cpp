@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "positioning_panel_fixture.hpp"
-#include "tomc/techobjects/error_ids.hpp"
+#include "tomc/techobjects/axis/error_ids.hpp"
 
 namespace {
 

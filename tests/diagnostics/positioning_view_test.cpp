@@ -8,9 +8,9 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace {
 

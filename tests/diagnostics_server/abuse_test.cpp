@@ -33,7 +33,7 @@
 #include "../diagnostics/diagnostics_fixture.hpp"
 #include "tomc/diagnostics/http_server.hpp"
 #include "tomc/diagnostics/server.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace {
 

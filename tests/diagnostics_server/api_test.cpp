@@ -16,7 +16,7 @@
 #include "../diagnostics/positioning_panel_fixture.hpp"
 #include "tomc/diagnostics/api.hpp"
 #include "tomc/diagnostics/server.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace {
 

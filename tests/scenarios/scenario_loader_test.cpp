@@ -145,11 +145,10 @@ TEST(ScenarioConfig, LoaderWritesStartValues) {
 // ---- drive ----
 
 TEST(ScenarioDrive, AdapterAndTelegram) {
-  EXPECT_NE(
-      problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
-          .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
-                "\"dds_gateway\""),
-      std::string::npos);
+  EXPECT_NE(problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
+                .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
+                      "\"dds_gateway\""),
+            std::string::npos);
   EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")).find("drive.adapter: 'analog'"),
             std::string::npos);
   EXPECT_EQ(problem_of(with_drive(R"({"adapter": "simulated"})")),
@@ -605,6 +604,38 @@ TEST(ScenarioLoader, SynchronousMotionTraceNames) {
             "trace[0]: 'StatusSynchronizedMotion.StatusWord.X32' is not a variable of TO_SynchronousAxis F");
   EXPECT_EQ(problem_of(traced("L.StatusSynchronizedMotion.FunctionState")),
             "trace[0]: 'StatusSynchronizedMotion.FunctionState' is not a variable of TO_PositioningAxis L");
+}
+
+// LeadingValueInterconnections belongs beside 'config' (decision Y2). Put inside 'config' of a synchronous
+// axis, the message names the right TO type and where the key belongs (before issue 14: "unknown variable of
+// TO_PositioningAxis"); on another TO type it says that only a synchronous axis has it.
+TEST(ScenarioLoader, MisplacedLeadingValueInterconnections) {
+  Json d = base();
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "L", "type": "TO_PositioningAxis",
+    "config": { "VirtualAxis.Mode": 1 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "F", "type": "TO_SynchronousAxis",
+    "config": { "VirtualAxis.Mode": 1, "LeadingValueInterconnections": [ { "Leader": "L" } ] } })"));
+  const auto problems = problems_of(d);
+  const auto found = std::find_if(problems.begin(), problems.end(), [](const std::string& p) {
+    return p.find("config.LeadingValueInterconnections") != std::string::npos;
+  });
+  ASSERT_NE(found, problems.end());
+  EXPECT_EQ(
+      *found,
+      "technology_objects[2].config.LeadingValueInterconnections: not a variable of TO_SynchronousAxis: "
+      "LeadingValueInterconnections belongs beside 'config', at "
+      "technology_objects[2].LeadingValueInterconnections");
+
+  Json p = base();
+  p["technology_objects"].push_back(Json::parse(R"({ "name": "P", "type": "TO_PositioningAxis",
+    "config": { "VirtualAxis.Mode": 1, "LeadingValueInterconnections": [] } })"));
+  const auto positioning = problems_of(p);
+  const auto other = std::find_if(positioning.begin(), positioning.end(), [](const std::string& s) {
+    return s.find("config.LeadingValueInterconnections") != std::string::npos;
+  });
+  ASSERT_NE(other, positioning.end());
+  EXPECT_NE(other->find("only a TO_SynchronousAxis has LeadingValueInterconnections"), std::string::npos)
+      << *other;
 }
 
 TEST(ScenarioLoader, Expectations) {

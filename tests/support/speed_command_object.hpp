@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string_view>
 
-#include "tomc/techobjects/drive_connection.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/drive/drive_connection.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::testing {
 

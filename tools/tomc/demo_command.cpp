@@ -27,7 +27,7 @@
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/scenario/machine.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace tomc::cli {
 

@@ -23,10 +23,10 @@
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace tomc::cli {
 

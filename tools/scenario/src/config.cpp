@@ -9,8 +9,8 @@
 
 #include "gateway_adapter_detail.hpp"
 #include "json_reader.hpp"
-#include "tomc/techobjects/positioning_variables.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 #include "tomc/telegrams/layout.hpp"
 
 namespace tomc::scenario {
@@ -79,7 +79,17 @@ void load_config(const Json& config, std::string_view path, std::string_view typ
     const std::string at = join_path(path, key);
     const to::VariableInfo* info = find(key);
     if (info == nullptr) {
-      if (value.is_object()) {
+      if (key == "LeadingValueInterconnections") {
+        // Not a data-block variable but the TO's interconnections (decision Y2): say where it belongs.
+        const std::string_view parent = path.substr(0, path.rfind('.'));
+        problems.add(at, type_name == "TO_SynchronousAxis"
+                             ? "not a variable of TO_SynchronousAxis: LeadingValueInterconnections belongs "
+                               "beside 'config', at " +
+                                   std::string(parent) + ".LeadingValueInterconnections"
+                             : "not a variable of " + std::string(type_name) +
+                                   ": only a TO_SynchronousAxis has LeadingValueInterconnections (beside "
+                                   "its 'config')");
+      } else if (value.is_object()) {
         // {"DynamicLimits": {"MaxVelocity": ...}}: the format wants the full path as one key.
         problems.add(at, of + "; keys are full data-block paths such as '" + key + "." +
                              (value.empty() ? std::string("...") : value.begin().key()) + "'");
@@ -109,9 +119,9 @@ void load_speed_axis_config(const Json& config, std::string_view path, to::Speed
 }
 
 void load_positioning_axis_config(const Json& config, std::string_view path, to::PositioningAxisData& data,
-                                  Problems& problems) {
-  load_config(config, path, "TO_PositioningAxis", to::positioning_axis_variables(),
-              &to::find_positioning_axis_variable, data, problems);
+                                  Problems& problems, std::string_view type_name) {
+  load_config(config, path, type_name, to::positioning_axis_variables(), &to::find_positioning_axis_variable,
+              data, problems);
 }
 
 void load_external_encoder_config(const Json& config, std::string_view path, to::ExternalEncoderData& data,

@@ -22,8 +22,8 @@
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
 #include "tomc/instructions/mc_write_parameter.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::scenario::detail {
 namespace {

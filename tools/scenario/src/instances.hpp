@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "tomc/scenario/machine.hpp"
-#include "tomc/techobjects/leading_value.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
 
 namespace tomc::scenario::detail {
 

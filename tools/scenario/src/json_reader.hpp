@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "tomc/scenario/config.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace tomc::scenario::detail {
 

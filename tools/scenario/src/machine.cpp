@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "json_reader.hpp"
-#include "tomc/techobjects/axis_units.hpp"
-#include "tomc/techobjects/positioning_variables.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
 
 namespace tomc::scenario {
 
@@ -254,7 +254,9 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         [[fallthrough]];
       case TechnologyObjectKind::kPositioningAxis:
         if (config != nullptr)
-          load_positioning_axis_config(*config, r.path_of("config"), positioning_data, problems);
+          load_positioning_axis_config(
+              *config, r.path_of("config"), positioning_data, problems,
+              *kind == TechnologyObjectKind::kSynchronousAxis ? "TO_SynchronousAxis" : "TO_PositioningAxis");
         drive_like_axis(positioning_data, p);
         needs_drive = positioning_data.VirtualAxis.Mode != to::kModeOn &&
                       positioning_data.Simulation.Mode != to::kModeOn;

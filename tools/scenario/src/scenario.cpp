@@ -20,14 +20,14 @@
 #include "json_reader.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/machine.hpp"
-#include "tomc/techobjects/axis_units.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/positioning_variables.hpp"
-#include "tomc/techobjects/retentive_store.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/retentive_store.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace tomc::scenario {
 namespace {

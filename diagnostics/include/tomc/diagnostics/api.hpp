@@ -18,7 +18,7 @@
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/panel.hpp"
 #include "tomc/diagnostics/trace.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace tomc::diagnostics::api {
 

@@ -33,8 +33,8 @@
 #include "tomc/diagnostics/panel.hpp"
 #include "tomc/diagnostics/trace.hpp"
 #include "tomc/diagnostics/triple_buffer.hpp"
-#include "tomc/techobjects/alarms.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/axis/alarms.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::techobjects {
 class SpeedAxis;

@@ -18,8 +18,8 @@
 #include <string_view>
 #include <vector>
 
-#include "tomc/techobjects/status_bits.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/status_bits.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace tomc::diagnostics {
 

@@ -17,10 +17,10 @@
 
 #include "tomc/diagnostics/probe.hpp"
 #include "tomc/drives/drive_adapter.hpp"
-#include "tomc/techobjects/alarms.hpp"
-#include "tomc/techobjects/drive_connection.hpp"
-#include "tomc/techobjects/status_bits.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/axis/alarms.hpp"
+#include "tomc/techobjects/datablocks/status_bits.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
+#include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/telegrams/signals.hpp"
 
 namespace tomc::diagnostics {

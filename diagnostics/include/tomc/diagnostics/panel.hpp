@@ -25,9 +25,9 @@
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
-#include "tomc/techobjects/control_priority.hpp"
-#include "tomc/techobjects/error_ids.hpp"
-#include "tomc/techobjects/runtime.hpp"
+#include "tomc/techobjects/axis/control_priority.hpp"
+#include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
 
 namespace tomc::diagnostics {
 

@@ -16,7 +16,7 @@
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::diagnostics {
 

@@ -19,7 +19,7 @@
 
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/http_server.hpp"
-#include "tomc/techobjects/realtime_runner.hpp"
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
 
 namespace tomc::diagnostics {
 

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "tomc/techobjects/job.hpp"
+#include "tomc/techobjects/axis/job.hpp"
 
 namespace tomc::instructions {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
-#include "tomc/techobjects/synchronous_axis.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace tomc::instructions {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace tomc::instructions {
 

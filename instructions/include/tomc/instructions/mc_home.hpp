@@ -1,10 +1,11 @@
 #pragma once
 // MC_Home (spec 03 §4.3): home the technology object or set its reference. ReferenceMarkPosition is valid
-// with Done.
+// with Done (seed 004 §9.3.1 "valido se Done = TRUE") and belongs to this instance's job: it is taken once,
+// in the call that first shows Done, so a later homing by another instance does not change it.
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::instructions {
 
@@ -28,8 +29,11 @@ struct MC_Home {
           return axis.home(techobjects::HomeInputs{Position, Mode, Sensor});
         },
         [&](techobjects::JobId id) { return axis.job_status(id); });
+    const bool was_done = Done;
     show_outputs(*this, handshake_.outputs());
-    if (Done) ReferenceMarkPosition = axis.reference_mark_position();
+    // The job completed in the last MC_Interpolator; no other homing job can have completed since (one
+    // homing job aborts another, and a new one starts in the next MC_Interpolator at the earliest).
+    if (Done && !was_done) ReferenceMarkPosition = axis.reference_mark_position();
   }
 
  private:

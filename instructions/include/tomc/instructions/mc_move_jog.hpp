@@ -2,7 +2,7 @@
 // MC_MoveJog (spec 03 §3.4 J1..J5, §4.9): level-controlled jogging.
 #include <cstdint>
 
-#include "tomc/techobjects/speed_axis.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
 namespace tomc::instructions {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::instructions {
 

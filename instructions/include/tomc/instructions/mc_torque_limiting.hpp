@@ -3,7 +3,7 @@
 // and Mode are taken on every call while Enable is TRUE; no Done and no CommandAborted (spec 03 L3).
 #include <cstdint>
 
-#include "tomc/techobjects/torque_limiting.hpp"
+#include "tomc/techobjects/axis/torque_limiting.hpp"
 
 namespace tomc::instructions {
 

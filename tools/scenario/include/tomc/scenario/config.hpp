@@ -15,9 +15,9 @@
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
-#include "tomc/techobjects/external_encoder_data.hpp"
-#include "tomc/techobjects/positioning_axis_data.hpp"
-#include "tomc/techobjects/speed_axis_data.hpp"
+#include "tomc/techobjects/datablocks/external_encoder_data.hpp"
+#include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
+#include "tomc/techobjects/datablocks/speed_axis_data.hpp"
 
 namespace tomc::scenario {
 
@@ -51,9 +51,11 @@ std::string join_path(std::string_view base, std::string_view key);
 void load_speed_axis_config(const Json& config, std::string_view path, techobjects::SpeedAxisData& data,
                             Problems& problems);
 // The same for TO_PositioningAxis (positioning_axis_variables(): "Sensor[1].Parameter.StepsPerRevolution")
-// and TO_ExternalEncoder.
+// and TO_ExternalEncoder. A TO_SynchronousAxis has the positioning axis' data block; `type_name` names the TO
+// type in the messages.
 void load_positioning_axis_config(const Json& config, std::string_view path,
-                                  techobjects::PositioningAxisData& data, Problems& problems);
+                                  techobjects::PositioningAxisData& data, Problems& problems,
+                                  std::string_view type_name = "TO_PositioningAxis");
 void load_external_encoder_config(const Json& config, std::string_view path,
                                   techobjects::ExternalEncoderData& data, Problems& problems);
 

@@ -15,12 +15,12 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/config.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
-#include "tomc/techobjects/external_encoder.hpp"
-#include "tomc/techobjects/positioning_axis.hpp"
-#include "tomc/techobjects/runtime.hpp"
-#include "tomc/techobjects/speed_axis.hpp"
-#include "tomc/techobjects/synchronous_axis.hpp"
-#include "tomc/techobjects/variables.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace tomc::scenario {
 

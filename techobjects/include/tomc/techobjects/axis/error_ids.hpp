@@ -1,0 +1,69 @@
+#pragma once
+// The ErrorIDs tomc's instructions report. Chapter 9 of the manual names only a few (spec 03 §5); the others
+// wait for the separate Siemens "Alarms and error IDs" manual, so tomc defines its own values in a block of
+// its own (16#81xx) and docs/errors.md lists every one with its meaning and source.
+
+#include <cstdint>
+#include <string_view>
+
+namespace tomc::techobjects::error_id {
+
+inline constexpr std::uint16_t kNone = 0x0000;
+// From the manual (spec 03 §5):
+inline constexpr std::uint16_t kAbortedByAlarmReaction =
+    0x8001;  // a technology alarm's stop reaction ended the job
+inline constexpr std::uint16_t kJogWrongDirection = 0x8007;   // JogForward and JogBackward both TRUE
+inline constexpr std::uint16_t kControlPanelActive = 0x8012;  // the axis control panel has control priority
+inline constexpr std::uint16_t kLifebeatExpired = 0x8013;     // the panel's lifebeat monitoring time elapsed
+// Synchronous operation, numbered as in the manual's error list (spec 07 §1.10, ALM8):
+inline constexpr std::uint16_t kInvalidRatioNumerator = 0x8017;    // RatioNumerator = 0
+inline constexpr std::uint16_t kInvalidRatioDenominator = 0x8018;  // RatioDenominator < 1
+inline constexpr std::uint16_t kRecursiveLeadingValue = 0x8019;    // the follower leads its own leader
+inline constexpr std::uint16_t kInvalidMasterStartDistance =
+    0x8026;  // MasterStartDistance / MasterStopDistance
+inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
+inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
+inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;   // MC_GearOut stop position not reachable
+inline constexpr std::uint16_t kNoGearing = 0x8077;              // MC_GearOut without MC_GearIn/GearInPos
+inline constexpr std::uint16_t kHomingDuringGearInPos = 0x80A1;  // MC_Home while MC_GearInPos is active
+// tomc's own (spec 03 §5 [IMPL]):
+inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"
+inline constexpr std::uint16_t kLockedByStop = 0x8102;    // an MC_Stop with Execute = TRUE blocks motion jobs
+inline constexpr std::uint16_t kAxisNotEnabled = 0x8103;  // the TO is not enabled (MC_Power.Status = FALSE)
+inline constexpr std::uint16_t kAxisBlockedByAlarm = 0x8104;      // an alarm reaction blocks the TO
+inline constexpr std::uint16_t kAxisNotHomed = 0x8105;            // MC_MoveAbsolute needs a homed axis
+inline constexpr std::uint16_t kEncoderNotValid = 0x8106;         // the encoder's actual value is not valid
+inline constexpr std::uint16_t kHomingModeNotAvailable = 0x8107;  // MC_Home mode not available on this TO
+inline constexpr std::uint16_t kNotPositionControlled =
+    0x8108;                                     // the job needs position-controlled operation
+inline constexpr std::uint16_t kBusy = 0x8109;  // MC_SaveAbsoluteEncoderData: a backup is still being written
+inline constexpr std::uint16_t kBackupFailed =
+    0x810A;  // MC_SaveAbsoluteEncoderData: the file could not be written
+inline constexpr std::uint16_t kInvalidVelocity = 0x8110;      // Velocity = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidAcceleration = 0x8111;  // Acceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidDeceleration = 0x8112;  // Deceleration = 0.0 or not finite
+inline constexpr std::uint16_t kInvalidJerk = 0x8113;          // Jerk not finite
+inline constexpr std::uint16_t kInvalidMode = 0x8114;          // Mode out of range (e.g. MC_Stop.Mode = 1)
+inline constexpr std::uint16_t kInvalidDirection = 0x8115;     // Direction out of range
+inline constexpr std::uint16_t kInvalidStartMode = 0x8116;     // MC_Power.StartMode not 0/1
+inline constexpr std::uint16_t kInvalidStopMode = 0x8117;      // MC_Power.StopMode not 0..3
+inline constexpr std::uint16_t kInvalidPosition =
+    0x8118;  // Position/Distance not finite, or outside the modulo range
+inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;         // BufferMode not 0/1
+inline constexpr std::uint16_t kInvalidSensor = 0x811A;             // MC_Home.Sensor names no usable encoder
+inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.Restart while enabled or busy
+inline constexpr std::uint16_t kInvalidParameterNumber =
+    0x8130;  // MC_WriteParameter: index not writable on this TO
+inline constexpr std::uint16_t kInvalidParameterValue = 0x8131;  // MC_WriteParameter: value not permitted
+inline constexpr std::uint16_t kInvalidBitMask = 0x8132;      // MC_SetAxisSTW: mask outside the writable bits
+inline constexpr std::uint16_t kNoDriveTelegram = 0x8133;     // MC_SetAxisSTW on a virtual/simulated axis
+inline constexpr std::uint16_t kInvalidTorqueLimit = 0x8140;  // MC_TorqueLimiting.Limit not finite or > 1E12
+// MC_TorqueLimiting Mode 0: the drive telegram carries no torque reduction (MOMRED, telegrams 10x)
+inline constexpr std::uint16_t kNoTorqueReduction = 0x8141;
+// MC_TorqueLimiting Mode 1: Clamping.PositionTolerance >= Clamping.FollowingErrorDeviation, or the
+// following-error monitoring's MaxValue <= Clamping.FollowingErrorDeviation (spec 01 §8.11)
+inline constexpr std::uint16_t kInvalidClampingConfiguration = 0x8142;
+
+std::string_view describe(std::uint16_t error_id) noexcept;
+
+}  // namespace tomc::techobjects::error_id

@@ -1,0 +1,121 @@
+#pragma once
+// The PROFIdrive side of an axis technology object (spec 01 §3, §6; spec 06 §4, §5): decodes the actual
+// frames of its device, follows the drive state machine with the STW1 sequence, runs both sign-of-life
+// directions and the link supervision, and encodes the setpoint frames. The speed/positioning axes of later
+// layers own one.
+
+#include <cstdint>
+#include <string>
+
+#include "tomc/drives/drive_adapter.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/telegrams/codec.hpp"
+#include "tomc/telegrams/drive_state.hpp"
+#include "tomc/telegrams/sign_of_life.hpp"
+
+namespace tomc::techobjects {
+
+struct DriveConnectionConfig {
+  double reference_speed_rpm = 3000.0;  // <TO>.Actor.DriveParameter.ReferenceSpeed (= p2000)
+  double reference_torque_nm = 4.0;     // <TO>.Actor.DriveParameter.ReferenceTorque (= p2003)
+  // Isochronous operation: sign-of-life generated in STW2 and monitored in ZSW2 (spec 06 §5.1; seed L11468).
+  bool isochronous = true;
+  telegrams::SignOfLifeMonitorConfig sign_of_life{};
+  // Cycles in a row without a fresh actual frame before the link counts as lost.
+  std::uint32_t link_loss_tolerance_cycles = 3;
+};
+
+// Ti, To, T_DC of isochronous operation in seconds (spec 01 §3.5; MC_WriteParameter 1010/1011/1012): they
+// enter the following error of position-controlled axes.
+struct CommunicationTimes {
+  double Ti = 0.0;
+  double To = 0.0;
+  double Tdc = 0.0;
+};
+
+// Why StatusDrive.CommunicationOK is FALSE (seed L11468), the first reason found.
+enum class CommunicationFault : std::uint8_t {
+  kNone,
+  kLinkLost,          // no fresh actual frames within the tolerance
+  kNotControlled,     // ZSW1.9 "control requested" = 0
+  kDriveFault,        // ZSW1.3 fault present
+  kSignOfLifeFailed,  // slave sign-of-life monitoring tripped (isochronous only)
+};
+std::string_view to_string(CommunicationFault fault) noexcept;
+
+class DriveConnection {
+ public:
+  DriveConnection() = default;
+  // `device` must stay alive as long as this connection (the runtime owns it).
+  DriveConnection(DeviceIo& device, const DriveConnectionConfig& config);
+
+  // TO restart (MC_Reset Restart): new reference values, the user's STW bits cleared (spec 03 §4.14); the
+  // link itself (sign-of-life counters, sequencer) runs on undisturbed, as the drive's monitor expects.
+  void restart(const DriveConnectionConfig& config) noexcept;
+
+  // ---- MC_Servo ----
+  void read() noexcept;   // first, after the runtime read the actual frames
+  void write() noexcept;  // last: compose and encode this cycle's setpoints
+
+  // ---- what the TO asks of the drive ----
+  void request(telegrams::DriveRequest request) noexcept { request_ = request; }
+  telegrams::DriveRequest requested() const noexcept { return request_; }
+  void acknowledge() noexcept;  // one STW1.7 edge, and resets the sign-of-life supervision
+  void set_speed_setpoint(double rpm) noexcept { speed_setpoint_rpm_ = rpm; }
+  double speed_setpoint() const noexcept { return speed_setpoint_rpm_; }
+  // Signals beyond STW1/STW2 sign-of-life/NSOLL (Gx_STW, MOMRED, XERR, KPC, telegram 750, user STW bits).
+  telegrams::SetpointSignals& drive_setpoint() noexcept { return drive_sp_; }
+  const telegrams::SetpointSignals& drive_setpoint() const noexcept { return drive_sp_; }
+  telegrams::SetpointSignals& supplementary_setpoint() noexcept { return supplementary_sp_; }
+  const telegrams::SetpointSignals& supplementary_setpoint() const noexcept { return supplementary_sp_; }
+  telegrams::SetpointSignals& encoder_setpoint(int index) noexcept { return encoder_sp_[index == 0 ? 0 : 1]; }
+  const telegrams::SetpointSignals& encoder_setpoint(int index) const noexcept {
+    return encoder_sp_[index == 0 ? 0 : 1];
+  }
+
+  // ---- what the drive reports ----
+  const telegrams::ActualSignals& drive_actual() const noexcept { return drive_act_; }
+  const telegrams::ActualSignals& supplementary_actual() const noexcept { return supplementary_act_; }
+  const telegrams::ActualSignals& encoder_actual(int index) const noexcept {
+    return encoder_act_[index == 0 ? 0 : 1];
+  }
+  const telegrams::DriveStatus& drive_status() const noexcept { return status_; }
+  bool in_operation() const noexcept;  // StatusDrive.InOperation: S4 (spec 06 §4.3 [UNCONFIRMED] -> ZSW1.2)
+  bool communication_ok() const noexcept { return communication_fault_ == CommunicationFault::kNone; }
+  CommunicationFault communication_fault() const noexcept { return communication_fault_; }
+  double actual_speed_rpm() const noexcept { return actual_speed_rpm_; }
+  telegrams::SignOfLifeStatus slave_sign_of_life() const noexcept { return slave_monitor_.status(); }
+  std::uint8_t master_sign_of_life() const noexcept { return master_.current(); }
+  std::uint32_t cycles_without_fresh_frame() const noexcept { return missed_; }
+  const drives::DeviceConfig& device_config() const noexcept { return device_->adapter->config(); }
+  const DriveConnectionConfig& config() const noexcept { return config_; }
+
+ private:
+  DeviceIo* device_ = nullptr;
+  DriveConnectionConfig config_{};
+  std::array<telegrams::TelegramCodec, drives::kSlotCount> setpoint_codecs_{};
+  std::array<telegrams::TelegramCodec, drives::kSlotCount> actual_codecs_{};
+
+  telegrams::SetpointSignals drive_sp_{};
+  telegrams::SetpointSignals supplementary_sp_{};
+  std::array<telegrams::SetpointSignals, 2> encoder_sp_{};
+  telegrams::ActualSignals drive_act_{};
+  telegrams::ActualSignals supplementary_act_{};
+  std::array<telegrams::ActualSignals, 2> encoder_act_{};
+
+  telegrams::DriveRequest request_ = telegrams::DriveRequest::kOff;
+  telegrams::Stw1Sequencer sequencer_{};
+  telegrams::SignOfLifeGenerator master_{};
+  telegrams::SignOfLifeMonitor slave_monitor_{};
+  telegrams::DriveStatus status_{};
+  CommunicationFault communication_fault_ = CommunicationFault::kLinkLost;
+  double speed_setpoint_rpm_ = 0.0;
+  double actual_speed_rpm_ = 0.0;
+  std::uint32_t missed_ = 0;
+  std::uint32_t peer_restarts_ = 0;  // LinkHealth::peer_restarts last seen
+  bool ever_fresh_ = false;
+  bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
+  bool has_zsw2_ = false;
+};
+
+}  // namespace tomc::techobjects

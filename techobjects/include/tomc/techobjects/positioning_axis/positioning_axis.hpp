@@ -1,0 +1,366 @@
+#pragma once
+// TO_PositioningAxis (spec 01 §2–§8, spec 02 §2–§7, spec 03 §4, spec 04 column P): an axis that positions a
+// load in user units. It assembles the issue-5 components — actual-value chain (encoder counts -> user units,
+// modulo), position controller (Kv, precontrol, DSC), following-error / positioning / standstill monitors,
+// software and hardware limit switches — around the job machinery the speed axis has: MC_Power, MC_Reset,
+// alarm reactions, the §9.19.1 matrix, MC_Stop and MC_Halt. Motion jobs: MC_MoveAbsolute, MC_MoveRelative
+// (BufferMode 0/1), MC_MoveVelocity, MC_MoveJog, MC_Home (direct modes 0, 1, 11, 12).
+//
+// Units: the data block holds positions in Units.LengthUnit, velocities in Units.VelocityUnit; internally the
+// axis computes in position units per second (axis_units.hpp). Positions are kept continuous internally; the
+// data block shows them modulo-wrapped with their modulo cycle counters (spec 01 §2.4).
+//
+// Cycle: MC_Servo reads the drive and encoder, computes the actual values, runs the position controller on
+// the setpoint of the last MC_Interpolator, and the servo-rate monitors; MC_Interpolator takes the jobs,
+// applies alarm reactions, generates the setpoint, runs the software-limit look-ahead and updates the status.
+// Both are noexcept and allocate nothing.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "tomc/techobjects/axis/alarms.hpp"
+#include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/control_priority.hpp"
+#include "tomc/techobjects/axis/job.hpp"
+#include "tomc/techobjects/axis/job_inputs.hpp"
+#include "tomc/techobjects/axis/job_priority.hpp"
+#include "tomc/techobjects/axis/job_table.hpp"
+#include "tomc/techobjects/axis/memory_footprint.hpp"
+#include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
+#include "tomc/techobjects/drive/drive_connection.hpp"
+#include "tomc/techobjects/drive/encoder_channel.hpp"
+#include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/position/actual_value_chain.hpp"
+#include "tomc/techobjects/position/backlash.hpp"
+#include "tomc/techobjects/position/dynamic_filter.hpp"
+#include "tomc/techobjects/position/limit_switches.hpp"
+#include "tomc/techobjects/position/passive_homing.hpp"
+#include "tomc/techobjects/position/position_control.hpp"
+#include "tomc/techobjects/position/position_monitoring.hpp"
+#include "tomc/techobjects/runtime/retained_encoder_data.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
+#include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
+
+namespace tomc::techobjects {
+
+class PositioningAxis : public TechnologyObject, public LeadingValueSource {
+ public:
+  // `device` is the drive (and its encoders); nullptr for a virtual axis. Throws std::invalid_argument for
+  // start values the data block does not permit, or mechanics/units that do not fit together, naming the
+  // variable path.
+  PositioningAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
+                  const DriveConnectionConfig& drive = {});
+
+  // ---- TechnologyObject ----
+  std::string_view name() const noexcept override { return name_; }
+  void servo(const CycleClock& clock) noexcept override;
+  void attach(RuntimeServices& services) override {
+    core_.alarms.attach(services.alarm_log, services.object_number);
+    start_.move_to(services.start_values);
+  }
+  void interpolate(const CycleClock& clock) noexcept override;
+
+  // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes() + dynamic_filter_.history_bytes();
+  }
+
+  // ---- the data block ----
+  const PositioningAxisData& data() const noexcept { return db_; }
+  WriteResult write(std::string_view path, double value) noexcept;
+  WriteResult write_start_value(std::string_view path, double value) noexcept;
+  double read(std::string_view path) const noexcept;
+  const AlarmList& alarms() const noexcept { return core_.alarms; }
+  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
+  const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
+  AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
+  const AxisDigitalInputs& digital_inputs() const noexcept { return inputs_; }
+
+  // ---- the axis control panel (spec 02 §9.2), as on the speed axis ----
+  ControlPriority& control_priority() noexcept { return core_.control; }
+  const ControlPriority& control_priority() const noexcept { return core_.control; }
+  // Precondition of taking control priority: the user program has released the axis (MC_Power.Enable =
+  // FALSE) and the TO is disabled (decision W1).
+  bool program_released() const noexcept { return !core_.enable && core_.phase == PowerPhase::kDisabled; }
+
+  // ---- jobs (called by instructions from the user program) ----
+  PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
+  Submission reset(bool restart) noexcept;
+  Submission home(const HomeInputs& in) noexcept;
+  Submission move_absolute(const MoveAbsoluteInputs& in) noexcept;
+  Submission move_relative(const MoveRelativeInputs& in) noexcept;
+  Submission move_velocity(const MoveVelocityInputs& in) noexcept;
+  Submission halt(const HaltInputs& in) noexcept;
+  Submission stop(const StopInputs& in) noexcept;
+  void stop_execute(JobId job, bool execute) noexcept;
+  Submission jog(JobId running, const JogInputs& in) noexcept;
+  Submission set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                          std::uint16_t stw2_mask) noexcept;
+  // 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart), 1020
+  // Actor.RemoveEnableReaction (immediately) — spec 03 §4.15.
+  Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // MC_TorqueLimiting (spec 03 §4.18.3), called on every user-program cycle: Mode 0 limits the drive's
+  // torque/force through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
+  TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
+  JobStatus job_status(JobId id) const noexcept;
+  // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
+  double reference_mark_position() const noexcept { return reference_mark_position_; }
+
+  // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
+  // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
+  // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
+  using RetainedEncoderData = techobjects::RetainedEncoderData;
+  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  bool absolute_encoder() const noexcept;
+  // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
+  void restore_retained(const RetainedEncoderData& data) noexcept;
+  // Before Runtime::start(): the retained data could not be restored (1 backup missing, 2 corrupt, 3 no
+  // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
+  void report_adjustment_lost(std::uint32_t cause) noexcept;
+
+  // ---- as a leading value (spec 07 §1.3, §1.4) ----
+  LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
+  ModuloRange leading_value_modulo() const noexcept override;
+
+  // ---- for tests, diagnostics and the synchronous axis ----
+  // The setpoint the interpolator generated last (continuous position, before modulo wrap).
+  const MotionState& setpoint() const noexcept { return setpoint_; }
+  // The same after the dynamic filter, as the position controller used it in the last servo cycle.
+  const MotionState& filtered_setpoint() const noexcept { return filtered_; }
+  const BacklashCompensation& backlash() const noexcept { return backlash_; }
+  const DynamicFilter& dynamic_filter() const noexcept { return dynamic_filter_; }
+  double continuous_actual_position() const noexcept { return actual_position_; }
+  bool position_controlled() const noexcept { return position_controlled_; }
+  const AxisUnitFactors& units() const noexcept { return units_; }
+  const CommunicationTimes& communication_times() const noexcept { return core_.communication_times; }
+
+ protected:
+  using JobKind = AxisJobKind;
+  // What drives the setpoint this cycle.
+  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
+
+  struct Motion {  // a base motion job (running or appended)
+    JobId id = 0;
+    JobKind kind = JobKind::kNone;
+    ProfileLimits limits{};        // resolved (position units), velocity before override
+    double command_velocity = 0;   // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp
+    double target = 0;             // positioning: continuous target position
+    double distance = 0;           // appended positioning: target relative to the end of the running job
+    bool relative_to_end = false;  // appended MoveRelative: Distance counts from the running job's target
+    std::int32_t direction = 1;    // appended MoveAbsolute on a modulo axis
+    double absolute_position = 0;  // appended MoveAbsolute: the requested position
+    double planned_velocity = 0;   // the velocity limit the profile was planned with (override changes)
+    bool jog_stopping = false;
+    bool position_controlled = true;
+    bool interpolation_done = false;  // positioning: the setpoint has reached the target
+  };
+
+  // homing (positioning_axis_homing.cpp)
+  enum class HomingPhase : std::uint8_t {
+    kIdle,
+    kApproach,       // towards the reference cam / digital input at ApproachVelocity (ActiveHoming.Mode 1, 2)
+    kLeaveInput,     // digital input: back off it, against the homing direction, to meet the mark edge
+    kSearchEdge,     // digital input: towards the mark edge in the homing direction at ReferencingVelocity
+    kSearchCamExit,  // cam + zero mark: leaving the cam in the homing direction arms the zero-mark search
+    kSearchMark,     // zero mark armed, in the homing direction at ReferencingVelocity
+    kToHome,         // homed: to the home position at ApproachVelocity
+  };
+  struct ActiveHomingJob {
+    HomingPhase phase = HomingPhase::kIdle;
+    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+    double home_position = 0.0;     // MC_Home.Position (3) or Homing.HomePosition (5)
+    double mark_value = 0.0;        // home position - HomePositionOffset
+    double direction = 1.0;         // homing direction (ActiveHoming.Direction)
+    double travel_direction = 1.0;  // the direction of the present search motion
+    bool mark_on_entering = false;  // digital input: the mark is the edge onto the input
+    int limit_reversals = 0;
+  };
+  struct PassiveHomingJob {
+    JobId id = 0;
+    double value = 0.0;  // position assigned at the mark
+  };
+  void start_active_homing(JobId id, double home_position) noexcept;
+  void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
+  void run_homing() noexcept;      // MC_Interpolator
+  void run_passive_homing() noexcept;
+  void end_passive_homing(JobState state, std::uint16_t error_id = 0) noexcept;
+  void homing_move(double direction, double velocity) noexcept;
+  void assign_reference(double mark_position, double value, double home_position) noexcept;
+  void fail_homing(std::uint32_t cause) noexcept;
+  bool input_active() const noexcept;
+  void store_adjustment() noexcept;
+
+  static constexpr bool synchronous_kind(JobKind k) noexcept {
+    return k == JobKind::kGearIn || k == JobKind::kGearInPos || k == JobKind::kGearInVelocity ||
+           k == JobKind::kGearOut;
+  }
+
+  // ---- hooks of the synchronous axis (no-ops on a positioning axis) ----
+  // The §9.19.2 row of a new job against the running synchronous jobs: 0 = proceed (aborts applied), else the
+  // ErrorID that rejects the new job. Called after the §9.19.1 check passed.
+  virtual std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
+    (void)row;
+    return 0;
+  }
+  // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
+  virtual void abort_synchronous(std::uint16_t error_id) noexcept { (void)error_id; }
+  // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
+  virtual void run_synchronous() noexcept {}
+  // The setpoint of Generator::kSynchronous for this cycle.
+  virtual MotionState synchronous_setpoint() noexcept { return setpoint_; }
+  // A following axis in synchronous operation stops at a software limit with maximum dynamics (spec 02 §4.5).
+  virtual bool following_in_synchronous_operation() const noexcept { return false; }
+  virtual void update_synchronous_status() noexcept {}
+
+  // configuration
+  void configure_components() noexcept;
+  void configure_monitoring() noexcept;
+  void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
+  void configure_extrapolation() noexcept;
+  // jobs
+  std::uint16_t motion_prerequisites() const noexcept { return core_.motion_prerequisites(); }
+  std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
+                                                double jerk, ProfileLimits& out) noexcept;
+  std::uint16_t arbitrate_motion(NewJob row, bool& queue) noexcept;
+  std::array<RunningJob, 4> running_jobs(std::size_t& n) const noexcept;
+  void abort_motion(std::uint16_t error_id) noexcept;
+  void abort_pending(std::uint16_t error_id) noexcept;
+  std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
+  void start_positioning(Motion motion) noexcept;
+  // setpoint generation
+  void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
+  void plan_position(double target, const ProfileLimits& limits) noexcept;
+  double override_factor() const noexcept { return core_.override_factor(db_.Override); }
+  double velocity_limit() const noexcept {  // position units / s
+    return AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units());
+  }
+  DynamicUnits dynamic_units() const noexcept { return {units_.velocity, units_.acceleration}; }
+  double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
+  void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept { core_.raise(number, additional); }
+  void raise_with(std::uint32_t number, std::uint32_t additional, std::int32_t reaction) noexcept;
+  void apply_alarm_reactions() noexcept;
+  void update_power_phase() noexcept;
+  void update_live_motion() noexcept;
+  void generate_setpoint() noexcept;
+  void monitor_software_limits(const MotionState& previous_setpoint) noexcept;
+  MotionState predicted_setpoint(double dt) const noexcept;  // the generator dt ahead, no job changes
+  void complete_jobs() noexcept;
+  void update_status() noexcept;
+  void restart() noexcept;
+  // torque limiting and fixed-stop detection (positioning_axis_torque.cpp)
+  std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
+  void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
+  void apply_clamping() noexcept;         // MC_Interpolator: the jobs a clamping ends
+  // TorqueLimiting.PositionBasedMonitorings = 0: following-error and positioning monitoring are off while
+  // limiting is active (spec 01 §8.10).
+  bool position_monitorings_suspended() const noexcept;
+  // servo
+  void read_actual_values() noexcept;
+  void simulate_actual_values() noexcept;
+  void control() noexcept;
+  void servo_monitoring() noexcept;
+  void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
+  bool blocked() const noexcept { return core_.blocked(); }
+  bool virtual_axis() const noexcept { return device_ == nullptr; }
+  bool homed() const noexcept;
+  bool follows_actual() const noexcept { return core_.follows_actual(); }
+  bool modulo() const noexcept { return db_.Modulo.Enable; }
+
+  std::string name_;
+  DeviceIo* device_ = nullptr;
+  StartValues<PositioningAxisData> start_;  // load memory (the runtime's StartValueStore once attached)
+  PositioningAxisData db_;
+  DriveConnectionConfig drive_config_;
+  DriveConnection drive_;
+  AxisCore core_;  // power, reset, alarms and reactions, MC_Stop, jobs, drive request, words
+  AxisDigitalInputs inputs_{};
+  double servo_cycle_s_ = 0.001;
+  bool servo_cycle_known_ = false;
+
+  // components
+  AxisUnitFactors units_{};
+  AxisMechanics mechanics_{};
+  EncoderMechanics encoder_mechanics_{};
+  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
+  EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
+  // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
+  // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
+  std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
+  PositionController* controller() noexcept { return std::get_if<PositionController>(&control_loop_); }
+  BasicSetpointDelayLine<kSimulationDelayCycles>* simulation_delay() noexcept {
+    return std::get_if<BasicSetpointDelayLine<kSimulationDelayCycles>>(&control_loop_);
+  }
+  FollowingErrorMonitor following_error_;
+  PositioningMonitor positioning_;
+  StandstillSignal standstill_;
+  limits::SoftwareLimitMonitor software_limits_;
+  limits::HardwareLimitMonitor hardware_limits_;
+  // ---- backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6) ----
+  BacklashCompensation backlash_;
+  DynamicFilter dynamic_filter_;
+  MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
+  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
+
+  bool position_controlled_ = true;
+
+  // motion
+  Motion motion_{};
+  Motion pending_{};  // BufferMode 1
+  Generator generator_ = Generator::kIdle;
+  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
+  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
+  std::variant<VelocityProfile, PositionProfile> profile_;
+  const VelocityProfile& velocity_profile() const noexcept {
+    return *std::get_if<VelocityProfile>(&profile_);
+  }
+  const PositionProfile& position_profile() const noexcept {
+    return *std::get_if<PositionProfile>(&profile_);
+  }
+  double profile_time_ = 0.0;
+  MotionState setpoint_{};                  // continuous position units
+  bool positioning_start_pending_ = false;  // servo starts the positioning monitor with this target
+  double positioning_target_ = 0.0;
+  bool limit_stop_ = false;  // a software-limit stop to limit_stop_position_ is in force
+  double limit_stop_position_ = 0.0;
+  double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
+  double last_actual_velocity_ = 0.0;
+  double last_setpoint_acceleration_ = 0.0;
+
+  // homing
+  ActiveHomingJob homing_{};
+  PassiveHomingJob passive_{};
+  PassiveHomingSearch passive_search_{};
+  InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
+  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
+  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
+  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
+  RetainedEncoderData retained_{};
+  bool retained_restored_ = false;
+
+  // actual values (continuous position units)
+  double actual_position_ = 0.0;
+  double actual_velocity_ = 0.0;
+  bool homed_ = false;
+  double reference_mark_position_ = 0.0;
+  bool actual_valid_ = false;
+
+  // alarms
+  bool encoder_fault_seen_ = false;
+  FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
+
+  // MC_TorqueLimiting (spec 01 §8.10/§8.11)
+  ClampingMonitor clamping_{};
+  bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
+  bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
+  bool drive_has_meldw_ = false;      // ... and MELDW
+};
+
+}  // namespace tomc::techobjects

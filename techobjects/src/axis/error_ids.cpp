@@ -1,0 +1,100 @@
+#include "tomc/techobjects/axis/error_ids.hpp"
+
+namespace tomc::techobjects::error_id {
+
+std::string_view describe(std::uint16_t id) noexcept {
+  switch (id) {
+    case kNone:
+      return "no error";
+    case kAbortedByAlarmReaction:
+      return "job aborted by the stop reaction of a technology alarm";
+    case kJogWrongDirection:
+      return "wrong direction specification: JogForward and JogBackward both TRUE";
+    case kControlPanelActive:
+      return "the axis control panel has control priority (jobs of the user program are rejected)";
+    case kLifebeatExpired:
+      return "lifebeat monitoring of the axis control panel expired: axis stopped, control priority returned";
+    case kInvalidRatioNumerator:
+      return "RatioNumerator 0 is not allowed";
+    case kInvalidRatioDenominator:
+      return "RatioDenominator must be 1 or more";
+    case kRecursiveLeadingValue:
+      return "the following axis would be the origin of its own leading value";
+    case kInvalidMasterStartDistance:
+      return "invalid MasterStartDistance / MasterStopDistance";
+    case kInvalidMasterSyncPosition:
+      return "invalid MasterSyncPosition (the leader is already past the start of synchronization)";
+    case kInvalidSyncProfileReference:
+      return "invalid SyncProfileReference";
+    case kInvalidSlavePosition:
+      return "invalid SlavePosition (a linear follower is already inside the stop travel before it, or past "
+             "it)";
+    case kNoGearing:
+      return "no MC_GearIn / MC_GearInPos pending or active";
+    case kHomingDuringGearInPos:
+      return "MC_Home is not possible while MC_GearInPos is active";
+    case kRejectedByRunningJob:
+      return "rejected by a running job (override matrix cell N)";
+    case kLockedByStop:
+      return "motion jobs are blocked while MC_Stop.Execute is TRUE";
+    case kAxisNotEnabled:
+      return "technology object not enabled";
+    case kAxisBlockedByAlarm:
+      return "technology object blocked by an alarm reaction";
+    case kAxisNotHomed:
+      return "technology object not homed";
+    case kEncoderNotValid:
+      return "encoder actual value not valid";
+    case kHomingModeNotAvailable:
+      return "homing mode not available on this technology object";
+    case kNotPositionControlled:
+      return "the job needs position-controlled operation";
+    case kBusy:
+      return "a backup of the absolute-encoder adjustment is still being written";
+    case kBackupFailed:
+      return "the absolute-encoder backup could not be written";
+    case kInvalidPosition:
+      return "invalid Position or Distance (not finite, or outside the modulo range)";
+    case kInvalidBufferMode:
+      return "invalid BufferMode";
+    case kInvalidSensor:
+      return "invalid Sensor";
+    case kInvalidVelocity:
+      return "invalid Velocity";
+    case kInvalidAcceleration:
+      return "invalid Acceleration";
+    case kInvalidDeceleration:
+      return "invalid Deceleration";
+    case kInvalidJerk:
+      return "invalid Jerk";
+    case kInvalidMode:
+      return "invalid Mode";
+    case kInvalidDirection:
+      return "invalid Direction";
+    case kInvalidStartMode:
+      return "invalid StartMode";
+    case kInvalidStopMode:
+      return "invalid StopMode";
+    case kRestartNeedsDisabledAxis:
+      return "restart needs a disabled technology object";
+    case kInvalidParameterNumber:
+      return "parameter number not writable on this technology object";
+    case kInvalidParameterValue:
+      return "parameter value not permitted";
+    case kInvalidBitMask:
+      return "bit mask selects bits the technology object owns";
+    case kNoDriveTelegram:
+      return "no drive telegram (virtual axis or simulation)";
+    case kInvalidTorqueLimit:
+      return "invalid torque/force limit (not finite or above 1E12)";
+    case kNoTorqueReduction:
+      return "the drive telegram carries no torque reduction (MOMRED, telegrams 102 to 106)";
+    case kInvalidClampingConfiguration:
+      return "fixed-stop detection: PositionTolerance must be below FollowingErrorDeviation, which must be "
+             "below the maximum following error";
+    default:
+      return "unknown ErrorID";
+  }
+}
+
+}  // namespace tomc::techobjects::error_id

@@ -1,0 +1,678 @@
+// TO_PositioningAxis: configuration, the job API called by the instructions, alarms and data-block access.
+// The cycle (MC_Servo, MC_Interpolator) is in positioning_axis_cycle.cpp.
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/setup_checks.hpp"
+#include "tomc/techobjects/datablocks/data_block_access.hpp"
+#include "tomc/techobjects/datablocks/positioning_variables.hpp"
+#include "tomc/telegrams/codec.hpp"
+
+namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+namespace {
+
+bool finite(double x) {
+  return std::isfinite(x);
+}
+
+bool carries(std::uint16_t telegram, tg::Signal signal, tg::Direction direction = tg::Direction::kActual) {
+  if (telegram == 0) return false;
+  const auto codec = tg::TelegramCodec::create(telegram, direction);
+  return static_cast<bool>(codec) && codec->carries(signal);
+}
+
+}  // namespace
+
+PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
+                                 const DriveConnectionConfig& drive)
+    : name_(std::move(name)),
+      device_(device),
+      start_(start_values),
+      db_(start_values),
+      drive_config_(drive),
+      encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kDriveG1) {
+  const auto fail = [&](std::string_view path, std::string_view message) {
+    fail_start_value(name_, path, message);
+  };
+  check_start_values(name_, positioning_axis_variables(), *start_);
+  units_ = checked_unit_factors(name_, start_->Units.LengthUnit, start_->Units.VelocityUnit,
+                                start_->Properties.MotionType, "axis");
+  const std::uint32_t op = start_->PositionControl.InitialOperativeSensor;
+  if (op < 1 || op > 4 || !start_->Sensor[op - 1].Existent) {
+    fail("PositionControl.InitialOperativeSensor", "names an encoder whose Sensor[n].Existent is FALSE");
+  }
+  if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
+  if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
+  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
+  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
+  if (device_ != nullptr) {
+    // Which telegram carries the operative encoder (decision P3).
+    const auto& cfg = device_->adapter->config();
+    const auto source = find_encoder_source(cfg, start_->Sensor[op - 1].Interface.Number);
+    if (!source) {
+      fail("Sensor[" + std::to_string(op) + "].Interface.Number",
+           "the device's telegrams carry no such encoder (drive telegram " +
+               std::to_string(cfg.drive_telegram) + ", encoder telegram " +
+               std::to_string(cfg.encoder_telegrams[0]) + ")");
+    }
+    encoder_source_ = *source;
+    drive_ = DriveConnection(*device_, drive_config_);
+  }
+  configure_components();
+  if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
+  // Backlash compensation exists for motor-shaft encoders only (spec 01 §5.2, §5.9, spec 04 §3.6).
+  if (start_->Sensor[op - 1].Backlash.Enable &&
+      start_->Sensor[op - 1].MountingMode != static_cast<std::int32_t>(EncoderMounting::kMotorShaft)) {
+    fail("Sensor[" + std::to_string(op) + "].Backlash.Enable",
+         "backlash compensation needs the encoder on the motor shaft (MountingMode 0)");
+  }
+  // DSC: the drive closes the position loop on XERR/KPC of the setpoint telegram, computed on the motor
+  // encoder (seed 004 §6.13.1, spec 06 §2 "DSC needs 5, 6, 105 or 106 and the motor encoder as the TO's first
+  // encoder"). Without XERR/KPC the axis would send speed precontrol only and never close the loop.
+  if (start_->PositionControl.EnableDSC && device_ != nullptr) {
+    const std::uint16_t telegram = device_->adapter->config().drive_telegram;
+    if (!carries(telegram, tg::Signal::XERR, tg::Direction::kSetpoint) ||
+        !carries(telegram, tg::Signal::KPC, tg::Direction::kSetpoint)) {
+      fail("PositionControl.EnableDSC",
+           "DSC needs XERR and KPC in the setpoint telegram: drive telegram 5, 6, "
+           "105 or 106, not " +
+               std::to_string(telegram) + " (seed 004 §6.13.1)");
+    }
+    if (encoder_source_ != EncoderSource::kDriveG1) {
+      fail("PositionControl.EnableDSC",
+           "DSC needs the drive's motor encoder (G1 of the drive telegram) as the operative encoder: set "
+           "Sensor[" +
+               std::to_string(op) + "].Interface.Number to 1 (seed 004 §6.13.1)");
+    }
+  }
+  if (device_ != nullptr) {
+    const std::uint16_t telegram = device_->adapter->config().drive_telegram;
+    drive_has_momred_ = carries(telegram, tg::Signal::MOMRED, tg::Direction::kSetpoint);
+    drive_has_meldw_ = carries(telegram, tg::Signal::MELDW);
+  }
+  db_.OperativeSensor = op;
+  db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
+  position_controlled_ = true;
+}
+
+// Everything derived from the data block and the cycle time. Runs at construction, on the first servo
+// cycle (when the cycle time is known) and after a restart; no allocation.
+void PositioningAxis::configure_components() noexcept {
+  const auto& s = db_.Sensor[db_.PositionControl.InitialOperativeSensor - 1];
+  mechanics_.MotionType = static_cast<AxisMotionType>(db_.Properties.MotionType);
+  mechanics_.LoadGear = GearRatio{db_.LoadGear.Numerator, db_.LoadGear.Denominator};
+  mechanics_.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
+  mechanics_.Actor.InverseDirection = db_.Actor.InverseDirection;
+  mechanics_.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
+  mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+  mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
+  encoder_mechanics_.Type = static_cast<EncoderType>(s.Type);
+  encoder_mechanics_.System = static_cast<EncoderSystem>(s.System);
+  encoder_mechanics_.MountingMode = static_cast<EncoderMounting>(s.MountingMode);
+  encoder_mechanics_.InverseDirection = s.InverseDirection;
+  encoder_mechanics_.MeasuringGear = GearRatio{s.MeasuringGear.Numerator, s.MeasuringGear.Denominator};
+  encoder_mechanics_.Parameter.Resolution = s.Parameter.Resolution;
+  encoder_mechanics_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
+  encoder_mechanics_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
+  encoder_mechanics_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
+  encoder_mechanics_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
+  encoder_mechanics_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
+  encoder_mechanics_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
+  encoder_mechanics_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
+  encoder_mechanics_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
+  encoder_mechanics_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
+  encoder_mechanics_.Nist = encoder_source_ == EncoderSource::kEncoderG1 ? NistSource::kEncoderTelegram83
+                                                                         : NistSource::kDriveTelegram;
+  encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, encoder_source_);
+
+  PositionControlConfig pc;
+  pc.Kv = db_.PositionControl.Kv;
+  pc.Kpc = db_.PositionControl.Kpc;
+  pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
+  pc.EnableDSC = db_.PositionControl.EnableDSC;
+  pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
+  pc.ServoCycle = servo_cycle_s_;
+  pc.Ti = core_.communication_times.Ti;
+  pc.To = core_.communication_times.To;
+  pc.Tdc = core_.communication_times.Tdc;
+  if (auto* controller = this->controller()) (void)controller->configure(pc);
+  configure_monitoring();
+  configure_extrapolation();
+  software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+  hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
+  configure_backlash_and_filter();
+}
+
+// Backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6): DIR variables, re-read after a
+// user-program write; both keep their state unless Backlash.Enable/Size change (which needs re-homing).
+void PositioningAxis::configure_backlash_and_filter() noexcept {
+  const auto& s = db_.Sensor[db_.PositionControl.InitialOperativeSensor - 1];
+  const bool motor_shaft = s.MountingMode == static_cast<std::int32_t>(EncoderMounting::kMotorShaft);
+  (void)backlash_.configure(BacklashConfig{s.Backlash.Enable && motor_shaft && device_ != nullptr,
+                                           s.Backlash.Size, s.Backlash.Velocity / units_.velocity,
+                                           servo_cycle_s_});
+  const auto& f = db_.SetpointFilter.DynamicFilter;
+  (void)dynamic_filter_.configure(DynamicFilterConfig{f.Mode, f.T1, f.T2, f.Tt, servo_cycle_s_});
+}
+
+// Extrapolation of the actual value as a leading value (spec 07 §1.4, extrapolation_config).
+void PositioningAxis::configure_extrapolation() noexcept {
+  extrapolation_.configure(extrapolation_config(db_.Extrapolation, core_.communication_times.Ti,
+                                                core_.ipo_cycle_s, units_.velocity));
+}
+
+// The monitors' DIR variables (positions in position units, velocities converted from the data block's
+// velocity unit). Re-read after a user-program write; the monitors keep their state.
+void PositioningAxis::configure_monitoring() noexcept {
+  const auto& fe = db_.FollowingError;
+  following_error_.configure(FollowingErrorMonitoringConfig{fe.EnableMonitoring, fe.MinValue, fe.MaxValue,
+                                                            fe.MinVelocity / units_.velocity, fe.WarningLevel,
+                                                            db_.DynamicLimits.MaxVelocity / units_.velocity});
+  const auto& pm = db_.PositioningMonitoring;
+  (void)positioning_.configure(
+      PositioningMonitoringConfig{pm.Window, pm.ToleranceTime, pm.MinDwellTime, servo_cycle_s_});
+  (void)standstill_.configure(StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
+                                                     db_.StandstillSignal.MinDwellTime, servo_cycle_s_});
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Helpers
+
+// spec 01 §8.5: v_eff = min(v_cmd · Override, v_limit) — the override applies before the limit clamp.
+double PositioningAxis::positioning_velocity(const Motion& motion) const noexcept {
+  return std::min(motion.command_velocity * override_factor(), velocity_limit());
+}
+
+bool PositioningAxis::homed() const noexcept {
+  return homed_;
+}
+
+// spec 03 §2.1, spec 04 §8 rule 1: < 0 -> DynamicDefaults, = 0 invalid (jerk: trapezoid), > 0 as given;
+// limited to DynamicLimits with warnings 501/502/503. Velocity < 0 -> DynamicDefaults.Velocity; pass NaN to
+// leave the velocity to the caller (MoveVelocity, Jog). MaxJerk caps a job without jerk (decision S3).
+std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, double acceleration,
+                                                               double deceleration, double jerk,
+                                                               ProfileLimits& out) noexcept {
+  return core_.resolve_dynamics(velocity, acceleration, deceleration, jerk, db_.DynamicDefaults,
+                                db_.DynamicLimits, dynamic_units(), out);
+}
+
+std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
+  std::array<RunningJob, 4> running{};
+  n = 0;
+  // A running synchronous job is a column of §9.19.2, not of §9.19.1 (arbitrate_synchronous).
+  if (motion_.id != 0 && !synchronous_kind(motion_.kind)) {
+    running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
+                   : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
+                                                    : RunningJob::kBaseMotionActive;
+  }
+  if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
+  if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
+  if (core_.stop.id != 0 && (!core_.stop.done || core_.stop.execute)) running[n++] = RunningJob::kStop;
+  return running;
+}
+
+// The §9.19.1 row of a new motion job against every running job (spec 03 §6.7): aborts applied on accept.
+std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcept {
+  std::size_t n = 0;
+  const auto running = running_jobs(n);
+  ArbitrationContext ctx;
+  // C3 "-/N": positioning and MC_Halt end by themselves, MoveVelocity/Jog do not (spec 03 §6.1 [AMB-11]).
+  ctx.running_job_ends_by_itself = motion_.kind == JobKind::kMoveAbsolute ||
+                                   motion_.kind == JobKind::kMoveRelative || motion_.kind == JobKind::kHalt;
+  ctx.virtual_or_simulated_axis = virtual_axis();
+  ctx.running_stop_weight = core_.stop.weight;
+  const Decision d = arbitrate(row, std::span<const RunningJob>(running.data(), n), ctx);
+  if (d.reject) return error_id::kRejectedByRunningJob;
+  if (const std::uint16_t e = arbitrate_synchronous(row)) return e;  // §9.19.2 on a synchronous axis
+  queue = d.queue;
+  for (std::size_t i = 0; i < n; ++i) {
+    if ((d.abort_mask & (1u << i)) == 0) continue;
+    switch (running[i]) {
+      case RunningJob::kStop:
+        core_.abort_stop();
+        break;
+      case RunningJob::kBaseMotionPending:
+        abort_pending(0);
+        break;
+      case RunningJob::kPassiveHoming:
+        end_passive_homing(JobState::kAborted);
+        break;
+      default:
+        abort_motion(0);
+        break;
+    }
+  }
+  return 0;
+}
+
+void PositioningAxis::abort_motion(std::uint16_t error_id) noexcept {
+  if (motion_.id == 0) return;
+  if (synchronous_kind(motion_.kind)) {
+    abort_synchronous(error_id);  // the synchronous axis ends its job and its state
+    return;
+  }
+  if (motion_.kind == JobKind::kHome) {
+    homing_.phase = HomingPhase::kIdle;
+    encoder_.cancel_reference_mark();
+  }
+  core_.jobs.set(motion_.id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
+  motion_ = Motion{};
+  positioning_.cancel();
+  positioning_start_pending_ = false;
+}
+
+void PositioningAxis::abort_pending(std::uint16_t error_id) noexcept {
+  if (pending_.id == 0) return;
+  core_.jobs.set(pending_.id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
+  pending_ = Motion{};
+}
+
+// The continuous target of MC_MoveAbsolute (spec 03 §4.5): on a linear axis the position itself; on a modulo
+// axis the position within the range, reached in the direction asked for from `from` (spec 01 §2.4).
+std::optional<double> PositioningAxis::absolute_target(double position, std::int32_t direction,
+                                                       double from) const noexcept {
+  if (!modulo()) return position;
+  const double start = db_.Modulo.StartValue;
+  const double length = db_.Modulo.Length;
+  if (position < start || position >= start + length) return std::nullopt;  // decision P5
+  const ModuloPosition here = modulo_wrap(from, start, length);
+  double d = position - here.position;  // in (-length, length)
+  switch (direction) {
+    case 1:  // positive: 0 <= d < length
+      if (d < 0.0) d += length;
+      break;
+    case 2:  // negative: -length < d <= 0
+      if (d > 0.0) d -= length;
+      break;
+    default:  // 3: shortest path (tie: decision of modulo_shortest_distance)
+      d = modulo_shortest_distance(here.position, position, start, length);
+      break;
+  }
+  return from + d;
+}
+
+// Makes `motion` the running positioning job and plans its profile from the present setpoint.
+void PositioningAxis::start_positioning(Motion motion) noexcept {
+  if (motion.relative_to_end) motion.target = setpoint_.position + motion.distance;
+  if (motion.kind == JobKind::kMoveAbsolute && modulo()) {
+    if (const auto t = absolute_target(motion.absolute_position, motion.direction, setpoint_.position)) {
+      motion.target = *t;
+    }
+  }
+  motion.interpolation_done = false;
+  motion_ = motion;
+  position_controlled_ = true;  // MoveAbsolute/MoveRelative force position control (spec 02 §7.7)
+  core_.jobs.set(motion_.id, JobState::kActive);
+  positioning_.cancel();
+  positioning_start_pending_ = false;
+  const double v = positioning_velocity(motion_);
+  motion_.planned_velocity = v;
+  if (v > 0.0) {
+    ProfileLimits l = motion_.limits;
+    l.velocity = v;
+    plan_position(motion_.target, l);
+  } else {
+    plan_velocity(0.0, motion_.limits, false);  // override 0 %: hold until the override returns
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Job API
+
+PowerState PositioningAxis::power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept {
+  return core_.power(enable, start_mode, stop_mode);
+}
+
+Submission PositioningAxis::reset(bool restart) noexcept {
+  return core_.reset(restart);
+}
+
+Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept {
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  if (!finite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
+  if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
+  if (modulo() && (in.Direction < 1 || in.Direction > 3))
+    return Submission::reject(error_id::kInvalidDirection);
+  ProfileLimits limits;
+  if (const auto e = resolve_dynamics(in.Velocity, in.Acceleration, in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  if (!homed()) return Submission::reject(error_id::kAxisNotHomed);  // spec 03 §4.5 prerequisites
+  if (modulo() && !absolute_target(in.Position, in.Direction, setpoint_.position)) {
+    return Submission::reject(error_id::kInvalidPosition);
+  }
+  bool queue = false;
+  if (const auto e =
+          arbitrate_motion(in.BufferMode == 1 ? NewJob::kAppendedMotion : NewJob::kBaseMotion, queue))
+    return Submission::reject(e);
+  Motion m;
+  m.kind = JobKind::kMoveAbsolute;
+  m.limits = limits;
+  m.command_velocity = (in.Velocity < 0.0 ? db_.DynamicDefaults.Velocity : in.Velocity) / units_.velocity;
+  m.absolute_position = in.Position;
+  m.direction = in.Direction;
+  m.target = in.Position;
+  if (queue) {
+    m.id = core_.jobs.create(JobKind::kMoveAbsolute, JobState::kPending);
+    pending_ = m;
+    return Submission::accept(m.id);
+  }
+  m.id = core_.jobs.create(JobKind::kMoveAbsolute, JobState::kActive);
+  start_positioning(m);
+  return Submission::accept(m.id);
+}
+
+Submission PositioningAxis::move_relative(const MoveRelativeInputs& in) noexcept {
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  if (!finite(in.Distance)) return Submission::reject(error_id::kInvalidPosition);
+  if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
+  ProfileLimits limits;
+  if (const auto e = resolve_dynamics(in.Velocity, in.Acceleration, in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  bool queue = false;
+  if (const auto e =
+          arbitrate_motion(in.BufferMode == 1 ? NewJob::kAppendedMotion : NewJob::kBaseMotion, queue))
+    return Submission::reject(e);
+  Motion m;
+  m.kind = JobKind::kMoveRelative;
+  m.limits = limits;
+  m.command_velocity = (in.Velocity < 0.0 ? db_.DynamicDefaults.Velocity : in.Velocity) / units_.velocity;
+  m.distance = in.Distance;
+  // The start position is the setpoint when the job starts (spec 02 §2.2): now, or the end of the running
+  // job for an appended one.
+  m.relative_to_end = true;
+  if (queue) {
+    m.id = core_.jobs.create(JobKind::kMoveRelative, JobState::kPending);
+    pending_ = m;
+    return Submission::accept(m.id);
+  }
+  m.id = core_.jobs.create(JobKind::kMoveRelative, JobState::kActive);
+  start_positioning(m);
+  return Submission::accept(m.id);
+}
+
+Submission PositioningAxis::move_velocity(const MoveVelocityInputs& in) noexcept {
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
+  if (in.Direction < 0 || in.Direction > 2) return Submission::reject(error_id::kInvalidDirection);
+  ProfileLimits limits;
+  if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Acceleration,
+                                      in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  bool queue = false;
+  if (const auto e = arbitrate_motion(NewJob::kBaseMotion, queue)) return Submission::reject(e);
+  double v = in.Velocity / units_.velocity;
+  if (in.Direction == 1) v = std::fabs(v);
+  if (in.Direction == 2) v = -std::fabs(v);
+  const double command = in.Current ? setpoint_.velocity / std::max(override_factor(), 1e-12) : v;
+  Motion m;
+  m.id = core_.jobs.create(JobKind::kMoveVelocity, JobState::kActive);
+  m.kind = JobKind::kMoveVelocity;
+  m.limits = limits;
+  m.command_velocity = command;
+  m.position_controlled = in.PositionControlled;
+  motion_ = m;
+  position_controlled_ = in.PositionControlled;  // spec 02 §2.1: the mode persists after the job
+  positioning_.cancel();
+  positioning_start_pending_ = false;
+  const double target = std::clamp(command * override_factor(), -limits.velocity, limits.velocity);
+  if (std::fabs(command * override_factor()) > limits.velocity + 1e-12) raise(kAlarmDynamicsLimitedVelocity);
+  motion_.planned_velocity = target;
+  plan_velocity(target, limits, false);
+  return Submission::accept(motion_.id);
+}
+
+Submission PositioningAxis::halt(const HaltInputs& in) noexcept {
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  if (in.Mode != 0 && in.Mode != 1) return Submission::reject(error_id::kInvalidMode);
+  ProfileLimits limits;
+  if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Deceleration,
+                                      in.Deceleration, in.Jerk, limits))
+    return Submission::reject(*e);
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  bool queue = false;
+  if (const auto e = arbitrate_motion(in.Mode == 1 ? NewJob::kHaltBaseOnly : NewJob::kBaseMotion, queue))
+    return Submission::reject(e);
+  abort_pending(0);  // a halt leaves nothing to append to
+  Motion m;
+  m.id = core_.jobs.create(JobKind::kHalt, JobState::kActive);
+  m.kind = JobKind::kHalt;
+  m.limits = limits;
+  motion_ = m;
+  positioning_.cancel();
+  positioning_start_pending_ = false;
+  plan_velocity(0.0, limits, in.AbortAcceleration);
+  return Submission::accept(motion_.id);
+}
+
+Submission PositioningAxis::stop(const StopInputs& in) noexcept {
+  std::size_t n = 0;
+  const auto running = running_jobs(n);
+  int weight = 0;
+  ProfileLimits limits;
+  if (const auto decided = core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units(),
+                                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
+    return *decided;
+  }
+  abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
+  abort_motion(0);
+  abort_pending(0);
+  if (passive_.id != 0) {  // R7 x C1 = A
+    end_passive_homing(JobState::kAborted);
+  }
+  limit_stop_ = false;
+  const JobId id = core_.start_stop(weight, limits);
+  plan_velocity(0.0, limits, in.AbortAcceleration);
+  return Submission::accept(id);
+}
+
+void PositioningAxis::stop_execute(JobId job, bool execute) noexcept {
+  core_.stop_execute(job, execute);
+}
+
+Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
+  const bool both = in.JogForward && in.JogBackward;
+  const bool any = in.JogForward || in.JogBackward;
+  const bool mine = running != 0 && running == motion_.id && motion_.kind == JobKind::kJog;
+  if (!mine) {
+    if (!any) return Submission{};
+    if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+    if (both) return Submission::reject(error_id::kJogWrongDirection);
+    if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
+    ProfileLimits limits;
+    if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Acceleration,
+                                        in.Deceleration, in.Jerk, limits))
+      return Submission::reject(*e);
+    if (const auto e = motion_prerequisites()) return Submission::reject(e);
+    bool queue = false;
+    if (const auto e = arbitrate_motion(NewJob::kBaseMotion, queue)) return Submission::reject(e);
+    Motion m;
+    m.id = core_.jobs.create(JobKind::kJog, JobState::kActive);
+    m.kind = JobKind::kJog;
+    m.limits = limits;
+    m.position_controlled = in.PositionControlled;
+    motion_ = m;
+    position_controlled_ = in.PositionControlled;
+    positioning_.cancel();
+    positioning_start_pending_ = false;
+    running = motion_.id;
+  }
+  if (both) {
+    // J4: decelerate with the last valid deceleration; the job ends with 16#8007.
+    const ProfileLimits limits = motion_.limits;
+    core_.jobs.set(motion_.id, JobState::kError, error_id::kJogWrongDirection);
+    motion_ = Motion{};
+    plan_velocity(0.0, limits, false);
+    return Submission::reject(error_id::kJogWrongDirection);
+  }
+  const double magnitude = std::fabs(in.Velocity) / units_.velocity;  // [AMB-3]: the magnitude
+  motion_.jog_stopping = !any;
+  motion_.command_velocity = any ? (in.JogForward ? magnitude : -magnitude) : 0.0;
+  return Submission::accept(running);
+}
+
+Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                                         std::uint16_t stw2_mask) noexcept {
+  return core_.set_axis_stw(device_ == nullptr ? nullptr : &drive_, stw1, stw1_mask, stw2, stw2_mask);
+}
+
+Submission PositioningAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  switch (parameter_number) {
+    case 1000: {
+      // PositionLimits_HW.Active: effective at once; TRUE survives until a TO restart (spec 02 §4.4).
+      if (value != 0.0 && value != 1.0) return Submission::reject(error_id::kInvalidParameterValue);
+      db_.PositionLimits_HW.Active = value == 1.0;
+      hardware_limits_.set_active(db_.PositionLimits_HW.Active);
+      break;
+    }
+    case 1010:
+    case 1011:
+    case 1012:
+      return core_.write_communication_time(parameter_number, value, db_.StatusWord);
+    case 1020: {
+      const VariableInfo* v = find_by_write_parameter(positioning_axis_variables(), 1020);
+      if (v == nullptr || v->write(db_, value) != ValueError::kNone) {
+        return Submission::reject(error_id::kInvalidParameterValue);
+      }
+      (void)v->write(*start_, value);
+      break;
+    }
+    default:
+      return Submission::reject(error_id::kInvalidParameterNumber);
+  }
+  return Submission::accept(core_.jobs.create(JobKind::kWriteParameter, JobState::kDone));
+}
+
+JobStatus PositioningAxis::job_status(JobId id) const noexcept {
+  return core_.jobs.status(id);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// As a leading value
+
+LeadingValue PositioningAxis::leading_value(LeadingValueCoupling coupling) const noexcept {
+  LeadingValue v;
+  v.position_controlled = core_.phase == PowerPhase::kEnabled && position_controlled_ && !follows_actual();
+  if (coupling == LeadingValueCoupling::kSetpoint) {
+    v.position = setpoint_.position;
+    v.velocity = setpoint_.velocity;
+    v.acceleration = setpoint_.acceleration;
+    v.valid = true;
+  } else {
+    v.position = extrapolation_.position();
+    v.velocity = extrapolation_.velocity();
+    v.acceleration = extrapolation_.acceleration();
+    v.valid = actual_valid_;
+  }
+  return v;
+}
+
+ModuloRange PositioningAxis::leading_value_modulo() const noexcept {
+  return ModuloRange{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Retentive data
+
+bool PositioningAxis::absolute_encoder() const noexcept {
+  return db_.Sensor[db_.OperativeSensor - 1].Type !=
+         static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+}
+
+void PositioningAxis::store_adjustment() noexcept {
+  const RetainedSensorState r = encoder_.chain().retained_state();
+  retained_.valid = true;
+  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
+  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  ++retained_.sequence;
+}
+
+void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept {
+  if (!absolute_encoder() || !data.valid) return;
+  retained_ = data;
+  retained_restored_ = true;
+  homed_ = true;  // an adjusted absolute encoder is homed after power-up (spec 02 §5.12)
+  db_.StatusSensor[db_.OperativeSensor - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
+void PositioningAxis::report_adjustment_lost(std::uint32_t cause) noexcept {
+  if (!absolute_encoder()) return;
+  (void)core_.alarms.raise(kAlarmAdjustmentLost, cause, core_.cycle);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Alarms
+
+bool PositioningAxis::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
+                                   AlarmReaction reaction) noexcept {
+  return core_.alarms.raise(number, additional_value, reaction, core_.cycle);
+}
+
+void PositioningAxis::raise_with(std::uint32_t number, std::uint32_t additional,
+                                 std::int32_t reaction) noexcept {
+  (void)core_.alarms.raise(number, additional, static_cast<AlarmReaction>(reaction), core_.cycle);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Data-block access
+
+namespace {
+constexpr DataBlockTable<PositioningAxisData> kTable{&find_positioning_axis_variable,
+                                                     &find_positioning_axis_bit};
+}  // namespace
+
+WriteResult PositioningAxis::write(std::string_view path, double value) noexcept {
+  const WriteResult r = kTable.write(db_, path, value);
+  if (r.ok()) {
+    // DIR values take effect from the next MC_Servo (spec 04 §0.2): the components are re-read. The state of
+    // the monitors survives: only what changed is re-configured.
+    configure_monitoring();
+    if (path.starts_with("Extrapolation.")) configure_extrapolation();
+    if (path.starts_with("PositionLimits_SW.")) {
+      software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+    }
+    if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
+    if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
+        path.starts_with("FollowingError.")) {
+      if (auto* controller = this->controller()) {
+        PositionControlConfig pc = controller->config();
+        pc.Kv = db_.PositionControl.Kv;
+        pc.Kpc = db_.PositionControl.Kpc;
+        pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
+        pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
+        (void)controller->configure(pc);
+      }
+    }
+  }
+  return r;
+}
+
+WriteResult PositioningAxis::write_start_value(std::string_view path, double value) noexcept {
+  WriteResult r = kTable.write_start_value(*start_, db_, path, value);
+  // A start value that switches the dynamic filter on reserves its histories now (a user call), so that the
+  // MC_Reset Restart that applies it allocates nothing in MC_Interpolator (decision M2).
+  if (r.ok() && path == "SetpointFilter.DynamicFilter.Mode" && value != 0.0 &&
+      !dynamic_filter_.reserve_histories()) {
+    r.value = ValueError::kOutOfRange;  // no memory for the histories: refused, never silently unfiltered
+  }
+  return r;
+}
+
+double PositioningAxis::read(std::string_view path) const noexcept {
+  return kTable.read(db_, path);
+}
+
+}  // namespace tomc::techobjects

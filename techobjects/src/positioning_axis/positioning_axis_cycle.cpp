@@ -1,0 +1,782 @@
+// TO_PositioningAxis, one application cycle.
+// MC_Servo:        drive/encoder frames -> actual values -> position control -> servo-rate monitoring
+//                  (following error, positioning window, standstill, hardware limits) -> drive setpoint
+// MC_Interpolator: MC_Reset -> alarm reactions -> enable/disable -> live job inputs (override, jog) ->
+//                  setpoint generation -> software-limit look-ahead -> job completion -> status
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/telegrams/normalisation.hpp"
+
+namespace tomc::techobjects {
+
+namespace tg = tomc::telegrams;
+
+namespace {
+
+constexpr double kStandstillEpsilon = 1e-9;  // position units / s
+
+// floor((x - start) / length): the modulo cycle index of a continuous position.
+std::int64_t cycle_index(double x, double start, double length) noexcept {
+  return static_cast<std::int64_t>(std::floor((x - start) / length));
+}
+
+}  // namespace
+
+// =========================================================================================================
+// MC_Servo
+
+void PositioningAxis::servo(const CycleClock& clock) noexcept {
+  if (!servo_cycle_known_ || clock.servo_cycle_s != servo_cycle_s_) {
+    servo_cycle_s_ = clock.servo_cycle_s;
+    servo_cycle_known_ = true;
+    configure_components();  // the cycle time enters the chain, the controller and the monitors
+    if (retained_restored_ && retained_.valid) {
+      // Power-up of an absolute encoder with its retained adjustment (spec 01 §3.7, spec 02 §5.9).
+      RetainedSensorState r;
+      r.AbsEncoderOffset = retained_.AbsEncoderOffset;
+      r.MeasuringRangeCount = retained_.MeasuringRangeCount;
+      r.LastAbsoluteValue = retained_.LastAbsoluteValue;
+      encoder_.chain().power_up(&r);
+      // The backlash was crossed in DirectionAbsoluteHoming before the adjustment (spec 02 §5.11 Mode 6/7).
+      backlash_.assume_contact(
+          db_.Sensor[db_.OperativeSensor - 1].Backlash.DirectionAbsoluteHoming == 0 ? 1 : -1);
+    }
+  }
+  // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
+  // virtual axis takes from x_f.
+  filtered_ = dynamic_filter_.update(setpoint_, !follows_actual() && position_controlled_);
+  if (device_ != nullptr) {
+    read_actual_values();
+    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value.
+    actual_position_ += backlash_.compensate(encoder_.chain(), actual_valid_,
+                                             !follows_actual() && position_controlled_, filtered_.velocity);
+  } else {
+    simulate_actual_values();
+  }
+  control();
+  servo_monitoring();
+  servo_torque_limiting();
+  homing_observe();
+  if (retained_.valid && device_ != nullptr) {
+    // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
+    const RetainedSensorState r = encoder_.chain().retained_state();
+    retained_.MeasuringRangeCount = r.MeasuringRangeCount;
+    retained_.LastAbsoluteValue = r.LastAbsoluteValue;
+  }
+
+  // What the drive is asked to do (the axis core: spec 02 §3.1, §3.4).
+  if (device_ != nullptr) {
+    encoder_.write(drive_);  // absolute value cyclically, error acknowledge
+    drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
+    drive_.write();
+  }
+}
+
+void PositioningAxis::read_actual_values() noexcept {
+  drive_.read();
+  db_.StatusDrive.InOperation = drive_.in_operation();
+  db_.StatusDrive.CommunicationOK = drive_.communication_ok();
+  db_.StatusDrive.Error = drive_.drive_status().state == tg::DriveState::kFault;
+  db_.ActualSpeed = drive_.actual_speed_rpm();
+  if (drive_.device_config().supplementary_telegram == 750) {
+    const double sign = db_.Actor.InverseDirection ? -1.0 : 1.0;
+    db_.StatusTorqueData.ActualTorque = sign * tg::n2_to_torque(drive_.supplementary_actual().M_ACT,
+                                                                db_.Actor.DriveParameter.ReferenceTorque);
+  }
+
+  encoder_.read(drive_, device_->fresh);
+  const bool encoder_error = encoder_.error();
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.CommunicationOK =
+      drive_.communication_ok() || drive_.communication_fault() == CommunicationFault::kDriveFault;
+  sensor.Error = encoder_error;
+  if (encoder_error && (!encoder_fault_seen_ || !core_.held_off())) {
+    raise(kAlarmSensorFault, encoder_.error_code());  // the code is in Gx_XIST2 (spec 06 §6.3)
+    // An incremental encoder that failed has lost its reference (spec 04 §8 rule 8): not homed, and the
+    // encoder is no longer "referenced" (Adjusted 0, seed 004 §6.11: only an absolute encoder keeps it; H11).
+    if (!encoder_.chain().absolute_type()) {
+      homed_ = false;
+      sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kNotAdjusted);
+    }
+  }
+  encoder_fault_seen_ = encoder_error;
+  actual_valid_ = encoder_.chain().position_valid() && !encoder_error && drive_.communication_ok();
+  sensor.State =
+      static_cast<std::int32_t>(actual_valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
+  actual_position_ = encoder_.chain().continuous_position();
+  actual_velocity_ = encoder_.chain().velocity();
+  core_.supervise_drive(drive_);
+}
+
+// Virtual axis (spec 01 §2.5): the setpoint is taken over as the actual value one servo cycle later.
+// Simulation (§2.6): delayed by T_t of the simulated control loop.
+void PositioningAxis::simulate_actual_values() noexcept {
+  const double previous = actual_position_;
+  if (follows_actual()) {
+    // Following the actual value (disabled, StopMode 1/3, remove enable) nothing moves a virtual or
+    // simulated axis: it stands where it is.
+    if (auto* loop = simulation_delay()) loop->fill(actual_position_);
+    actual_velocity_ = 0.0;
+  } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
+    const auto& pc = db_.PositionControl;
+    const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
+    const double tt =
+        pc.Kpc > 0.0 ? core_.ipo_cycle_s + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
+                     : core_.ipo_cycle_s + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
+    auto* loop = simulation_delay();  // always there on an axis without a device
+    loop->push(filtered_.position);
+    actual_position_ = loop->delayed(tt / servo_cycle_s_);
+    actual_velocity_ = (actual_position_ - previous) / servo_cycle_s_;
+  } else {
+    actual_position_ = filtered_.position;  // x_f: "the dynamic filter is active" (seed 004 §6.1.5)
+    actual_velocity_ = filtered_.velocity;
+  }
+  actual_valid_ = true;
+  db_.StatusDrive.InOperation = core_.phase == PowerPhase::kEnabled;
+  db_.StatusDrive.CommunicationOK = true;
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.State = static_cast<std::int32_t>(SensorState::VALID);
+  sensor.CommunicationOK = true;
+  sensor.Error = false;
+}
+
+void PositioningAxis::control() noexcept {
+  const bool drive_follows_to =
+      core_.phase == PowerPhase::kEnabled ||
+      (core_.phase == PowerPhase::kDisabling && core_.stop_mode != 1 && core_.stop_mode != 3);
+  const bool active = drive_follows_to && !follows_actual();
+  double velocity = 0.0;  // load velocity to the drive, position units / s
+  PositionControlOutput out{};
+  if (active && position_controlled_ && device_ == nullptr) {
+    // Virtual axis / simulation (spec 01 §2.5, §2.6): no control loop; the following error is what the
+    // simulated delay leaves (0 on a virtual axis, whose actual value is the setpoint of the cycle before).
+    out.following_error = db_.VirtualAxis.Mode == kModeOn ? 0.0 : setpoint_.position - actual_position_;
+    velocity = filtered_.velocity;
+  } else if (active && position_controlled_) {
+    out = controller()->update(
+        PositionControlInput{setpoint_.position, filtered_.position, filtered_.velocity, actual_position_});
+    velocity = out.velocity_setpoint;
+  } else {
+    if (auto* controller = this->controller()) controller->reset();
+    if (active) velocity = setpoint_.velocity;  // non-position-controlled operation (spec 02 §7.7)
+  }
+  db_.StatusServo.BalancedPosition = active && position_controlled_ ? out.balanced_position : 0.0;
+  db_.StatusServo.ControlDifference = out.control_difference;
+  db_.StatusServo.PositionAfterDynamicFilter = filtered_.position;
+  db_.StatusPositioning.FollowingError = active && position_controlled_ ? out.following_error : 0.0;
+  if (device_ == nullptr) {
+    db_.VelocitySetpoint = 0.0;  // spec 01 §2.5 table
+    return;
+  }
+  const double max = db_.Actor.DriveParameter.MaxSpeed;
+  const double rpm = std::clamp(encoder_.chain().scaling().motor_speed(velocity), -max, max);
+  db_.VelocitySetpoint = encoder_.chain().scaling().load_velocity(rpm) * units_.velocity;
+  drive_.set_speed_setpoint(rpm);
+  auto& sp = drive_.drive_setpoint();
+  if (db_.PositionControl.EnableDSC && active && position_controlled_) {
+    sp.XERR = encoder_.chain().scaling().xerr(out.dsc_position_error);
+    sp.KPC = tg::kpc_from_kv(out.dsc_kpc);
+  } else {
+    sp.XERR = 0;
+    sp.KPC = 0;
+  }
+}
+
+void PositioningAxis::servo_monitoring() noexcept {
+  const bool controlled = core_.phase == PowerPhase::kEnabled && !follows_actual() && position_controlled_;
+  // Following error (spec 02 §6.2): 521 removes the enable, 522 warns; both on the rising edge. Off while
+  // torque limiting suspends the position-based monitorings (spec 01 §8.10).
+  if (controlled && !position_monitorings_suspended()) {
+    const auto check = following_error_.check(db_.StatusPositioning.FollowingError, setpoint_.velocity);
+    if (check.alarm != following_error_state_) {
+      if (check.alarm == FollowingErrorAlarm::kError521) raise(kAlarmFollowingError);
+      if (check.alarm == FollowingErrorAlarm::kWarning522) raise(kAlarmFollowingErrorWarning);
+    }
+    following_error_state_ = check.alarm;
+  } else {
+    following_error_state_ = FollowingErrorAlarm::kNone;
+  }
+
+  // Standstill signal (spec 02 §6.3).
+  (void)standstill_.update(actual_velocity_);
+
+  // Positioning monitoring (spec 02 §6.1): started in the servo cycle that uses the final setpoint.
+  if (positioning_start_pending_) {
+    positioning_start_pending_ = false;
+    positioning_.start(positioning_target_);
+  }
+  if (positioning_.status().outcome == PositioningOutcome::kInProgress) {
+    if (controlled && position_monitorings_suspended()) {
+      positioning_.complete();
+    } else if (controlled) {
+      const PositioningStatus st = positioning_.update(actual_position_);
+      if (st.outcome == PositioningOutcome::kFault) raise(kAlarmPositioning, st.additional_value);
+    } else {
+      positioning_.cancel();
+    }
+  }
+
+  // Hardware limit switches (spec 02 §4.1–§4.4): inactive on virtual and simulated axes (spec 01 §2.5).
+  if (device_ != nullptr) {
+    limits::HardwareLimitInput hw;
+    hw.min_switch_input = inputs_.MinSwitch;
+    hw.max_switch_input = inputs_.MaxSwitch;
+    hw.position = actual_position_;
+    hw.velocity = setpoint_.velocity;
+    // Active homing with AutoReversal: the limit switches are reversal cams, no alarm 531 (spec 02 §4.2).
+    hw.homing_reversal =
+        motion_.kind == JobKind::kHome && db_.Homing.AutoReversal && homing_.phase != HomingPhase::kToHome;
+    const auto r = hardware_limits_.update(hw);
+    if (r.alarm.raised())
+      raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    // The monitor reports a reversal cam while the switch is active; homing reacts to reaching it.
+    if (r.reversal_cam != limits::LimitSide::kNone && r.reversal_cam != reversal_cam_seen_) {
+      reversal_cam_ = r.reversal_cam;
+    }
+    reversal_cam_seen_ = r.reversal_cam;
+  }
+
+  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
+  if (modulo() && std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
+    raise(kAlarmModuloTooFast);
+
+  db_.ActualAcceleration = (actual_velocity_ - last_actual_velocity_) / servo_cycle_s_ * units_.acceleration;
+  last_actual_velocity_ = actual_velocity_;
+}
+
+// Direct homing moves the actual value and the setpoint together, so that no compensating motion results
+// (spec 02 §5.7 [Derived]); a profile in progress moves with them.
+void PositioningAxis::shift_position(double delta) noexcept {
+  if (delta == 0.0) return;
+  setpoint_.position += delta;
+  actual_position_ += delta;
+  profile_offset_ += delta;
+  motion_.target += delta;
+  if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
+  positioning_target_ += delta;
+  limit_stop_position_ += delta;
+  clamping_.shift(delta);
+  // Histories move with the coordinates: no following-error step, no transient.
+  std::visit([delta](auto& loop) { loop.shift(delta); }, control_loop_);
+  dynamic_filter_.shift(delta);
+  software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+}
+
+// =========================================================================================================
+// MC_Interpolator
+
+void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
+  core_.cycle = clock.interpolator_cycles + 1;
+  if (core_.ipo_cycle_s != clock.interpolator_cycle_s) {
+    core_.ipo_cycle_s = clock.interpolator_cycle_s;
+    configure_extrapolation();
+  }
+  // The actual value as a leading value, once per interpolator cycle (spec 07 §1.4).
+  extrapolation_.update(actual_position_, actual_velocity_);
+  show_extrapolation(extrapolation_, units_.velocity, db_.StatusExtrapolation);
+
+  if (const auto restart_requested = core_.begin_reset(core_.cycle)) {  // MC_Reset
+    software_limits_.acknowledge();
+    hardware_limits_.acknowledge();
+    if (device_ != nullptr) {
+      drive_.acknowledge();
+      encoder_.acknowledge();
+    }
+    if (*restart_requested) restart();
+    core_.finish_reset();
+  }
+
+  apply_alarm_reactions();
+  update_power_phase();
+  apply_clamping();
+  run_homing();
+  run_synchronous();
+  update_live_motion();
+  const MotionState previous = setpoint_;
+  generate_setpoint();
+  monitor_software_limits(previous);
+  complete_jobs();
+  update_status();
+}
+
+void PositioningAxis::apply_alarm_reactions() noexcept {
+  const ReactionChange change = core_.reaction_change();
+  if (change == ReactionChange::kNone) return;
+  if (change == ReactionChange::kReleased) {
+    limit_stop_ = false;
+    return;
+  }
+  // A stop reaction takes over: motion jobs end with 16#8001 (spec 03 §6.6).
+  const ProfileLimits current =
+      motion_.id != 0 ? motion_.limits : AxisCore::default_ramp(db_.DynamicDefaults, dynamic_units());
+  abort_synchronous(error_id::kAbortedByAlarmReaction);
+  abort_motion(error_id::kAbortedByAlarmReaction);
+  abort_pending(error_id::kAbortedByAlarmReaction);
+  if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
+    end_passive_homing(JobState::kError, error_id::kAbortedByAlarmReaction);
+  }
+  if (core_.stop_keeps_control(!limit_stop_)) return;
+  auto ramp = core_.reaction_ramp(current, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units());
+  if (!ramp) {
+    generator_ = Generator::kIdle;  // the drive brakes (remove enable) or is followed (follow setpoint)
+    limit_stop_ = false;
+    return;
+  }
+  if (limit_stop_) {
+    // The software-limit look-ahead: the motion is decoupled and stops at the limit (spec 02 §4.5). The
+    // look-ahead started the stop so that the reaction's deceleration reaches the limit exactly.
+    ramp->velocity = std::max(std::fabs(setpoint_.velocity), 1e-9);
+    ramp->acceleration = std::max(ramp->acceleration, ramp->deceleration);
+    plan_position(limit_stop_position_, *ramp);
+  } else {
+    plan_velocity(0.0, *ramp, false);
+  }
+}
+
+void PositioningAxis::update_power_phase() noexcept {
+  switch (core_.update_power_phase(virtual_axis() || (drive_.in_operation() && actual_valid_))) {
+    case PowerEvent::kEnabled:
+      // Enabled at the actual position; a moving axis is braked by the position loop (spec 01 §6.2).
+      position_controlled_ = core_.start_mode == 1;
+      setpoint_ = MotionState{actual_position_, 0.0, 0.0};
+      generator_ = Generator::kIdle;
+      if (auto* controller = this->controller()) controller->reset();
+      positioning_.cancel();
+      break;
+    case PowerEvent::kDisabling:
+      // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
+      abort_synchronous(0);
+      abort_motion(0);
+      abort_pending(0);
+      if (passive_.id != 0) end_passive_homing(JobState::kAborted);
+      limit_stop_ = false;
+      if (const auto ramp = core_.disable_ramp(db_.DynamicDefaults, db_.DynamicLimits, dynamic_units())) {
+        plan_velocity(0.0, *ramp, false);
+      } else {
+        generator_ = Generator::kIdle;
+      }
+      break;
+    case PowerEvent::kNone:
+      break;
+  }
+}
+
+// Inputs that act while a job runs: the override (spec 01 §8.4) and the jog inputs (spec 03 §3.4).
+void PositioningAxis::update_live_motion() noexcept {
+  const double ovr = override_factor();
+  switch (motion_.kind) {
+    case JobKind::kJog:
+    case JobKind::kMoveVelocity: {
+      const double target =
+          std::clamp(motion_.command_velocity * ovr, -motion_.limits.velocity, motion_.limits.velocity);
+      if (std::fabs(target - motion_.planned_velocity) > 1e-12 ||
+          (motion_.kind == JobKind::kJog && generator_ == Generator::kIdle &&
+           std::fabs(setpoint_.velocity - target) > kStandstillEpsilon)) {
+        motion_.planned_velocity = target;
+        plan_velocity(target, motion_.limits, false);
+      }
+      break;
+    }
+    case JobKind::kMoveAbsolute:
+    case JobKind::kMoveRelative: {
+      if (motion_.interpolation_done) break;
+      const double v = positioning_velocity(motion_);
+      if (std::fabs(v - motion_.planned_velocity) > 1e-12) {
+        motion_.planned_velocity = v;
+        if (v > 0.0) {
+          ProfileLimits l = motion_.limits;
+          l.velocity = v;
+          plan_position(motion_.target, l);
+        } else {
+          plan_velocity(0.0, motion_.limits, false);  // override 0 %: stop, the job stays active
+        }
+      }
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
+                                    bool abort_acceleration) noexcept {
+  MotionState start = setpoint_;
+  if (abort_acceleration) start.acceleration = 0.0;
+  ProfileLimits l = limits;
+  if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
+  VelocityProfile planned;
+  if (planned.plan(start, target, l)) {
+    profile_ = planned;
+    profile_time_ = 0.0;
+    profile_offset_ = 0.0;
+    generator_ = Generator::kVelocity;
+  }
+}
+
+void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
+  ProfileLimits l = limits;
+  l.jerk = replanning_jerk(setpoint_.velocity, setpoint_.acceleration, l.jerk, velocity_limit(), false);
+  PositionProfile planned;
+  if (planned.plan(setpoint_, target, l)) {
+    profile_ = planned;
+    profile_time_ = 0.0;
+    profile_offset_ = 0.0;
+    generator_ = Generator::kPosition;
+  }
+}
+
+void PositioningAxis::generate_setpoint() noexcept {
+  if (follows_actual()) {
+    setpoint_ = MotionState{actual_position_, actual_velocity_, 0.0};  // follow-up (spec 02 §3.2)
+    generator_ = Generator::kIdle;
+    return;
+  }
+  switch (generator_) {
+    case Generator::kVelocity: {
+      profile_time_ += core_.ipo_cycle_s;
+      if (profile_time_ >= velocity_profile().duration() - 1e-9) {
+        const MotionState end = velocity_profile().at(velocity_profile().duration());
+        setpoint_ = MotionState{
+            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
+            end.velocity, 0.0};
+        generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
+      } else {
+        setpoint_ = velocity_profile().at(profile_time_);
+        setpoint_.position += profile_offset_;
+      }
+      break;
+    }
+    case Generator::kPosition: {
+      profile_time_ += core_.ipo_cycle_s;
+      if (profile_time_ >= position_profile().duration() - 1e-9) {
+        setpoint_ = MotionState{
+            position_profile().at(position_profile().duration() + 1.0).position + profile_offset_, 0.0, 0.0};
+        generator_ = Generator::kIdle;
+        const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
+        if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
+            homing_to_home) {
+          if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
+            motion_.interpolation_done = true;
+            positioning_target_ = setpoint_.position;
+            positioning_start_pending_ = true;
+          }
+        }
+      } else {
+        setpoint_ = position_profile().at(profile_time_);
+        setpoint_.position += profile_offset_;
+      }
+      break;
+    }
+    case Generator::kIdle:
+      setpoint_.position += setpoint_.velocity * core_.ipo_cycle_s;
+      setpoint_.acceleration = 0.0;
+      break;
+    case Generator::kSynchronous:
+      setpoint_ = synchronous_setpoint();
+      break;
+  }
+  // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
+  // setpoint goes to the drive directly.
+  if (!position_controlled_) setpoint_.position = actual_position_;
+}
+
+// The setpoint the generator will give `dt` after the present one unless a job changes it (as
+// generate_setpoint() evaluates the profiles).
+MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
+  const double t = profile_time_ + dt;
+  MotionState s{setpoint_.position + setpoint_.velocity * dt, setpoint_.velocity, 0.0};
+  if (generator_ == Generator::kVelocity) {
+    const double end = velocity_profile().duration();
+    if (t >= end - 1e-9) {
+      const MotionState e = velocity_profile().at(end);
+      s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
+    } else {
+      s = velocity_profile().at(t);
+      s.position += profile_offset_;
+    }
+  } else if (generator_ == Generator::kPosition) {
+    const double end = position_profile().duration();
+    if (t >= end - 1e-9) {
+      s = MotionState{position_profile().at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+    } else {
+      s = position_profile().at(t);
+      s.position += profile_offset_;
+    }
+  }
+  return s;
+}
+
+// Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
+void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoint) noexcept {
+  if (core_.phase != PowerPhase::kEnabled || follows_actual()) return;
+  const auto& limits = software_limits_.effective_limits();
+  if (!limits.monitored || !homed()) {
+    // Not effective (not active, or not homed): the monitor only resets its state; no look-ahead to prepare.
+    limits::SoftwareLimitInput idle;
+    idle.homed = homed();
+    (void)software_limits_.update(idle);
+    return;
+  }
+  const std::int32_t reaction =
+      limits::sw_limit_reached_reaction(db_.PositionLimits_SW.LimitReachedBehavior, false);
+  const auto& l = db_.DynamicLimits;
+  limits::SoftwareLimitInput in;
+  const double start = db_.Modulo.StartValue;
+  const double length = db_.Modulo.Length;
+  const std::int64_t k = modulo() ? cycle_index(setpoint_.position, start, length) : 0;
+  const double shift = modulo() ? static_cast<double>(k) * length : 0.0;
+  in.position = setpoint_.position - shift;
+  // The look-ahead knows a job from its first setpoint on: a motion that starts from standstill within one
+  // step of a limit has passed it in this setpoint already. The monitor sees it at the limit (it raises 533
+  // for the approach, not 534 for passing) and the setpoint stops there (spec 02 §4.5: decoupled, stopped at
+  // the limit). A moving setpoint is the look-ahead's job.
+  const double previous = previous_setpoint.position - shift;
+  const bool from_standstill = previous_setpoint.velocity == 0.0 && previous_setpoint.acceleration == 0.0;
+  double crossed = std::numeric_limits<double>::quiet_NaN();
+  if (from_standstill) {
+    const double hi = limits.max_position;
+    const double lo = limits.min_position;
+    const double tolerance = 1e-9 * std::max({1.0, std::fabs(hi), std::fabs(lo)});  // as the monitor's
+    if (previous <= hi + tolerance && in.position > hi + tolerance) crossed = hi;
+    if (previous >= lo - tolerance && in.position < lo - tolerance) crossed = lo;
+    if (!std::isnan(crossed)) in.position = crossed;
+  }
+  in.velocity = setpoint_.velocity;
+  in.acceleration = setpoint_.acceleration;
+  in.homed = true;
+  in.following_axis = following_in_synchronous_operation();
+  if (reaction == limits::kReactionStopMaxDynamics) {
+    in.stop_deceleration = l.MaxDeceleration / units_.acceleration;
+    in.stop_jerk = l.MaxJerk / units_.acceleration;
+  } else {
+    const ProfileLimits cur =
+        motion_.id != 0 ? motion_.limits
+                        : ProfileLimits{0.0, 0.0, db_.DynamicDefaults.Deceleration / units_.acceleration,
+                                        db_.DynamicDefaults.Jerk / units_.acceleration};
+    in.stop_deceleration = cur.deceleration;
+    in.stop_jerk = cur.jerk;
+  }
+  in.cycle_time = core_.ipo_cycle_s;
+  // The next setpoint as the profile will produce it; a synchronous axis' depends on its leader (the monitor
+  // then extrapolates with constant acceleration).
+  if (std::isnan(crossed) && generator_ != Generator::kSynchronous) {
+    const MotionState next = predicted_setpoint(core_.ipo_cycle_s);
+    in.next_known = true;
+    in.next_position = next.position - shift;
+    in.next_velocity = next.velocity;
+    in.next_acceleration = next.acceleration;
+  }
+  const auto r = software_limits_.update(in);
+  if (!std::isnan(crossed)) setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
+  if (r.stop_now) {
+    limit_stop_ = true;
+    limit_stop_position_ = r.stop_position + static_cast<double>(k) * (modulo() ? length : 0.0);
+  }
+  if (r.alarm.raised()) {
+    raise_with(r.alarm.alarm, static_cast<std::uint32_t>(r.alarm.side), r.alarm.reaction);
+    apply_alarm_reactions();  // the reaction takes effect in the cycle of the alarm
+  }
+}
+
+void PositioningAxis::complete_jobs() noexcept {
+  const bool settled = generator_ == Generator::kIdle;
+  const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
+  const PositioningOutcome outcome = positioning_.status().outcome;
+  if (motion_.id != 0) {
+    switch (motion_.kind) {
+      case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
+      case JobKind::kMoveAbsolute:
+      case JobKind::kMoveRelative:
+        // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
+        if (motion_.interpolation_done && !positioning_start_pending_ &&
+            outcome == PositioningOutcome::kDone) {
+          core_.jobs.set(motion_.id, JobState::kDone);
+          motion_ = Motion{};
+          // BufferMode 1: the appended job starts in the cycle the running one is Done (spec 03 §3.7 T-E).
+          if (pending_.id != 0) {
+            const Motion next = pending_;
+            pending_ = Motion{};
+            start_positioning(next);
+          }
+        }
+        break;
+      case JobKind::kHalt:
+        if (settled && at_zero) {
+          core_.jobs.set(motion_.id, JobState::kDone);
+          motion_ = Motion{};
+          if (position_controlled_) {  // X6 after a position-controlled stop (spec 04 §8 rule 2)
+            positioning_target_ = setpoint_.position;
+            positioning_start_pending_ = true;
+          }
+        }
+        break;
+      case JobKind::kJog:
+        if (motion_.jog_stopping && settled && at_zero) {
+          core_.jobs.set(motion_.id, JobState::kDone);  // J2
+          motion_ = Motion{};
+        } else if (auto* r = core_.jobs.find(motion_.id)) {
+          r->status.in_velocity = settled && !motion_.jog_stopping;
+        }
+        break;
+      case JobKind::kMoveVelocity:
+        if (auto* r = core_.jobs.find(motion_.id)) r->status.in_velocity = settled;
+        break;
+      default:
+        break;
+    }
+  }
+  if (core_.stop.id != 0 && !core_.stop.done && settled && at_zero) {
+    core_.stop_reached_standstill();
+    if (position_controlled_) {
+      positioning_target_ = setpoint_.position;
+      positioning_start_pending_ = true;
+    }
+  }
+  if (limit_stop_ && settled && at_zero) limit_stop_ = false;
+  if (core_.phase == PowerPhase::kDisabling) {
+    const bool drive_off = virtual_axis() || !drive_.in_operation();
+    // A virtual or simulated axis' actual value lags its setpoint (spec 01 §2.5): it is disabled once the
+    // actual value has arrived too, so that the follow-up after disabling takes no step back.
+    const bool caught_up = !virtual_axis() || std::fabs(actual_position_ - setpoint_.position) < 1e-9;
+    core_.finish_disabling(
+        settled && at_zero && caught_up,
+        drive_off && std::fabs(actual_velocity_) < db_.StandstillSignal.VelocityThreshold / units_.velocity);
+  }
+}
+
+void PositioningAxis::update_status() noexcept {
+  const double start = db_.Modulo.StartValue;
+  const double length = db_.Modulo.Length;
+  // Setpoints and actual values as the data block shows them (spec 04 §2): modulo-wrapped, data units.
+  // While the backlash is crossed, ActualPosition keeps its value (spec 04 §5.2 StatusWord2.X2).
+  const double shown_actual = actual_position_ - backlash_.held_travel();
+  if (modulo()) {
+    const ModuloPosition sp = modulo_wrap(setpoint_.position, start, length);
+    const ModuloPosition act = modulo_wrap(shown_actual, start, length);
+    db_.Position = sp.position;
+    db_.ActualPosition = act.position;
+    // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
+    // the cycles between them.
+    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() + act.cycle -
+                                                               cycle_index(actual_position_, start, length)
+                                                         : act.cycle;
+    db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
+    db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
+  } else {
+    db_.Position = setpoint_.position;
+    db_.ActualPosition = shown_actual;
+    db_.ModuloCycle = 0;
+    db_.ActualModuloCycle = 0;
+  }
+  db_.Velocity = setpoint_.velocity * units_.velocity;
+  db_.Acceleration = setpoint_.acceleration * units_.acceleration;
+  db_.ActualVelocity = actual_velocity_ * units_.velocity;
+  auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
+  sensor.Position = db_.ActualPosition;
+  sensor.Velocity = db_.ActualVelocity;
+  sensor.ModuloCycle = db_.ActualModuloCycle;
+  if (virtual_axis()) sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);  // §2.5 table
+
+  const bool positioning = motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative;
+  db_.StatusPositioning.TargetPosition =
+      positioning ? (modulo() ? modulo_wrap(motion_.target, start, length).position : motion_.target) : 0.0;
+  db_.StatusPositioning.TargetPositionModuloCycle =
+      positioning && modulo()
+          ? static_cast<std::int32_t>(db_.ModuloCycle + cycle_index(motion_.target, start, length) -
+                                      cycle_index(setpoint_.position, start, length))
+          : 0;
+  db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
+  db_.StatusPositioning.SetpointExecutionTime =
+      generator_ == Generator::kPosition ? std::max(0.0, position_profile().duration() - profile_time_) : 0.0;
+
+  std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
+  std::uint32_t sw2 = 0;
+  const limits::LimitStatusBits limit_bits = limits::merge(software_limits_.bits(), hardware_limits_.bits());
+  std::uint32_t ew = limit_bits.error_word();
+  std::uint32_t ww = limit_bits.warning_word();
+  core_.update_words(sw, sw2, ew, ww, db_.ErrorDetail, db_.Simulation.Mode == kModeOn);
+  const bool enabled = test(sw, StatusWordBit::kEnable);
+  const bool settled = generator_ == Generator::kIdle;
+  const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
+  const bool job_running = motion_.id != 0 || pending_.id != 0 || (core_.stop.id != 0 && !core_.stop.done);
+  db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
+      retained_.valid ? retained_.AbsEncoderOffset : 0.0;
+  const PositioningOutcome outcome = positioning_.status().outcome;
+  assign(sw, StatusWordBit::kHomingDone, homed());
+  // P: Done after the positioning window check (spec 04 §8 rule 2), or no motion job at all.
+  assign(sw, StatusWordBit::kDone,
+         !job_running && settled && at_zero && outcome != PositioningOutcome::kInProgress &&
+             outcome != PositioningOutcome::kFault && !positioning_start_pending_);
+  assign(sw, StatusWordBit::kStandstill, standstill_.standstill());
+  assign(sw, StatusWordBit::kPositioningCommand, positioning);
+  assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
+  assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
+  assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
+  // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
+  // ramp passes a = 0 only for an instant).
+  const bool constant =
+      std::fabs(setpoint_.acceleration) < 1e-9 && std::fabs(last_setpoint_acceleration_) < 1e-9;
+  last_setpoint_acceleration_ = setpoint_.acceleration;
+  assign(sw, StatusWordBit::kConstantVelocity, enabled && constant);
+  assign(sw, StatusWordBit::kAccelerating, setpoint_.acceleration * setpoint_.velocity > 0.0);
+  assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
+  assign(sw, StatusWordBit::kNonPositionControlled, !position_controlled_ || !enabled);
+  assign(sw, StatusWordBit::kInClamping, clamping_.clamped());
+  sw |= limit_bits.status_word();
+  db_.StatusWord = sw;
+  assign(sw2, StatusWord2Bit::kPassingBacklash, backlash_.passing());
+  db_.StatusWord2 = sw2;
+  db_.ErrorWord = ew;
+  db_.WarningWord = ww;
+  update_synchronous_status();
+}
+
+void PositioningAxis::restart() noexcept {
+  // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7). An incremental encoder loses
+  // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
+  // value (spec 02 §4.4).
+  const auto changed = StatusWordBit::kOnlineStartValuesChanged;
+  abort_synchronous(0);
+  // An adjusted absolute encoder stays adjusted until new encoder settings are downloaded, and a restart is
+  // not such a download: its retained offset is restored below (spec 02 §5.1, §5.12).
+  std::array<std::int32_t, 4> adjusted{};  // StatusSensor[1..4]
+  for (std::size_t n = 0; n < adjusted.size(); ++n)
+    adjusted[n] = db_.StatusSensor[n].Adjusted;
+  db_ = *start_;
+  core_.restart();
+  assign(db_.StatusWord, changed, false);
+  db_.OperativeSensor = db_.PositionControl.InitialOperativeSensor;
+  db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
+  motion_ = Motion{};
+  pending_ = Motion{};
+  generator_ = Generator::kIdle;
+  limit_stop_ = false;
+  positioning_start_pending_ = false;
+  clamping_.reset();
+  clamp_abort_pending_ = false;
+  units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
+  const RetainedSensorState retained = encoder_.chain().retained_state();
+  configure_components();
+  if (encoder_.chain().absolute_type()) {
+    encoder_.chain().power_up(&retained);
+    for (std::size_t n = 0; n < adjusted.size(); ++n) {
+      const bool absolute = db_.Sensor[n].Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+      if (absolute) db_.StatusSensor[n].Adjusted = adjusted[n];
+    }
+  } else {
+    homed_ = false;
+    actual_position_ = 0.0;
+    backlash_.reset();  // not homed: the first motion is not compensated (spec 01 §5.9)
+  }
+  setpoint_ = MotionState{actual_position_, 0.0, 0.0};
+  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
+  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
+  if (device_ != nullptr) drive_.restart(drive_config_);
+}
+
+}  // namespace tomc::techobjects

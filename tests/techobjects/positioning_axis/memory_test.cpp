@@ -1,0 +1,116 @@
+// Memory per technology object (issue 14; DEVELOPERS.md target "<= 8 KiB per axis TO"): a positioning axis,
+// object plus everything it owns, stays within 8,192 bytes; the speed axis and the external encoder take
+// less. memory_footprint() is checked against the heap that constructing a TO really takes, so that an owned
+// allocation cannot go unaccounted. Figures: docs/performance.md "Memory per axis".
+#include <gtest/gtest.h>
+#include <malloc.h>
+
+#include <memory>
+
+#include "positioning_axis_fixture.hpp"
+#include "tomc/drives/simulated_drive.hpp"
+#include "tomc/techobjects/external_encoder/external_encoder.hpp"
+#include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/techobjects/runtime/runtime.hpp"
+#include "tomc/techobjects/speed_axis/speed_axis.hpp"
+
+namespace {
+
+using namespace tomc;
+using techobjects::ExternalEncoder;
+using techobjects::PositioningAxis;
+using techobjects::SpeedAxis;
+
+constexpr std::size_t kAxisBudget = 8192;
+
+// A runtime with one positioning axis on a simulated drive (telegram 3) and one virtual one.
+struct Machine {
+  Machine() : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
+    drives::DeviceConfig device;
+    device.drive_telegram = 3;
+    auto& io =
+        runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+    driven = &runtime.emplace<PositioningAxis>("Slide", &io, tomc::testing::linear_axis_data());
+    auto virtual_data = tomc::testing::linear_axis_data();
+    virtual_data.VirtualAxis.Mode = techobjects::kModeOn;
+    virtual_axis = &runtime.emplace<PositioningAxis>("Virtual", nullptr, virtual_data);
+    speed = &runtime.emplace<SpeedAxis>("Conveyor", nullptr, [] {
+      techobjects::SpeedAxisData d;
+      d.VirtualAxis.Mode = techobjects::kModeOn;
+      return d;
+    }());
+    drives::DeviceConfig encoder_device;
+    encoder_device.encoder_telegrams[0] = 81;
+    auto& enc_io = runtime.add_device(
+        std::make_unique<drives::SimulatedDrive>(encoder_device, drives::SimulatedDriveParameters{}));
+    encoder = &runtime.emplace<ExternalEncoder>("LineEncoder", &enc_io, techobjects::ExternalEncoderData{});
+    runtime.start();
+  }
+  techobjects::Runtime runtime;
+  PositioningAxis* driven = nullptr;
+  PositioningAxis* virtual_axis = nullptr;
+  SpeedAxis* speed = nullptr;
+  ExternalEncoder* encoder = nullptr;
+};
+
+TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
+  Machine m;
+  EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
+  EXPECT_LE(m.virtual_axis->memory_footprint(), kAxisBudget);
+  // The start values went to the runtime's load memory when the axes were added.
+  EXPECT_EQ(m.driven->memory_footprint(), sizeof(PositioningAxis));
+  EXPECT_EQ(m.runtime.start_values().size(), 4u);
+  m.runtime.step();
+  EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
+}
+
+TEST(MemoryPerAxis, SpeedAxisAndExternalEncoderSmallerStill) {
+  Machine m;
+  EXPECT_LT(m.speed->memory_footprint(), m.driven->memory_footprint());
+  EXPECT_LT(m.encoder->memory_footprint(), m.driven->memory_footprint());
+}
+
+// With the dynamic filter on (spec 02 §7.6) the axis owns the filter histories besides the object.
+TEST(MemoryPerAxis, DynamicFilterHistoriesOnlyWhenTheFilterIsOn) {
+  auto data = tomc::testing::linear_axis_data();
+  data.VirtualAxis.Mode = techobjects::kModeOn;
+  const PositioningAxis off("Off", nullptr, data);
+  data.SetpointFilter.DynamicFilter.Mode = 1;
+  data.SetpointFilter.DynamicFilter.T1 = 0.004;
+  const PositioningAxis on("On", nullptr, data);
+  EXPECT_GT(on.memory_footprint(), off.memory_footprint());
+  EXPECT_EQ(on.memory_footprint() - off.memory_footprint(), on.dynamic_filter().history_bytes());
+  EXPECT_EQ(off.dynamic_filter().history_bytes(), 0u);
+}
+
+// A start value that switches the filter on reserves the histories at once (a user call), so that the
+// MC_Reset Restart applying it allocates nothing in MC_Interpolator (decision M2).
+TEST(MemoryPerAxis, FilterModeStartValueReservesTheHistories) {
+  auto data = tomc::testing::linear_axis_data();
+  data.VirtualAxis.Mode = techobjects::kModeOn;
+  PositioningAxis axis("Axis", nullptr, data);
+  ASSERT_EQ(axis.dynamic_filter().history_bytes(), 0u);
+  ASSERT_TRUE(axis.write_start_value("SetpointFilter.DynamicFilter.Mode", 2).ok());
+  EXPECT_GT(axis.dynamic_filter().history_bytes(), 0u);
+}
+
+// memory_footprint() accounts for every allocation a TO makes: constructing one (not yet in a runtime, so it
+// still owns its start values) takes that much heap, give or take the allocator's per-block overhead.
+TEST(MemoryPerAxis, FootprintAccountsForTheHeap) {
+#ifdef TOMC_SANITIZED_BUILD
+  GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
+#else
+  auto data = tomc::testing::linear_axis_data();
+  data.VirtualAxis.Mode = techobjects::kModeOn;
+  data.SetpointFilter.DynamicFilter.Mode = 2;
+  data.SetpointFilter.DynamicFilter.T1 = 0.004;
+  const auto before = mallinfo2().uordblks;
+  auto axis = std::make_unique<PositioningAxis>("A", nullptr, data);
+  const auto taken = mallinfo2().uordblks - before;
+  const std::size_t footprint = axis->memory_footprint();
+  EXPECT_GE(taken, footprint);
+  EXPECT_LE(taken, footprint + 3 * 32);  // three blocks: the object, its start values, the filter histories
+#endif
+}
+
+}  // namespace

@@ -1,0 +1,69 @@
+// The real-time runner: absolute-deadline cycles, overrun counting and jitter statistics. These are behaviour
+// tests (does it count), not speed tests: bounds are generous for a loaded 2-core CI machine.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "tomc/techobjects/runtime/realtime_runner.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using tomc::techobjects::RealTimeRunner;
+using tomc::techobjects::RealTimeRunnerConfig;
+
+TEST(RealTimeRunner, RunsTheCycleAndRecordsJitter) {
+  std::atomic<int> calls{0};
+  RealTimeRunner runner(RealTimeRunnerConfig{1ms, 0, false}, [&] { ++calls; });
+  const auto begin = std::chrono::steady_clock::now();
+  runner.start();
+  std::this_thread::sleep_for(200ms);
+  runner.stop();
+  const auto elapsed = std::chrono::steady_clock::now() - begin;
+  const auto s = runner.statistics();
+  EXPECT_EQ(s.cycles, static_cast<std::uint64_t>(calls.load()));
+  EXPECT_GT(s.cycles, 20u);  // ~200 expected; a loaded CI machine gets far more than 20
+  // Absolute deadlines: never more cycles than whole periods elapsed between start and the end of stop().
+  EXPECT_LE(s.cycles, static_cast<std::uint64_t>(elapsed / 1ms));
+  EXPECT_LE(s.jitter_min_us, s.jitter_median_us);
+  EXPECT_LE(s.jitter_median_us, s.jitter_p99_us);
+  EXPECT_LE(s.jitter_p99_us, s.jitter_max_us + 1.0);
+}
+
+TEST(RealTimeRunner, CountsOverrunsOfASlowCycle) {
+  // Every third cycle takes 3.5 periods: each of those is an overrun and skips its missed periods.
+  std::atomic<int> calls{0};
+  RealTimeRunner runner(RealTimeRunnerConfig{2ms, 0, false}, [&] {
+    if (++calls % 3 == 0) std::this_thread::sleep_for(7ms);
+  });
+  runner.start();
+  std::this_thread::sleep_for(300ms);
+  runner.stop();
+  const auto s = runner.statistics();
+  ASSERT_GE(s.cycles, 6u);
+  EXPECT_GE(s.overruns, s.cycles / 3);
+  EXPECT_GE(s.skipped_periods, 3 * (s.cycles / 3));
+}
+
+TEST(RealTimeRunner, ReportsWhatItCouldNotSetUp) {
+  // SCHED_FIFO needs privileges a test run may not have; either it works or the reason is reported.
+  RealTimeRunner runner(RealTimeRunnerConfig{1ms, 10, false}, [] {});
+  runner.start();
+  std::this_thread::sleep_for(20ms);
+  runner.stop();
+  const auto s = runner.statistics();
+  EXPECT_GT(s.cycles, 0u);
+  if (!s.setup_warnings.empty()) {
+    EXPECT_NE(s.setup_warnings.find("SCHED_FIFO"), std::string::npos);
+  }
+}
+
+TEST(RealTimeRunner, RejectsBadConfiguration) {
+  EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{0ms, 0, false}, [] {}), std::invalid_argument);
+  EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 100, false}, [] {}), std::invalid_argument);
+  EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 0, false}, nullptr), std::invalid_argument);
+}
+
+}  // namespace

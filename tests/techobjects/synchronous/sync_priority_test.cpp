@@ -1,0 +1,86 @@
+// The §9.19.2 matrix (spec 07 §5.1, spec 03 §6.2) cell by cell, and its footnotes.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tomc/techobjects/synchronous/sync_priority.hpp"
+
+namespace {
+
+using namespace tomc::techobjects;
+
+// Rows as printed in spec 07 §5.1, columns S1..S9 ("A6" = "A ⁶", "A" for "A ⁷", "A ⁷⁸").
+const std::array<std::string, 14> kSpecRows = {
+    "A A - N - - - - A",    // MC_Home Mode 3, 5
+    "A A - A A A - A A",    // MC_Halt; Move* BufferMode 0; MoveVelocity; MoveJog
+    "N N - N N N - N N",    // Move* BufferMode 1
+    "A A - A A A - A A",    // MotionInVelocity, MotionInPosition
+    "- -/N - - - - - - -",  // superimposed
+    "A A A A A A - A A",    // MC_Stop
+    "A A A A A A - A A",    // GearIn, GearInVelocity
+    "- - A - - - - A -",    // GearInPos/CamIn pending
+    "A A6 A A A A - A A",   // GearInPos/CamIn active
+    "- N - - A N - - N",    // Phasing
+    "- N - - N A - - N",    // Offset
+    "- - - - - - A - -",    // LeadingValueAdditive
+    "- N A - - - - A N",    // GearOut/CamOut pending
+    "A N A A A A - A N",    // GearOut/CamOut active
+};
+
+std::vector<std::string> split(const std::string& row) {
+  std::istringstream in(row);
+  std::vector<std::string> cells;
+  std::string cell;
+  while (in >> cell)
+    cells.push_back(cell);
+  return cells;
+}
+
+TEST(SyncPriority, MatrixMatchesTheManualCellByCell) {
+  for (std::size_t r = 0; r < kSpecRows.size(); ++r) {
+    const auto cells = split(kSpecRows[r]);
+    ASSERT_EQ(cells.size(), kRunningSyncJobCount) << "row " << r;
+    for (std::size_t c = 0; c < kRunningSyncJobCount; ++c) {
+      EXPECT_EQ(to_string(sync_priority_cell(static_cast<NewSyncRow>(r), static_cast<RunningSyncJob>(c))),
+                cells[c])
+          << "row " << r << " x S" << c + 1;
+    }
+  }
+}
+
+// Footnote 6: superimposed jobs against velocity gearing, and an active GearInPos against it, depend on the
+// follower's position control.
+TEST(SyncPriority, Footnote6PositionControl) {
+  SyncContext pc;
+  SyncContext npc;
+  npc.follower_position_controlled = false;
+  EXPECT_EQ(resolve(NewSyncRow::kSuperimposed, RunningSyncJob::kGearInVelocity, pc), Outcome::kProceed);
+  EXPECT_EQ(resolve(NewSyncRow::kSuperimposed, RunningSyncJob::kGearInVelocity, npc), Outcome::kRejectNew);
+  EXPECT_EQ(resolve(NewSyncRow::kSyncInActive, RunningSyncJob::kGearInVelocity, pc), Outcome::kAbortRunning);
+  EXPECT_EQ(resolve(NewSyncRow::kSyncInActive, RunningSyncJob::kGearInVelocity, npc), Outcome::kRejectNew);
+}
+
+// Footnote 7: MC_GearOut affects only gearing jobs; footnote 8: profile 5 only pending jobs; footnote 1:
+// active homing aborts nothing on a virtual or simulated axis.
+TEST(SyncPriority, Footnotes7And8And1) {
+  SyncContext other_family;
+  other_family.same_family = false;
+  EXPECT_EQ(resolve(NewSyncRow::kSyncOutActive, RunningSyncJob::kGearIn, other_family), Outcome::kProceed);
+  EXPECT_EQ(resolve(NewSyncRow::kSyncOutActive, RunningSyncJob::kGearIn, SyncContext{}),
+            Outcome::kAbortRunning);
+  SyncContext cancel;
+  cancel.cancel_pending_only = true;
+  EXPECT_EQ(resolve(NewSyncRow::kSyncOutActive, RunningSyncJob::kSyncInPending, cancel),
+            Outcome::kAbortRunning);
+  EXPECT_EQ(resolve(NewSyncRow::kSyncOutActive, RunningSyncJob::kSyncInActive, cancel), Outcome::kProceed);
+  SyncContext simulated;
+  simulated.virtual_or_simulated_axis = true;
+  EXPECT_EQ(resolve(NewSyncRow::kActiveHoming, RunningSyncJob::kGearIn, simulated), Outcome::kProceed);
+  EXPECT_EQ(resolve(NewSyncRow::kActiveHoming, RunningSyncJob::kGearIn, SyncContext{}),
+            Outcome::kAbortRunning);
+}
+
+}  // namespace
