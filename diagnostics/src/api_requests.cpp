@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -381,6 +383,90 @@ std::variant<bool, std::string> parse_switch(std::string_view body) {
   if (const std::string extra = f.unknown(); !extra.empty())
     return "'" + printable(extra) + "' is not a parameter";
   return *on;
+}
+
+namespace {
+
+std::string number_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// The snapshot value of a data-block variable by its path; nullopt without a snapshot or such a variable.
+std::optional<double> value_of(std::span<const techobjects::VariableInfo> variables,
+                               std::span<const double> values, std::string_view path) {
+  for (std::size_t i = 0; i < variables.size() && i < values.size(); ++i) {
+    if (variables[i].path == path) return values[i];
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> check_panel_ranges(const PanelCommand& c,
+                                              std::span<const techobjects::VariableInfo> variables,
+                                              std::span<const double> values) {
+  constexpr double kRange = 1.0e12;  // LREAL positions and dynamics of the data block (spec 04 §0.2)
+  const auto limit = [&](std::string_view path) { return value_of(variables, values, path); };
+  const auto within_range = [&](std::string_view key, double v) -> std::optional<std::string> {
+    if (std::abs(v) > kRange) return std::string(key) + ": " + number_text(v) + " outside -1.0E12 .. 1.0E12";
+    return std::nullopt;
+  };
+  switch (c.kind) {
+    case PanelCommandKind::kTake:
+      if (c.value != 0.0 && !(c.value >= AxisPanel::kMinLifebeatS && c.value <= AxisPanel::kMaxLifebeatS))
+        return "lifebeat_s: " + number_text(c.value) + " outside 0.1 .. 60 s (0: the default 1.5 s)";
+      return std::nullopt;
+    case PanelCommandKind::kSetDynamics: {
+      struct Field {
+        const char* key;
+        double value;
+        const char* limit;
+      };
+      const Field fields[] = {{"velocity", c.dynamics.velocity, "DynamicLimits.MaxVelocity"},
+                              {"acceleration", c.dynamics.acceleration, "DynamicLimits.MaxAcceleration"},
+                              {"deceleration", c.dynamics.deceleration, "DynamicLimits.MaxDeceleration"},
+                              {"jerk", c.dynamics.jerk, "DynamicLimits.MaxJerk"}};
+      for (const Field& f : fields) {
+        const bool jerk = std::string_view(f.key) == "jerk";
+        if (jerk ? f.value < 0.0 : f.value <= 0.0)
+          return std::string(f.key) + ": " + number_text(f.value) + (jerk ? " below 0" : " not above 0");
+        if (auto problem = within_range(f.key, f.value)) return problem;
+        const auto max = limit(f.limit);
+        if (max && (!jerk || *max > 0.0) && f.value > *max) {
+          return std::string(f.key) + ": " + number_text(f.value) + " above the axis' " + f.limit + " " +
+                 number_text(*max);
+        }
+      }
+      return std::nullopt;
+    }
+    case PanelCommandKind::kHome:
+    case PanelCommandKind::kMoveAbsolute: {
+      if (auto problem = within_range("position", c.value)) return problem;
+      if (limit("Modulo.Enable").value_or(0.0) != 0.0) {
+        const double start = limit("Modulo.StartValue").value_or(0.0);
+        const double length = limit("Modulo.Length").value_or(0.0);
+        if (length > 0.0 && !(c.value >= start && c.value < start + length)) {
+          return "position: " + number_text(c.value) + " outside the modulo range " + number_text(start) +
+                 " .. " + number_text(start + length) + " (Modulo.StartValue, Modulo.Length)";
+        }
+      } else if (c.kind == PanelCommandKind::kMoveAbsolute &&
+                 limit("PositionLimits_SW.Active").value_or(0.0) != 0.0) {
+        const auto lo = limit("PositionLimits_SW.MinPosition");
+        const auto hi = limit("PositionLimits_SW.MaxPosition");
+        if (lo && hi && !(c.value >= *lo && c.value <= *hi)) {
+          return "position: " + number_text(c.value) + " outside the software limits " + number_text(*lo) +
+                 " .. " + number_text(*hi) + " (PositionLimits_SW)";
+        }
+      }
+      return std::nullopt;
+    }
+    case PanelCommandKind::kMoveRelative:
+      return within_range("distance", c.value);
+    default:
+      return std::nullopt;
+  }
 }
 
 }  // namespace tomc::diagnostics::api

@@ -1,17 +1,17 @@
-// The diagnostics web server (server.hpp) on cpp-httplib. TOOLCHAIN.md §6 pitfalls handled here: a larger
-// worker pool (each server-sent-event stream holds a worker), no SO_REUSEPORT (a second server must fail to
-// bind instead of silently sharing the port), and the library's pkg-config defines (CMake passes them).
+// The diagnostics web server (server.hpp): the routes of the API on the event-driven HTTP server
+// (http_server.hpp). Which lane each route runs on is chosen here: cached or ready-made answers on the event
+// thread, panel commands on the control lane (STOP and disable first), JSON built under the reader's lock
+// on the read lane, trace exports on the export lane (one at a time, cached, at idle priority).
 #include "tomc/diagnostics/server.hpp"
-
-#include <httplib.h>
-#include <sys/socket.h>
 
 #include <atomic>
 #include <charconv>
 #include <condition_variable>
+#include <cstdio>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "tomc/diagnostics/api.hpp"
 #include "tomc/diagnostics/trace_image.hpp"
@@ -24,13 +24,26 @@ using api::Json;
 
 constexpr const char* kJson = "application/json";
 
-void reply(httplib::Response& res, int status, const Json& body) {
-  res.status = status;
-  res.set_content(api::to_text(body), kJson);
+using http::Lane;
+using http::Request;
+using http::Response;
+
+Response reply(int status, const Json& body) {
+  Response r;
+  r.status = status;
+  r.body = api::to_text(body);
+  return r;
 }
 
-void error(httplib::Response& res, int status, std::string_view message) {
-  reply(res, status, Json{{"error", message}});
+Response error(int status, std::string_view message) {
+  return reply(status, Json{{"error", message}});
+}
+
+Response content(std::string body, std::string type) {
+  Response r;
+  r.body = std::move(body);
+  r.content_type = std::move(type);
+  return r;
 }
 
 // Constant-time comparison: the time taken does not tell how much of a guessed token was right. `expected`
@@ -94,35 +107,46 @@ std::string_view answer_name(PanelAnswer answer) {
 }
 
 // An integer query parameter within [lo, hi]; `fallback` when absent; nullopt when malformed.
-std::optional<int> int_param(const httplib::Request& req, const char* name, int fallback, int lo, int hi) {
+std::optional<int> int_param(const Request& req, const char* name, int fallback, int lo, int hi) {
   if (!req.has_param(name)) return fallback;
-  const std::string text = req.get_param_value(name);
+  const std::string text = req.param(name);
   int value = 0;
   const auto [end, e] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (e != std::errc{} || end != text.data() + text.size() || value < lo || value > hi) return std::nullopt;
   return value;
 }
 
+bool loopback(const std::string& address) {
+  return address.rfind("127.", 0) == 0 || address == "::1" || address == "localhost";
+}
+
 }  // namespace
 
 struct Server::Impl {
-  Impl(Diagnostics& d, ServerOptions o) : diagnostics(d), options(std::move(o)) {}
+  Impl(Diagnostics& d, ServerOptions o) : diagnostics(d), options(std::move(o)), http(options.limits) {}
 
   Diagnostics& diagnostics;
   ServerOptions options;
-  httplib::Server http;
-  std::thread listener;
+  http::Server http;
   std::thread collector;
   std::atomic<bool> running{false};
   int port = 0;
   std::string objects_json;
+  std::vector<std::string> warnings;
+
+  std::mutex collector_mutex;
+  std::condition_variable collector_wake;
+  bool stopping = false;
 
   std::mutex status_mutex;
-  std::condition_variable status_changed;
   std::shared_ptr<const std::string> status_text;
-  std::uint64_t status_version = 0;
-  bool stopping = false;
-  std::atomic<std::size_t> streams{0};
+
+  // Trace exports: only the export lane touches the cache; the counters are read by statistics().
+  using ExportKey = std::tuple<std::uint32_t, std::size_t, int, int, int>;  // generation, rows, state, w, h
+  std::optional<ExportKey> png_key, csv_key;
+  // Shared with the answers being sent: one copy of each export in memory however many clients ask.
+  std::shared_ptr<const std::string> png_cache, csv_cache;
+  std::atomic<std::uint64_t> exports_rendered{0}, exports_cached{0};
 
   Json runner_json() const {
     if (!options.runner_statistics) return nullptr;
@@ -136,6 +160,21 @@ struct Server::Impl {
                 {"warnings", s.setup_warnings}};
   }
 
+  // The HTTP server's own counters (docs/diagnostics.md "A slow client cannot block the server").
+  Json server_json() const {
+    const http::ServerStatistics h = http.statistics();
+    return Json{{"connections", h.open},
+                {"event_streams", h.event_streams},
+                {"accepted", h.accepted},
+                {"evicted", h.evicted},
+                {"refused", h.refused},
+                {"timed_out", h.timed_out},
+                {"errors", h.errors},
+                {"busy", h.busy},
+                {"exports_rendered", exports_rendered.load()},
+                {"exports_cached", exports_cached.load()}};
+  }
+
   std::string render_status() const {
     Json j = diagnostics.read([&](const Diagnostics::State& s) { return api::status(diagnostics, s); });
     j["read_only"] = options.token.empty();
@@ -143,235 +182,243 @@ struct Server::Impl {
     return api::to_text(j);
   }
 
+  void publish_status() {
+    auto text = std::make_shared<const std::string>(render_status());
+    {
+      std::lock_guard lock(status_mutex);
+      status_text = text;
+    }
+    http.publish(std::move(text));
+  }
+
   void collect() {
     auto next_event = std::chrono::steady_clock::now();
-    while (running.load()) {
+    std::unique_lock lock(collector_mutex);
+    while (!stopping) {
+      lock.unlock();
       diagnostics.poll();
       const auto now = std::chrono::steady_clock::now();
       if (now >= next_event) {
-        auto text = std::make_shared<const std::string>(render_status());
-        {
-          std::lock_guard lock(status_mutex);
-          status_text = std::move(text);
-          ++status_version;
-        }
-        status_changed.notify_all();
+        publish_status();
         next_event = now + options.event_period;
       }
-      std::this_thread::sleep_for(options.poll_period);
+      lock.lock();
+      collector_wake.wait_for(lock, options.poll_period, [&] { return stopping; });
     }
   }
 
-  bool host_allowed(const httplib::Request& req) const {
-    if (options.bind_address == "0.0.0.0" || options.bind_address == "::") return true;
-    const std::string host = req.get_header_value("Host");
+  bool host_allowed(const Request& req) const {
+    const std::string_view host = req.header("host");
+    if (host.empty()) return req.minor_version == 0;  // HTTP/1.0 without Host: only the socket's address
     const std::string p = ":" + std::to_string(port);
-    for (const std::string& name :
-         {options.bind_address, std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]")}) {
-      if (host == name + p || (port == 80 && host == name)) return true;
+    auto named = [&](const std::string& name) { return host == name + p || host == name; };
+    const std::string& a = options.bind_address;
+    if (a != "0.0.0.0" && a != "::") {
+      if (named(a.find(':') != std::string::npos ? "[" + a + "]" : a)) return true;
+    }
+    for (const char* name : {"127.0.0.1", "localhost", "[::1]"}) {
+      if (named(name)) return true;
+    }
+    for (const std::string& name : options.allowed_hosts) {
+      if (named(name)) return true;
     }
     return false;
   }
 
-  // 0 when the request may go on, else the HTTP status it was refused with.
-  int authorise(const httplib::Request& req, httplib::Response& res) const {
+  // nullopt when the request may go on, else the answer it is refused with.
+  std::optional<Response> authorise(const Request& req) const {
     if (options.token.empty()) {
-      error(res, 403, "read-only server: start it with a token to allow control actions");
-      return 403;
+      return error(403, "read-only server: start it with a token to allow control actions and exports");
     }
-    const std::string header = req.get_header_value("Authorization");
+    const std::string_view header = req.header("authorization");
     constexpr std::string_view kBearer = "Bearer ";
-    if (!std::string_view(header).starts_with(kBearer)) {
-      res.set_header("WWW-Authenticate", "Bearer");
-      error(res, 401, "control actions need 'Authorization: Bearer <token>'");
-      return 401;
+    if (!header.starts_with(kBearer)) {
+      Response r = error(401, "control actions and exports need 'Authorization: Bearer <token>'");
+      r.headers.emplace_back("WWW-Authenticate", "Bearer");
+      return r;
     }
-    if (!same_token(std::string_view(header).substr(kBearer.size()), options.token)) {
-      error(res, 403, "wrong token");
-      return 403;
-    }
-    return 0;
+    if (!same_token(header.substr(kBearer.size()), options.token)) return error(403, "wrong token");
+    return std::nullopt;
   }
 
-  std::optional<std::size_t> object_of(const httplib::Request& req, httplib::Response& res) const {
-    const std::string name = req.matches.size() > 1 ? std::string(req.matches[1]) : std::string();
-    const auto index = diagnostics.find_object(name);
-    if (!index) error(res, 404, "no technology object '" + name + "'");
-    return index;
+  std::optional<std::size_t> object_of(const Request& req) const {
+    const std::string name = req.captures.empty() ? std::string() : req.captures[0];
+    return diagnostics.find_object(name);
+  }
+  Response no_object(const Request& req) const {
+    return error(404,
+                 "no technology object '" + (req.captures.empty() ? std::string() : req.captures[0]) + "'");
+  }
+
+  Response trace_png(const Request& req) {
+    const auto width = int_param(req, "width", 1200, kMinImageWidth, kMaxImageWidth);
+    const auto height = int_param(req, "height", 700, kMinImageHeight, kMaxImageHeight);
+    if (!width || !height) {
+      return error(400, "width " + std::to_string(kMinImageWidth) + " .. " + std::to_string(kMaxImageWidth) +
+                            ", height " + std::to_string(kMinImageHeight) + " .. " +
+                            std::to_string(kMaxImageHeight));
+    }
+    const ExportKey key = diagnostics.read([&](const Diagnostics::State& s) {
+      return ExportKey{s.trace.generation, s.trace.rows(), static_cast<int>(s.trace.state), *width, *height};
+    });
+    if (png_key != key) {
+      // One render at a time (this lane has one thread); the copy is taken out of the lock so that the
+      // collector does not wait for the drawing.
+      const TraceCapture capture = diagnostics.read([](const Diagnostics::State& s) { return s.trace; });
+      const std::vector<std::uint8_t> png = render_trace_png(capture, *width, *height);
+      png_cache = std::make_shared<const std::string>(png.begin(), png.end());
+      png_key =
+          ExportKey{capture.generation, capture.rows(), static_cast<int>(capture.state), *width, *height};
+      ++exports_rendered;
+    } else {
+      ++exports_cached;
+    }
+    Response r;
+    r.content_type = "image/png";
+    r.shared_body = png_cache;
+    return r;
+  }
+
+  Response trace_csv() {
+    const ExportKey key = diagnostics.read([&](const Diagnostics::State& s) {
+      return ExportKey{s.trace.generation, s.trace.rows(), static_cast<int>(s.trace.state), 0, 0};
+    });
+    if (csv_key != key) {
+      csv_cache = std::make_shared<const std::string>(
+          diagnostics.read([](const Diagnostics::State& s) { return api::trace_csv(s.trace); }));
+      csv_key = key;
+      ++exports_rendered;
+    } else {
+      ++exports_cached;
+    }
+    Response r;
+    r.content_type = "text/csv";
+    r.shared_body = csv_cache;
+    r.headers.emplace_back("Content-Disposition", "attachment; filename=\"trace.csv\"");
+    return r;
   }
 
   void routes() {
-    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-      if (!host_allowed(req)) {
-        error(res, 421, "this server answers only for the address it is bound to");
-        return httplib::Server::HandlerResponse::Handled;
-      }
-      if (req.method == "POST" && authorise(req, res) != 0) return httplib::Server::HandlerResponse::Handled;
-      return httplib::Server::HandlerResponse::Unhandled;
+    http.set_error_body([](int status, std::string_view message) { return error(status, message); });
+    http.set_gate([this](const Request& req, Lane lane) -> std::optional<Response> {
+      if (!host_allowed(req))
+        return error(421, "this server answers only for the names it is configured for");
+      if (req.method == "POST" || lane == Lane::kExport) return authorise(req);
+      return std::nullopt;
     });
-    http.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-      if (!res.body.empty()) return;
-      switch (res.status) {
-        case 404:
-          return error(res, 404, "no such resource");
-        case 413:
-          return error(res, 413, "request body larger than 64 KiB");
-        case 400:
-          return error(res, 400, "malformed request");
-        default:
-          return error(res, res.status, "HTTP status " + std::to_string(res.status));
-      }
-    });
-    http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
-      error(res, 500, "internal error");
+    // STOP and disable go to the front of the control queue.
+    http.set_urgent([](const Request& req) {
+      const auto parsed = api::parse_panel_command(req.body);
+      const auto* c = std::get_if<PanelCommand>(&parsed);
+      return c != nullptr && (c->kind == PanelCommandKind::kStop || c->kind == PanelCommandKind::kDisable);
     });
 
-    http.Get("/", [](const httplib::Request&, httplib::Response& res) {
-      res.set_header(
+    http.route("GET", "/", Lane::kInline, [](const Request&) {
+      Response r = content(std::string(web_page()), "text/html; charset=utf-8");
+      r.headers.emplace_back(
           "Content-Security-Policy",
           "default-src 'self'; script-src 'self' 'unsafe-inline'; style-src 'self' 'unsafe-inline'; "
           "img-src 'self' data: blob:; connect-src 'self'; frame-ancestors 'none'");
-      res.set_content(std::string(web_page()), "text/html; charset=utf-8");
+      return r;
     });
-    http.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) { res.status = 204; });
-
-    http.Get("/api/info", [this](const httplib::Request&, httplib::Response& res) {
-      reply(res, 200,
-            Json{{"title", options.title},
-                 {"version", "0.1.0"},
-                 {"servo_cycle_s", diagnostics.servo_cycle_s()},
-                 {"read_only", options.token.empty()},
-                 {"event_period_s", std::chrono::duration<double>(options.event_period).count()},
-                 {"runner", runner_json()}});
+    http.route("GET", "/favicon.ico", Lane::kInline, [](const Request&) {
+      Response r;
+      r.status = 204;
+      return r;
     });
-    http.Get("/api/objects", [this](const httplib::Request&, httplib::Response& res) {
-      res.set_content(objects_json, kJson);
+    http.route("GET", "/api/info", Lane::kInline, [this](const Request&) {
+      return reply(200, Json{{"title", options.title},
+                             {"version", "0.1.0"},
+                             {"servo_cycle_s", diagnostics.servo_cycle_s()},
+                             {"read_only", options.token.empty()},
+                             {"event_period_s", std::chrono::duration<double>(options.event_period).count()},
+                             {"runner", runner_json()},
+                             {"server", server_json()}});
     });
-    http.Get("/api/status", [this](const httplib::Request&, httplib::Response& res) {
-      std::shared_ptr<const std::string> text;
-      {
-        std::lock_guard lock(status_mutex);
-        text = status_text;
-      }
-      res.set_content(text ? *text : render_status(), kJson);
+    http.route("GET", "/api/objects", Lane::kInline,
+               [this](const Request&) { return content(objects_json, kJson); });
+    http.route("GET", "/api/status", Lane::kInline, [this](const Request&) {
+      std::lock_guard lock(status_mutex);
+      return content(*status_text, kJson);  // rendered once before start(), then by the collector
     });
-    http.Get("/api/events", [this](const httplib::Request&, httplib::Response& res) {
-      if (streams.fetch_add(1) >= options.max_event_streams) {
-        streams.fetch_sub(1);
-        error(res, 503, "too many event streams");
-        return;
-      }
-      auto seen = std::make_shared<std::uint64_t>(0);
-      res.set_chunked_content_provider(
-          "text/event-stream",
-          [this, seen](std::size_t, httplib::DataSink& sink) {
-            std::shared_ptr<const std::string> text;
-            {
-              std::unique_lock lock(status_mutex);
-              status_changed.wait_for(lock, std::chrono::seconds(1),
-                                      [&] { return stopping || status_version != *seen; });
-              if (stopping) return false;
-              if (status_version != *seen) {
-                text = status_text;
-                *seen = status_version;
-              }
-            }
-            const std::string chunk = text ? "data: " + *text + "\n\n" : std::string(": keep-alive\n\n");
-            return sink.write(chunk.data(), chunk.size());
-          },
-          [this](bool) { streams.fetch_sub(1); });
+    http.route("GET", "/api/events", Lane::kInline, [](const Request&) {
+      Response r;
+      r.event_stream = true;
+      return r;
     });
-    http.Get(R"(/api/objects/([A-Za-z_][A-Za-z0-9_]*)/variables)",
-             [this](const httplib::Request& req, httplib::Response& res) {
-               if (const auto i = object_of(req, res)) {
-                 reply(res, 200, diagnostics.read([&](const Diagnostics::State& s) {
-                   return api::variables(diagnostics, s, *i);
-                 }));
-               }
-             });
-    http.Get(R"(/api/objects/([A-Za-z_][A-Za-z0-9_]*)/alarms)", [this](const httplib::Request& req,
-                                                                       httplib::Response& res) {
-      if (const auto i = object_of(req, res)) {
-        reply(res, 200,
-              diagnostics.read([&](const Diagnostics::State& s) { return api::alarms(diagnostics, s, *i); }));
-      }
+    http.route("GET", "/api/objects/{}/variables", Lane::kRead, [this](const Request& req) {
+      const auto i = object_of(req);
+      if (!i) return no_object(req);
+      return reply(200, diagnostics.read(
+                            [&](const Diagnostics::State& s) { return api::variables(diagnostics, s, *i); }));
+    });
+    http.route("GET", "/api/objects/{}/alarms", Lane::kRead, [this](const Request& req) {
+      const auto i = object_of(req);
+      if (!i) return no_object(req);
+      return reply(200, diagnostics.read(
+                            [&](const Diagnostics::State& s) { return api::alarms(diagnostics, s, *i); }));
     });
 
-    http.Post(R"(/api/panel/([A-Za-z_][A-Za-z0-9_]*))", [this](const httplib::Request& req,
-                                                               httplib::Response& res) {
-      const auto i = object_of(req, res);
-      if (!i) return;
+    http.route("POST", "/api/panel/{}", Lane::kControl, [this](const Request& req) {
+      const auto i = object_of(req);
+      if (!i) return no_object(req);
       auto parsed = api::parse_panel_command(req.body);
-      if (auto* problem = std::get_if<std::string>(&parsed)) {
-        error(res, 400, *problem);
-        return;
-      }
+      if (auto* problem = std::get_if<std::string>(&parsed)) return error(400, *problem);
       PanelCommand c = std::get<PanelCommand>(parsed);
       c.object = static_cast<std::uint32_t>(*i);
-      const PanelAnswer answer = diagnostics.command(c);
-      reply(res, status_of(answer), Json{{"answer", answer_name(answer)}, {"message", to_string(answer)}});
-    });
-    http.Post(R"(/api/switches/([A-Za-z0-9_.]+))",
-              [this](const httplib::Request& req, httplib::Response& res) {
-                auto parsed = api::parse_switch(req.body);
-                if (auto* problem = std::get_if<std::string>(&parsed)) {
-                  error(res, 400, *problem);
-                  return;
-                }
-                const std::string name = req.matches[1];
-                if (!diagnostics.set_switch(name, std::get<bool>(parsed))) {
-                  error(res, 404, "no switch '" + name + "'");
-                  return;
-                }
-                reply(res, 200, Json{{"name", name}, {"on", std::get<bool>(parsed)}});
-              });
-    http.Post("/api/trace", [this](const httplib::Request& req, httplib::Response& res) {
-      auto parsed = api::parse_trace_request(req.body);
-      if (auto* problem = std::get_if<std::string>(&parsed)) {
-        error(res, 400, *problem);
-        return;
+      // Ranges against the axis' limits (issue 21); only for commands that carry a value to check, so that a
+      // STOP does not even take the reader's lock.
+      std::vector<double> values;
+      if (c.kind == PanelCommandKind::kSetDynamics || c.kind == PanelCommandKind::kHome ||
+          c.kind == PanelCommandKind::kMoveAbsolute) {
+        values = diagnostics.read([&](const Diagnostics::State& s) {
+          return s.objects[*i].valid ? s.objects[*i].snapshot.values : std::vector<double>{};
+        });
       }
+      if (auto problem = api::check_panel_ranges(c, diagnostics.view(*i).variables(), values))
+        return error(400, *problem);
+      const PanelAnswer answer = diagnostics.command(c);
+      return reply(status_of(answer), Json{{"answer", answer_name(answer)}, {"message", to_string(answer)}});
+    });
+    http.route("POST", "/api/switches/{}", Lane::kControl, [this](const Request& req) {
+      auto parsed = api::parse_switch(req.body);
+      if (auto* problem = std::get_if<std::string>(&parsed)) return error(400, *problem);
+      const std::string& name = req.captures[0];
+      if (!diagnostics.set_switch(name, std::get<bool>(parsed)))
+        return error(404, "no switch '" + name + "'");
+      return reply(200, Json{{"name", name}, {"on", std::get<bool>(parsed)}});
+    });
+    http.route("POST", "/api/trace", Lane::kControl, [this](const Request& req) {
+      auto parsed = api::parse_trace_request(req.body);
+      if (auto* problem = std::get_if<std::string>(&parsed)) return error(400, *problem);
       const std::vector<std::string> problems = diagnostics.start_trace(std::get<TraceRequest>(parsed));
       if (!problems.empty()) {
         std::string message;
         for (const auto& p : problems)
           message += (message.empty() ? "" : "; ") + p;
         const bool busy = problems.size() == 1 && problems[0].find("not yet taken") != std::string::npos;
-        error(res, busy ? 503 : 400, message);
-        return;
+        return error(busy ? 503 : 400, message);
       }
-      reply(res, 200, Json{{"started", true}});
+      return reply(200, Json{{"started", true}});
     });
-    http.Post("/api/trace/stop", [this](const httplib::Request&, httplib::Response& res) {
+    http.route("POST", "/api/trace/stop", Lane::kControl, [this](const Request&) {
       diagnostics.stop_trace();
-      reply(res, 200, Json{{"stopping", true}});
+      return reply(200, Json{{"stopping", true}});
     });
-    http.Get("/api/trace", [this](const httplib::Request& req, httplib::Response& res) {
+    http.route("GET", "/api/trace", Lane::kRead, [this](const Request& req) {
       const auto points = int_param(req, "max_points", 2000, 2, 200000);
-      if (!points) return error(res, 400, "max_points: an integer 2 .. 200000");
-      reply(res, 200, diagnostics.read([&](const Diagnostics::State& s) {
+      if (!points) return error(400, "max_points: an integer 2 .. 200000");
+      return reply(200, diagnostics.read([&](const Diagnostics::State& s) {
         return api::trace(s.trace, static_cast<std::size_t>(*points));
       }));
     });
-    http.Get("/api/trace.csv", [this](const httplib::Request&, httplib::Response& res) {
-      res.set_header("Content-Disposition", "attachment; filename=\"trace.csv\"");
-      res.set_content(diagnostics.read([](const Diagnostics::State& s) { return api::trace_csv(s.trace); }),
-                      "text/csv");
-    });
-    http.Get("/api/trace.png", [this](const httplib::Request& req, httplib::Response& res) {
-      const auto width = int_param(req, "width", 1200, kMinImageWidth, kMaxImageWidth);
-      const auto height = int_param(req, "height", 700, kMinImageHeight, kMaxImageHeight);
-      if (!width || !height) {
-        return error(res, 400,
-                     "width " + std::to_string(kMinImageWidth) + " .. " + std::to_string(kMaxImageWidth) +
-                         ", height " + std::to_string(kMinImageHeight) + " .. " +
-                         std::to_string(kMaxImageHeight));
-      }
-      // Copy the capture out of the lock: drawing takes milliseconds, the collector must not wait for it.
-      const TraceCapture capture = diagnostics.read([](const Diagnostics::State& s) { return s.trace; });
-      const std::vector<std::uint8_t> png = render_trace_png(capture, *width, *height);
-      res.set_content(std::string(png.begin(), png.end()), "image/png");
-    });
+    http.route("GET", "/api/trace.csv", Lane::kExport, [this](const Request&) { return trace_csv(); });
+    http.route("GET", "/api/trace.png", Lane::kExport, [this](const Request& req) { return trace_png(req); });
+  }
+
+  void warn(std::string text) {
+    std::fprintf(stderr, "tomc diagnostics: %s\n", text.c_str());
+    warnings.push_back(std::move(text));
   }
 };
 
@@ -386,50 +433,41 @@ void Server::start() {
   Impl& s = *impl_;
   if (s.running.load()) return;
   s.objects_json = api::to_text(api::describe_objects(s.diagnostics));
-  s.http.new_task_queue = [n = s.options.worker_threads] { return new httplib::ThreadPool(n); };
-  // Only SO_REUSEADDR: with httplib's default SO_REUSEPORT a stale server on the same port would share the
-  // connections silently (TOOLCHAIN.md §6).
-  s.http.set_socket_options([](socket_t sock) {
-    int yes = 1;
-    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });
-  s.http.set_payload_max_length(api::kMaxBodyBytes);
-  s.http.set_read_timeout(5, 0);
-  s.http.set_write_timeout(5, 0);
-  s.http.set_keep_alive_timeout(5);
-  s.http.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"Cache-Control", "no-store"}});
   s.routes();
-  if (s.options.port == 0) {
-    s.port = s.http.bind_to_any_port(s.options.bind_address);
-    if (s.port <= 0) throw std::runtime_error("cannot listen on " + s.options.bind_address + " (any port)");
-  } else {
-    if (!s.http.bind_to_port(s.options.bind_address, s.options.port)) {
-      throw std::runtime_error("cannot listen on " + s.options.bind_address + ":" +
-                               std::to_string(s.options.port) +
-                               " (in use, or not an address of this machine)");
+  s.port = s.http.bind(s.options.bind_address, s.options.port);
+  s.warnings.clear();
+  if (!loopback(s.options.bind_address)) {
+    s.warn("listening on " + s.options.bind_address +
+           " beyond loopback: the token travels in clear (plain HTTP); " +
+           "use it only on a trusted network or behind a TLS proxy");
+    if ((s.options.bind_address == "0.0.0.0" || s.options.bind_address == "::") &&
+        s.options.allowed_hosts.empty()) {
+      s.warn(
+          "bound to every address but no allowed_hosts configured: only requests for the loopback names are "
+          "answered (Host allow-list)");
     }
-    s.port = s.options.port;
   }
-  s.running.store(true);
+  s.diagnostics.poll();
+  s.publish_status();  // /api/status has an answer from the first request on
   {
-    std::lock_guard lock(s.status_mutex);
+    std::lock_guard lock(s.collector_mutex);
     s.stopping = false;
   }
+  s.running.store(true);
+  s.http.start();
   s.collector = std::thread([&s] { s.collect(); });
-  s.listener = std::thread([&s] { s.http.listen_after_bind(); });
 }
 
 void Server::stop() {
   Impl& s = *impl_;
   if (!s.running.exchange(false)) return;
   {
-    std::lock_guard lock(s.status_mutex);
+    std::lock_guard lock(s.collector_mutex);
     s.stopping = true;
   }
-  s.status_changed.notify_all();
-  s.http.stop();
-  if (s.listener.joinable()) s.listener.join();
+  s.collector_wake.notify_all();
   if (s.collector.joinable()) s.collector.join();
+  s.http.stop();
 }
 
 int Server::port() const noexcept {
@@ -440,6 +478,14 @@ std::string Server::url() const {
   const std::string& a = impl_->options.bind_address;
   const std::string host = a == "0.0.0.0" ? "127.0.0.1" : a;
   return "http://" + host + ":" + std::to_string(impl_->port) + "/";
+}
+
+Server::Statistics Server::statistics() const {
+  return Statistics{impl_->http.statistics(), impl_->exports_rendered.load(), impl_->exports_cached.load()};
+}
+
+const std::vector<std::string>& Server::warnings() const noexcept {
+  return impl_->warnings;
 }
 
 }  // namespace tomc::diagnostics

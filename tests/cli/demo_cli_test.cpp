@@ -66,6 +66,7 @@ TEST(DemoCli, BadOptions) {
   EXPECT_EQ(tomc({"demo", "--token", "a", "--generate-token"}).status, 2);
   EXPECT_EQ(tomc({"demo", "--seconds", "-1"}).status, 2);
   EXPECT_EQ(tomc({"demo", "--frobnicate"}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--allow-host", ""}).status, 2);
   const DemoRun missing = tomc({"demo", "--config", "/nonexistent/machine.json"});
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
@@ -80,7 +81,7 @@ TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
       {"name": "B", "type": "TO_PositioningAxis"}
     ],
     "program": {"C": {"velocities": [1]}, "A": {"dwell_s": 0}},
-    "diagnostics": {"port": 99999, "colour": "red"},
+    "diagnostics": {"port": 99999, "colour": "red", "allowed_hosts": ["plc7.local", 7]},
     "extra": 1
   })");
   const DemoRun r = tomc({"demo", "--config", path});
@@ -88,6 +89,7 @@ TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
   for (const char* expected : {"technology_objects[0].config.DynamicLimits.MaxVelocity",
                                "technology_objects[1].drive: missing (a TO_PositioningAxis needs a drive",
                                "program.C: no technology object", "program.A.dwell_s", "diagnostics.port",
+                               "diagnostics.allowed_hosts: expected an array of host names",
                                "diagnostics.colour: unknown key", "extra: unknown key"}) {
     EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
   }

@@ -14,6 +14,7 @@
 
 #include "../diagnostics/diagnostics_fixture.hpp"
 #include "../diagnostics/positioning_panel_fixture.hpp"
+#include "tomc/diagnostics/api.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
 
@@ -373,6 +374,11 @@ TEST(WebApi, TraceAndExports) {
   EXPECT_EQ(trace["channels"][0], "Axis2.Velocity");
 
   auto c = s.client();
+  // Exports need the token (issue 21: they cost CPU and memory; anyone on the machine could ask for them).
+  EXPECT_EQ(c.Get("/api/trace.csv")->status, 401);
+  EXPECT_EQ(c.Get("/api/trace.png")->status, 401);
+  c.set_bearer_token_auth(kToken);
+  c.set_read_timeout(60, 0);  // exports run at SCHED_IDLE: on a saturated machine they wait for spare CPU
   auto csv = c.Get("/api/trace.csv");
   ASSERT_TRUE(csv);
   EXPECT_EQ(csv->status, 200);
@@ -470,7 +476,8 @@ TEST(WebApi, BadRequestsGet4xxAndDoNotDisturbTheRuntime) {
   EXPECT_EQ(c.Get("/api/nothing")->status, 404);
   EXPECT_EQ(c.Get("/api/objects/Nobody/variables")->status, 404);
   EXPECT_EQ(c.Get("/api/trace?max_points=abc")->status, 400);
-  EXPECT_EQ(c.Get("/api/trace.png?height=99999")->status, 400);
+  httplib::Headers bearer{{"Authorization", std::string("Bearer ") + kToken}};
+  EXPECT_EQ(c.Get("/api/trace.png?height=99999", bearer)->status, 400);
   // A body over 64 KiB.
   httplib::Headers auth{{"Authorization", std::string("Bearer ") + kToken}};
   const auto big = c.Post("/api/panel/Axis1", auth, std::string(70 * 1024, ' '), "application/json");
@@ -507,6 +514,126 @@ TEST(WebApi, PageIsServed) {
   EXPECT_NE(r->get_header_value("Content-Type").find("text/html"), std::string::npos);
   EXPECT_FALSE(r->get_header_value("Content-Security-Policy").empty());
   EXPECT_EQ(r->body, std::string(diagnostics::web_page()));
+}
+
+// Issue 21: panel values are range-checked against the axis' limits and the data-block ranges before they
+// reach the cycle, with a message that says which limit (a 1e308 velocity, a ±1e308 set position on a modulo
+// axis were accepted before).
+TEST(PanelRanges, AgainstTheDataBlock) {
+  const auto table = diagnostics::variables_of(techobjects::TechnologyObjectType::kPositioningAxis);
+  std::vector<double> values(table.size(), 0.0);
+  const auto set = [&](std::string_view path, double v) {
+    for (std::size_t i = 0; i < table.size(); ++i)
+      if (table[i].path == path) return void(values[i] = v);
+    ADD_FAILURE() << "no variable " << path;
+  };
+  set("DynamicLimits.MaxVelocity", 500.0);
+  set("DynamicLimits.MaxAcceleration", 1000.0);
+  set("DynamicLimits.MaxDeceleration", 2000.0);
+  set("DynamicLimits.MaxJerk", 0.0);  // no jerk limit: any jerk up to the data-block range
+  set("Modulo.Enable", 1.0);
+  set("Modulo.StartValue", 0.0);
+  set("Modulo.Length", 360.0);
+  diagnostics::PanelCommand c;
+  const auto check = [&] { return diagnostics::api::check_panel_ranges(c, table, values); };
+
+  c.kind = diagnostics::PanelCommandKind::kSetDynamics;
+  c.dynamics = {500.0, 1000.0, 2000.0, 1e6};
+  EXPECT_EQ(check(), std::nullopt);
+  c.dynamics.velocity = 1e308;
+  ASSERT_TRUE(check());
+  EXPECT_NE(check()->find("outside -1.0E12 .. 1.0E12"), std::string::npos) << *check();
+  c.dynamics.velocity = 500.5;
+  ASSERT_TRUE(check());
+  EXPECT_EQ(*check(), "velocity: 500.5 above the axis' DynamicLimits.MaxVelocity 500");
+  c.dynamics = {100.0, 1000.1, 100.0, 0.0};
+  EXPECT_NE(check().value_or("").find("MaxAcceleration"), std::string::npos);
+  set("DynamicLimits.MaxJerk", 50.0);
+  c.dynamics = {100.0, 100.0, 100.0, 60.0};
+  EXPECT_NE(check().value_or("").find("MaxJerk"), std::string::npos);
+
+  c.kind = diagnostics::PanelCommandKind::kHome;
+  c.mode = 0;
+  for (const double bad : {1e308, -1e308, 360.0, -0.001}) {
+    c.value = bad;
+    EXPECT_TRUE(check()) << bad;
+  }
+  c.value = 359.9;
+  EXPECT_EQ(check(), std::nullopt);
+  c.kind = diagnostics::PanelCommandKind::kMoveAbsolute;
+  c.value = 400.0;
+  EXPECT_NE(check().value_or("").find("modulo range 0 .. 360"), std::string::npos) << check().value_or("");
+
+  // A linear axis with active software limits: an absolute target beyond them is refused; without a snapshot
+  // only the data-block range is checked.
+  set("Modulo.Enable", 0.0);
+  set("PositionLimits_SW.Active", 1.0);
+  set("PositionLimits_SW.MinPosition", -5.0);
+  set("PositionLimits_SW.MaxPosition", 305.0);
+  c.kind = diagnostics::PanelCommandKind::kMoveAbsolute;
+  c.value = 400.0;
+  EXPECT_NE(check().value_or("").find("software limits -5 .. 305"), std::string::npos);
+  c.value = 300.0;
+  EXPECT_EQ(check(), std::nullopt);
+  EXPECT_EQ(diagnostics::api::check_panel_ranges(c, table, {}), std::nullopt);
+  c.value = -2e12;
+  EXPECT_TRUE(diagnostics::api::check_panel_ranges(c, table, {}));
+  c.kind = diagnostics::PanelCommandKind::kMoveRelative;
+  c.value = 1e308;
+  EXPECT_TRUE(check());
+  c.kind = diagnostics::PanelCommandKind::kTake;
+  c.value = 3600.0;
+  EXPECT_NE(check().value_or("").find("lifebeat_s"), std::string::npos);
+}
+
+// The same over HTTP: 400 with the message, before the command reaches the cycle.
+TEST(WebApi, PanelValuesAreRangeChecked) {
+  ServedSlide s;
+  s.wait_status([](const Json& j) { return j["objects"][0]["valid"] == true; });
+  ASSERT_EQ(s.panel("take", {{"lifebeat_s", 5.0}}).first, 200);
+  const double max_velocity = s.variable("DynamicLimits.MaxVelocity");
+  ASSERT_GT(max_velocity, 0.0);
+  Json dynamics = {{"velocity", 1e308}, {"acceleration", 1.0}, {"deceleration", 1.0}, {"jerk", 0.0}};
+  auto [code, body] = s.panel("dynamics", dynamics);
+  EXPECT_EQ(code, 400);
+  EXPECT_NE(body.value("error", "").find("1.0E12"), std::string::npos) << body.dump();
+  dynamics["velocity"] = max_velocity * 1.5;
+  std::tie(code, body) = s.panel("dynamics", dynamics);
+  EXPECT_EQ(code, 400);
+  EXPECT_NE(body.value("error", "").find("DynamicLimits.MaxVelocity"), std::string::npos) << body.dump();
+  dynamics["velocity"] = max_velocity / 2;
+  EXPECT_EQ(s.panel("dynamics", dynamics).first, 200);
+  std::tie(code, body) = s.panel("home", {{"mode", "set"}, {"position", -1e308}});
+  EXPECT_EQ(code, 400);
+  EXPECT_NE(body.value("error", "").find("position"), std::string::npos) << body.dump();
+  EXPECT_EQ(s.panel("move_relative", {{"distance", 1e300}}).first, 400);
+  ASSERT_EQ(s.panel("give_back").first, 200);
+}
+
+// Issue 21: the Host allow-list (no DNS rebinding) holds for the configured names too: a name is answered
+// only when it is the bound address, a loopback name or in allowed_hosts.
+TEST(WebApi, HostAllowList) {
+  tomc::testing::DiagnosticsMachine machine(1);
+  for (const bool allowed : {false, true}) {
+    diagnostics::ServerOptions options;
+    options.port = 0;
+    if (allowed) options.allowed_hosts = {"plc7.local", "192.168.0.7:8080"};
+    diagnostics::Server server(machine.diagnostics, options);
+    server.start();
+    EXPECT_TRUE(server.warnings().empty());  // loopback: nothing to warn about
+    httplib::Client c("127.0.0.1", server.port());
+    const std::string port = ":" + std::to_string(server.port());
+    const auto status = [&](const std::string& host) {
+      auto r = c.Get("/api/info", httplib::Headers{{"Host", host}});
+      return r ? r->status : 0;
+    };
+    EXPECT_EQ(status("127.0.0.1" + port), 200);
+    EXPECT_EQ(status("localhost" + port), 200);
+    EXPECT_EQ(status("plc7.local" + port), allowed ? 200 : 421);
+    EXPECT_EQ(status("192.168.0.7:8080"), allowed ? 200 : 421);
+    EXPECT_EQ(status("attacker.example" + port), 421);
+    server.stop();
+  }
 }
 
 }  // namespace

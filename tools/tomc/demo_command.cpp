@@ -34,7 +34,8 @@ namespace tomc::cli {
 namespace {
 
 constexpr std::string_view kDemoUsage =
-    "usage: tomc demo [--config FILE] [--port N] [--bind ADDRESS] [--token TOKEN | --generate-token]\n"
+    "usage: tomc demo [--config FILE] [--port N] [--bind ADDRESS] [--allow-host NAME]...\n"
+    "                 [--token TOKEN | --generate-token]\n"
     "                 [--seconds S] [--gateway DOMAIN [--gateway-partition P]\n"
     "                 [--gateway-interface IF --gateway-peer ADDRESS...]]\n"
     "\n"
@@ -46,7 +47,10 @@ constexpr std::string_view kDemoUsage =
     "                     optional program and diagnostics sections (docs/diagnostics.md); default: the\n"
     "                     built-in demo machine (examples/demo_machine.json)\n"
     "  --port N           TCP port, 0 = any free port (default 8080 or the config's)\n"
-    "  --bind ADDRESS     listen address (default 127.0.0.1: this machine only)\n"
+    "  --bind ADDRESS     listen address (default 127.0.0.1: this machine only); beyond loopback the token\n"
+    "                     travels in clear: a trusted network or a TLS proxy only\n"
+    "  --allow-host NAME  also answer requests for this Host (e.g. the machine's name or address when\n"
+    "                     bound to 0.0.0.0); repeatable\n"
     "  --token TOKEN      allow control actions to a page that presents TOKEN (default: read-only)\n"
     "  --generate-token   make a random token and print it in the URL\n"
     "  --seconds S        stop after S seconds (default: run until Ctrl-C)\n"
@@ -63,6 +67,7 @@ struct DemoOptions {
   std::optional<std::string> config;
   std::optional<int> port;
   std::optional<std::string> bind;
+  std::vector<std::string> allowed_hosts;
   std::optional<std::string> token;
   bool generate_token = false;
   std::optional<double> seconds;
@@ -108,6 +113,9 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
       o.port = port;
     } else if (is_option(a, "--bind")) {
       o.bind = value_of(args, i, "--bind");
+    } else if (is_option(a, "--allow-host")) {
+      o.allowed_hosts.emplace_back(value_of(args, i, "--allow-host"));
+      if (o.allowed_hosts.back().empty()) throw UsageError("demo: --allow-host: empty");
     } else if (is_option(a, "--token")) {
       o.token = value_of(args, i, "--token");
       if (o.token->empty()) throw UsageError("demo: --token: empty");
@@ -372,13 +380,24 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
     if (!d->is_object()) {
       problems.add("diagnostics", "expected an object");
     } else {
-      only_keys(*d, "diagnostics", {"bind", "port", "token", "publish_period_cycles", "event_period_s"},
+      only_keys(*d, "diagnostics",
+                {"bind", "allowed_hosts", "port", "token", "publish_period_cycles", "event_period_s"},
                 problems);
       if (const auto v = d->find("bind"); v != d->end()) {
         if (!v->is_string() || v->get<std::string>().empty()) {
           problems.add("diagnostics.bind", "expected an address such as \"127.0.0.1\"");
         } else {
           config.server.bind_address = v->get<std::string>();
+        }
+      }
+      if (const auto v = d->find("allowed_hosts"); v != d->end()) {
+        bool ok = v->is_array();
+        for (std::size_t i = 0; ok && i < v->size(); ++i)
+          ok = (*v)[i].is_string() && !(*v)[i].get<std::string>().empty();
+        if (!ok) {
+          problems.add("diagnostics.allowed_hosts", "expected an array of host names, e.g. [\"plc7.local\"]");
+        } else {
+          config.server.allowed_hosts = v->get<std::vector<std::string>>();
         }
       }
       if (const auto v = d->find("port"); v != d->end()) {
@@ -535,6 +554,8 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   diagnostics::ServerOptions server_options = config.server;
   if (o.port) server_options.port = *o.port;
   if (o.bind) server_options.bind_address = *o.bind;
+  server_options.allowed_hosts.insert(server_options.allowed_hosts.end(), o.allowed_hosts.begin(),
+                                      o.allowed_hosts.end());
   if (o.token) server_options.token = *o.token;
   if (o.generate_token) server_options.token = random_token();
   server_options.title = "tomc demo";

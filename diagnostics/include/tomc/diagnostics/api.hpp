@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -17,6 +18,7 @@
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/panel.hpp"
 #include "tomc/diagnostics/trace.hpp"
+#include "tomc/techobjects/datablocks/variables.hpp"
 
 namespace tomc::diagnostics::api {
 
@@ -33,6 +35,16 @@ std::variant<Json, std::string> parse_object(std::string_view body);
 // "stop"|"acknowledge"|"dynamics"|"adapt"|"home"|"move_absolute"|"move_relative", "session": "<16 hex>",
 // ...parameters}. The object index is the caller's (from the URL).
 std::variant<PanelCommand, std::string> parse_panel_command(std::string_view body);
+
+// The values of a parsed panel command against the axis' data block (issue 21: no 1e308 velocity, no
+// ±1e308 set position on a modulo axis): `variables` is the object's reflection table, `values` its newest
+// snapshot (one per row; empty when none arrived yet: then only the data-block ranges are checked).
+// Dynamics within DynamicLimits (MaxJerk only when > 0), positions and distances within ±1.0E12 (spec 04
+// §0.2), on a modulo axis within [Modulo.StartValue, StartValue + Length), an absolute target within active
+// software limits, the lifebeat within 0.1 .. 60 s. nullopt: in range; else a message for a 400 answer.
+std::optional<std::string> check_panel_ranges(const PanelCommand& command,
+                                              std::span<const techobjects::VariableInfo> variables,
+                                              std::span<const double> values);
 
 // POST /api/trace: {"channels": [...], "trigger": {"kind", "signal", "threshold"}, "pre_samples",
 // "post_samples", "decimation"}.
