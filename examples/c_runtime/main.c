@@ -1,0 +1,125 @@
+/* A minimal PLC runtime in C on the C ABI <tomc/tomc.h> (docs/embedding.md):
+ *   c_runtime [machine.json] [seconds]
+ * loads a machine configuration, runs MC_Servo/MC_Interpolator at the machine's cycle (1 ms) on the real-time
+ * runner, and runs the user logic every 10th cycle (a 10 ms task) in the runner's user-program slot:
+ * MC_Power, MC_Home (set position 0), then MC_MoveAbsolute between 0 and 100 mm on the first positioning
+ * axis. Prints the moves and the runner's statistics; exits 0 if at least one move was Done and no
+ * instruction failed.
+ *
+ * The user logic runs in the runner's thread after MC_Interpolator (the one thread that may use the TOs while
+ * the runner runs); a user task on its own thread is not part of the ABI yet (docs/embedding.md). */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include <tomc/tomc.h>
+
+enum { kTaskRatio = 10 }; /* the user task runs every 10 servo cycles: 10 ms at 1 ms */
+
+typedef struct UserProgram {
+  tomc_object* axis;
+  unsigned cycle;
+  tomc_MC_Power power;
+  tomc_MC_Home home;
+  tomc_MC_MoveAbsolute move;
+  double targets[2];
+  int next_target;
+  volatile int moves_done; /* read by main() after the runner stopped */
+  volatile int failures;
+  tomc_status failure;
+} UserProgram;
+
+/* The user task: called by the runtime after every MC_Interpolator, runs every kTaskRatio cycles. */
+static void user_task(tomc_runtime* runtime, void* context) {
+  (void)runtime;
+  UserProgram* p = context;
+  if (p->cycle++ % kTaskRatio != 0) return;
+  tomc_status s = tomc_MC_Power_call(p->axis, &p->power);
+  p->home.Execute = p->power.Status;
+  if (s == TOMC_OK) s = tomc_MC_Home_call(p->axis, &p->home);
+  if (p->move.Done) { /* Done is shown for one call after Execute falls: the next target */
+    ++p->moves_done;
+    p->next_target = 1 - p->next_target;
+    p->move.Execute = false;
+  } else {
+    p->move.Position = p->targets[p->next_target];
+    p->move.Execute = p->home.Done;
+  }
+  if (s == TOMC_OK) s = tomc_MC_MoveAbsolute_call(p->axis, &p->move);
+  if (s != TOMC_OK) {
+    ++p->failures;
+    p->failure = s;
+  }
+}
+
+static volatile sig_atomic_t g_stop = 0;
+static void on_signal(int signal_number) {
+  (void)signal_number;
+  g_stop = 1;
+}
+
+int main(int argc, char** argv) {
+  const char* machine = argc > 1 ? argv[1] : "examples/c_runtime/machine.json";
+  const double seconds = argc > 2 ? atof(argv[2]) : 5.0;
+
+  tomc_runtime* runtime = NULL;
+  if (tomc_runtime_create_from_file(machine, &runtime) != TOMC_OK) {
+    fprintf(stderr, "%s\n", tomc_last_error());
+    return 2;
+  }
+  /* The first positioning axis of the machine. */
+  UserProgram program = {0};
+  size_t count = 0;
+  tomc_runtime_object_count(runtime, &count);
+  for (size_t i = 0; i < count && program.axis == NULL; ++i) {
+    tomc_object* object = NULL;
+    tomc_object_type type;
+    if (tomc_runtime_object_at(runtime, i, &object) == TOMC_OK &&
+        tomc_object_type_of(object, &type) == TOMC_OK && type == TOMC_TO_POSITIONING_AXIS)
+      program.axis = object;
+  }
+  if (program.axis == NULL) {
+    fprintf(stderr, "%s: no TO_PositioningAxis\n", machine);
+    tomc_runtime_destroy(runtime);
+    return 2;
+  }
+  tomc_MC_Power_init(&program.power);
+  tomc_MC_Home_init(&program.home);
+  tomc_MC_MoveAbsolute_init(&program.move);
+  program.power.Enable = true;
+  program.targets[0] = 100.0;
+  program.targets[1] = 0.0;
+  tomc_runtime_set_user_program(runtime, user_task, &program);
+
+  /* SCHED_FIFO 80 on CPU 1 if allowed (CAP_SYS_NICE, PREEMPT_RT: docs/embedding.md); refused settings are
+   * reported as warnings and the runner runs with normal scheduling. */
+  tomc_runner_config config = {TOMC_STRUCT_HEADER(tomc_runner_config), 0, 80, 1, false};
+  if (tomc_runtime_run_realtime(runtime, &config) != TOMC_OK) {
+    fprintf(stderr, "%s\n", tomc_last_error());
+    tomc_runtime_destroy(runtime);
+    return 1;
+  }
+  signal(SIGINT, on_signal);
+  signal(SIGTERM, on_signal);
+  const struct timespec tick = {0, 100 * 1000 * 1000};
+  for (double t = 0.0; t < seconds && !g_stop; t += 0.1)
+    nanosleep(&tick, NULL);
+  tomc_runtime_stop_realtime(runtime);
+
+  tomc_runner_statistics statistics = {TOMC_STRUCT_HEADER(tomc_runner_statistics), 0, 0, 0.0, 0.0, 0.0, ""};
+  tomc_runtime_runner_statistics(runtime, &statistics);
+  double position = NAN;
+  tomc_read_lreal(program.axis, "Position", &position);
+  const char* name = "";
+  tomc_object_name(program.axis, &name);
+  printf("cycles %llu, overruns %llu, wake-up jitter median %.0f us, p99 %.0f us, max %.0f us%s%s\n",
+         (unsigned long long)statistics.cycles, (unsigned long long)statistics.overruns,
+         statistics.jitter_median_us, statistics.jitter_p99_us, statistics.jitter_max_us,
+         statistics.warnings[0] != '\0' ? "; " : "", statistics.warnings);
+  printf("%s: %d moves done, Position %.3f mm, instruction failures %d%s%s\n", name, program.moves_done,
+         position, program.failures, program.failures > 0 ? ": " : "",
+         program.failures > 0 ? tomc_status_name(program.failure) : "");
+  tomc_runtime_destroy(runtime);
+  return program.moves_done > 0 && program.failures == 0 ? 0 : 1;
+}
