@@ -175,6 +175,10 @@ def cpp_glue():
         for name, _ in f["outputs"]:
             out.append(f"    c.{name} = t.{name};")
         out.append("  }")
+        out.append("  static void copy_outputs(const C& from, C& to) noexcept {")
+        for name, _ in f["outputs"]:
+            out.append(f"    to.{name} = from.{name};")
+        out.append("  }")
         out.append("  static void defaults(C& c) noexcept {")
         for name, t, d in f["inputs"]:
             out.append(f"    c.{name} = {cpp_literal(t, d)};")

@@ -20,6 +20,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "tomc/diagnostics/triple_buffer.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_gear_in_pos.hpp"
 #include "tomc/instructions/mc_gear_in_velocity.hpp"
@@ -42,10 +43,83 @@
 namespace instructions = tomc::instructions;
 namespace techobjects = tomc::techobjects;
 namespace scenario = tomc::scenario;
+namespace diagnostics = tomc::diagnostics;
+
+namespace {
+struct Snapshot;
+}
 
 struct tomc_object {
   scenario::MachineObject machine;
   tomc_runtime* owner = nullptr;
+  // With a user task: the data block as of the last interpolator cycle, for the task's reads.
+  std::shared_ptr<Snapshot> snapshot;
+};
+
+namespace {
+
+// The data block of one TO as of the last interpolator cycle, for the user task on its own thread: the servo
+// thread publishes a copy after every cycle into a triple buffer (neither side waits), the task takes the
+// newest at the start of each of its cycles, so one task cycle reads one consistent data block per TO.
+struct Snapshot {
+  virtual ~Snapshot() = default;
+  virtual void publish() noexcept = 0;  // servo thread
+  virtual void update() noexcept = 0;   // task thread
+  virtual double read(const techobjects::VariableInfo* info,
+                      const std::optional<techobjects::BitReference>& bit) const noexcept = 0;  // task thread
+};
+
+template <typename Data>
+struct SnapshotOf final : Snapshot {
+  explicit SnapshotOf(const Data& data) : live(&data) {
+    buffer.for_each([&](Data& d) { d = data; });
+  }
+  void publish() noexcept override {
+    buffer.back() = *live;
+    buffer.publish();
+  }
+  void update() noexcept override { buffer.update(); }
+  double read(const techobjects::VariableInfo* info,
+              const std::optional<techobjects::BitReference>& bit) const noexcept override {
+    const Data& d = buffer.front();
+    return bit ? (bit->read(d) ? 1.0 : 0.0) : info->read(d);
+  }
+  const Data* live;
+  diagnostics::TripleBuffer<Data> buffer;
+};
+
+// An instruction instance of the user task: the task's calls post the whole C struct (a mailbox that keeps
+// the newest), the servo thread calls the C++ instance with it after every MC_Interpolator and posts the
+// struct with its outputs back. Both directions are triple buffers: lock-free, nobody waits.
+constexpr std::size_t kFbBytes = 512;
+struct FbBytes {
+  alignas(std::max_align_t) unsigned char bytes[kFbBytes];
+};
+
+struct TaskSlot {
+  tomc_object* axis = nullptr;
+  const void* user_struct = nullptr;  // the task's instance: its address identifies it
+  void (*execute)(TaskSlot&) noexcept = nullptr;
+  diagnostics::TripleBuffer<FbBytes> inputs;   // task -> servo
+  diagnostics::TripleBuffer<FbBytes> outputs;  // servo -> task
+  FbBytes current{};                           // servo thread: the inputs in force
+  tomc_instance_data instance{};               // servo thread: the C++ instruction's state
+};
+
+}  // namespace
+
+struct tomc_task {
+  static constexpr std::size_t kCapacity = 64;  // instruction instances per task
+  tomc_runtime* runtime = nullptr;
+  tomc_task_program program = nullptr;
+  void* context = nullptr;
+  techobjects::RealTimeRunnerConfig runner_config{};
+  int cpu = -1;
+  std::unique_ptr<TaskSlot[]> slots = std::make_unique<TaskSlot[]>(kCapacity);
+  std::atomic<std::size_t> slot_count{0};  // written by the task thread (release), read by the servo thread
+  std::unique_ptr<techobjects::RealTimeRunner> runner;
+  std::string runner_warnings;  // written by the task thread in its first cycle, read after stop()
+  techobjects::RunnerStatistics last_statistics{};
 };
 
 struct tomc_runtime {
@@ -57,6 +131,7 @@ struct tomc_runtime {
   std::atomic<bool> realtime{false};
   std::string runner_warnings;  // written by the runner thread in its first cycle, read after stop()
   techobjects::RunnerStatistics last_statistics{};
+  std::unique_ptr<tomc_task> task;  // the user task on its own thread (at most one)
 };
 
 namespace {
@@ -65,6 +140,13 @@ thread_local std::string t_last_error;
 // The runtime whose cycle runs on this thread (set around step() on the runner thread): calls from its user
 // program are allowed while the runner runs, calls from other threads are not.
 thread_local const tomc_runtime* t_cycle_of = nullptr;
+// The user task running on this thread: its instruction calls go through the mailboxes, its reads to the
+// snapshots.
+thread_local tomc_task* t_task = nullptr;
+
+bool in_task_of(const tomc_runtime* rt) noexcept {
+  return t_task != nullptr && t_task->runtime == rt;
+}
 
 tomc_status fail(tomc_status status, std::string message) noexcept {
   try {
@@ -170,14 +252,27 @@ tomc_status load(const std::string& text, tomc_runtime** out) {
   }
   scenario::wire_machine_inputs(*rt->runtime, objects);
   for (auto& o : objects)
-    rt->objects.push_back(tomc_object{std::move(o), rt.get()});
+    rt->objects.push_back(tomc_object{std::move(o), rt.get(), nullptr});
   *out = rt.release();
   return TOMC_OK;
 }
 
+// The servo side of the user task: the instances it called run with their newest inputs, then the data
+// blocks are published for its next cycle. Runs in the cycle's thread after MC_Interpolator; no allocation.
+void service_task(tomc_task& task) noexcept {
+  const std::size_t n = task.slot_count.load(std::memory_order_acquire);
+  for (std::size_t i = 0; i < n; ++i)
+    task.slots[i].execute(task.slots[i]);
+  for (auto& o : task.runtime->objects)
+    if (o.snapshot) o.snapshot->publish();
+}
+
 void install_user_program(tomc_runtime* rt) {
-  if (rt->program == nullptr) return;
-  rt->runtime->set_user_program([rt](techobjects::Runtime&) { rt->program(rt, rt->program_context); });
+  if (rt->program == nullptr && !rt->task) return;
+  rt->runtime->set_user_program([rt](techobjects::Runtime&) {
+    if (rt->program != nullptr) rt->program(rt, rt->program_context);
+    if (rt->task) service_task(*rt->task);
+  });
 }
 
 // ---- variables ----
@@ -270,6 +365,67 @@ void run(typename Fb::C& c, Axis& axis, Kind kind, const tomc_object* master) no
 }
 
 template <typename Fb>
+void dispatch(tomc_object& axis, typename Fb::C& c) noexcept {
+  const Kind kind = kind_of(axis);
+  const auto& m = axis.machine;
+  const tomc_object* master = nullptr;
+  if constexpr (Fb::kMaster) master = c.Master;
+  if constexpr ((Fb::kKinds & kSpeed) != 0)
+    if (kind == kSpeed) run<Fb>(c, *m.speed_axis, kind, master);
+  if constexpr ((Fb::kKinds & kPositioning) != 0)
+    if (kind == kPositioning) run<Fb>(c, *m.positioning_axis, kind, master);
+  if constexpr ((Fb::kKinds & kSynchronous) != 0)
+    if (kind == kSynchronous) run<Fb>(c, *m.synchronous_axis, kind, master);
+  if constexpr ((Fb::kKinds & kEncoder) != 0)
+    if (kind == kEncoder) run<Fb>(c, *m.external_encoder, kind, master);
+}
+
+// Servo thread: one call of a task's instance with the newest inputs the task posted.
+template <typename Fb>
+void execute_in_servo(TaskSlot& s) noexcept {
+  using C = typename Fb::C;
+  if (s.inputs.update()) std::memcpy(s.current.bytes, s.inputs.front().bytes, sizeof(C));
+  C c;
+  std::memcpy(static_cast<void*>(&c), s.current.bytes, sizeof c);
+  c.instance = s.instance;
+  dispatch<Fb>(*s.axis, c);
+  s.instance = c.instance;
+  std::memcpy(s.outputs.back().bytes, static_cast<const void*>(&c), sizeof c);
+  s.outputs.publish();
+}
+
+// Task thread: take the newest outputs the servo thread posted, post the inputs.
+template <typename Fb>
+tomc_status task_call(tomc_task& task, tomc_object* axis, typename Fb::C* c) noexcept {
+  using C = typename Fb::C;
+  static_assert(sizeof(C) <= kFbBytes && std::is_trivially_copyable_v<C>);
+  const std::size_t n = task.slot_count.load(std::memory_order_relaxed);  // written by this thread only
+  TaskSlot* slot = nullptr;
+  for (std::size_t i = 0; i < n && slot == nullptr; ++i)
+    if (task.slots[i].user_struct == c && task.slots[i].axis == axis) slot = &task.slots[i];
+  if (slot == nullptr) {
+    if (n == tomc_task::kCapacity)
+      return fail(TOMC_ERROR_STATE, std::string(Fb::kName) + ": the user task has " +
+                                        std::to_string(tomc_task::kCapacity) +
+                                        " instruction instances already");
+    slot = &task.slots[n];
+    slot->axis = axis;
+    slot->user_struct = c;
+    slot->execute = &execute_in_servo<Fb>;
+    std::memcpy(slot->current.bytes, static_cast<const void*>(c), sizeof(C));
+    task.slot_count.store(n + 1, std::memory_order_release);
+  }
+  if (slot->outputs.update()) {
+    C out;
+    std::memcpy(static_cast<void*>(&out), slot->outputs.front().bytes, sizeof out);
+    Fb::copy_outputs(out, *c);
+  }
+  std::memcpy(slot->inputs.back().bytes, static_cast<const void*>(c), sizeof(C));
+  slot->inputs.publish();
+  return TOMC_OK;
+}
+
+template <typename Fb>
 void init_fb(typename Fb::C* c) noexcept {
   if (c == nullptr) return;
   std::memset(static_cast<void*>(c), 0, sizeof *c);
@@ -283,32 +439,25 @@ tomc_status call_fb(tomc_object* axis, typename Fb::C* c) noexcept {
     if (c == nullptr) return null_argument(Fb::kName, "the instance");
     if (axis == nullptr) return null_argument(Fb::kName, "the technology object");
     if (!header_ok(c)) return version_error(Fb::kName, Fb::kName, c);
-    if (const auto s = check_thread(axis->owner, Fb::kName); s != TOMC_OK) return s;
     const Kind kind = kind_of(*axis);
     if ((Fb::kKinds & kind) == 0) {
       return fail(TOMC_ERROR_WRONG_OBJECT_TYPE, std::string(Fb::kName) + ": not an instruction of " +
                                                     std::string(axis->machine.type_name()) + " (" +
                                                     axis->machine.name + ")");
     }
-    const tomc_object* master = nullptr;
     if constexpr (Fb::kMaster) {
-      master = c->Master;
+      const tomc_object* master = c->Master;
       if (master != nullptr && master->machine.leading_value_source() == nullptr) {
         return fail(TOMC_ERROR_WRONG_OBJECT_TYPE,
                     std::string(Fb::kName) + ".Master: " + master->machine.name + " (" +
                         std::string(master->machine.type_name()) + ") is not a leading value");
       }
     }
-    const auto& m = axis->machine;
-    if (!m.built) return fail(TOMC_ERROR_STATE, std::string(Fb::kName) + ": " + m.name + " was not built");
-    if constexpr ((Fb::kKinds & kSpeed) != 0)
-      if (kind == kSpeed) run<Fb>(*c, *m.speed_axis, kind, master);
-    if constexpr ((Fb::kKinds & kPositioning) != 0)
-      if (kind == kPositioning) run<Fb>(*c, *m.positioning_axis, kind, master);
-    if constexpr ((Fb::kKinds & kSynchronous) != 0)
-      if (kind == kSynchronous) run<Fb>(*c, *m.synchronous_axis, kind, master);
-    if constexpr ((Fb::kKinds & kEncoder) != 0)
-      if (kind == kEncoder) run<Fb>(*c, *m.external_encoder, kind, master);
+    if (!axis->machine.built)
+      return fail(TOMC_ERROR_STATE, std::string(Fb::kName) + ": " + axis->machine.name + " was not built");
+    if (in_task_of(axis->owner)) return task_call<Fb>(*t_task, axis, c);
+    if (const auto s = check_thread(axis->owner, Fb::kName); s != TOMC_OK) return s;
+    dispatch<Fb>(*axis, *c);
     return TOMC_OK;
   });
 }
@@ -388,6 +537,7 @@ extern "C" tomc_status tomc_runtime_create_from_file(const char* path, tomc_runt
 extern "C" void tomc_runtime_destroy(tomc_runtime* runtime) {
   if (runtime == nullptr) return;
   try {
+    if (runtime->task && runtime->task->runner) runtime->task->runner->stop();
     if (runtime->runner) runtime->runner->stop();
   } catch (...) {
   }
@@ -494,6 +644,36 @@ extern "C" tomc_status tomc_runtime_run_realtime(tomc_runtime* runtime, const to
       runtime->runner.reset();
       return fail(TOMC_ERROR_SYSTEM, std::string("tomc_runtime_run_realtime: ") + e.what());
     }
+    if (runtime->task) {
+      tomc_task* task = runtime->task.get();
+      task->runner_warnings.clear();
+      auto task_first = std::make_shared<bool>(true);
+      task->runner = std::make_unique<techobjects::RealTimeRunner>(task->runner_config, [task, task_first]() {
+        if (*task_first) {
+          *task_first = false;
+          t_task = task;
+          if (task->cpu >= 0) {
+            cpu_set_t set;
+            CPU_ZERO(&set);
+            CPU_SET(task->cpu, &set);
+            if (const int e = pthread_setaffinity_np(pthread_self(), sizeof set, &set); e != 0)
+              task->runner_warnings = "CPU " + std::to_string(task->cpu) + ": " + std::strerror(e);
+          }
+        }
+        for (auto& o : task->runtime->objects)
+          if (o.snapshot) o.snapshot->update();
+        task->program(task->context);
+      });
+      try {
+        task->runner->start();
+      } catch (const std::exception& e) {
+        task->runner.reset();
+        runtime->runner->stop();
+        runtime->runner.reset();
+        runtime->realtime.store(false);
+        return fail(TOMC_ERROR_SYSTEM, std::string("tomc_runtime_run_realtime: the user task: ") + e.what());
+      }
+    }
     return TOMC_OK;
   });
 }
@@ -502,10 +682,95 @@ extern "C" tomc_status tomc_runtime_stop_realtime(tomc_runtime* runtime) {
   return guarded([&] {
     if (runtime == nullptr) return null_argument("tomc_runtime_stop_realtime", "runtime");
     if (!runtime->runner) return fail(TOMC_ERROR_STATE, "tomc_runtime_stop_realtime: not running");
+    if (runtime->task && runtime->task->runner) {  // the task first: it posts to the servo side
+      runtime->task->runner->stop();
+      runtime->task->last_statistics = runtime->task->runner->statistics();
+      runtime->task->runner.reset();
+    }
     runtime->runner->stop();
     runtime->last_statistics = runtime->runner->statistics();
     runtime->runner.reset();
     runtime->realtime.store(false, std::memory_order_release);
+    return TOMC_OK;
+  });
+}
+
+namespace {
+
+void copy_statistics(const techobjects::RunnerStatistics& s, const std::string& more,
+                     tomc_runner_statistics* out) {
+  out->cycles = s.cycles;
+  out->overruns = s.overruns;
+  out->jitter_median_us = s.jitter_median_us;
+  out->jitter_p99_us = s.jitter_p99_us;
+  out->jitter_max_us = s.jitter_max_us;
+  std::string warnings = s.setup_warnings;
+  if (!more.empty()) warnings += (warnings.empty() ? "" : "; ") + more;
+  std::snprintf(out->warnings, sizeof out->warnings, "%s", warnings.c_str());
+}
+
+}  // namespace
+
+extern "C" tomc_status tomc_runtime_add_task(tomc_runtime* runtime, const tomc_task_config* config,
+                                             tomc_task_program program, void* context) {
+  return guarded([&] {
+    if (runtime == nullptr) return null_argument("tomc_runtime_add_task", "runtime");
+    if (config == nullptr) return null_argument("tomc_runtime_add_task", "config");
+    if (program == nullptr) return null_argument("tomc_runtime_add_task", "program");
+    if (!header_ok(config)) return version_error("tomc_runtime_add_task", "tomc_task_config", config);
+    if (runtime->runtime->started())
+      return fail(TOMC_ERROR_STATE, "tomc_runtime_add_task: the runtime has started (add the task before)");
+    if (runtime->task)
+      return fail(TOMC_ERROR_STATE, "tomc_runtime_add_task: the runtime has a user task already");
+    if (config->period_ns < 1'000'000 || config->period_ns > 1'000'000'000)
+      return fail(TOMC_ERROR_OUT_OF_RANGE, "tomc_runtime_add_task: period_ns " +
+                                               std::to_string(config->period_ns) +
+                                               " is not 1000000 .. 1000000000 (1 ms .. 1 s)");
+    if (config->fifo_priority < 0 || config->fifo_priority > 99)
+      return fail(TOMC_ERROR_OUT_OF_RANGE, "tomc_runtime_add_task: fifo_priority " +
+                                               std::to_string(config->fifo_priority) + " is not 0 .. 99");
+    if (config->cpu < -1 || config->cpu >= CPU_SETSIZE)
+      return fail(TOMC_ERROR_OUT_OF_RANGE,
+                  "tomc_runtime_add_task: cpu " + std::to_string(config->cpu) + " is not -1 or a CPU number");
+    auto task = std::make_unique<tomc_task>();
+    task->runtime = runtime;
+    task->program = program;
+    task->context = context;
+    task->runner_config = techobjects::RealTimeRunnerConfig{std::chrono::nanoseconds(config->period_ns),
+                                                            config->fifo_priority, false};
+    task->cpu = config->cpu;
+    for (auto& o : runtime->objects) {
+      const auto& m = o.machine;
+      if (!m.built) continue;
+      if (m.positioning_axis != nullptr) {
+        o.snapshot =
+            std::make_shared<SnapshotOf<techobjects::PositioningAxisData>>(m.positioning_axis->data());
+      } else if (m.speed_axis != nullptr) {
+        o.snapshot = std::make_shared<SnapshotOf<techobjects::SpeedAxisData>>(m.speed_axis->data());
+      } else if (m.external_encoder != nullptr) {
+        o.snapshot =
+            std::make_shared<SnapshotOf<techobjects::ExternalEncoderData>>(m.external_encoder->data());
+      }
+    }
+    runtime->task = std::move(task);
+    install_user_program(runtime);
+    return TOMC_OK;
+  });
+}
+
+extern "C" tomc_status tomc_runtime_task_statistics(const tomc_runtime* runtime,
+                                                    tomc_runner_statistics* statistics) {
+  return guarded([&] {
+    if (runtime == nullptr) return null_argument("tomc_runtime_task_statistics", "runtime");
+    if (statistics == nullptr) return null_argument("tomc_runtime_task_statistics", "statistics");
+    if (!header_ok(statistics))
+      return version_error("tomc_runtime_task_statistics", "tomc_runner_statistics", statistics);
+    if (!runtime->task)
+      return fail(TOMC_ERROR_STATE, "tomc_runtime_task_statistics: the runtime has no user task");
+    const tomc_task& task = *runtime->task;
+    const bool running = task.runner != nullptr;
+    copy_statistics(running ? task.runner->statistics() : task.last_statistics,
+                    running ? std::string() : task.runner_warnings, statistics);
     return TOMC_OK;
   });
 }
@@ -613,10 +878,19 @@ tomc_status read_typed(const tomc_object* object, const char* function, const ch
     if (object == nullptr) return null_argument(function, "object");
     if (path == nullptr) return null_argument(function, "path");
     if (value == nullptr) return null_argument(function, "value");
-    if (const auto s = check_thread(object->owner, function); s != TOMC_OK) return s;
+    const bool task = in_task_of(object->owner);
+    if (!task)
+      if (const auto s = check_thread(object->owner, function); s != TOMC_OK) return s;
     Variable v;
     if (const auto s = find(object, function, path, v); s != TOMC_OK) return s;
     if (!accepts(v)) return wrong_type(object, function, path, v, wanted);
+    if (task) {
+      // The user task reads the data block of the last interpolator cycle (taken at its cycle's start).
+      if (!object->snapshot)
+        return fail(TOMC_ERROR_STATE, std::string(function) + ": " + object->machine.name + " was not built");
+      *value = convert(object->snapshot->read(v.info, v.bit));
+      return TOMC_OK;
+    }
     *value = convert(object->machine.read(path));
     return TOMC_OK;
   });

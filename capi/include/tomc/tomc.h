@@ -128,6 +128,28 @@ TOMC_API tomc_status tomc_runtime_stop_realtime(tomc_runtime* runtime);
 TOMC_API tomc_status tomc_runtime_runner_statistics(const tomc_runtime* runtime,
                                                     tomc_runner_statistics* statistics);
 
+/* ---- the user task on its own thread ----
+ * A PLC task (e.g. OB1 or a cyclic interrupt at 10 ms) beside MC_Servo: `program` runs at `period_ns` in its
+ * own thread, started and stopped with the real-time runner. Its instruction calls reach the TOs through
+ * lock-free mailboxes (the servo thread calls the instance with the newest inputs after every
+ * MC_Interpolator and posts the outputs back, which the task's next call shows); its tomc_read_* calls read
+ * the data blocks of the last interpolator cycle, taken at the start of each task cycle (one consistent data
+ * block per TO). The servo thread never waits for the task. Writes and alarms are not available from the
+ * task yet (TOMC_ERROR_STATE). At most one task per runtime, with up to 64 instruction instances; add it
+ * before the runtime starts. */
+typedef struct tomc_task_config {
+  tomc_struct_header header; /* TOMC_STRUCT_HEADER(tomc_task_config) */
+  uint64_t period_ns;        /* 1 ms .. 1 s */
+  int32_t fifo_priority;     /* 1..99: SCHED_FIFO (below the runner's); 0: normal scheduling */
+  int32_t cpu;               /* >= 0: pin the task to this CPU; -1: any */
+} tomc_task_config;
+typedef void (*tomc_task_program)(void* context);
+TOMC_API tomc_status tomc_runtime_add_task(tomc_runtime* runtime, const tomc_task_config* config,
+                                           tomc_task_program program, void* context);
+/* The task's period statistics (running, or of its last run). */
+TOMC_API tomc_status tomc_runtime_task_statistics(const tomc_runtime* runtime,
+                                                  tomc_runner_statistics* statistics);
+
 /* ---- technology objects ---- */
 
 TOMC_API tomc_status tomc_runtime_object_count(const tomc_runtime* runtime, size_t* count);
