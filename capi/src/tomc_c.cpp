@@ -20,6 +20,8 @@
 #include <thread>
 #include <type_traits>
 
+#include "tomc/diagnostics/diagnostics.hpp"
+#include "tomc/diagnostics/server.hpp"
 #include "tomc/diagnostics/triple_buffer.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_gear_in_pos.hpp"
@@ -132,6 +134,10 @@ struct tomc_runtime {
   std::string runner_warnings;  // written by the runner thread in its first cycle, read after stop()
   techobjects::RunnerStatistics last_statistics{};
   std::unique_ptr<tomc_task> task;  // the user task on its own thread (at most one)
+  // Last: destroyed first (the server reads the diagnostics, the runners are stopped by
+  // tomc_runtime_destroy).
+  std::unique_ptr<diagnostics::Diagnostics> diagnostics;
+  std::unique_ptr<diagnostics::Server> server;
 };
 
 namespace {
@@ -537,6 +543,7 @@ extern "C" tomc_status tomc_runtime_create_from_file(const char* path, tomc_runt
 extern "C" void tomc_runtime_destroy(tomc_runtime* runtime) {
   if (runtime == nullptr) return;
   try {
+    if (runtime->server) runtime->server->stop();
     if (runtime->task && runtime->task->runner) runtime->task->runner->stop();
     if (runtime->runner) runtime->runner->stop();
   } catch (...) {
@@ -795,6 +802,71 @@ extern "C" tomc_status tomc_runtime_runner_statistics(const tomc_runtime* runtim
     if (!running && !runtime->runner_warnings.empty())
       warnings += (warnings.empty() ? "" : "; ") + runtime->runner_warnings;
     std::snprintf(statistics->warnings, sizeof statistics->warnings, "%s", warnings.c_str());
+    return TOMC_OK;
+  });
+}
+
+// ---- the diagnostics server ----
+
+extern "C" tomc_status tomc_runtime_serve_diagnostics(tomc_runtime* runtime,
+                                                      const tomc_diagnostics_config* config) {
+  return guarded([&] {
+    if (runtime == nullptr) return null_argument("tomc_runtime_serve_diagnostics", "runtime");
+    if (config == nullptr) return null_argument("tomc_runtime_serve_diagnostics", "config");
+    if (!header_ok(config))
+      return version_error("tomc_runtime_serve_diagnostics", "tomc_diagnostics_config", config);
+    if (runtime->runtime->started())
+      return fail(TOMC_ERROR_STATE, "tomc_runtime_serve_diagnostics: the runtime has started (serve before)");
+    if (runtime->diagnostics) return fail(TOMC_ERROR_STATE, "tomc_runtime_serve_diagnostics: already served");
+    if (config->port < 0 || config->port > 65535)
+      return fail(TOMC_ERROR_OUT_OF_RANGE, "tomc_runtime_serve_diagnostics: port " +
+                                               std::to_string(config->port) +
+                                               " is not 0 (any free port) .. 65535");
+    auto d = std::make_unique<diagnostics::Diagnostics>();
+    for (auto& o : runtime->objects) {
+      const auto& m = o.machine;
+      if (m.speed_axis != nullptr) {
+        d->add(*m.speed_axis);
+      } else if (m.positioning_axis != nullptr) {
+        d->add(*m.positioning_axis);
+      } else if (m.external_encoder != nullptr) {
+        d->add(*m.external_encoder);
+      }
+    }
+    diagnostics::ServerOptions options;
+    options.bind_address = config->bind_address != nullptr && config->bind_address[0] != '\0'
+                               ? config->bind_address
+                               : "127.0.0.1";
+    options.port = config->port;
+    options.token = config->token != nullptr ? config->token : "";
+    auto server = std::make_unique<diagnostics::Server>(*d, options);
+    try {
+      server->start();
+    } catch (const std::runtime_error& e) {
+      return fail(TOMC_ERROR_SYSTEM, std::string("tomc_runtime_serve_diagnostics: ") + e.what());
+    }
+    d->attach(*runtime->runtime);
+    runtime->diagnostics = std::move(d);
+    runtime->server = std::move(server);
+    return TOMC_OK;
+  });
+}
+
+extern "C" tomc_status tomc_runtime_diagnostics_port(const tomc_runtime* runtime, int32_t* port) {
+  if (runtime == nullptr) return null_argument("tomc_runtime_diagnostics_port", "runtime");
+  if (port == nullptr) return null_argument("tomc_runtime_diagnostics_port", "port");
+  if (!runtime->server) return fail(TOMC_ERROR_STATE, "tomc_runtime_diagnostics_port: no diagnostics server");
+  *port = runtime->server->port();
+  return TOMC_OK;
+}
+
+extern "C" tomc_status tomc_runtime_stop_diagnostics(tomc_runtime* runtime) {
+  return guarded([&] {
+    if (runtime == nullptr) return null_argument("tomc_runtime_stop_diagnostics", "runtime");
+    if (!runtime->server)
+      return fail(TOMC_ERROR_STATE, "tomc_runtime_stop_diagnostics: no diagnostics server");
+    runtime->server->stop();  // the diagnostics stay attached to the cycle (publishing costs it nothing more)
+    runtime->server.reset();
     return TOMC_OK;
   });
 }

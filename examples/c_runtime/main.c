@@ -1,5 +1,5 @@
 /* A minimal PLC runtime in C on the C ABI <tomc/tomc.h> (docs/embedding.md):
- *   c_runtime [machine.json] [seconds]
+ *   c_runtime [machine.json] [seconds] [port]
  * loads a machine configuration, runs MC_Servo/MC_Interpolator at the machine's cycle (1 ms) on the real-time
  * runner, and runs the user logic every 10th cycle (a 10 ms task) in the runner's user-program slot:
  * MC_Power, MC_Home (set position 0), then MC_MoveAbsolute between 0 and 100 mm on the first positioning
@@ -61,6 +61,7 @@ static void on_signal(int signal_number) {
 int main(int argc, char** argv) {
   const char* machine = argc > 1 ? argv[1] : "examples/c_runtime/machine.json";
   const double seconds = argc > 2 ? atof(argv[2]) : 5.0;
+  const int port = argc > 3 ? atoi(argv[3]) : 0;
 
   tomc_runtime* runtime = NULL;
   if (tomc_runtime_create_from_file(machine, &runtime) != TOMC_OK) {
@@ -95,6 +96,17 @@ int main(int argc, char** argv) {
     tomc_runtime_destroy(runtime);
     return 1;
   }
+
+  const tomc_diagnostics_config page = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), "127.0.0.1", port, NULL};
+  int32_t served_port = 0;
+  if (tomc_runtime_serve_diagnostics(runtime, &page) != TOMC_OK ||
+      tomc_runtime_diagnostics_port(runtime, &served_port) != TOMC_OK) {
+    fprintf(stderr, "%s\n", tomc_last_error());
+    tomc_runtime_destroy(runtime);
+    return 1;
+  }
+  printf("diagnostics page (read-only) at http://127.0.0.1:%d/\n", (int)served_port);
+  fflush(stdout);
 
   /* SCHED_FIFO 80 on CPU 1 if allowed (CAP_SYS_NICE, PREEMPT_RT: docs/embedding.md); refused settings are
    * reported as warnings and the runner runs with normal scheduling. */

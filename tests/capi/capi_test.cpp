@@ -1,7 +1,11 @@
 // The C ABI <tomc/tomc.h> from its caller's side: a positioning move through the generated MC_* structs, the
 // real-time runner with a user program, alarms, and bad input of every kind: each a status and a message that
 // names the problem, never a crash or an exception.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -364,6 +368,50 @@ TEST(CApi, RealTimeRunnerRunsTheUserProgramInItsThread) {
   EXPECT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
   EXPECT_EQ(tomc_runtime_stop_realtime(m.runtime), TOMC_ERROR_STATE);
   EXPECT_EQ(tomc_runtime_set_user_program(m.runtime, nullptr, nullptr), TOMC_ERROR_STATE);
+}
+
+// One HTTP/1.0 GET on 127.0.0.1: the whole answer.
+std::string http_get(int port, const std::string& path) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return {};
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  std::string answer;
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0) {
+    const std::string request =
+        "GET " + path + " HTTP/1.0\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
+    if (::write(fd, request.data(), request.size()) == static_cast<ssize_t>(request.size())) {
+      char buffer[4096];
+      for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+        answer.append(buffer, static_cast<std::size_t>(n));
+    }
+  }
+  ::close(fd);
+  return answer;
+}
+
+TEST(CApi, DiagnosticsServerServesTheMachine) {
+  Machine m;
+  tomc_diagnostics_config config = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), nullptr, 70000, nullptr};
+  EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
+  int32_t port = 0;
+  EXPECT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_ERROR_STATE);
+  config.port = 0;  // any free port on 127.0.0.1
+  ASSERT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_OK) << last_error();
+  EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_STATE);
+  ASSERT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_OK);
+  EXPECT_GT(port, 0);
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 20), TOMC_OK);
+  const std::string objects = http_get(port, "/api/objects");
+  EXPECT_NE(objects.find("200 OK"), std::string::npos) << objects.substr(0, 200);
+  EXPECT_NE(objects.find("\"Slide\""), std::string::npos);
+  EXPECT_NE(objects.find("\"Conveyor\""), std::string::npos);
+  ASSERT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_OK);
+  EXPECT_EQ(http_get(port, "/api/objects"), "");  // nobody listens any more
+  EXPECT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_ERROR_STATE);
+  EXPECT_EQ(tomc_runtime_step(m.runtime, 5), TOMC_OK);  // the cycle goes on without the server
 }
 
 TEST(CApi, StatusNamesAndVersion) {

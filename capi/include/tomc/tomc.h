@@ -150,6 +150,21 @@ TOMC_API tomc_status tomc_runtime_add_task(tomc_runtime* runtime, const tomc_tas
 TOMC_API tomc_status tomc_runtime_task_statistics(const tomc_runtime* runtime,
                                                   tomc_runner_statistics* statistics);
 
+/* ---- the diagnostics page (docs/diagnostics.md) ----
+ * Serves the web page and its JSON API for every TO of the runtime (status, telegrams, alarms, axis control
+ * panel with the token, traces). Call before the runtime starts; the cycle publishes the snapshots, the
+ * server runs in its own threads and never blocks the cycle. */
+typedef struct tomc_diagnostics_config {
+  tomc_struct_header header; /* TOMC_STRUCT_HEADER(tomc_diagnostics_config) */
+  const char* bind_address;  /* NULL or "": 127.0.0.1 (this machine only) */
+  int32_t port;              /* 0: any free port (tomc_runtime_diagnostics_port) */
+  const char* token;         /* NULL or "": a read-only page; else control actions need this token */
+} tomc_diagnostics_config;
+TOMC_API tomc_status tomc_runtime_serve_diagnostics(tomc_runtime* runtime,
+                                                    const tomc_diagnostics_config* config);
+TOMC_API tomc_status tomc_runtime_diagnostics_port(const tomc_runtime* runtime, int32_t* port);
+TOMC_API tomc_status tomc_runtime_stop_diagnostics(tomc_runtime* runtime);
+
 /* ---- technology objects ---- */
 
 TOMC_API tomc_status tomc_runtime_object_count(const tomc_runtime* runtime, size_t* count);
