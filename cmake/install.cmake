@@ -1,5 +1,5 @@
 # Installation (docs/embedding.md "Installing"): the libraries, their public headers, the CMake package
-# (find_package(tomc CONFIG REQUIRED COMPONENTS core diagnostics c)), tomc.pc for pkg-config, the IEC 61131-3
+# (find_package(tomc CONFIG REQUIRED COMPONENTS core diagnostics dds c)), tomc.pc for pkg-config, the IEC 61131-3
 # declarations, and a Debian package through CPack. Every installed path is relative to the prefix, so an
 # installed tree can be moved (tests/install/install_test.sh moves it before using it).
 include(CMakePackageConfigHelpers)
@@ -26,10 +26,20 @@ install(TARGETS tomc_telegrams tomc_drives tomc_techobjects tomc_instructions to
 install(TARGETS tomc_diagnostics
         EXPORT tomcDiagnosticsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+# tomc::dds: the Fast DDS gateway adapter and the contract's generated types (docs/gateway.md).
+set_target_properties(tomc_drives_dds PROPERTIES EXPORT_NAME dds)
+set_target_properties(tomc_gateway_types PROPERTIES EXPORT_NAME gateway_types)
+install(TARGETS tomc_drives_dds tomc_gateway_types
+        EXPORT tomcDdsTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/drives/dds/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        COMPONENT development)
+install(FILES ${PROJECT_BINARY_DIR}/generated/idl/tomc_gateway.h ${PROJECT_BINARY_DIR}/generated/idl/tomc_gatewayPubSubTypes.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tomc/idl COMPONENT development)
 install(TARGETS tomc_c
         EXPORT tomcCTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT development)
-foreach(part Core Diagnostics C)
+foreach(part Core Diagnostics Dds C)
   install(EXPORT tomc${part}Targets NAMESPACE tomc:: DESTINATION ${TOMC_CMAKE_DIR} COMPONENT development)
 endforeach()
 

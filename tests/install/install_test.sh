@@ -2,7 +2,7 @@
 # ctest install.consumers: installs the build into a temporary prefix, MOVES the prefix (the installed files
 # must not depend on where they were installed, nor on the build tree), then builds two out-of-tree consumers
 # against the moved tree only and runs them:
-#   - a C++ project with find_package(tomc CONFIG REQUIRED COMPONENTS core)
+#   - a C++ project with find_package(tomc CONFIG REQUIRED COMPONENTS core dds)
 #   - a C program compiled with `cc -std=c11 -Wall -Wextra -Werror $(pkg-config --cflags --libs tomc)`
 # Both run a positioning move and check Done and the position.
 #   install_test.sh <build dir> <source dir of tests/install> <source dir of the project>
@@ -23,7 +23,7 @@ if grep -rIl -e "$build" -e "$source" -e "$work/staging" "$prefix"; then
   exit 1
 fi
 
-echo "== C++ consumer: find_package(tomc CONFIG REQUIRED COMPONENTS core)"
+echo "== C++ consumer: find_package(tomc CONFIG REQUIRED COMPONENTS core dds)"
 cmake -S "$here/cpp_consumer" -B "$work/cpp" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF > "$work/cpp-configure.log" \
   || { cat "$work/cpp-configure.log"; exit 1; }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "tomc/drives/dds/contract.hpp"  // tomc::dds: the gateway contract (with the generated IDL types)
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
