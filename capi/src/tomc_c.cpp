@@ -216,7 +216,7 @@ tomc_status load(const std::string& text, tomc_runtime** out) {
   Json root;
   try {
     root = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, and out_of_range for numbers beyond a double (fuzzer)
     return fail(TOMC_ERROR_CONFIG, std::string("not valid JSON: ") + e.what());
   }
   scenario::Problems problems;

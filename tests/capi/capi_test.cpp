@@ -250,6 +250,9 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);
   EXPECT_EQ(r, nullptr);
   EXPECT_NE(last_error().find("not valid JSON"), std::string::npos) << last_error();
+  // A number beyond a double (found by machine_config_fuzzer: it was TOMC_ERROR_INTERNAL).
+  EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 2e308, "technology_objects": []})", &r), TOMC_ERROR_CONFIG);
+  EXPECT_NE(last_error().find("number overflow"), std::string::npos) << last_error();
   EXPECT_EQ(tomc_runtime_create("[1, 2]", &r), TOMC_ERROR_CONFIG);
   EXPECT_EQ(tomc_runtime_create("{}", &r), TOMC_ERROR_CONFIG);
   EXPECT_NE(last_error().find("technology_objects: expected a non-empty array"), std::string::npos)
