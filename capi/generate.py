@@ -1,0 +1,251 @@
+#!/usr/bin/env python3
+"""The one table of the MC_* instructions of the C ABI and the IEC 61131-3 declarations.
+
+From the table below this writes, next to it:
+  include/tomc/tomc_instructions.h   one C struct per instruction (IEC FB instance data) + its functions
+  src/instructions.inc               the C++ side: fields copied to/from tomc::instructions::MC_*<Axis>, and
+                                     static_asserts that the table's defaults are the C++ classes' defaults
+  iec/tomc_motion.st                 Structured Text FUNCTION_BLOCK declarations (external FBs)
+The outputs are committed; `generate.py --check` (ctest capi.generated_files) fails when they differ from what
+the table gives. Run `python3 capi/generate.py` after editing the table.
+"""
+import pathlib
+import sys
+
+# IEC type -> (C type, C++ conversion from the C field, C++ -> C)
+TYPES = {
+    "BOOL": "bool",
+    "INT": "int16_t",
+    "DINT": "int32_t",
+    "WORD": "uint16_t",
+    "LREAL": "double",
+}
+
+# TO kinds: S TO_SpeedAxis, P TO_PositioningAxis, Y TO_SynchronousAxis, E TO_ExternalEncoder
+KIND_NAMES = {"S": "TO_SpeedAxis", "P": "TO_PositioningAxis", "Y": "TO_SynchronousAxis", "E": "TO_ExternalEncoder"}
+
+
+def fb(name, spec, kinds, inputs, outputs, master=False):
+    return dict(name=name, spec=spec, kinds=kinds, inputs=inputs, outputs=outputs, master=master)
+
+
+HANDSHAKE = [("Done", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]
+DYN = [("Acceleration", "LREAL", "-1.0"), ("Deceleration", "LREAL", "-1.0"), ("Jerk", "LREAL", "-1.0")]
+
+# The implemented instructions in the manual's order (spec 01 §1.3). Inputs: (name, IEC type, default);
+# outputs: (name, IEC type). A "master" instruction also has the input Master (the leading TO).
+TABLE = [
+    fb("MC_Power", "spec 03 §4.1", "SPYE",
+       [("Enable", "BOOL", "FALSE"), ("StartMode", "DINT", "1"), ("StopMode", "INT", "0")],
+       [("Status", "BOOL"), ("Busy", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    fb("MC_Reset", "spec 03 §4.2", "SPYE",
+       [("Execute", "BOOL", "FALSE"), ("Restart", "BOOL", "FALSE")], HANDSHAKE),
+    fb("MC_Home", "spec 03 §4.3", "PYE",
+       [("Execute", "BOOL", "FALSE"), ("Position", "LREAL", "0.0"), ("Mode", "INT", "0"),
+        ("Sensor", "DINT", "0")],
+       [("ReferenceMarkPosition", "LREAL")] + HANDSHAKE),
+    fb("MC_Halt", "spec 03 §4.4", "SPY",
+       [("Execute", "BOOL", "FALSE"), ("Deceleration", "LREAL", "-1.0"), ("Jerk", "LREAL", "-1.0"),
+        ("AbortAcceleration", "BOOL", "FALSE"), ("Mode", "DINT", "0")], HANDSHAKE),
+    fb("MC_MoveAbsolute", "spec 03 §4.5", "PY",
+       [("Execute", "BOOL", "FALSE"), ("Position", "LREAL", "0.0"), ("Velocity", "LREAL", "-1.0")] + DYN +
+       [("BufferMode", "DINT", "0"), ("Direction", "INT", "1")],
+       [("Done", "BOOL"), ("Busy", "BOOL"), ("Active", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
+    fb("MC_MoveRelative", "spec 03 §4.6", "PY",
+       [("Execute", "BOOL", "FALSE"), ("Distance", "LREAL", "0.0"), ("Velocity", "LREAL", "-1.0")] + DYN +
+       [("BufferMode", "DINT", "0")],
+       [("Done", "BOOL"), ("Busy", "BOOL"), ("Active", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
+    fb("MC_MoveVelocity", "spec 03 §4.8", "SPY",
+       [("Execute", "BOOL", "FALSE"), ("Velocity", "LREAL", "100.0")] + DYN +
+       [("Direction", "INT", "0"), ("Current", "BOOL", "FALSE"), ("PositionControlled", "BOOL", "TRUE")],
+       [("InVelocity", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
+    fb("MC_MoveJog", "spec 03 §4.9", "SPY",
+       [("JogForward", "BOOL", "FALSE"), ("JogBackward", "BOOL", "FALSE"), ("Velocity", "LREAL", "100.0")] + DYN +
+       [("PositionControlled", "BOOL", "TRUE")],
+       [("InVelocity", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
+    fb("MC_Stop", "spec 03 §4.13", "SPY",
+       [("Execute", "BOOL", "FALSE"), ("Mode", "DINT", "0"), ("Deceleration", "LREAL", "-1.0"),
+        ("Jerk", "LREAL", "-1.0"), ("AbortAcceleration", "BOOL", "FALSE")], HANDSHAKE),
+    fb("MC_SetAxisSTW", "spec 03 §4.14", "SPY",
+       [("Execute", "BOOL", "FALSE"), ("STW1", "WORD", "0"), ("STW1BitMask", "WORD", "0"), ("STW2", "WORD", "0"),
+        ("STW2BitMask", "WORD", "0")], HANDSHAKE),
+    fb("MC_WriteParameter", "spec 03 §4.15", "SPYE",
+       [("Execute", "BOOL", "FALSE"), ("ParameterNumber", "DINT", "0"), ("Value", "LREAL", "0.0")], HANDSHAKE),
+    fb("MC_TorqueLimiting", "spec 03 §4.18.3", "SPY",
+       [("Enable", "BOOL", "FALSE"), ("Limit", "LREAL", "-1.0"), ("Mode", "DINT", "0")],
+       [("InClamping", "BOOL"), ("InLimitation", "BOOL"), ("Busy", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
+    fb("MC_GearIn", "spec 07 §2.1", "Y",
+       [("Execute", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"), ("RatioDenominator", "DINT", "1")] + DYN,
+       [("InGear", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
+       master=True),
+    fb("MC_GearInPos", "spec 07 §2.2", "Y",
+       [("Execute", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"), ("RatioDenominator", "DINT", "1"),
+        ("MasterSyncPosition", "LREAL", "0.0"), ("SlaveSyncPosition", "LREAL", "0.0"),
+        ("SyncProfileReference", "DINT", "1"), ("MasterStartDistance", "LREAL", "1.0"),
+        ("Velocity", "LREAL", "-1.0")] + DYN + [("SyncDirection", "DINT", "3")],
+       [("StartSync", "BOOL"), ("InSync", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")],
+       master=True),
+    fb("MC_GearInVelocity", "spec 07 §2.3", "Y",
+       [("Execute", "BOOL", "FALSE"), ("ContinuousUpdate", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"),
+        ("RatioDenominator", "DINT", "1")] + DYN + [("PositionControlled", "BOOL", "FALSE")],
+       [("StartSync", "BOOL"), ("InSync", "BOOL"), ("ContinuousUpdateActive", "BOOL"), ("Busy", "BOOL"),
+        ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
+       master=True),
+    fb("MC_GearOut", "spec 07 §2.4", "Y",
+       [("Execute", "BOOL", "FALSE"), ("SlavePosition", "LREAL", "0.0"), ("SyncProfileReference", "DINT", "1"),
+        ("MasterStopDistance", "LREAL", "0.0"), ("Deceleration", "LREAL", "-1.0"), ("Jerk", "LREAL", "-1.0"),
+        ("SyncOutDirection", "DINT", "3")],
+       [("StartSyncOut", "BOOL")] + HANDSHAKE),
+]
+
+HEADER_NOTE = "Generated by capi/generate.py from its table: do not edit; edit the table and run it again."
+
+
+def c_default(iec_type, value):
+    if iec_type == "BOOL":
+        return "true" if value == "TRUE" else "false"
+    return value
+
+
+def cpp_literal(iec_type, value):
+    if iec_type == "BOOL":
+        return "true" if value == "TRUE" else "false"
+    return value
+
+
+def c_header():
+    out = [f"/* {HEADER_NOTE} */",
+           "/* The MC_* instructions of <tomc/tomc.h>: one struct per instruction with the manual's inputs and",
+           " * outputs as fields (the IEC function block's instance data), tomc_<FB>_init() that sets the struct",
+           " * version and the inputs' defaults, and tomc_<FB>_call() that calls the instance with its technology",
+           " * object. Keep one instance per call site, as in a PLC program; do not share one between axes. */",
+           "#ifndef TOMC_TOMC_INSTRUCTIONS_H",
+           "#define TOMC_TOMC_INSTRUCTIONS_H",
+           "/* Included by <tomc/tomc.h>. */",
+           "#ifdef __cplusplus",
+           'extern "C" {',
+           "#endif",
+           ""]
+    for f in TABLE:
+        kinds = ", ".join(KIND_NAMES[k] for k in f["kinds"])
+        out.append(f"/* {f['name']} ({f['spec']}) on {kinds}. */")
+        out.append(f"typedef struct tomc_{f['name']} {{")
+        out.append("  tomc_struct_header header; /* set by the init function */")
+        out.append("  /* inputs */")
+        if f["master"]:
+            out.append("  const tomc_object* Master; /* the leading axis or external encoder */")
+        for name, t, _ in f["inputs"]:
+            out.append(f"  {TYPES[t]} {name};")
+        out.append("  /* outputs */")
+        for name, t in f["outputs"]:
+            out.append(f"  {TYPES[t]} {name};")
+        out.append("  tomc_instance_data instance; /* the handshake's state: owned by the library */")
+        out.append(f"}} tomc_{f['name']};")
+        out.append(f"TOMC_API void tomc_{f['name']}_init(tomc_{f['name']}* fb);")
+        out.append(f"TOMC_API tomc_status tomc_{f['name']}_call(tomc_object* axis, tomc_{f['name']}* fb);")
+        out.append("")
+    out += ["#ifdef __cplusplus", "}", "#endif", "#endif /* TOMC_TOMC_INSTRUCTIONS_H */", ""]
+    return "\n".join(out)
+
+
+def cpp_glue():
+    out = [f"// {HEADER_NOTE}", "// Included by capi/src/tomc_c.cpp inside its namespace; see generate.py.", ""]
+    for f in TABLE:
+        n = f["name"]
+        kinds = " | ".join({"S": "kSpeed", "P": "kPositioning", "Y": "kSynchronous", "E": "kEncoder"}[k]
+                           for k in f["kinds"])
+        out.append(f"struct Fb_{n} {{")
+        out.append(f"  using C = tomc_{n};")
+        out.append(f"  template <typename Axis> using Cpp = instructions::{n}<Axis>;")
+        out.append(f'  static constexpr const char* kName = "{n}";')
+        out.append(f"  static constexpr unsigned kKinds = {kinds};")
+        out.append(f"  static constexpr bool kMaster = {'true' if f['master'] else 'false'};")
+        out.append("  template <typename T> static void in(const C& c, T& t) noexcept {")
+        for name, t, _ in f["inputs"]:
+            cast = "static_cast<bool>" if t == "BOOL" else ""
+            out.append(f"    t.{name} = {cast}(c.{name});")
+        out.append("  }")
+        out.append("  template <typename T> static void out(const T& t, C& c) noexcept {")
+        for name, _ in f["outputs"]:
+            out.append(f"    c.{name} = t.{name};")
+        out.append("  }")
+        out.append("  static void copy_outputs(const C& from, C& to) noexcept {")
+        for name, _ in f["outputs"]:
+            out.append(f"    to.{name} = from.{name};")
+        out.append("  }")
+        out.append("  static void defaults(C& c) noexcept {")
+        for name, t, d in f["inputs"]:
+            out.append(f"    c.{name} = {cpp_literal(t, d)};")
+        out.append("  }")
+        out.append("};")
+        first = {"S": "SpeedAxis", "P": "PositioningAxis", "Y": "SynchronousAxis", "E": "ExternalEncoder"}[f["kinds"][0]]
+        for name, t, d in f["inputs"]:
+            out.append(f"static_assert(instructions::{n}<techobjects::{first}>{{}}.{name} == {cpp_literal(t, d)},")
+            out.append(f'              "{n}.{name}: the table\'s default differs from the C++ class");')
+        out.append(f"extern \"C\" void tomc_{n}_init(tomc_{n}* fb) {{ init_fb<Fb_{n}>(fb); }}")
+        out.append(f"extern \"C\" tomc_status tomc_{n}_call(tomc_object* axis, tomc_{n}* fb) {{")
+        out.append(f"  return call_fb<Fb_{n}>(axis, fb);")
+        out.append("}")
+        out.append("")
+    return "\n".join(out)
+
+
+def st_declarations():
+    out = [f"(* {HEADER_NOTE} *)",
+           "(* The MC_* function blocks of tomc as IEC 61131-3 Structured Text declarations, for a runtime that",
+           "   compiles ST and binds them as external function blocks to the C functions of <tomc/tomc.h>",
+           "   (tomc_<FB>_call(axis, &instance)). Axis and Master are technology-object handles (tomc_object*). *)",
+           "",
+           "TYPE",
+           "  TO_Object : LWORD; (* a tomc_object* handle: TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis,",
+           "                        TO_ExternalEncoder *)",
+           "END_TYPE",
+           ""]
+    for f in TABLE:
+        kinds = ", ".join(KIND_NAMES[k] for k in f["kinds"])
+        out.append(f"(* {f['name']} ({f['spec']}): Axis is a {kinds} *)")
+        out.append(f"FUNCTION_BLOCK {f['name']}")
+        out.append("VAR_INPUT")
+        out.append("  Axis : TO_Object;")
+        if f["master"]:
+            out.append("  Master : TO_Object;")
+        for name, t, d in f["inputs"]:
+            out.append(f"  {name} : {t} := {d};")
+        out.append("END_VAR")
+        out.append("VAR_OUTPUT")
+        for name, t in f["outputs"]:
+            out.append(f"  {name} : {t};")
+        out.append("END_VAR")
+        out.append("END_FUNCTION_BLOCK")
+        out.append("")
+    return "\n".join(out)
+
+
+def main():
+    here = pathlib.Path(__file__).resolve().parent
+    files = {
+        here / "include/tomc/tomc_instructions.h": c_header(),
+        here / "src/instructions.inc": cpp_glue(),
+        here / "iec/tomc_motion.st": st_declarations(),
+    }
+    if len(sys.argv) > 1 and sys.argv[1] == "--check":
+        stale = [str(p.relative_to(here)) for p, text in files.items() if not p.exists() or p.read_text() != text]
+        if stale:
+            print("out of date (run python3 capi/generate.py): " + ", ".join(stale))
+            return 1
+        print("generated files match the table")
+        return 0
+    for p, text in files.items():
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
