@@ -237,7 +237,7 @@ try {
     const slide = await objectStatus(demo.base, 'Slide');
     const shown = await page2.inputValue('#dyn-velocity');
     return shown !== '' && Number(shown) === slide.panel.dynamics.velocity && Number(shown) > 0;
-  });
+  }, 30000);  // the sanitizer build's demo is several times slower
   await page2.click('#panel-enable');
   await until('the panel to enable the slide', () => ledOn(page2, 'Axis status/Enabled'));
   const start = await shownValue(page2, 'Actual values/Actual position');
