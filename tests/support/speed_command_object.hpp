@@ -18,8 +18,7 @@ class SpeedCommandObject final : public techobjects::TechnologyObject {
   std::string_view name() const noexcept override { return "speed-command"; }
   void servo(const techobjects::CycleClock&) noexcept override {
     connection_.read();
-    connection_.set_speed_setpoint(setpoint_rpm_);
-    connection_.write();
+    connection_.write(techobjects::ServoCommand{.speed_rpm = setpoint_rpm_});
   }
   void interpolate(const techobjects::CycleClock& clock) noexcept override {
     connection_.request(telegrams::DriveRequest::kOperate);

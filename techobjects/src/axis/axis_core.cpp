@@ -348,9 +348,7 @@ Submission AxisCore::set_axis_stw(DriveConnection* drive, std::uint16_t stw1, st
     return Submission::reject(error_id::kInvalidBitMask);
   if (drive == nullptr || drive->device_config().drive_telegram == 0)
     return Submission::reject(error_id::kNoDriveTelegram);
-  auto& sp = drive->drive_setpoint();
-  sp.STW1 = tg::Stw1{static_cast<std::uint16_t>((sp.STW1.value() & ~stw1_mask) | (stw1 & stw1_mask))};
-  sp.STW2 = tg::Stw2{static_cast<std::uint16_t>((sp.STW2.value() & ~stw2_mask) | (stw2 & stw2_mask))};
+  drive->set_user_control_bits(stw1, stw1_mask, stw2, stw2_mask);
   // In effect from the next servo cycle.
   return Submission::accept(jobs.create(AxisJobKind::kSetAxisStw, JobState::kDone));
 }

@@ -9,19 +9,19 @@ namespace tomc::techobjects {
 
 namespace tg = tomc::telegrams;
 
-bool drive_torque_limit(DriveConnection& drive, TorqueLimitingRequest& request, double motor_limit,
-                        double reference, bool has_momred, bool has_meldw) noexcept {
+bool drive_torque_limit(ServoCommand& command, const tg::ActualSignals& actual,
+                        TorqueLimitingRequest& request, double motor_limit, double reference, bool has_momred,
+                        bool has_meldw) noexcept {
   const bool active = request.active;
-  auto& sp = drive.drive_setpoint();
-  sp.MOMRED = active && has_momred ? tg::momred_from_torque_limit(motor_limit, reference) : std::uint16_t{0};
+  command.momred =
+      active && has_momred ? tg::momred_from_torque_limit(motor_limit, reference) : std::uint16_t{0};
   // Set while MC_TorqueLimiting is active, so that the drive does not fault at the limit (spec 01 §8.13
   // table, last row: MC_TorqueLimiting sets it, MC_TorqueRange does not).
   if (active != request.stw2_fixed_stop) {
-    sp.STW2.set(tg::Stw2Bit::kTravelToFixedStop, active);
+    command.travel_to_fixed_stop = active;
     request.stw2_fixed_stop = active;
   }
-  return active && has_meldw &&
-         !drive.drive_actual().MELDW.test(tg::MeldwBit::kTorqueUtilisationBelowThreshold);
+  return active && has_meldw && !actual.MELDW.test(tg::MeldwBit::kTorqueUtilisationBelowThreshold);
 }
 
 double motor_torque_limit(double limit, const TorqueLimitMechanics& m) noexcept {

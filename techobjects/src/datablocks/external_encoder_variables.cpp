@@ -21,50 +21,12 @@
 namespace tomc::techobjects {
 namespace {
 
-using detail::kAny;
-using detail::kByteMax;
-using detail::kDintMax;
-using detail::kDintMin;
-using detail::kForceUnits;
-using detail::kInertiaUnits;
-using detail::kLrealMax;
-using detail::kLrealMin;
-using detail::kMassUnits;
-using detail::kRemoveEnableReactionValues;
-using detail::kTimeUnits;
-using detail::kTorqueUnits;
-using detail::kUdintMax;
-using detail::kWordMax;
+using namespace detail;  // the shared table helpers and permitted values
 
 constexpr double k1e12 = 1.0E12;
 constexpr double k1e9 = 1.0E9;
 
-// ---- permitted values ----
-// Units.* codes of E (man. §10.4.7, spec 04 §3.11): length, velocity and time only.
-constexpr std::array<double, 12> kLengthUnits{
-    unit_code::kMetre,     unit_code::kMillimetre, unit_code::kMillimetreHighResolution,
-    unit_code::kKilometre, unit_code::kMicrometre, unit_code::kNanometre,
-    unit_code::kInch,      unit_code::kFoot,       unit_code::kMile,
-    unit_code::kRadian,    unit_code::kDegree,     unit_code::kDegreeHighResolution};
-constexpr std::array<double, 19> kVelocityUnits{unit_code::kDegreePerSecond,
-                                                unit_code::kDegreePerSecondHighResolution,
-                                                unit_code::kDegreePerMinute,
-                                                unit_code::kRadianPerSecond,
-                                                unit_code::kRadianPerMinute,
-                                                unit_code::kMillimetrePerSecond,
-                                                unit_code::kMillimetrePerSecondHighResolution,
-                                                unit_code::kMetrePerSecond,
-                                                unit_code::kMillimetrePerMinute,
-                                                unit_code::kMetrePerMinute,
-                                                unit_code::kMillimetrePerHour,
-                                                unit_code::kMetrePerHour,
-                                                unit_code::kKilometrePerMinute,
-                                                unit_code::kKilometrePerHour,
-                                                unit_code::kInchPerSecond,
-                                                unit_code::kInchPerMinute,
-                                                unit_code::kFootPerSecond,
-                                                unit_code::kFootPerMinute,
-                                                unit_code::kMilePerHour};
+// ---- permitted values (Units.*: detail::kLengthUnits, kPositionVelocityUnits) ----
 // ErrorDetail.Reaction: 0 none, 10 remove enable (man. §10.4.17, as printed; spec 04 §14 item 7).
 constexpr std::array<double, 2> kReactionValues{static_cast<double>(ExternalEncoderReaction::kNone),
                                                 static_cast<double>(ExternalEncoderReaction::kRemoveEnable)};
@@ -160,7 +122,7 @@ constexpr auto kExternalEncoderVariables = std::to_array<VariableInfo>({
     TOMC_E_VARIABLE(Properties.MotionType, kDint, kRON, kConfiguration, 0.0, 1.0, kAny, 0),
     // man. §10.4.7 Units (spec 04 §3.11, column E), RON
     TOMC_E_VARIABLE(Units.LengthUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kLengthUnits, 0),
-    TOMC_E_VARIABLE(Units.VelocityUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kVelocityUnits, 0),
+    TOMC_E_VARIABLE(Units.VelocityUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kPositionVelocityUnits, 0),
     TOMC_E_VARIABLE(Units.TimeUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kTimeUnits, 0),
     // man. §10.4.8 Mechanics (spec 04 §3.12)
     TOMC_E_VARIABLE(Mechanics.LeadScrew, kLreal, kRES, kConfiguration, 1.0E-12, k1e12, kAny, 0),
@@ -213,14 +175,6 @@ constexpr auto kExternalEncoderVariables = std::to_array<VariableInfo>({
 #undef TOMC_E_VARIABLE
 #undef TOMC_E_ROW
 
-template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  std::array<std::string_view, N> paths{};
-  for (std::size_t i = 0; i < N; ++i)
-    paths[i] = table[i].path;
-  std::sort(paths.begin(), paths.end());
-  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
-}
 static_assert(paths_unique(kExternalEncoderVariables), "duplicate path in the external-encoder table");
 static_assert(detail::ranges_valid(kExternalEncoderVariables),
               "an external-encoder range is empty, exceeds its data type or excludes a permitted value");

@@ -20,20 +20,7 @@
 namespace tomc::techobjects {
 namespace {
 
-using detail::kAny;
-using detail::kByteMax;
-using detail::kDintMax;
-using detail::kDintMin;
-using detail::kForceUnits;
-using detail::kInertiaUnits;
-using detail::kLrealMax;
-using detail::kLrealMin;
-using detail::kMassUnits;
-using detail::kRemoveEnableReactionValues;
-using detail::kTimeUnits;
-using detail::kTorqueUnits;
-using detail::kUdintMax;
-using detail::kWordMax;
+using namespace detail;  // the shared table helpers and permitted values
 
 // ---- ranges of the positioning-axis tables (man. §10.3) ----
 constexpr double k1e12 = 1.0E12;
@@ -47,32 +34,7 @@ constexpr double kHomingReferencingVelocityMax = 36000.0;
 // FollowingError.MinValue / MaxValue (spec 04 §3.24): linear 0.0 ..., rotary 0.001 ... / 0.002 ...: the union
 // starts at 0.0.
 
-// ---- permitted values ----
-// Units.* codes of P/Y (man. §10.3.12, spec 04 §3.11).
-constexpr std::array<double, 12> kLengthUnits{
-    unit_code::kMetre,     unit_code::kMillimetre, unit_code::kMillimetreHighResolution,
-    unit_code::kKilometre, unit_code::kMicrometre, unit_code::kNanometre,
-    unit_code::kInch,      unit_code::kFoot,       unit_code::kMile,
-    unit_code::kRadian,    unit_code::kDegree,     unit_code::kDegreeHighResolution};
-constexpr std::array<double, 19> kVelocityUnits{unit_code::kDegreePerSecond,
-                                                unit_code::kDegreePerSecondHighResolution,
-                                                unit_code::kDegreePerMinute,
-                                                unit_code::kRadianPerSecond,
-                                                unit_code::kRadianPerMinute,
-                                                unit_code::kMillimetrePerSecond,
-                                                unit_code::kMillimetrePerSecondHighResolution,
-                                                unit_code::kMetrePerSecond,
-                                                unit_code::kMillimetrePerMinute,
-                                                unit_code::kMetrePerMinute,
-                                                unit_code::kMillimetrePerHour,
-                                                unit_code::kMetrePerHour,
-                                                unit_code::kKilometrePerMinute,
-                                                unit_code::kKilometrePerHour,
-                                                unit_code::kInchPerSecond,
-                                                unit_code::kInchPerMinute,
-                                                unit_code::kFootPerSecond,
-                                                unit_code::kFootPerMinute,
-                                                unit_code::kMilePerHour};
+// ---- permitted values (Units.*: detail::kLengthUnits, kPositionVelocityUnits) ----
 
 // One row: `path_literal` is the manual path, `member` the PositioningAxisData member expression it names.
 #define TOMC_P_ROW(...) TOMC_DB_ROW(PositioningAxisData, kPositioningAxis, __VA_ARGS__)
@@ -247,7 +209,7 @@ constexpr auto kPositioningAxisVariables = std::to_array<VariableInfo>({
     TOMC_P_VARIABLE(Properties.MotionType, kDint, kRON, kConfiguration, 0.0, 1.0, kAny, 0),
     // man. §10.3.12 Units (spec 04 §3.11), RON; no range printed, the permitted codes are the listed ones
     TOMC_P_VARIABLE(Units.LengthUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kLengthUnits, 0),
-    TOMC_P_VARIABLE(Units.VelocityUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kVelocityUnits, 0),
+    TOMC_P_VARIABLE(Units.VelocityUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kPositionVelocityUnits, 0),
     TOMC_P_VARIABLE(Units.TimeUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kTimeUnits, 0),
     TOMC_P_VARIABLE(Units.TorqueUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kTorqueUnits, 0),
     TOMC_P_VARIABLE(Units.ForceUnit, kUdint, kRON, kConfiguration, 0.0, kUdintMax, kForceUnits, 0),
@@ -403,15 +365,6 @@ constexpr auto kPositioningAxisVariables = std::to_array<VariableInfo>({
 #undef TOMC_P_VARIABLE
 #undef TOMC_P_ROW
 
-// Paths are unique (sorted copy: O(n log n) constant-evaluation steps for the ~500 rows).
-template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  std::array<std::string_view, N> paths{};
-  for (std::size_t i = 0; i < N; ++i)
-    paths[i] = table[i].path;
-  std::sort(paths.begin(), paths.end());
-  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
-}
 static_assert(paths_unique(kPositioningAxisVariables), "duplicate path in the positioning-axis table");
 static_assert(detail::ranges_valid(kPositioningAxisVariables),
               "a positioning-axis range is empty, exceeds its data type or excludes a permitted value");

@@ -59,6 +59,15 @@ void DriveConnection::restart(const DriveConnectionConfig& config) noexcept {
   drive_sp_.STW2 = tg::Stw2{static_cast<std::uint16_t>(drive_sp_.STW2.value() & 0xF000u)};
   request_ = tg::DriveRequest::kOff;
   speed_setpoint_rpm_ = 0.0;
+  fixed_stop_sent_ = false;
+}
+
+void DriveConnection::set_user_control_bits(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                                            std::uint16_t stw2_mask) noexcept {
+  drive_sp_.STW1 =
+      tg::Stw1{static_cast<std::uint16_t>((drive_sp_.STW1.value() & ~stw1_mask) | (stw1 & stw1_mask))};
+  drive_sp_.STW2 =
+      tg::Stw2{static_cast<std::uint16_t>((drive_sp_.STW2.value() & ~stw2_mask) | (stw2 & stw2_mask))};
 }
 
 void DriveConnection::acknowledge() noexcept {
@@ -135,8 +144,27 @@ void DriveConnection::read() noexcept {
   }
 }
 
-void DriveConnection::write() noexcept {
+void DriveConnection::write(const ServoCommand& command) noexcept {
   if (device_ == nullptr) return;
+  speed_setpoint_rpm_ = command.speed_rpm;
+  drive_sp_.XERR = command.xerr;
+  drive_sp_.KPC = command.kpc;
+  drive_sp_.MOMRED = command.momred;
+  if (command.travel_to_fixed_stop != fixed_stop_sent_) {  // on change only: the bit is also the user's
+    drive_sp_.STW2.set(tg::Stw2Bit::kTravelToFixedStop, command.travel_to_fixed_stop);
+    fixed_stop_sent_ = command.travel_to_fixed_stop;
+  }
+  switch (command.encoder) {
+    case EncoderSource::kDriveG1:
+      drive_sp_.G1_STW = command.encoder_control;
+      break;
+    case EncoderSource::kDriveG2:
+      drive_sp_.G2_STW = command.encoder_control;
+      break;
+    case EncoderSource::kEncoderG1:
+      encoder_sp_[0].G1_STW = command.encoder_control;
+      break;
+  }
   const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
   const std::uint8_t master = config_.isochronous ? master_.next() : 0;
   if (drive_codec.frame_size() != 0) {

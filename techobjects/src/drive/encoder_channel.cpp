@@ -61,10 +61,8 @@ void EncoderChannel::read(const DriveConnection& drive, bool fresh) noexcept {
   }
 }
 
-void EncoderChannel::write(DriveConnection& drive) noexcept {
-  auto& stw = source_ == EncoderSource::kDriveG2     ? drive.drive_setpoint().G2_STW
-              : source_ == EncoderSource::kEncoderG1 ? drive.encoder_setpoint(0).G1_STW
-                                                     : drive.drive_setpoint().G1_STW;
+tg::EncoderControlWord EncoderChannel::control_word() noexcept {
+  auto& stw = control_;
   // Low byte: reference-mark search (function 1, command 1), then the read request (command 2).
   std::uint16_t request = 0;
   if (mark_ == MarkState::kArmed) request = tg::encoder_request::reference_mark_search();
@@ -76,6 +74,7 @@ void EncoderChannel::write(DriveConnection& drive) noexcept {
   stw.set(tg::EncoderControlBit::kRequestAbsoluteValue, chain_.absolute_type());
   stw.set(tg::EncoderControlBit::kAcknowledgeEncoderError, acknowledge_cycles_ > 0);
   if (acknowledge_cycles_ > 0) --acknowledge_cycles_;
+  return stw;
 }
 
 }  // namespace tomc::techobjects

@@ -15,11 +15,7 @@ namespace tomc::techobjects {
 
 ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const ExternalEncoderData& start_values,
                                  const DriveConnectionConfig& connection)
-    : name_(std::move(name)),
-      device_(device),
-      start_(start_values),
-      db_(start_values),
-      connection_config_(connection),
+    : DataBlockObject(std::move(name), device, start_values, connection),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kEncoderG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
     fail_start_value(name_, path, message);
@@ -34,7 +30,7 @@ ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const Exter
     fail("Sensor.Interface", "the device carries no encoder telegram 81 or 83 (spec 01 §3.3)");
   }
   source_ = EncoderSource::kEncoderG1;
-  connection_ = DriveConnection(*device_, connection_config_);
+  drive_ = DriveConnection(*device_, drive_config_);
   configure();
   if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
 }
@@ -49,23 +45,11 @@ void ExternalEncoder::configure() noexcept {
   mechanics_.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
   mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
   mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
-  encoder_mechanics_.Type = static_cast<EncoderType>(s.Type);
-  encoder_mechanics_.System = static_cast<EncoderSystem>(s.System);
+  encoder_mechanics_ = sensor_encoder_mechanics(s);
   encoder_mechanics_.MountingMode =
       s.MountingMode == static_cast<std::int32_t>(SensorMountingMode::kExternalMeasuringSystem)
           ? EncoderMounting::kExternalMeasuringSystem
           : EncoderMounting::kMotorShaft;
-  encoder_mechanics_.InverseDirection = s.InverseDirection;
-  encoder_mechanics_.Parameter.Resolution = s.Parameter.Resolution;
-  encoder_mechanics_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
-  encoder_mechanics_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
-  encoder_mechanics_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
-  encoder_mechanics_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
-  encoder_mechanics_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
-  encoder_mechanics_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
-  encoder_mechanics_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
-  encoder_mechanics_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
-  encoder_mechanics_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
   encoder_mechanics_.Nist = NistSource::kEncoderTelegram83;
   encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, source_);
   (void)standstill_.configure(StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
@@ -87,10 +71,10 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
     encoder_.chain().power_up(&r);
   }
   power_up_done_ = true;
-  connection_.read();
-  encoder_.read(connection_, device_->fresh);
+  drive_.read();
+  encoder_.read(drive_, device_->fresh);
   const bool error = encoder_.error();
-  const bool communication = connection_.communication_ok();
+  const bool communication = drive_.communication_ok();
   if (error && !error_seen_) {
     core_.raise(kAlarmSensorFault, encoder_.error_code());
     if (!encoder_.chain().absolute_type()) {  // spec 04 §8 rule 8; H11
@@ -99,7 +83,7 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
     }
   }
   error_seen_ = error;
-  if (!communication && connection_.cycles_without_fresh_frame() > 0) {
+  if (!communication && drive_.cycles_without_fresh_frame() > 0) {
     core_.raise(kAlarmDriveCommunication);
   }
   valid_ = encoder_.valid() && communication;
@@ -120,9 +104,8 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
     retained_.MeasuringRangeCount = r.MeasuringRangeCount;
     retained_.LastAbsoluteValue = r.LastAbsoluteValue;
   }
-  encoder_.write(connection_);
-  connection_.request(telegrams::DriveRequest::kOff);  // encoder-only: no drive state machine to run
-  connection_.write();
+  drive_.request(telegrams::DriveRequest::kOff);  // encoder-only: no drive state machine to run
+  drive_.write(ServoCommand{.encoder = source_, .encoder_control = encoder_.control_word()});
 }
 
 LeadingValue ExternalEncoder::leading_value(LeadingValueCoupling) const noexcept {
@@ -145,14 +128,14 @@ void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
   extrapolation_.update(encoder_.chain().continuous_position(), velocity_);
   show_extrapolation(extrapolation_, units_.velocity, db_.StatusExtrapolation);
   if (const auto restart_requested = core_.begin_reset(core_.cycle)) {  // MC_Reset
-    connection_.acknowledge();
+    drive_.acknowledge();
     encoder_.acknowledge();
     if (*restart_requested) {
       const RetainedSensorState retained = encoder_.chain().retained_state();
       const std::int32_t adjusted = db_.StatusSensor.Adjusted;
       db_ = *start_;
       core_.restart();  // MC_WriteParameter 1010...1012 take effect now
-      connection_.restart(connection_config_);
+      drive_.restart(drive_config_);
       configure();
       configure_extrapolation();
       if (encoder_.chain().absolute_type()) {
@@ -297,11 +280,7 @@ bool ExternalEncoder::absolute_encoder() const noexcept {
 
 void ExternalEncoder::store_adjustment() noexcept {
   const RetainedSensorState r = encoder_.chain().retained_state();
-  retained_.valid = true;
-  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
-  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
-  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
-  ++retained_.sequence;
+  retained_.adopt(r.AbsEncoderOffset, r.MeasuringRangeCount, r.LastAbsoluteValue);
 }
 
 void ExternalEncoder::restore_retained(const RetainedEncoderData& data) noexcept {
@@ -321,25 +300,11 @@ Submission ExternalEncoder::write_parameter(std::int32_t parameter_number, doubl
   return core_.write_communication_time(parameter_number, value, db_.StatusWord);
 }
 
-bool ExternalEncoder::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
-                                   AlarmReaction reaction) noexcept {
-  return core_.alarms.raise(number, additional_value, reaction, core_.cycle);
-}
-
-namespace {
-constexpr DataBlockTable<ExternalEncoderData> kTable{&find_external_encoder_variable,
-                                                     &find_external_encoder_bit};
-}  // namespace
-
-WriteResult ExternalEncoder::write(std::string_view path, double value) noexcept {
-  const WriteResult r = kTable.write(db_, path, value);
-  if (r.ok()) {
-    (void)standstill_.configure(
-        StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
-                               db_.StandstillSignal.MinDwellTime, servo_cycle_s_});
-    if (path.starts_with("Extrapolation.")) configure_extrapolation();  // DIR: effective at once
-  }
-  return r;
+// A DIR write: the standstill signal and the extrapolation take the new values at once.
+void ExternalEncoder::written(std::string_view path) noexcept {
+  (void)standstill_.configure(StandstillSignalConfig{db_.StandstillSignal.VelocityThreshold / units_.velocity,
+                                                     db_.StandstillSignal.MinDwellTime, servo_cycle_s_});
+  if (path.starts_with("Extrapolation.")) configure_extrapolation();
 }
 
 // Extrapolation of the encoder value as a leading value (spec 07 §1.4, extrapolation_config), as on the
@@ -347,14 +312,6 @@ WriteResult ExternalEncoder::write(std::string_view path, double value) noexcept
 void ExternalEncoder::configure_extrapolation() noexcept {
   extrapolation_.configure(
       extrapolation_config(db_.Extrapolation, core_.communication_times.Ti, ipo_cycle_s_, units_.velocity));
-}
-
-WriteResult ExternalEncoder::write_start_value(std::string_view path, double value) noexcept {
-  return kTable.write_start_value(*start_, db_, path, value);
-}
-
-double ExternalEncoder::read(std::string_view path) const noexcept {
-  return kTable.read(db_, path);
 }
 
 }  // namespace tomc::techobjects

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/jog.hpp"
 #include "tomc/techobjects/axis/setup_checks.hpp"
 #include "tomc/techobjects/datablocks/data_block_access.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
@@ -33,11 +34,7 @@ bool carries(std::uint16_t telegram, tg::Signal signal, tg::Direction direction 
 
 PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
                                  const DriveConnectionConfig& drive)
-    : name_(std::move(name)),
-      device_(device),
-      start_(start_values),
-      db_(start_values),
-      drive_config_(drive),
+    : AxisObject(std::move(name), device, start_values, drive),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kDriveG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
     fail_start_value(name_, path, message);
@@ -114,21 +111,9 @@ void PositioningAxis::configure_components() noexcept {
   mechanics_.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
   mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
   mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
-  encoder_mechanics_.Type = static_cast<EncoderType>(s.Type);
-  encoder_mechanics_.System = static_cast<EncoderSystem>(s.System);
+  encoder_mechanics_ = sensor_encoder_mechanics(s);
   encoder_mechanics_.MountingMode = static_cast<EncoderMounting>(s.MountingMode);
-  encoder_mechanics_.InverseDirection = s.InverseDirection;
   encoder_mechanics_.MeasuringGear = GearRatio{s.MeasuringGear.Numerator, s.MeasuringGear.Denominator};
-  encoder_mechanics_.Parameter.Resolution = s.Parameter.Resolution;
-  encoder_mechanics_.Parameter.StepsPerRevolution = s.Parameter.StepsPerRevolution;
-  encoder_mechanics_.Parameter.FineResolutionXist1 = s.Parameter.FineResolutionXist1;
-  encoder_mechanics_.Parameter.FineResolutionXist2 = s.Parameter.FineResolutionXist2;
-  encoder_mechanics_.Parameter.DeterminableRevolutions = s.Parameter.DeterminableRevolutions;
-  encoder_mechanics_.Parameter.DistancePerRevolution = s.Parameter.DistancePerRevolution;
-  encoder_mechanics_.Parameter.BehaviorGx_XIST1 = s.Parameter.BehaviorGx_XIST1;
-  encoder_mechanics_.Parameter.ReferenceSpeed = s.Parameter.ReferenceSpeed;
-  encoder_mechanics_.Parameter.ReferenceVelocity = s.Parameter.ReferenceVelocity;
-  encoder_mechanics_.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
   encoder_mechanics_.Nist = encoder_source_ == EncoderSource::kEncoderG1 ? NistSource::kEncoderTelegram83
                                                                          : NistSource::kDriveTelegram;
   encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, encoder_source_);
@@ -314,15 +299,7 @@ void PositioningAxis::start_positioning(Motion motion) noexcept {
   core_.jobs.set(motion_.id, JobState::kActive);
   positioning_.cancel();
   positioning_start_pending_ = false;
-  const double v = positioning_velocity(motion_);
-  motion_.planned_velocity = v;
-  if (v > 0.0) {
-    ProfileLimits l = motion_.limits;
-    l.velocity = v;
-    plan_position(motion_.target, l);
-  } else {
-    plan_velocity(0.0, motion_.limits, false);  // override 0 %: hold until the override returns
-  }
+  plan_positioning(positioning_velocity(motion_));
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -461,8 +438,9 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   const auto running = running_jobs(n);
   int weight = 0;
   ProfileLimits limits;
-  if (const auto decided = core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units(),
-                                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
+  if (const auto decided =
+          core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, dynamic_units(),
+                             std::span<const RunningJob>(running.data(), n), weight, limits)) {
     return *decided;
   }
   abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
@@ -477,26 +455,15 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
   return Submission::accept(id);
 }
 
-void PositioningAxis::stop_execute(JobId job, bool execute) noexcept {
-  core_.stop_execute(job, execute);
-}
-
 Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
-  const bool both = in.JogForward && in.JogBackward;
-  const bool any = in.JogForward || in.JogBackward;
-  const bool mine = running != 0 && running == motion_.id && motion_.kind == JobKind::kJog;
-  if (!mine) {
-    if (!any) return Submission{};
-    if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
-    if (both) return Submission::reject(error_id::kJogWrongDirection);
-    if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
+  const auto start = [&]() noexcept -> std::uint16_t {
     ProfileLimits limits;
     if (const auto e = resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Acceleration,
                                         in.Deceleration, in.Jerk, limits))
-      return Submission::reject(*e);
-    if (const auto e = motion_prerequisites()) return Submission::reject(e);
+      return *e;
+    if (const auto e = motion_prerequisites()) return e;
     bool queue = false;
-    if (const auto e = arbitrate_motion(NewJob::kBaseMotion, queue)) return Submission::reject(e);
+    if (const auto e = arbitrate_motion(NewJob::kBaseMotion, queue)) return e;
     Motion m;
     m.id = core_.jobs.create(JobKind::kJog, JobState::kActive);
     m.kind = JobKind::kJog;
@@ -506,25 +473,10 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
     position_controlled_ = in.PositionControlled;
     positioning_.cancel();
     positioning_start_pending_ = false;
-    running = motion_.id;
-  }
-  if (both) {
-    // J4: decelerate with the last valid deceleration; the job ends with 16#8007.
-    const ProfileLimits limits = motion_.limits;
-    core_.jobs.set(motion_.id, JobState::kError, error_id::kJogWrongDirection);
-    motion_ = Motion{};
-    plan_velocity(0.0, limits, false);
-    return Submission::reject(error_id::kJogWrongDirection);
-  }
-  const double magnitude = std::fabs(in.Velocity) / units_.velocity;  // [AMB-3]: the magnitude
-  motion_.jog_stopping = !any;
-  motion_.command_velocity = any ? (in.JogForward ? magnitude : -magnitude) : 0.0;
-  return Submission::accept(running);
-}
-
-Submission PositioningAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
-                                         std::uint16_t stw2_mask) noexcept {
-  return core_.set_axis_stw(device_ == nullptr ? nullptr : &drive_, stw1, stw1_mask, stw2, stw2_mask);
+    return 0;
+  };
+  const auto brake = [&](const ProfileLimits& limits) noexcept { plan_velocity(0.0, limits, false); };
+  return evaluate_jog(core_, motion_, running, in, units_.velocity, start, brake);
 }
 
 Submission PositioningAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
@@ -553,10 +505,6 @@ Submission PositioningAxis::write_parameter(std::int32_t parameter_number, doubl
       return Submission::reject(error_id::kInvalidParameterNumber);
   }
   return Submission::accept(core_.jobs.create(JobKind::kWriteParameter, JobState::kDone));
-}
-
-JobStatus PositioningAxis::job_status(JobId id) const noexcept {
-  return core_.jobs.status(id);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -593,11 +541,7 @@ bool PositioningAxis::absolute_encoder() const noexcept {
 
 void PositioningAxis::store_adjustment() noexcept {
   const RetainedSensorState r = encoder_.chain().retained_state();
-  retained_.valid = true;
-  retained_.AbsEncoderOffset = r.AbsEncoderOffset;
-  retained_.MeasuringRangeCount = r.MeasuringRangeCount;
-  retained_.LastAbsoluteValue = r.LastAbsoluteValue;
-  ++retained_.sequence;
+  retained_.adopt(r.AbsEncoderOffset, r.MeasuringRangeCount, r.LastAbsoluteValue);
 }
 
 void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept {
@@ -616,11 +560,6 @@ void PositioningAxis::report_adjustment_lost(std::uint32_t cause) noexcept {
 // ---------------------------------------------------------------------------------------------------------
 // Alarms
 
-bool PositioningAxis::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
-                                   AlarmReaction reaction) noexcept {
-  return core_.alarms.raise(number, additional_value, reaction, core_.cycle);
-}
-
 void PositioningAxis::raise_with(std::uint32_t number, std::uint32_t additional,
                                  std::int32_t reaction) noexcept {
   (void)core_.alarms.raise(number, additional, static_cast<AlarmReaction>(reaction), core_.cycle);
@@ -629,50 +568,35 @@ void PositioningAxis::raise_with(std::uint32_t number, std::uint32_t additional,
 // ---------------------------------------------------------------------------------------------------------
 // Data-block access
 
-namespace {
-constexpr DataBlockTable<PositioningAxisData> kTable{&find_positioning_axis_variable,
-                                                     &find_positioning_axis_bit};
-}  // namespace
-
-WriteResult PositioningAxis::write(std::string_view path, double value) noexcept {
-  const WriteResult r = kTable.write(db_, path, value);
-  if (r.ok()) {
-    // DIR values take effect from the next MC_Servo (spec 04 §0.2): the components are re-read. The state of
-    // the monitors survives: only what changed is re-configured.
-    configure_monitoring();
-    if (path.starts_with("Extrapolation.")) configure_extrapolation();
-    if (path.starts_with("PositionLimits_SW.")) {
-      software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
-    }
-    if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
-    if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
-        path.starts_with("FollowingError.")) {
-      if (auto* controller = this->controller()) {
-        PositionControlConfig pc = controller->config();
-        pc.Kv = db_.PositionControl.Kv;
-        pc.Kpc = db_.PositionControl.Kpc;
-        pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
-        pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
-        (void)controller->configure(pc);
-      }
+void PositioningAxis::written(std::string_view path) noexcept {
+  // DIR values take effect from the next MC_Servo (spec 04 §0.2): the components are re-read. The state of
+  // the monitors survives: only what changed is re-configured.
+  configure_monitoring();
+  if (path.starts_with("Extrapolation.")) configure_extrapolation();
+  if (path.starts_with("PositionLimits_SW.")) {
+    software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+  }
+  if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
+  if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
+      path.starts_with("FollowingError.")) {
+    if (auto* controller = this->controller()) {
+      PositionControlConfig pc = controller->config();
+      pc.Kv = db_.PositionControl.Kv;
+      pc.Kpc = db_.PositionControl.Kpc;
+      pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
+      pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
+      (void)controller->configure(pc);
     }
   }
-  return r;
 }
 
-WriteResult PositioningAxis::write_start_value(std::string_view path, double value) noexcept {
-  WriteResult r = kTable.write_start_value(*start_, db_, path, value);
+ValueError PositioningAxis::start_value_written(std::string_view path, double value) noexcept {
   // A start value that switches the dynamic filter on reserves its histories now (a user call), so that the
   // MC_Reset Restart that applies it allocates nothing in MC_Interpolator (decision M2).
-  if (r.ok() && path == "SetpointFilter.DynamicFilter.Mode" && value != 0.0 &&
-      !dynamic_filter_.reserve_histories()) {
-    r.value = ValueError::kOutOfRange;  // no memory for the histories: refused, never silently unfiltered
+  if (path == "SetpointFilter.DynamicFilter.Mode" && value != 0.0 && !dynamic_filter_.reserve_histories()) {
+    return ValueError::kOutOfRange;  // no memory for the histories: refused, never silently unfiltered
   }
-  return r;
-}
-
-double PositioningAxis::read(std::string_view path) const noexcept {
-  return kTable.read(db_, path);
+  return ValueError::kNone;
 }
 
 }  // namespace tomc::techobjects

@@ -70,9 +70,10 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
 
   // What the drive is asked to do (the axis core: spec 02 §3.1, §3.4).
   if (device_ != nullptr) {
-    encoder_.write(drive_);  // absolute value cyclically, error acknowledge
+    command_.encoder = encoder_.source();
+    command_.encoder_control = encoder_.control_word();  // absolute value cyclically, error acknowledge
     drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
-    drive_.write();
+    drive_.write(command_);
   }
 }
 
@@ -175,14 +176,13 @@ void PositioningAxis::control() noexcept {
   const double max = db_.Actor.DriveParameter.MaxSpeed;
   const double rpm = std::clamp(encoder_.chain().scaling().motor_speed(velocity), -max, max);
   db_.VelocitySetpoint = encoder_.chain().scaling().load_velocity(rpm) * units_.velocity;
-  drive_.set_speed_setpoint(rpm);
-  auto& sp = drive_.drive_setpoint();
+  command_.speed_rpm = rpm;
   if (db_.PositionControl.EnableDSC && active && position_controlled_) {
-    sp.XERR = encoder_.chain().scaling().xerr(out.dsc_position_error);
-    sp.KPC = tg::kpc_from_kv(out.dsc_kpc);
+    command_.xerr = encoder_.chain().scaling().xerr(out.dsc_position_error);
+    command_.kpc = tg::kpc_from_kv(out.dsc_kpc);
   } else {
-    sp.XERR = 0;
-    sp.KPC = 0;
+    command_.xerr = 0;
+    command_.kpc = 0;
   }
 }
 
@@ -386,14 +386,7 @@ void PositioningAxis::update_live_motion() noexcept {
       if (motion_.interpolation_done) break;
       const double v = positioning_velocity(motion_);
       if (std::fabs(v - motion_.planned_velocity) > 1e-12) {
-        motion_.planned_velocity = v;
-        if (v > 0.0) {
-          ProfileLimits l = motion_.limits;
-          l.velocity = v;
-          plan_position(motion_.target, l);
-        } else {
-          plan_velocity(0.0, motion_.limits, false);  // override 0 %: stop, the job stays active
-        }
+        plan_positioning(v);  // the override changed: replan from the present state
       }
       break;
     }
@@ -427,6 +420,17 @@ void PositioningAxis::plan_position(double target, const ProfileLimits& limits) 
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
+  }
+}
+
+void PositioningAxis::plan_positioning(double v) noexcept {
+  motion_.planned_velocity = v;
+  if (v > 0.0) {
+    ProfileLimits l = motion_.limits;
+    l.velocity = v;
+    plan_position(motion_.target, l);
+  } else {
+    plan_velocity(0.0, motion_.limits, false);  // override 0 %: stop, the job stays active
   }
 }
 
@@ -776,6 +780,7 @@ void PositioningAxis::restart() noexcept {
   setpoint_ = MotionState{actual_position_, 0.0, 0.0};
   drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
+  command_.travel_to_fixed_stop = false;  // the restarted connection clears STW2 (AxisCore::restart)
   if (device_ != nullptr) drive_.restart(drive_config_);
 }
 

@@ -54,8 +54,9 @@ void PositioningAxis::servo_torque_limiting() noexcept {
   if (!active) {  // the common case, kept short: only what the end of a job has to clear
     core_.in_limitation = false;
     clamping_.reset();
-    if (device_ != nullptr && (core_.torque.stw2_fixed_stop || drive_.drive_setpoint().MOMRED != 0))
-      (void)drive_torque_limit(drive_, core_.torque, 0.0, 1.0, drive_has_momred_, drive_has_meldw_);
+    if (device_ != nullptr && (core_.torque.stw2_fixed_stop || command_.momred != 0))
+      (void)drive_torque_limit(command_, drive_.drive_actual(), core_.torque, 0.0, 1.0, drive_has_momred_,
+                               drive_has_meldw_);
     return;
   }
   if (device_ != nullptr) {
@@ -83,8 +84,8 @@ void PositioningAxis::servo_torque_limiting() noexcept {
     }
     const double reference = linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
                                           : db_.Actor.DriveParameter.ReferenceTorque;
-    core_.in_limitation =
-        drive_torque_limit(drive_, core_.torque, motor_limit, reference, drive_has_momred_, drive_has_meldw_);
+    core_.in_limitation = drive_torque_limit(command_, drive_.drive_actual(), core_.torque, motor_limit,
+                                             reference, drive_has_momred_, drive_has_meldw_);
   } else {
     core_.in_limitation = false;
   }

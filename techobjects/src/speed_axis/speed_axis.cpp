@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/axis/jog.hpp"
 #include "tomc/techobjects/axis/setup_checks.hpp"
 #include "tomc/techobjects/datablocks/data_block_access.hpp"
 #include "tomc/telegrams/layout.hpp"
@@ -30,7 +31,7 @@ bool finite(double x) {
 
 SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& start_values,
                      const DriveConnectionConfig& drive)
-    : name_(std::move(name)), device_(device), start_(start_values), db_(start_values), drive_config_(drive) {
+    : AxisObject(std::move(name), device, start_values, drive) {
   check_start_values(name_, speed_axis_variables(), *start_);
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
   drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
@@ -72,10 +73,6 @@ std::optional<std::uint16_t> SpeedAxis::resolve_dynamics(double acceleration, do
                                                          double jerk, ProfileLimits& out) noexcept {
   return core_.resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), acceleration, deceleration, jerk,
                                 db_.DynamicDefaults, db_.DynamicLimits, units(), out);
-}
-
-JobStatus SpeedAxis::job_status(JobId id) const noexcept {
-  return core_.jobs.status(id);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -185,8 +182,9 @@ Submission SpeedAxis::stop(const StopInputs& in) noexcept {
   const auto running = running_jobs(n);
   int weight = 0;
   ProfileLimits limits;
-  if (const auto decided = core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, units(),
-                                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
+  if (const auto decided =
+          core_.stop_request(in, db_.DynamicDefaults, db_.DynamicLimits, units(),
+                             std::span<const RunningJob>(running.data(), n), weight, limits)) {
     return *decided;
   }
   abort_motion(0);
@@ -195,45 +193,17 @@ Submission SpeedAxis::stop(const StopInputs& in) noexcept {
   return Submission::accept(id);
 }
 
-void SpeedAxis::stop_execute(JobId job, bool execute) noexcept {
-  core_.stop_execute(job, execute);
-}
-
 Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
-  const bool both = in.JogForward && in.JogBackward;
-  const bool any = in.JogForward || in.JogBackward;
-  const bool mine = running != 0 && running == motion_.id && motion_.kind == JobKind::kJog;
-  if (!mine) {
-    if (!any) return Submission{};  // nothing to do, no job
-    if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
-    if (both) return Submission::reject(error_id::kJogWrongDirection);
-    if (!finite(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
+  const auto start = [&]() noexcept -> std::uint16_t {
     ProfileLimits limits;
-    if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits))
-      return Submission::reject(*e);
-    if (const auto e = core_.motion_prerequisites()) return Submission::reject(e);
-    if (const auto e = arbitrate_motion(NewJob::kBaseMotion)) return Submission::reject(e);
+    if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits)) return *e;
+    if (const auto e = core_.motion_prerequisites()) return e;
+    if (const auto e = arbitrate_motion(NewJob::kBaseMotion)) return e;
     motion_ = Motion{core_.jobs.create(JobKind::kJog, JobState::kActive), JobKind::kJog, limits, 0.0, 0.0};
-    running = motion_.id;
-  }
-  if (both) {
-    // J4: decelerate with the last valid deceleration; the job ends with 16#8007 (the ramp goes on).
-    const ProfileLimits limits = motion_.limits;
-    core_.jobs.set(motion_.id, JobState::kError, error_id::kJogWrongDirection);
-    motion_ = Motion{};
-    plan_velocity(0.0, limits, false);
-    return Submission::reject(error_id::kJogWrongDirection);
-  }
-  // J1/J3/J5: the velocity is live; a released input brakes; a new press during the ramp accelerates again.
-  const double magnitude = std::fabs(in.Velocity) / velocity_unit_per_revolution_per_second();  // [AMB-3]
-  motion_.jog_stopping = !any;
-  motion_.command_velocity = any ? (in.JogForward ? magnitude : -magnitude) : 0.0;
-  return Submission::accept(running);
-}
-
-Submission SpeedAxis::set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
-                                   std::uint16_t stw2_mask) noexcept {
-  return core_.set_axis_stw(device_ == nullptr ? nullptr : &drive_, stw1, stw1_mask, stw2, stw2_mask);
+    return 0;
+  };
+  const auto brake = [&](const ProfileLimits& limits) noexcept { plan_velocity(0.0, limits, false); };
+  return evaluate_jog(core_, motion_, running, in, velocity_unit_per_revolution_per_second(), start, brake);
 }
 
 Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double value) noexcept {
@@ -246,11 +216,6 @@ Submission SpeedAxis::write_parameter(std::int32_t parameter_number, double valu
   }
   (void)v->write(*start_, value);  // RES written this way survives a TO restart (spec 04 §0.3)
   return Submission::accept(core_.jobs.create(JobKind::kWriteParameter, JobState::kDone));
-}
-
-bool SpeedAxis::inject_alarm(std::uint32_t number, std::uint32_t additional_value,
-                             AlarmReaction reaction) noexcept {
-  return core_.alarms.raise(number, additional_value, reaction, core_.cycle);
 }
 
 TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) noexcept {
@@ -320,8 +285,7 @@ void SpeedAxis::write_setpoint() noexcept {
   if (device_ == nullptr) return;
   // MC_TorqueLimiting (spec 01 §8.10): the speed axis is rotary; load side through the gear (and efficiency).
   double motor_limit = 0.0;
-  const bool torque_output =
-      core_.torque.active || core_.torque.stw2_fixed_stop || drive_.drive_setpoint().MOMRED != 0;
+  const bool torque_output = core_.torque.active || core_.torque.stw2_fixed_stop || command_.momred != 0;
   if (core_.torque.active) {
     TorqueLimitMechanics m;
     m.load_side = db_.TorqueLimiting.LimitBase == static_cast<std::int32_t>(TorqueLimitBase::kLoadSide);
@@ -331,12 +295,13 @@ void SpeedAxis::write_setpoint() noexcept {
         core_.torque.limit >= 0.0 ? core_.torque.limit : db_.TorqueLimiting.LimitDefaults.Torque;
     motor_limit = motor_torque_limit(limit, m);
   }
-  core_.in_limitation = torque_output && drive_torque_limit(drive_, core_.torque, motor_limit,
-                                                            db_.Actor.DriveParameter.ReferenceTorque,
-                                                            drive_has_momred_, drive_has_meldw_);
+  core_.in_limitation =
+      torque_output &&
+      drive_torque_limit(command_, drive_.drive_actual(), core_.torque, motor_limit,
+                         db_.Actor.DriveParameter.ReferenceTorque, drive_has_momred_, drive_has_meldw_);
   drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
-  drive_.set_speed_setpoint(rpm);
-  drive_.write();
+  command_.speed_rpm = rpm;
+  drive_.write(command_);
 }
 
 // =========================================================================================================
@@ -490,26 +455,8 @@ void SpeedAxis::restart() noexcept {
   setpoint_ = MotionState{};
   drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
   drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
+  command_.travel_to_fixed_stop = false;  // the restarted connection clears STW2 (AxisCore::restart)
   if (device_ != nullptr) drive_.restart(drive_config_);  // the PROFIdrive link runs on
-}
-
-// ---------------------------------------------------------------------------------------------------------
-// Data-block access from user code (data_block_access.hpp)
-
-namespace {
-constexpr DataBlockTable<SpeedAxisData> kTable{&find_speed_axis_variable, &find_speed_axis_bit};
-}  // namespace
-
-WriteResult SpeedAxis::write(std::string_view path, double value) noexcept {
-  return kTable.write(db_, path, value);
-}
-
-WriteResult SpeedAxis::write_start_value(std::string_view path, double value) noexcept {
-  return kTable.write_start_value(*start_, db_, path, value);
-}
-
-double SpeedAxis::read(std::string_view path) const noexcept {
-  return kTable.read(db_, path);
 }
 
 }  // namespace tomc::techobjects

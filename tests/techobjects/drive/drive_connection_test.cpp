@@ -26,11 +26,12 @@ class ConnectionObject final : public TechnologyObject {
   void servo(const CycleClock&) noexcept override {
     connection.read();
     zsw1_seen.push_back(connection.drive_actual().ZSW1.value());
-    connection.write();
+    connection.write(command);
     stw1_sent.push_back(connection.drive_setpoint().STW1.value());
   }
   void interpolate(const CycleClock&) noexcept override {}
   DriveConnection connection;
+  ServoCommand command;
   std::vector<std::uint16_t> zsw1_seen;
   std::vector<std::uint16_t> stw1_sent;
 };
@@ -97,7 +98,7 @@ TEST(DriveConnection, SpeedSetpointIsFollowed) {
   m.connection().request(tg::DriveRequest::kOperate);
   m.run(5);
   ASSERT_TRUE(m.connection().in_operation());
-  m.connection().set_speed_setpoint(1500.0);
+  m.object->command.speed_rpm = 1500.0;
   m.run(1);
   EXPECT_EQ(m.connection().drive_setpoint().NSOLL_B, 0x20000000);  // spec 06 TV03: 1500 of 3000 rpm
   // First-order speed loop, T = 2 ms, one cycle of transport delay: after 40 ms within 0.1 %.

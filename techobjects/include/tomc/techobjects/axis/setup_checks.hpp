@@ -11,6 +11,7 @@
 
 #include "tomc/techobjects/datablocks/variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/techobjects/position/actual_value_chain.hpp"
 
 namespace tomc::techobjects {
 
@@ -32,5 +33,22 @@ void check_start_values(std::string_view to_name, std::span<const VariableInfo> 
 AxisUnitFactors checked_unit_factors(std::string_view to_name, std::uint32_t length_unit,
                                      std::uint32_t velocity_unit, std::int32_t motion_type,
                                      std::string_view what);
+
+// The encoder mechanics every position-measuring TO reads from its Sensor (TO_Struct_Sensor of P/Y,
+// TO_Struct_ExternalEncoder_Sensor of E): type, system, direction, the encoder parameters and the
+// actual-velocity mode. The mounting, measuring gear and NIST source differ by TO and are the caller's.
+template <typename Sensor>
+EncoderMechanics sensor_encoder_mechanics(const Sensor& s) noexcept {
+  EncoderMechanics m;
+  m.Type = static_cast<EncoderType>(s.Type);
+  m.System = static_cast<EncoderSystem>(s.System);
+  m.InverseDirection = s.InverseDirection;
+  const auto& p = s.Parameter;
+  m.Parameter = EncoderParameter{p.Resolution,          p.StepsPerRevolution,      p.FineResolutionXist1,
+                                 p.FineResolutionXist2, p.DeterminableRevolutions, p.DistancePerRevolution,
+                                 p.BehaviorGx_XIST1,    p.ReferenceSpeed,          p.ReferenceVelocity};
+  m.VelocityMode = static_cast<ActualVelocityMode>(s.ActualVelocityMode);
+  return m;
+}
 
 }  // namespace tomc::techobjects

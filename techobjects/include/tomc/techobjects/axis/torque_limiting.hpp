@@ -62,10 +62,12 @@ struct TorqueLimitingRequest {
 };
 
 // MC_Servo: the limit to the drive as MOMRED (a percentage reduction of `reference`, the same both ways) and
-// STW2.8 "travel to fixed stop" while the job is active (decision F2); `motor_limit` in N·m (N for a linear
-// motor). Returns InLimitation: MELDW.1 "torque utilisation below threshold (p2194)" cleared.
-bool drive_torque_limit(DriveConnection& drive, TorqueLimitingRequest& request, double motor_limit,
-                        double reference, bool has_momred, bool has_meldw) noexcept;
+// STW2.8 "travel to fixed stop" while the job is active (decision F2), into this cycle's command;
+// `motor_limit` in N·m (N for a linear motor). Returns InLimitation: MELDW.1 "torque utilisation below
+// threshold (p2194)" cleared in the drive's last actual values.
+bool drive_torque_limit(ServoCommand& command, const telegrams::ActualSignals& actual,
+                        TorqueLimitingRequest& request, double motor_limit, double reference, bool has_momred,
+                        bool has_meldw) noexcept;
 
 // What the limit refers to (spec 01 §8.10 table).
 struct TorqueLimitMechanics {

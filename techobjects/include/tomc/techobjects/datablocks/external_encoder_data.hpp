@@ -99,18 +99,7 @@ struct ExternalEncoderData {
   TO_Struct_StatusProvidedLeadingValue StatusProvidedLeadingValue;
 
   // ---- §4.5 StatusSensor (man. §10.4.13): a single TO_Struct_StatusSensor, RON ----
-  struct TO_Struct_StatusSensor {
-    std::int32_t State = static_cast<std::int32_t>(SensorState::NOT_VALID);
-    bool CommunicationOK = false;
-    bool Error = false;
-    double AbsEncoderOffset = 0.0;
-    bool Control = false;
-    double Position = 0.0;
-    double Velocity = 0.0;
-    std::int32_t AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_ADAPTED);
-    std::int32_t ModuloCycle = 0;
-    std::int32_t Adjusted = static_cast<std::int32_t>(SensorAdjusted::kNotAdjusted);
-  } StatusSensor;
+  TO_Struct_StatusSensor StatusSensor;
 
   // ---- §4.6 StatusExtrapolation (man. §10.4.14), RON ----
   TO_Struct_StatusExtrapolation StatusExtrapolation;

@@ -37,25 +37,7 @@ struct SpeedAxisData {
   TO_Struct_VirtualAxis VirtualAxis;
 
   // ---- §3.3 Actor (man. §10.2.4) ----
-  struct TO_Struct_Actor {
-    // RON; chosen: 1 = PROFIdrive telegram (the drives of tomc are PROFIdrive drives)
-    std::int32_t Type = static_cast<std::int32_t>(ActorType::kProfidriveTelegram);
-    bool InverseDirection = false;  // RES; chosen: FALSE (no inversion)
-    // RES; chosen: 0 = manual (the simulated drive has no parameters to adopt)
-    std::int32_t DataAdaption = static_cast<std::int32_t>(DataAdaptionMode::kManual);
-    double Efficiency = 1.0;  // RES; chosen: 1.0 (loss-free gearbox)
-    // RES, MC_WriteParameter 1020; manual: 16#7 (man. §10.2.4, §9.15)
-    std::uint16_t RemoveEnableReaction =
-        static_cast<std::uint16_t>(RemoveEnableMode::kOff3QuickStopCompatibleV7);
-
-    TO_Struct_ActorInterface Interface;
-
-    struct TO_Struct_ActorDriveParameter {
-      double ReferenceSpeed = 3000.0;  // RES; chosen: 3000 1/min = p2000 of tomc's simulated drive
-      double MaxSpeed = 3000.0;  // RES; chosen: = ReferenceSpeed (PROFIdrive allows up to 2 x ReferenceSpeed)
-      double ReferenceTorque = 4.0;  // RES; chosen: 4 Nm = p2003 of tomc's simulated drive
-    } DriveParameter;
-  } Actor;
+  TO_Struct_Actor Actor;  // the S part: Type ... DriveParameter.ReferenceTorque (spec 04 §3.3)
 
   // ---- §3.4 TorqueLimiting (man. §10.2.5) ----
   // Speed-axis defaults (chosen): LimitDefaults.Force 100 N (linear case only, unused by a speed axis).

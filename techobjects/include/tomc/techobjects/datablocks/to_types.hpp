@@ -368,6 +368,20 @@ struct TO_Struct_SensorParameter {
       500.0;  // RES; chosen: 500 mm/s (linear encoder only) = DynamicLimits.MaxVelocity
 };
 
+// StatusSensor of P/Y (Array [1..4]) and E (one), RON (man. §10.3.32, §10.4.13).
+struct TO_Struct_StatusSensor {
+  std::int32_t State = static_cast<std::int32_t>(SensorState::NOT_VALID);
+  bool CommunicationOK = false;
+  bool Error = false;
+  double AbsEncoderOffset = 0.0;  // retentive in the CPU (spec 04 §8 item 9)
+  bool Control = false;
+  double Position = 0.0;
+  double Velocity = 0.0;
+  std::int32_t AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_ADAPTED);
+  std::int32_t ModuloCycle = 0;
+  std::int32_t Adjusted = static_cast<std::int32_t>(SensorAdjusted::kNotAdjusted);
+};
+
 struct TO_Struct_SensorPassiveHoming {
   // RES; chosen: 0 = zero mark via PROFIdrive telegram, as ActiveHoming.Mode
   std::int32_t Mode = static_cast<std::int32_t>(SensorHomingMode::kZeroMarkViaTelegram);
@@ -388,6 +402,44 @@ struct TO_Struct_ActorInterface {
   bool EnableTorqueData = false;   // RES; manual: TRUE only if telegram 750 is configured; none is by default
   Vref TorqueDataAddressIn;        // RON; chosen: all zero
   Vref TorqueDataAddressOut;       // RON; chosen: all zero
+};
+
+// Actor of S and P/Y (spec 04 §3.3, man. §10.2.4, §10.3.4): one TO_Struct_Actor; the speed axis has no
+// MotorType, LoadInertia, MotorInertia or LinearMotorDriveParameter (its reflection table leaves them out).
+struct TO_Struct_Actor {
+  // RON; chosen: 1 = PROFIdrive telegram (the drives of tomc are PROFIdrive drives)
+  std::int32_t Type = static_cast<std::int32_t>(ActorType::kProfidriveTelegram);
+  bool InverseDirection = false;  // RES; chosen: FALSE (no inversion)
+  // RES; chosen: 0 = manual (the simulated drive has no parameter channel to adopt from)
+  std::int32_t DataAdaption = static_cast<std::int32_t>(DataAdaptionMode::kManual);
+  double Efficiency = 1.0;  // RES; chosen: 1.0 (loss-free gearbox and lead screw, as the simulated mechanics)
+  // DL; chosen: 0 = rotary standard motor (the simulated drive is a rotary servo motor)
+  std::int32_t MotorType = static_cast<std::int32_t>(ActorMotorType::kRotaryStandardMotor);
+  // DIR; chosen: 79.0 kg, the simulated drive's load inertia 2.0E-4 kg·m² at the screw expressed as the
+  // equivalent load mass of the 10 mm lead screw, m = J·(2π/h)² ≈ 78.96 kg (linear motion: a mass)
+  double LoadInertia = 79.0;
+  // RES, MC_WriteParameter 1020; manual: 16#7 (man. §10.2.4, §10.3.4, §9.15)
+  std::uint16_t RemoveEnableReaction =
+      static_cast<std::uint16_t>(RemoveEnableMode::kOff3QuickStopCompatibleV7);
+
+  TO_Struct_ActorInterface Interface;
+
+  // Valid with MotorType = 0.
+  struct TO_Struct_ActorDriveParameter {
+    double ReferenceSpeed = 3000.0;  // RES; chosen: 3000 1/min = p2000 of tomc's simulated drive
+    double MaxSpeed = 3000.0;      // RES; chosen: = ReferenceSpeed, as the speed axis (PROFIdrive allows 2x)
+    double ReferenceTorque = 4.0;  // RES; chosen: 4 Nm = p2003 of tomc's simulated drive
+    double MotorInertia = 1.0E-4;  // DIR; chosen: 1.0E-4 kg·m² = motor_inertia_kgm2 of the simulated drive
+  } DriveParameter;
+
+  // Valid with MotorType = 1 (a linear motor); unused by the default rotary motor. Chosen to describe the
+  // same drive seen from the load: 3000 1/min x 10 mm = 500 mm/s, 2π x 4 Nm / 10 mm ≈ 2513 N.
+  struct TO_Struct_LinearMotorActorDriveParameter {
+    double ReferenceVelocity = 500.0;  // RES; chosen: 500 mm/s
+    double MaxVelocity = 500.0;        // RES; chosen: = ReferenceVelocity
+    double ReferenceForce = 2500.0;    // RES; chosen: 2500 N (≈ 2513 N, rounded)
+    double MotorMass = 1.0;            // DIR; chosen: 1 kg (a small linear motor's moving part)
+  } LinearMotorDriveParameter;
 };
 
 // ---- §3.1 Simulation (man. §10.3.2) ----

@@ -3,6 +3,7 @@
 // data-type limits (spec 04 §0.2 "where a range is missing, the data-type limits apply"), the C++ type of
 // each data type (spec 04 §0.4), and compile-time checks of a table.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -126,6 +127,42 @@ inline constexpr std::array<double, 5> kMassUnits{
 inline constexpr std::array<double, 2> kInertiaUnits{unit_code::kKilogramSquareMetre,
                                                      unit_code::kPoundSquareFoot};
 inline constexpr std::span<const double> kAny{};
+// Units.LengthUnit / VelocityUnit of the position-measuring TOs (P/Y and E; man. §10.3.12, §10.4.7, spec 04
+// §3.11).
+inline constexpr std::array<double, 12> kLengthUnits{
+    unit_code::kMetre,     unit_code::kMillimetre, unit_code::kMillimetreHighResolution,
+    unit_code::kKilometre, unit_code::kMicrometre, unit_code::kNanometre,
+    unit_code::kInch,      unit_code::kFoot,       unit_code::kMile,
+    unit_code::kRadian,    unit_code::kDegree,     unit_code::kDegreeHighResolution};
+inline constexpr std::array<double, 19> kPositionVelocityUnits{unit_code::kDegreePerSecond,
+                                                               unit_code::kDegreePerSecondHighResolution,
+                                                               unit_code::kDegreePerMinute,
+                                                               unit_code::kRadianPerSecond,
+                                                               unit_code::kRadianPerMinute,
+                                                               unit_code::kMillimetrePerSecond,
+                                                               unit_code::kMillimetrePerSecondHighResolution,
+                                                               unit_code::kMetrePerSecond,
+                                                               unit_code::kMillimetrePerMinute,
+                                                               unit_code::kMetrePerMinute,
+                                                               unit_code::kMillimetrePerHour,
+                                                               unit_code::kMetrePerHour,
+                                                               unit_code::kKilometrePerMinute,
+                                                               unit_code::kKilometrePerHour,
+                                                               unit_code::kInchPerSecond,
+                                                               unit_code::kInchPerMinute,
+                                                               unit_code::kFootPerSecond,
+                                                               unit_code::kFootPerMinute,
+                                                               unit_code::kMilePerHour};
+
+// No path twice in a table (sorted copy: O(n log n) constant-evaluation steps for the ~500 rows).
+template <std::size_t N>
+constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
+  std::array<std::string_view, N> paths{};
+  for (std::size_t i = 0; i < N; ++i)
+    paths[i] = table[i].path;
+  std::sort(paths.begin(), paths.end());
+  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
+}
 
 }  // namespace detail
 

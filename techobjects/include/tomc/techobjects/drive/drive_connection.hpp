@@ -25,6 +25,26 @@ struct DriveConnectionConfig {
   std::uint32_t link_loss_tolerance_cycles = 3;
 };
 
+// Where an encoder's signals are (decision P3).
+enum class EncoderSource : std::uint8_t {
+  kDriveG1,    // G1 of the drive telegram (3, 4, 5, 6, 102, 103, 105, 106)
+  kDriveG2,    // G2 of the drive telegram (4, 6, 103, 106) — Sensor[n].Interface.Number = 2
+  kEncoderG1,  // G1 of the separate encoder telegram 81/83 (slot kEncoder1)
+};
+
+// What one MC_Servo cycle commands of the drive (issue 14: one writer of the setpoint telegram). The TO's
+// servo steps fill it; DriveConnection::write() encodes it together with what the connection owns itself
+// (the STW1 sequence, both sign-of-life counters, the user's MC_SetAxisSTW bits).
+struct ServoCommand {
+  double speed_rpm = 0.0;    // NSOLL_A / NSOLL_B, motor speed [1/min]
+  std::int32_t xerr = 0;     // DSC: position deviation XERR (telegrams 5, 6, 105, 106); 0 without DSC
+  std::int32_t kpc = 0;      // DSC: position controller gain KPC
+  std::uint16_t momred = 0;  // torque reduction MOMRED (telegrams 10x); 0 = none
+  bool travel_to_fixed_stop = false;  // STW2.8, set while MC_TorqueLimiting is active (spec 01 §8.13)
+  EncoderSource encoder = EncoderSource::kDriveG1;  // where the operative encoder's Gx_STW goes
+  telegrams::EncoderControlWord encoder_control{};  // that Gx_STW
+};
+
 // Ti, To, T_DC of isochronous operation in seconds (spec 01 §3.5; MC_WriteParameter 1010/1011/1012): they
 // enter the following error of position-controlled axes.
 struct CommunicationTimes {
@@ -54,21 +74,21 @@ class DriveConnection {
   void restart(const DriveConnectionConfig& config) noexcept;
 
   // ---- MC_Servo ----
-  void read() noexcept;   // first, after the runtime read the actual frames
-  void write() noexcept;  // last: compose and encode this cycle's setpoints
+  void read() noexcept;                              // first, after the runtime read the actual frames
+  void write(const ServoCommand& command) noexcept;  // last: this cycle's setpoints, encoded
 
   // ---- what the TO asks of the drive ----
   void request(telegrams::DriveRequest request) noexcept { request_ = request; }
   telegrams::DriveRequest requested() const noexcept { return request_; }
   void acknowledge() noexcept;  // one STW1.7 edge, and resets the sign-of-life supervision
-  void set_speed_setpoint(double rpm) noexcept { speed_setpoint_rpm_ = rpm; }
-  double speed_setpoint() const noexcept { return speed_setpoint_rpm_; }
-  // Signals beyond STW1/STW2 sign-of-life/NSOLL (Gx_STW, MOMRED, XERR, KPC, telegram 750, user STW bits).
-  telegrams::SetpointSignals& drive_setpoint() noexcept { return drive_sp_; }
+  // MC_SetAxisSTW (spec 03 §4.14): the user's bits of STW1 (8, 9, 11..15) and STW2 (0..11) under their
+  // masks, sent from the next write() on and kept until changed or a TO restart.
+  void set_user_control_bits(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
+                             std::uint16_t stw2_mask) noexcept;
+  double speed_setpoint() const noexcept { return speed_setpoint_rpm_; }  // the last commanded [1/min]
+  // The setpoint signals as last written (diagnostics, tests).
   const telegrams::SetpointSignals& drive_setpoint() const noexcept { return drive_sp_; }
-  telegrams::SetpointSignals& supplementary_setpoint() noexcept { return supplementary_sp_; }
   const telegrams::SetpointSignals& supplementary_setpoint() const noexcept { return supplementary_sp_; }
-  telegrams::SetpointSignals& encoder_setpoint(int index) noexcept { return encoder_sp_[index == 0 ? 0 : 1]; }
   const telegrams::SetpointSignals& encoder_setpoint(int index) const noexcept {
     return encoder_sp_[index == 0 ? 0 : 1];
   }
@@ -116,6 +136,7 @@ class DriveConnection {
   bool ever_fresh_ = false;
   bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
   bool has_zsw2_ = false;
+  bool fixed_stop_sent_ = false;  // STW2.8 as the last command set it (the user may set it too)
 };
 
 }  // namespace tomc::techobjects

@@ -13,13 +13,6 @@
 
 namespace tomc::techobjects {
 
-// Where the encoder's signals are (decision P3).
-enum class EncoderSource : std::uint8_t {
-  kDriveG1,    // G1 of the drive telegram (3, 4, 5, 6, 102, 103, 105, 106)
-  kDriveG2,    // G2 of the drive telegram (4, 6, 103, 106) — Sensor[n].Interface.Number = 2
-  kEncoderG1,  // G1 of the separate encoder telegram 81/83 (slot kEncoder1)
-};
-
 // The source of encoder `number` (Sensor[n].Interface.Number, 1 or 2) on a device: G1/G2 of the drive
 // telegram if it carries them, else the separate encoder telegram. nullopt: the device carries no such
 // encoder. Set-up only (creates codecs).
@@ -38,8 +31,9 @@ class EncoderChannel {
   // MC_Servo, after DriveConnection::read(): takes this cycle's encoder values into the chain when they are
   // fresh and the encoder reports no error.
   void read(const DriveConnection& drive, bool fresh) noexcept;
-  // MC_Servo, before DriveConnection::write(): the Gx_STW requests.
-  void write(DriveConnection& drive) noexcept;
+  // MC_Servo, for DriveConnection::write(): this cycle's Gx_STW (reference-mark search, absolute value
+  // cyclically, error acknowledge).
+  telegrams::EncoderControlWord control_word() noexcept;
   void acknowledge() noexcept { acknowledge_cycles_ = kAcknowledgeCycles; }
   // Direct homing (MC_Home 0/1/11/12, spec 02 §5.7): the actual position becomes `position`, the modulo cycle
   // counter follows the shortest way (spec 01 §2.4.1). Returns how far the continuous position moved.
@@ -78,6 +72,7 @@ class EncoderChannel {
   MarkState mark_ = MarkState::kIdle;
   bool read_sent_ = false;
   double mark_position_ = 0.0;
+  telegrams::EncoderControlWord control_{};  // the Gx_STW of the last cycle
   bool velocity_from_nist_ = false;
   bool error_ = false;
   std::uint32_t error_code_ = 0;

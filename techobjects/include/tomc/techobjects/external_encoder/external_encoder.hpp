@@ -13,6 +13,7 @@
 
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
+#include "tomc/techobjects/axis/data_block_object.hpp"
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_table.hpp"
@@ -30,7 +31,7 @@
 
 namespace tomc::techobjects {
 
-class ExternalEncoder final : public TechnologyObject, public LeadingValueSource {
+class ExternalEncoder final : public DataBlockObject<ExternalEncoderData>, public LeadingValueSource {
  public:
   // `device` carries encoder telegram 81 or 83 (an encoder-only device, drive_telegram 0). Throws
   // std::invalid_argument for start values the data block does not permit or a device without it.
@@ -38,29 +39,14 @@ class ExternalEncoder final : public TechnologyObject, public LeadingValueSource
                   const DriveConnectionConfig& connection = {});
 
   // ---- TechnologyObject ----
-  std::string_view name() const noexcept override { return name_; }
   void servo(const CycleClock& clock) noexcept override;
-  void attach(RuntimeServices& services) override {
-    core_.alarms.attach(services.alarm_log, services.object_number);
-    start_.move_to(services.start_values);
-  }
   void interpolate(const CycleClock& clock) noexcept override;
 
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
-  std::size_t memory_footprint() const noexcept {
-    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes();
-  }
+  std::size_t memory_footprint() const noexcept { return sizeof(*this) + shared_heap_bytes(); }
 
-  // ---- the data block ----
-  const ExternalEncoderData& data() const noexcept { return db_; }
-  // T_i/T_o/T_DC in force (MC_WriteParameter 1010...1012 take effect at the next restart).
-  const CommunicationTimes& communication_times() const noexcept { return core_.communication_times; }
-  WriteResult write(std::string_view path, double value) noexcept;
-  WriteResult write_start_value(std::string_view path, double value) noexcept;
-  double read(std::string_view path) const noexcept;
-  const AlarmList& alarms() const noexcept { return core_.alarms; }
-  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
-  const DriveConnection& connection() const noexcept { return connection_; }
+  // ---- the data block (data_block_object.hpp), its encoder connection and digital inputs ----
+  const DriveConnection& connection() const noexcept { return drive_; }
   // The homing digital input (AxisDigitalInputs::HomingInput), written before MC_Servo.
   AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
 
@@ -71,7 +57,6 @@ class ExternalEncoder final : public TechnologyObject, public LeadingValueSource
   Submission home(const HomeInputs& in) noexcept;
   // 1010/1011/1012 communication times, effective after restart (spec 03 §4.15).
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
-  JobStatus job_status(JobId id) const noexcept { return core_.jobs.status(id); }
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
   // Retentive data of an absolute encoder, as on the positioning axis (positioning_axis.hpp).
@@ -95,26 +80,18 @@ class ExternalEncoder final : public TechnologyObject, public LeadingValueSource
   using JobKind = AxisJobKind;
 
   void configure() noexcept;
+  void written(std::string_view path) noexcept override;
   void configure_extrapolation() noexcept;
   void update_status() noexcept;
   void assign_reference(double mark_position, double value, ModuloCycleRule rule) noexcept;
   void store_adjustment() noexcept;
 
-  std::string name_;
-  DeviceIo* device_ = nullptr;
-  StartValues<ExternalEncoderData> start_;  // load memory (the runtime's StartValueStore once attached)
-  ExternalEncoderData db_;
-  DriveConnectionConfig connection_config_;
-  DriveConnection connection_;
   AxisUnitFactors units_{};
   AxisMechanics mechanics_{};
   EncoderMechanics encoder_mechanics_{};
   EncoderSource source_ = EncoderSource::kEncoderG1;
   EncoderChannel encoder_;
   StandstillSignal standstill_;
-  // Alarms, jobs, MC_Reset, communication times and the words, as on the axes (an encoder has no power phase
-  // of its own: core_.phase mirrors `enabled_`, no MC_Stop, no drive to command).
-  AxisCore core_;
   double servo_cycle_s_ = 0.001;
   bool servo_cycle_known_ = false;
   bool enable_ = false;

@@ -25,6 +25,7 @@
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
+#include "tomc/techobjects/axis/data_block_object.hpp"
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
@@ -51,7 +52,7 @@
 
 namespace tomc::techobjects {
 
-class PositioningAxis : public TechnologyObject, public LeadingValueSource {
+class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingValueSource {
  public:
   // `device` is the drive (and its encoders); nullptr for a virtual axis. Throws std::invalid_argument for
   // start values the data block does not permit, or mechanics/units that do not fit together, naming the
@@ -60,57 +61,35 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
                   const DriveConnectionConfig& drive = {});
 
   // ---- TechnologyObject ----
-  std::string_view name() const noexcept override { return name_; }
   void servo(const CycleClock& clock) noexcept override;
-  void attach(RuntimeServices& services) override {
-    core_.alarms.attach(services.alarm_log, services.object_number);
-    start_.move_to(services.start_values);
-  }
   void interpolate(const CycleClock& clock) noexcept override;
 
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
   std::size_t memory_footprint() const noexcept {
-    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes() + dynamic_filter_.history_bytes();
+    return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes();
   }
 
-  // ---- the data block ----
-  const PositioningAxisData& data() const noexcept { return db_; }
-  WriteResult write(std::string_view path, double value) noexcept;
-  WriteResult write_start_value(std::string_view path, double value) noexcept;
-  double read(std::string_view path) const noexcept;
-  const AlarmList& alarms() const noexcept { return core_.alarms; }
-  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
-  const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
+  // ---- the data block (data_block_object.hpp), and its digital inputs ----
   AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
   const AxisDigitalInputs& digital_inputs() const noexcept { return inputs_; }
 
-  // ---- the axis control panel (spec 02 §9.2), as on the speed axis ----
-  ControlPriority& control_priority() noexcept { return core_.control; }
-  const ControlPriority& control_priority() const noexcept { return core_.control; }
-  // Precondition of taking control priority: the user program has released the axis (MC_Power.Enable =
-  // FALSE) and the TO is disabled (decision W1).
-  bool program_released() const noexcept { return !core_.enable && core_.phase == PowerPhase::kDisabled; }
-
-  // ---- jobs (called by instructions from the user program) ----
-  PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
-  Submission reset(bool restart) noexcept;
-  Submission home(const HomeInputs& in) noexcept;
-  Submission move_absolute(const MoveAbsoluteInputs& in) noexcept;
-  Submission move_relative(const MoveRelativeInputs& in) noexcept;
-  Submission move_velocity(const MoveVelocityInputs& in) noexcept;
-  Submission halt(const HaltInputs& in) noexcept;
-  Submission stop(const StopInputs& in) noexcept;
-  void stop_execute(JobId job, bool execute) noexcept;
-  Submission jog(JobId running, const JogInputs& in) noexcept;
-  Submission set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
-                          std::uint16_t stw2_mask) noexcept;
-  // 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart), 1020
-  // Actor.RemoveEnableReaction (immediately) — spec 03 §4.15.
+  // ---- jobs (called by instructions from the user program), in the order of spec 03 §4 (seed 004 ch. 9)
+  // ----
+  PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;  // 9.1
+  Submission reset(bool restart) noexcept;                                                  // 9.2
+  Submission home(const HomeInputs& in) noexcept;                                           // 9.3
+  Submission halt(const HaltInputs& in) noexcept;                                           // 9.4
+  Submission move_absolute(const MoveAbsoluteInputs& in) noexcept;                          // 9.5
+  Submission move_relative(const MoveRelativeInputs& in) noexcept;                          // 9.6
+  Submission move_velocity(const MoveVelocityInputs& in) noexcept;                          // 9.8
+  Submission jog(JobId running, const JogInputs& in) noexcept;                              // 9.9
+  Submission stop(const StopInputs& in) noexcept;                                           // 9.13
+  // 9.15: 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart),
+  // 1020 Actor.RemoveEnableReaction (immediately).
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
-  // MC_TorqueLimiting (spec 03 §4.18.3), called on every user-program cycle: Mode 0 limits the drive's
-  // torque/force through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
+  // 9.18.3 MC_TorqueLimiting, called on every user-program cycle: Mode 0 limits the drive's torque/force
+  // through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
-  JobStatus job_status(JobId id) const noexcept;
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
@@ -140,7 +119,6 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   double continuous_actual_position() const noexcept { return actual_position_; }
   bool position_controlled() const noexcept { return position_controlled_; }
   const AxisUnitFactors& units() const noexcept { return units_; }
-  const CommunicationTimes& communication_times() const noexcept { return core_.communication_times; }
 
  protected:
   using JobKind = AxisJobKind;
@@ -220,6 +198,9 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   virtual bool following_in_synchronous_operation() const noexcept { return false; }
   virtual void update_synchronous_status() noexcept {}
 
+  // a DIR/CAL write re-reads the components; a start value switching the dynamic filter on reserves it
+  void written(std::string_view path) noexcept override;
+  ValueError start_value_written(std::string_view path, double value) noexcept override;
   // configuration
   void configure_components() noexcept;
   void configure_monitoring() noexcept;
@@ -238,6 +219,9 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   // setpoint generation
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   void plan_position(double target, const ProfileLimits& limits) noexcept;
+  // The running positioning job's profile for velocity limit v (override applied); v = 0 (override 0 %):
+  // stop, the job stays active until the override returns.
+  void plan_positioning(double v) noexcept;
   double override_factor() const noexcept { return core_.override_factor(db_.Override); }
   double velocity_limit() const noexcept {  // position units / s
     return AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units());
@@ -274,13 +258,6 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }
 
-  std::string name_;
-  DeviceIo* device_ = nullptr;
-  StartValues<PositioningAxisData> start_;  // load memory (the runtime's StartValueStore once attached)
-  PositioningAxisData db_;
-  DriveConnectionConfig drive_config_;
-  DriveConnection drive_;
-  AxisCore core_;  // power, reset, alarms and reactions, MC_Stop, jobs, drive request, words
   AxisDigitalInputs inputs_{};
   double servo_cycle_s_ = 0.001;
   bool servo_cycle_known_ = false;
@@ -291,6 +268,7 @@ class PositioningAxis : public TechnologyObject, public LeadingValueSource {
   EncoderMechanics encoder_mechanics_{};
   EncoderSource encoder_source_ = EncoderSource::kDriveG1;
   EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
+  ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
   // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
   // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
   std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;

@@ -13,6 +13,14 @@ struct RetainedEncoderData {
   std::int64_t MeasuringRangeCount = 0;  // cyclic absolute encoder
   std::uint32_t LastAbsoluteValue = 0;   // Gx_XIST2 format, within the measuring range
   std::uint64_t sequence = 0;            // increases with every new adjustment (a save is due)
+  // A new adjustment of the operative encoder (MC_Home 6/7, the first homing of an absolute encoder).
+  void adopt(double offset, std::int64_t ranges, std::uint32_t last_absolute) noexcept {
+    valid = true;
+    AbsEncoderOffset = offset;
+    MeasuringRangeCount = ranges;
+    LastAbsoluteValue = last_absolute;
+    ++sequence;
+  }
   friend bool operator==(const RetainedEncoderData&, const RetainedEncoderData&) = default;
 };
 

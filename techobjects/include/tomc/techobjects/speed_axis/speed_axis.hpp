@@ -13,6 +13,7 @@
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/axis_core.hpp"
 #include "tomc/techobjects/axis/control_priority.hpp"
+#include "tomc/techobjects/axis/data_block_object.hpp"
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
@@ -27,7 +28,7 @@
 
 namespace tomc::techobjects {
 
-class SpeedAxis final : public TechnologyObject {
+class SpeedAxis final : public AxisObject<SpeedAxisData> {
  public:
   // `device` is the drive; nullptr for a virtual axis or simulation (VirtualAxis.Mode / Simulation.Mode = 1).
   // Throws std::invalid_argument for start values the data block does not permit (reported with their path).
@@ -35,64 +36,27 @@ class SpeedAxis final : public TechnologyObject {
             const DriveConnectionConfig& drive = {});
 
   // ---- TechnologyObject ----
-  std::string_view name() const noexcept override { return name_; }
   void servo(const CycleClock& clock) noexcept override;
-  void attach(RuntimeServices& services) override {
-    core_.alarms.attach(services.alarm_log, services.object_number);
-    start_.move_to(services.start_values);
-  }
   void interpolate(const CycleClock& clock) noexcept override;
 
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
-  std::size_t memory_footprint() const noexcept {
-    return sizeof(*this) + string_heap_bytes(name_) + start_.owned_bytes();
-  }
+  std::size_t memory_footprint() const noexcept { return sizeof(*this) + shared_heap_bytes(); }
 
-  // ---- the data block ----
-  const SpeedAxisData& data() const noexcept { return db_; }
-  // A user-program write (spec 04 §0.2): DIR/CAL only; RES through write_start_value + restart.
-  WriteResult write(std::string_view path, double value) noexcept;
-  WriteResult write_start_value(std::string_view path, double value) noexcept;
-  double read(std::string_view path) const noexcept;  // NaN for an unknown path; bits as "StatusWord.X5"
-  const AlarmList& alarms() const noexcept { return core_.alarms; }
-  // Simulation and commissioning: raise a technology alarm as if its cause had occurred, with the reaction it
-  // would carry (for configurable reactions). Scenarios and tests use it to exercise every alarm reaction.
-  // False for an alarm number tomc does not define.
-  bool inject_alarm(std::uint32_t number, std::uint32_t additional_value, AlarmReaction reaction) noexcept;
-  const DriveConnection* drive() const noexcept { return device_ == nullptr ? nullptr : &drive_; }
-
-  // ---- the axis control panel (spec 02 §9.2) ----
-  ControlPriority& control_priority() noexcept { return core_.control; }
-  const ControlPriority& control_priority() const noexcept { return core_.control; }
-  // Precondition of taking control priority: the user program has released the axis (MC_Power.Enable =
-  // FALSE) and the TO is disabled.
-  bool program_released() const noexcept { return !core_.enable && core_.phase == PowerPhase::kDisabled; }
-
-  // ---- jobs (called by instructions from the user program) ----
-  // MC_Power: level-class; called once per instruction call.
+  // ---- jobs (called by instructions from the user program), in the order of spec 03 §4 (seed 004 ch. 9)
+  // ---- 9.1 MC_Power: level-class; called once per instruction call.
   PowerState power(bool enable, std::int32_t start_mode, std::int32_t stop_mode) noexcept;
-  Submission reset(bool restart) noexcept;
-  Submission move_velocity(const MoveVelocityInputs& in) noexcept;
-  Submission halt(const HaltInputs& in) noexcept;
-  Submission stop(const StopInputs& in) noexcept;
-  // MC_Stop's Execute level: while TRUE for an accepted MC_Stop, new motion jobs are rejected (spec 03
-  // §4.13).
-  void stop_execute(JobId job, bool execute) noexcept;
-  // MC_MoveJog: level-class. Starts a jog job on the first call with an input set, updates it on later calls.
+  Submission reset(bool restart) noexcept;                          // 9.2
+  Submission halt(const HaltInputs& in) noexcept;                   // 9.4
+  Submission move_velocity(const MoveVelocityInputs& in) noexcept;  // 9.8
+  // 9.9 MC_MoveJog: level-class. Starts a jog job on the first call with an input set, updates it later.
   Submission jog(JobId running, const JogInputs& in) noexcept;
-  // MC_SetAxisSTW (spec 03 §4.14): the user's bits of STW1 (8, 9, 11..15) and STW2 (0..11).
-  Submission set_axis_stw(std::uint16_t stw1, std::uint16_t stw1_mask, std::uint16_t stw2,
-                          std::uint16_t stw2_mask) noexcept;
-  // MC_WriteParameter (spec 03 §4.15): 1010/1011/1012 communication times (s, after restart), 1020
+  Submission stop(const StopInputs& in) noexcept;  // 9.13
+  // 9.15 MC_WriteParameter: 1010/1011/1012 communication times (s, after restart), 1020
   // Actor.RemoveEnableReaction (immediately). 1000 belongs to positioning axes.
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
-  // MC_TorqueLimiting (spec 03 §4.18.3): Mode 0 torque limiting through MOMRED (telegrams 10x); fixed-stop
-  // detection (Mode 1) is for positioning and synchronous axes only.
+  // 9.18.3 MC_TorqueLimiting: Mode 0 torque limiting through MOMRED (telegrams 10x); fixed-stop detection
+  // (Mode 1) is for positioning and synchronous axes only.
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
-  // Ti, To, T_DC (seconds) in effect; they enter the following error of position-controlled axes.
-  using CommunicationTimes = techobjects::CommunicationTimes;
-  const CommunicationTimes& communication_times() const noexcept { return core_.communication_times; }
-  JobStatus job_status(JobId id) const noexcept;
 
  private:
   using JobKind = AxisJobKind;
@@ -129,13 +93,7 @@ class SpeedAxis final : public TechnologyObject {
   double velocity_limit() const noexcept;  // rev/s
   bool virtual_axis() const noexcept { return device_ == nullptr; }
 
-  std::string name_;
-  DeviceIo* device_ = nullptr;
-  StartValues<SpeedAxisData> start_;  // load memory (the runtime's StartValueStore once attached)
-  SpeedAxisData db_;
-  DriveConnectionConfig drive_config_;
-  DriveConnection drive_;
-  AxisCore core_;  // power, reset, alarms and reactions, MC_Stop, jobs, drive request, words
+  ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
 
   // motion
   Motion motion_{};
