@@ -132,15 +132,12 @@ void BM_DiagnosticsCyclePositioning(benchmark::State& state) {
     d.add(*axis);
   techobjects::Runtime idle(techobjects::RuntimeConfig{0.001, 1, 1});
   d.attach(idle);
-  // 32 channels; the axes share one name in this machine, so all probe the first axis (a probe costs the
-  // same whichever axis it reads).
+  // 32 channels: 8 of each axis.
   diagnostics::TraceRequest r;
-  for (const char* p : {"ActualPosition", "ActualVelocity", "ActualAcceleration", "Position", "Velocity",
-                        "StatusPositioning.FollowingError", "StatusPositioning.Distance", "ActualSpeed",
-                        "StatusWord", "StatusWord.X5", "StatusWord.X7", "StatusWord.X12", "ErrorWord",
-                        "WarningWord", "telegram.drive.NIST_B", "telegram.drive.ZSW1"}) {
-    r.channels.push_back(std::string("Axis.") + p);
-    r.channels.push_back(std::string("Axis.") + p);
+  for (int a = 1; a <= kAxes; ++a) {
+    for (const char* p : {"ActualPosition", "ActualVelocity", "Position", "StatusPositioning.FollowingError",
+                          "StatusWord", "StatusWord.X7", "telegram.drive.NIST_B", "telegram.drive.G1_XIST1"})
+      r.channels.push_back("Axis" + std::to_string(a) + "." + p);
   }
   r.post_samples = diagnostics::kMaxTraceSamples;
   if (!d.start_trace(r).empty()) std::abort();

@@ -232,6 +232,12 @@ Json status(const Diagnostics& diagnostics, const Diagnostics::State& state, std
              {"valid", o.valid},
              {"cycle", s.cycle},
              {"words", std::move(words)},
+             // The positions the TO derives from each encoder's XIST (telegram page: XIST as counts and
+             // position); null for a TO without them (a speed axis).
+             {"encoder_positions",
+              to::find_variable(table, "StatusSensor.Position") != nullptr
+                  ? Json::array({value_of("StatusSensor.Position"), nullptr})
+                  : Json::array({value_of("StatusSensor[1].Position"), value_of("StatusSensor[2].Position")})},
              {"error_detail",
               {{"number", value_of("ErrorDetail.Number")}, {"reaction", value_of("ErrorDetail.Reaction")}}},
              {"items", std::move(items)},

@@ -456,6 +456,13 @@ try {
   await until('the target position shown as none', async () =>
     (await page2.locator('[data-item="Setpoints/Target position"] .value').textContent()) === '–');
   log('slide positioned at 150 mm');
+  // XIST1 of the motor encoder as counts and as the position the slide derives from it (issue 21).
+  await page2.click('#tabs button[data-tab="telegram"]');
+  await until('G1_XIST1 as counts and position', async () => {
+    const m = (await page2.locator('[data-word="drive.G1_XIST1"] .bits').textContent()).match(/^[0-9]+ countsposition ([-0-9.]+) mm$/);
+    return m && Math.abs(Number(m[1]) - 150) < 0.5;
+  });
+  await page2.click('#tabs button[data-tab="status"]');
   await alarmsAcrossAxes(page2);
 
   // Give back: the panel disables the slide; the program takes it again when its switch is on.
