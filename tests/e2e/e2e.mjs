@@ -159,6 +159,12 @@ async function dataBlockTree(page) {
 // jogged into its software limit raises 533 (spec 02: software limit switch reached).
 async function alarmsAcrossAxes(page) {
   await page.click('#tabs button[data-tab="alarms"]');
+  // Jog at the slide's limits (250 mm/s, 2500 mm/s²; the panel starts at 10 %): into the limit in about a second.
+  await page.fill('#dyn-velocity', '250');
+  await page.fill('#dyn-acceleration', '2500');
+  await page.click('#dyn-apply');
+  await until('the panel dynamics applied', async () =>
+    (await (await fetch(demo.base + 'api/status')).json()).objects.find(o => o.name === 'Slide').panel.dynamics.velocity === 250);
   await page.locator('#jog-forward').hover();
   await page.mouse.down();
   const row = page.locator('#alarm-rows [data-alarm="Slide.533"]');
@@ -414,6 +420,9 @@ try {
   await page2.click('[data-switch="Slide.automatic"]');
   await until('the program to stop and disable the slide', async () =>
     !(await ledOn(page2, 'Axis status/Enabled')) && (await shownValue(page2, 'Setpoints/Setpoint velocity')) === 0, 15000);
+  // A longer lifebeat than the page's 1.5 s: on a saturated machine (and under the sanitizers) the browser's
+  // 250 ms lifebeats can stall for more than 1.5 s, and the slide's steps below take several seconds.
+  await page2.fill('#lifebeat', '5');
   await page2.click('#panel-take');
   await page2.locator('#panel-state[data-held="mine"]').waitFor();
   await until('StatusWord.X4 of the slide shown', () => ledOn(page2, 'Axis status/Axis control panel active'));
@@ -466,8 +475,12 @@ try {
   await alarmsAcrossAxes(page2);
 
   // Give back: the panel disables the slide; the program takes it again when its switch is on.
+  await until('the panel showing the error of the alarm stop (16#8001)', async () =>
+    (await page2.locator('#panel-message').textContent()).startsWith('16#8001'));
   await page2.click('#panel-giveback');
   await page2.locator('#panel-state[data-held="none"]').waitFor();
+  // Stale state (issue 21): the panel's error from before the give-back is no longer shown.
+  await until('no panel error after the give-back', async () => (await page2.locator('#panel-message').textContent()) === '');
   await until('the slide disabled after the give-back', async () => !(await ledOn(page2, 'Axis status/Enabled')));
   await page2.click('[data-switch="Slide.automatic"]');
   await until('the program to run the slide again', () => ledOn(page2, 'Axis status/Enabled'), 10000);
