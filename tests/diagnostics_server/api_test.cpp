@@ -6,6 +6,7 @@
 #include <httplib.h>
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -353,6 +354,12 @@ TEST(WebApi, PositioningPanelHomesAndPositions) {
   ASSERT_EQ(s.panel("home", {{"mode", "set"}, {"position", 40.0}}).first, 200);
   s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & (1u << 5)) != 0; });
   EXPECT_NEAR(s.variable("ActualPosition"), 40.0, 0.01);
+  // The telegram page shows XIST1 with the position the TO derives from encoder 1 (issue 21).
+  const Json homed = s.wait_status([](const Json& j) {
+    const Json& p = j["objects"][0]["encoder_positions"][0];
+    return p.is_number() && std::abs(p.get<double>() - 40.0) < 0.01;
+  });
+  EXPECT_TRUE(homed["objects"][0]["encoder_positions"][1].is_number());  // Sensor[2] exists, unused
   ASSERT_EQ(s.panel("move_absolute", {{"position", 60.0}}).first, 200);
   EXPECT_TRUE(s.wait_variable("Position", 60.0));
   ASSERT_EQ(s.panel("move_relative", {{"distance", 5.0}, {"direction", -1}}).first, 200);

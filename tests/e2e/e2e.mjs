@@ -26,7 +26,8 @@ const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
 if (!tomcPath) { console.error('usage: node e2e.mjs --tomc PATH [--artifacts DIR]'); process.exit(2); }
 mkdirSync(artifacts, { recursive: true });
 
-const log = (...m) => console.log('[e2e]', ...m);
+const started = Date.now();  // each line says when (s): where the time goes on a busy machine
+const log = (...m) => console.log('[e2e]', ((Date.now() - started) / 1000).toFixed(1) + ' s', ...m);
 const sleep = (ms) => new Promise(r => setTimeout(r, ms));
 function check(condition, message) { if (!condition) throw new Error('check failed: ' + message); }
 
