@@ -160,12 +160,6 @@ async function dataBlockTree(page) {
 // jogged into its software limit raises 533 (spec 02: software limit switch reached).
 async function alarmsAcrossAxes(page) {
   await page.click('#tabs button[data-tab="alarms"]');
-  // Jog at the slide's limits (250 mm/s, 2500 mm/s²; the panel starts at 10 %): into the limit in about a second.
-  await page.fill('#dyn-velocity', '250');
-  await page.fill('#dyn-acceleration', '2500');
-  await page.click('#dyn-apply');
-  await until('the panel dynamics applied', async () =>
-    (await (await fetch(demo.base + 'api/status')).json()).objects.find(o => o.name === 'Slide').panel.dynamics.velocity === 250);
   await page.locator('#jog-forward').hover();
   await page.mouse.down();
   const row = page.locator('#alarm-rows [data-alarm="Slide.533"]');
@@ -342,7 +336,10 @@ try {
   await page.fill('#trace-post', '1500');
   await page.click('#trace-start');
   await page.waitForFunction(() => document.getElementById('trace-state').textContent.startsWith('waiting'));
-  await sleep(300);  // more than the 100 samples before the trigger
+  // The 100 samples before the trigger recorded (a fixed sleep was too short when the demo ran several times
+  // slower than real time).
+  const waitingSince = (await status(demo.base)).cycle;
+  await until('100 samples before the trigger', async () => (await status(demo.base)).cycle >= waitingSince + 120, 20000);
   await jog.hover();
   await page.mouse.down();
   await sleep(800);
@@ -454,6 +451,13 @@ try {
               async () => (await shownValue(page2, 'Setpoints/Setpoint velocity')) === 0);
   const jogged = await shownValue(page2, 'Actual values/Actual position');
   log(`slide jogged from ${start} mm to ${jogged} mm`);
+
+  // The slide's maximum dynamics (250 mm/s, 2500 mm/s²; the panel starts at 10 %): the moves below take about a
+  // second each, also when the demo runs several times slower than real time (sanitizers, a saturated machine).
+  await page2.fill('#dyn-velocity', '250');
+  await page2.fill('#dyn-acceleration', '2500');
+  await page2.click('#dyn-apply');
+  await until('the panel dynamics applied', async () => (await objectStatus(demo.base, 'Slide')).panel.dynamics.velocity === 250);
 
   // Absolute positioning with the panel's dynamics (MC_MoveAbsolute).
   await page2.fill('#move-target', '150');
