@@ -5,6 +5,7 @@
 #include <array>
 
 #include "counting_allocator.hpp"
+#include "sample_frames.hpp"
 #include "tomc/profinet/alarm.hpp"
 
 namespace pn = tomc::profinet;
@@ -13,27 +14,7 @@ namespace {
 
 const pn::EthernetHeader kToController{{0x02, 0, 0, 0, 0, 1}, {0x02, 0, 0, 0, 0, 2}, pn::VlanTag{6, 0}};
 
-pn::RtaFrame diagnosis_alarm() {
-  pn::RtaFrame frame;
-  frame.frame_id = pn::kFrameIdAlarmHigh;
-  frame.destination_endpoint = 1;
-  frame.source_endpoint = 3;
-  frame.send_sequence = 0;
-  frame.ack_sequence = 0xFFFE;
-  frame.has_block = true;
-  frame.block.high_priority = true;
-  frame.block.alarm_type = pn::alarm_type::kDiagnosis;
-  frame.block.slot = 1;
-  frame.block.subslot = 2;
-  frame.block.module_ident = 0x100;
-  frame.block.submodule_ident = 0x101;
-  frame.block.specifier = 0x0800 | 0x2000 | 5;     // channel + submodule diagnosis, sequence 5
-  frame.block.user_structure_identifier = 0x8000;  // ChannelDiagnosis
-  const std::array<std::uint8_t, 6> channel{0x80, 0x00, 0x08, 0x00, 0x00, 0x09};
-  std::copy(channel.begin(), channel.end(), frame.block.payload.begin());
-  frame.block.payload_length = channel.size();
-  return frame;
-}
+using pn::testing::diagnosis_alarm;
 
 std::size_t be16_at(const std::array<std::uint8_t, 256>& b, std::size_t at) {
   return static_cast<std::size_t>(b[at] << 8 | b[at + 1]);

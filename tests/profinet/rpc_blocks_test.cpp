@@ -5,36 +5,15 @@
 #include <algorithm>
 #include <vector>
 
+#include "sample_frames.hpp"
 #include "tomc/profinet/blocks.hpp"
 
 namespace pn = tomc::profinet;
 
 namespace {
 
-const pn::Uuid kArUuid{0x11223344, 0x5566, 0x7788, {1, 2, 3, 4, 5, 6, 7, 8}};
-
-pn::ConnectRequest drive_connect() {
-  pn::ConnectRequest request;
-  request.ar.ar_uuid = kArUuid;
-  request.ar.session_key = 1;
-  request.ar.initiator_mac = {0x02, 0, 0, 0, 0, 1};
-  request.ar.initiator_object_uuid = pn::pnio_object_uuid(1, 0x0C01, 0x002A);
-  request.ar.station_name = "tomc-gateway";
-  pn::IocrBlockRequest input;
-  input.type = pn::IocrType::kInput;
-  input.reference = 1;
-  input.frame_id = 0x8001;
-  input.apis = {{0, {{0, 1, 0}, {1, 2, 1}}, {{1, 2, 6}}}};
-  pn::IocrBlockRequest output = input;
-  output.type = pn::IocrType::kOutput;
-  output.reference = 2;
-  output.frame_id = 0x8002;
-  output.apis = {{0, {{1, 2, 0}}, {{0, 1, 5}, {1, 2, 6}}}};
-  request.iocrs = {input, output};
-  request.expected = {{0, 0, 0x00000001, {{1, 0x00000001, pn::SubmoduleDirection::kNoIo, 0, 0}}},
-                      {0, 1, 0x00000100, {{2, 0x00000101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
-  return request;
-}
+using pn::testing::drive_connect;
+using pn::testing::kArUuid;
 
 std::vector<std::uint8_t> blocks_of(const auto& value) {
   std::vector<std::uint8_t> bytes(4096);
@@ -160,15 +139,7 @@ TEST(RpcBlocks, ControlAndRecordBlocks) {
   pn::WireReader control_in(control);
   EXPECT_EQ(pn::decode_control(control_in), prm_end);
 
-  pn::RecordAccess write;
-  write.header.type = pn::block_type::kIodWriteRequest;
-  write.header.sequence_number = 4;
-  write.header.ar_uuid = kArUuid;
-  write.header.slot = 1;
-  write.header.subslot = 1;
-  write.header.index = 0xB02E;
-  write.data = {0x01, 0x01, 0x01, 0x01, 0x10, 0x01, 0x03, 0x9A, 0x00, 0x00};
-  write.header.record_data_length = static_cast<std::uint32_t>(write.data.size());
+  const pn::RecordAccess write = pn::testing::read_p0922_request();
   const auto bytes = blocks_of(write);
   EXPECT_EQ(be16(bytes, 2), 60);  // IODWriteReqHeader: the data are outside the block
   EXPECT_EQ(bytes.size(), 64u + write.data.size());

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "sample_frames.hpp"
 #include "tomc/profinet/alarm.hpp"
 #include "tomc/profinet/blocks.hpp"
 #include "tomc/profinet/cyclic.hpp"
@@ -21,9 +22,9 @@ namespace pn = tomc::profinet;
 
 namespace {
 
-constexpr pn::MacAddress kController{0x02, 0, 0, 0, 0, 0x01};
-constexpr pn::MacAddress kDevice{0x02, 0, 0, 0, 0, 0x02};
-const pn::Uuid kArUuid{0x11223344, 0x5566, 0x7788, {1, 2, 3, 4, 5, 6, 7, 8}};
+using pn::testing::kArUuid;
+using pn::testing::kController;
+using pn::testing::kDevice;
 const pn::Uuid kActivity{0xA1A2A3A4, 0xB1B2, 0xC1C2, {1, 1, 1, 1, 1, 1, 1, 1}};
 
 using Frame = std::vector<std::uint8_t>;
@@ -118,22 +119,7 @@ std::vector<Frame> every_frame_type() {
   hello.fields.ip = pn::IpSuite{{10, 0, 0, 2}, {255, 255, 255, 0}, {}};
   frames.push_back(dcp({pn::kDcpHelloMulticast, kDevice, {}}, hello));
 
-  pn::ConnectRequest connect;
-  connect.ar.ar_uuid = kArUuid;
-  connect.ar.initiator_mac = kController;
-  connect.ar.initiator_object_uuid = pn::pnio_object_uuid(1, 0x0001, 0x002A);
-  connect.ar.station_name = "tomc-gateway";
-  pn::IocrBlockRequest input;
-  input.frame_id = 0x8001;
-  input.apis = {{0, {{0, 1, 0}, {1, 2, 1}}, {{1, 2, 6}}}};
-  pn::IocrBlockRequest output = input;
-  output.type = pn::IocrType::kOutput;
-  output.reference = 2;
-  output.frame_id = 0x8002;
-  output.apis = {{0, {{1, 2, 0}}, {{0, 1, 5}, {1, 2, 6}}}};
-  connect.iocrs = {input, output};
-  connect.expected = {{0, 0, 1, {{1, 1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
-                      {0, 1, 0x100, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
+  const pn::ConnectRequest connect = pn::testing::drive_connect();
   frames.push_back(rpc(true, pn::PnioOperation::kConnect, connect));
   pn::ConnectResponse connected;
   connected.ar = {1, kArUuid, 0, kDevice, 0x8892};
@@ -142,13 +128,7 @@ std::vector<Frame> every_frame_type() {
       {0, 1, 0x102, pn::ModuleState::kWrongModule, {{2, 0x102, pn::SubmoduleIdentInfo::kWrong, 0, false}}}};
   frames.push_back(rpc(false, pn::PnioOperation::kConnect, connected));
 
-  pn::RecordAccess write;
-  write.header.ar_uuid = kArUuid;
-  write.header.slot = 1;
-  write.header.subslot = 1;
-  write.header.index = 0xB02E;
-  write.data = {0x01, 0x01, 0x01, 0x01, 0x10, 0x01, 0x03, 0x9A, 0x00, 0x00};
-  write.header.record_data_length = static_cast<std::uint32_t>(write.data.size());
+  const pn::RecordAccess write = pn::testing::read_p0922_request();
   frames.push_back(rpc(true, pn::PnioOperation::kWrite, write));
   pn::RecordAccess written = write;
   written.header.type = pn::block_type::kIodWriteResponse;
@@ -196,22 +176,7 @@ std::vector<Frame> every_frame_type() {
   cyclic.resize(size);
   frames.push_back(cyclic);
 
-  pn::RtaFrame alarm;
-  alarm.frame_id = pn::kFrameIdAlarmHigh;
-  alarm.destination_endpoint = 1;
-  alarm.source_endpoint = 3;
-  alarm.ack_sequence = 0xFFFE;
-  alarm.has_block = true;
-  alarm.block.high_priority = true;
-  alarm.block.slot = 1;
-  alarm.block.subslot = 2;
-  alarm.block.module_ident = 0x100;
-  alarm.block.submodule_ident = 0x101;
-  alarm.block.specifier = 0x0800 | 0x2000 | 1;
-  alarm.block.user_structure_identifier = 0x8000;
-  const std::array<std::uint8_t, 6> channel{0x80, 0x00, 0x08, 0x00, 0x00, 0x09};
-  std::copy(channel.begin(), channel.end(), alarm.block.payload.begin());
-  alarm.block.payload_length = channel.size();
+  const pn::RtaFrame alarm = pn::testing::diagnosis_alarm();
   pn::RtaFrame ack;
   ack.frame_id = pn::kFrameIdAlarmHigh;
   ack.destination_endpoint = 3;
