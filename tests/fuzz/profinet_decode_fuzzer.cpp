@@ -1,6 +1,7 @@
 // Arbitrary bytes through every PROFINET decoder (tomc::profinet): Ethernet/DCP, RT_CLASS_1 cyclic, RTA
-// alarms, DCE/RPC with the Connect/Control/record blocks. Must never crash or read outside the input; what
-// decodes without error must encode again and decode to the same value.
+// alarms, DCE/RPC with the Connect/Control/record blocks, and the IO device (IoDevice) behind them. Must
+// never crash or read outside the input; what decodes without error must encode again and decode to the same
+// value.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "tomc/profinet/blocks.hpp"
 #include "tomc/profinet/cyclic.hpp"
 #include "tomc/profinet/dcp.hpp"
+#include "tomc/profinet/io_device.hpp"
 
 namespace pn = tomc::profinet;
 
@@ -44,12 +46,44 @@ void fuzz_cyclic(std::span<const std::uint8_t> frame) {
   (void)codec.read_iocs(c_sdu, 0);
 }
 
+// A device with an AR already set up (the Connect of a drive with a DAP and a 4-byte IO telegram
+// submodule), so that the fuzzed bytes reach record access, control and the cyclic path, not only Connect.
+pn::IoDevice connected_device() {
+  pn::DeviceIdentity identity;
+  identity.mac = {2, 0, 0, 0, 0, 2};
+  identity.modules = {{0, 1, {{1, 1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
+                      {1, 0x100, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
+  pn::IoDevice device(identity);
+  pn::ConnectRequest connect;
+  connect.ar.ar_uuid = {0x11223344, 0x5566, 0x7788, {1, 2, 3, 4, 5, 6, 7, 8}};  // as in the corpus
+  pn::IocrBlockRequest input;
+  input.frame_id = 0x8001;
+  input.apis = {{0, {{0, 1, 0}, {1, 2, 1}}, {{1, 2, 6}}}};
+  pn::IocrBlockRequest output = input;
+  output.type = pn::IocrType::kOutput;
+  output.frame_id = 0x8002;
+  output.apis = {{0, {{1, 2, 0}}, {{0, 1, 5}, {1, 2, 6}}}};
+  connect.iocrs = {input, output};
+  connect.expected = {{0, 0, 1, {{1, 1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
+                      {0, 1, 0x100, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
+  std::vector<std::uint8_t> blocks(1024);
+  pn::WireWriter block_out(blocks);
+  pn::encode(connect, block_out);
+  pn::RpcHeader header;
+  header.interface = pn::kPnioDeviceInterface;
+  std::vector<std::uint8_t> request(2048);
+  pn::WireWriter out(request);
+  pn::encode_rpc(header, 1024, {}, block_out.written(), out);
+  if (device.on_rpc(out.written()).empty() || device.state() != pn::ArState::kParameterizing) std::abort();
+  return device;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   const std::span<const std::uint8_t> bytes(data + 1, size - 1);
-  switch (data[0] % 6) {
+  switch (data[0] % 7) {
     case 0: {  // an Ethernet frame: DCP
       pn::WireReader in(bytes);
       (void)pn::decode_ethernet(in);
@@ -91,6 +125,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const pn::ConnectResponse response = pn::decode_connect_response(response_in);
       if (response_in.ok())
         round_trip(response, [](pn::WireReader& r) { return pn::decode_connect_response(r); });
+      break;
+    }
+    case 6: {  // the IO device: the bytes as DCP frame, RPC packet and cyclic frame, with an AR set up
+      static const pn::IoDevice prototype = connected_device();
+      pn::IoDevice device = prototype;
+      (void)device.on_dcp(bytes);
+      (void)device.on_rpc(bytes);
+      (void)device.on_cyclic(bytes, 1000);
+      std::array<std::uint8_t, 1514> frame{};
+      (void)device.next_input_frame(frame);
+      (void)device.take_application_ready();
+      (void)device.watchdog_expired(1000000);
       break;
     }
     default: {  // Control and record blocks without the RPC around them
