@@ -1,5 +1,5 @@
 // Arbitrary bytes through every PROFINET decoder (tomc::profinet): Ethernet/DCP, RT_CLASS_1 cyclic, RTA
-// alarms, DCE/RPC with the Connect/Control/record blocks, and the IO device (IoDevice) behind them. Must
+// alarms, DCE/RPC with the Connect/Control/record blocks, and the IO device and controller behind them. Must
 // never crash or read outside the input; what decodes without error must encode again and decode to the same
 // value.
 #include <array>
@@ -13,6 +13,7 @@
 #include "tomc/profinet/blocks.hpp"
 #include "tomc/profinet/cyclic.hpp"
 #include "tomc/profinet/dcp.hpp"
+#include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/io_device.hpp"
 
 namespace pn = tomc::profinet;
@@ -83,7 +84,7 @@ pn::IoDevice connected_device() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   const std::span<const std::uint8_t> bytes(data + 1, size - 1);
-  switch (data[0] % 7) {
+  switch (data[0] % 8) {
     case 0: {  // an Ethernet frame: DCP
       pn::WireReader in(bytes);
       (void)pn::decode_ethernet(in);
@@ -137,6 +138,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       (void)device.next_input_frame(frame);
       (void)device.take_application_ready();
       (void)device.watchdog_expired(1000000);
+      break;
+    }
+    case 7: {  // the IO controller's receive paths, waiting for a Connect answer and then running
+      pn::ControllerDeviceConfig config;
+      config.name_of_station = "drive-1";
+      config.modules = {{0, 0, 1, {{1, 1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
+                        {0, 1, 0x100, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
+      pn::IoController controller({2, 0, 0, 0, 0, 1}, "gw", config, {1, 2, 3, {4}});
+      (void)controller.on_dcp(bytes, 1);
+      (void)controller.connect_request();
+      (void)controller.on_connect_response(bytes);
+      (void)controller.next_request();
+      (void)controller.on_response(bytes);
+      (void)controller.on_application_ready(bytes);
+      (void)controller.on_input_frame(bytes, 1000);
+      std::array<std::uint8_t, 256> ack{};
+      std::array<std::uint8_t, 256> alarm_ack{};
+      std::size_t ack_bytes = 0;
+      std::size_t alarm_ack_bytes = 0;
+      (void)controller.on_alarm(bytes, ack, alarm_ack, ack_bytes, alarm_ack_bytes);
+      std::array<std::uint8_t, 1514> frame{};
+      (void)controller.next_output_frame(frame);
+      (void)controller.input_valid(2000);
       break;
     }
     default: {  // Control and record blocks without the RPC around them
