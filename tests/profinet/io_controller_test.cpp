@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "counting_allocator.hpp"
+#include "in_memory_start_up.hpp"
 #include "sample_frames.hpp"
 #include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/io_device.hpp"
@@ -64,24 +65,11 @@ Pair make_pair(int index, std::uint32_t real_telegram_module = 0x100) {
       std::make_unique<pn::IoDevice>(device_identity(index, real_telegram_module))};
 }
 
-// Runs the start-up until the controller is running (or gives up); returns false if it did not get there.
+// One cycle of both sides: controller output -> device, device input -> controller.
 bool start_up(Pair& pair, std::uint32_t xid = 1) {
-  pn::IoController& c = *pair.controller;
-  pn::IoDevice& d = *pair.device;
-  const auto identified = d.on_dcp(c.identify_request(xid));
-  if (identified.empty()) return false;
-  const auto set = c.on_dcp(identified, xid + 1);
-  if (!set.empty() && d.on_dcp(set).empty()) return false;
-  if (!c.on_connect_response(d.on_rpc(c.connect_request()))) return false;
-  for (int guard = 0; guard < 16 && c.state() != pn::ControllerArState::kWaitApplicationReady; ++guard) {
-    const auto request = c.next_request();
-    if (request.empty() || !c.on_response(d.on_rpc(request))) return false;
-  }
-  const auto ready = d.take_application_ready();
-  return ready && !c.on_application_ready(*ready).empty() && c.state() == pn::ControllerArState::kRunning;
+  return pn::testing::start_up(*pair.controller, *pair.device, xid);
 }
 
-// One cycle of both sides: controller output -> device, device input -> controller.
 void cycle(Pair& pair, std::uint64_t now_us) {
   std::array<std::uint8_t, 1518> frame{};
   std::size_t n = pair.controller->next_output_frame(frame);
