@@ -334,8 +334,9 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
 
   ASSERT_EQ(device_error, "");
   ASSERT_EQ(failure, "");
-  // Frames are sent from non-real-time threads on a shared machine: allow a few cycles without a fresh frame.
-  EXPECT_GE(cycles_valid, 290);
+  // Frames are sent from non-real-time threads on a shared machine: allow some cycles without a fresh frame
+  // (one run in ten under ASan with a parallel build fell below 290 of 300).
+  EXPECT_GE(cycles_valid, 270);
   // The controller's watchdog (20 × 1 ms) ends the AR more than 20 ms after the last input frame and not much
   // later (it is checked once a cycle, by a thread that is not real-time here).
   EXPECT_GT(silence_us, 20000u);
