@@ -72,9 +72,14 @@ int main(int argc, char** argv) {
     const double p99 = ns[std::min(ns.size() - 1, ns.size() * 99 / 100)];
     all_max_ratio = std::max(all_max_ratio, ratio_max);
     all_max_ns = std::max(all_max_ns, ns.back());
-    std::printf("| %s | %.0f / %.0f / %.0f | %.6f / %.6f (%zu) | %.3f |\n",
-                tomc::bench::kProfileCategories[category], mean_ns, p99, ns.back(),
-                ratio_sum / static_cast<double>(compared), ratio_max, compared, jerk_ratio);
+    std::printf("| %s | %.0f / %.0f / %.0f | ", tomc::bench::kProfileCategories[category], mean_ns, p99,
+                ns.back());
+    if (compared > 0) {
+      std::printf("%.6f / %.6f (%zu) | %.3f |\n", ratio_sum / static_cast<double>(compared), ratio_max,
+                  compared, jerk_ratio);
+    } else {
+      std::printf("– | %.3f |\n", jerk_ratio);
+    }
   }
   std::printf("worst: %.0f ns per plan, duration %.6f x the reference\n", all_max_ns, all_max_ratio);
   return 0;
