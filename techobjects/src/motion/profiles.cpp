@@ -32,14 +32,12 @@ bool make_dynamics(const ProfileLimits& limits, Dynamics& out) noexcept {
 
 }  // namespace
 
-// Appends segments while integrating the state in closed form; with no target profile it only integrates
-// (the root search of the PositionProfile evaluates hundreds of candidate profiles this way).
-class ProfileBuilder {
+// Integrates the state over pieces of constant jerk in closed form, storing nothing: the root search of the
+// PositionProfile evaluates candidate profiles this way.
+class Integrator {
  public:
-  ProfileBuilder(PiecewiseJerkProfile* out, const MotionState& start) noexcept
-      : out_(out), p_(start.position), v_(start.velocity), a_(start.acceleration) {
-    if (out_ != nullptr) out_->count_ = 0;
-  }
+  explicit Integrator(const MotionState& start) noexcept
+      : p_(start.position), v_(start.velocity), a_(start.acceleration) {}
 
   double time() const noexcept { return t_; }
   double position() const noexcept { return p_; }
@@ -47,9 +45,13 @@ class ProfileBuilder {
   double acceleration() const noexcept { return a_; }
 
   // Constant jerk from the current (continuous) acceleration.
-  void ramp(double duration, double jerk) noexcept { push(duration, a_, jerk); }
+  void ramp(double duration, double jerk) noexcept {
+    if (duration > 0) advance(duration, a_, jerk);
+  }
   // Constant acceleration; with jerk = 0 it may step (§8.8, replacement without jerk limitation).
-  void hold(double duration, double acceleration) noexcept { push(duration, acceleration, 0.0); }
+  void hold(double duration, double acceleration) noexcept {
+    if (duration > 0) advance(duration, acceleration, 0.0);
+  }
 
   // After a velocity change: the closed-form end velocity differs from the target by rounding only; continue
   // from the exact target with a = 0. Returns the error that was snapped away.
@@ -60,8 +62,35 @@ class ProfileBuilder {
     return error;
   }
 
+  // At a velocity snapped by settle_velocity: the acceleration the next piece starts from (continuous).
+  void set_acceleration(double acceleration) noexcept { a_ = acceleration; }
+
+ protected:
+  void advance(double d, double acceleration, double jerk) noexcept {
+    p_ += d * (v_ + d * (acceleration / 2 + d * jerk / 6));
+    v_ += d * (acceleration + d * jerk / 2);
+    a_ = acceleration + d * jerk;
+    t_ += d;
+  }
+
+  double t_ = 0;
+  double p_;
+  double v_;
+  double a_;
+};
+
+// The same integration, appending each piece to a profile's segments.
+class ProfileBuilder : public Integrator {
+ public:
+  ProfileBuilder(PiecewiseJerkProfile* out, const MotionState& start) noexcept
+      : Integrator(start), out_(out) {
+    out_->count_ = 0;
+  }
+
+  void ramp(double duration, double jerk) noexcept { push(duration, a_, jerk); }
+  void hold(double duration, double acceleration) noexcept { push(duration, acceleration, 0.0); }
+
   void finish(const MotionState& end) noexcept {
-    if (out_ == nullptr) return;
     out_->duration_ = t_;
     out_->end_ = end;
   }
@@ -69,21 +98,13 @@ class ProfileBuilder {
  private:
   void push(double duration, double acceleration, double jerk) noexcept {
     if (!(duration > 0)) return;  // also drops NaN
-    if (out_ != nullptr && out_->count_ < kMaxProfileSegments) {
+    if (out_->count_ < kMaxProfileSegments) {
       out_->segments_[out_->count_++] = ProfileSegment{t_, p_, v_, acceleration, jerk};
     }
-    const double d = duration;
-    p_ += d * (v_ + d * (acceleration / 2 + d * jerk / 6));
-    v_ += d * (acceleration + d * jerk / 2);
-    a_ = acceleration + d * jerk;
-    t_ += d;
+    advance(duration, acceleration, jerk);
   }
 
   PiecewiseJerkProfile* out_;
-  double t_ = 0;
-  double p_;
-  double v_;
-  double a_;
 };
 
 MotionState PiecewiseJerkProfile::at(double t) const noexcept {
@@ -104,34 +125,64 @@ MotionState PiecewiseJerkProfile::at(double t) const noexcept {
 
 namespace {
 
-// Jerk-limited velocity change in the "local" frame where the velocity must rise: from a0 to a plateau
-// ap ≤ limit, hold, back to a = 0, gaining dv. The caller guarantees dv ≥ a0·|a0|/(2j) (a = 0 is reached at
-// or below the target when a0 is ramped to zero at once). sign maps the local frame back.
-void rise(ProfileBuilder& b, double sign, double a0, double dv, double limit, double jerk) noexcept {
+// Jerk-limited velocity change in the "local" frame where the velocity must rise: from a0 over a plateau
+// ap ≤ limit down to a_end ≥ 0, gaining dv. A ramp between accelerations x and y gains (y² − x²)/(2j) in
+// either direction of x and y, so with a peak ap ≥ max(a0, a_end) the gain is (2ap² − a0² − a_end²)/(2j) plus
+// ap · hold. The caller guarantees dv at least the gain of the direct ramp a0 → a_end. sign maps the local
+// frame back.
+template <typename Builder>
+void rise(Builder& b, double sign, double a0, double dv, double limit, double jerk,
+          double a_end = 0.0) noexcept {
+  const double end2 = a_end * a_end;
   if (a0 > limit) {
     // The current acceleration is above what the new job allows: bring it back with the new jerk (§8.8),
     // never increase it; hold the limit; ramp out.
-    const double hold = std::max(0.0, (dv - a0 * a0 / (2 * jerk)) / limit);
+    const double hold = std::max(0.0, (dv - (a0 * a0 - end2) / (2 * jerk)) / limit);
     b.ramp((a0 - limit) / jerk, -sign * jerk);
     b.hold(hold, sign * limit);
-    b.ramp(limit / jerk, -sign * jerk);
+    b.ramp((limit - a_end) / jerk, -sign * jerk);
     return;
   }
-  // Without plateau the peak satisfies (2ap² − a0²)/(2j) = dv (a0 < 0 included: the ramp from a0 up to ap
-  // first loses a0²/(2j) then gains ap²/(2j)).
-  double peak = std::sqrt(std::max(0.0, (2 * jerk * dv + a0 * a0) / 2));
+  double peak = std::sqrt(std::max(0.0, (2 * jerk * dv + a0 * a0 + end2) / 2));
   double hold = 0;
   if (peak > limit) {
     peak = limit;
-    hold = std::max(0.0, (dv - (2 * limit * limit - a0 * a0) / (2 * jerk)) / limit);
+    hold = std::max(0.0, (dv - (2 * limit * limit - a0 * a0 - end2) / (2 * jerk)) / limit);
   }
+  peak = std::max({peak, a0, a_end});  // rounding: never ramp backwards
   b.ramp((peak - a0) / jerk, sign * jerk);
   b.hold(hold, sign * peak);
-  b.ramp(peak / jerk, -sign * jerk);
+  b.ramp((peak - a_end) / jerk, -sign * jerk);
+}
+
+// A rising change through v = 0 (local frame: v0 < 0 < target − here dv0 = −v0 to zero, dv1 = target from
+// zero). The acceleration is continuous, so its value a_c at the crossing must be admissible on both sides:
+// a_c ≤ min(acc, dec). The fastest profile keeps a as high as the limits let it: deceleration limit while
+// v < 0, acceleration limit after, a_c as high as min(acc, dec) and both halves allow. Each half is then a
+// single-peak change, and a_c = min(..) joins them without a dip.
+template <typename Builder>
+void rise_through_zero(Builder& b, double sign, double a0, double dv0, double dv1, double acc, double dec,
+                       double jerk) noexcept {
+  const double both = std::min(acc, dec);
+  // The half before the crossing reaches a_c by at most a ramp from a0 (a_c² ≤ 2j·dv0 + a0²); the half after
+  // ramps a_c out at most (a_c² ≤ 2j·dv1).
+  const double crossing = std::min(
+      {both, std::sqrt(std::max(0.0, 2 * jerk * dv0 + a0 * a0)), std::sqrt(2 * jerk * std::max(0.0, dv1))});
+  // Lowest a_c the state allows: a0 ramped down at once (a0² − 2j·dv0). Above `both` the state forces an
+  // inadmissible crossing: bring a0 back with the jerk at once and hold `both` (admissible on both sides).
+  if (a0 * a0 - 2 * jerk * dv0 > crossing * crossing * (1 + 1e-12) && a0 > crossing) {
+    rise(b, sign, a0, dv0 + dv1, both, jerk);
+    return;
+  }
+  rise(b, sign, a0, dv0, dec, jerk, crossing);
+  b.settle_velocity(0.0);
+  b.set_acceleration(sign * crossing);
+  rise(b, sign, crossing, dv1, acc, jerk);
 }
 
 // Velocity change from the builder's state to target (a = 0 at the end). Returns the snapped velocity error.
-double append_velocity_change(ProfileBuilder& b, double target, const Dynamics& dyn) noexcept {
+template <typename Builder>
+double append_velocity_change(Builder& b, double target, const Dynamics& dyn) noexcept {
   const double v0 = b.velocity();
   const double a0 = b.acceleration();
   const double j = dyn.jerk;
@@ -149,14 +200,8 @@ double append_velocity_change(ProfileBuilder& b, double target, const Dynamics& 
       rise(b, s, a0l, vtl - v0l, dyn.acceleration, j);  // a > 0 at v ≥ 0: |v| grows
     } else if (vtl <= 0) {
       rise(b, s, a0l, vtl - v0l, dyn.deceleration, j);  // a > 0 at v ≤ 0: |v| shrinks
-    } else if (v_stopl < 0) {
-      // Through zero: brake to standstill with a = 0 there, then accelerate (see profiles.hpp).
-      rise(b, s, a0l, -v0l, dyn.deceleration, j);
-      b.settle_velocity(0.0);
-      rise(b, s, 0.0, vtl, dyn.acceleration, j);
     } else {
-      // a0 already carries the axis through zero: cross with a plateau admissible on both sides.
-      rise(b, s, a0l, vtl - v0l, std::min(dyn.acceleration, dyn.deceleration), j);
+      rise_through_zero(b, s, a0l, -v0l, vtl, dyn.acceleration, dyn.deceleration, j);
     }
   } else {
     // Trapezoid: the acceleration steps at once (§8.8), at v = 0 from the deceleration to the acceleration.
@@ -175,13 +220,109 @@ double append_velocity_change(ProfileBuilder& b, double target, const Dynamics& 
   return b.settle_velocity(target);
 }
 
-// Distance of start -> peak -> 0 (start.position taken as the origin), plus `cruise` seconds at the peak.
-double distance_via_peak(const MotionState& start, double peak, double cruise, const Dynamics& dyn) noexcept {
-  ProfileBuilder b(nullptr, MotionState{0.0, start.velocity, start.acceleration});
+// Distance and duration of start -> peak -> 0 (start.position taken as the origin), no cruise.
+struct ViaPeak {
+  double distance;
+  double duration;
+};
+
+// The stop from v with a = 0 (|v| shrinks: deceleration limit). Its velocity is point-symmetric about the
+// half-way point, so it covers v·T/2 (spec 01 §8.7 "s_ramp = v · t_total / 2").
+ViaPeak stop_from(double v, const Dynamics& dyn) noexcept {
+  const double speed = std::abs(v);
+  double duration = speed / dyn.deceleration;  // trapezoid
+  if (dyn.jerk > 0) {
+    const double d = dyn.deceleration;
+    duration = speed * dyn.jerk >= d * d ? speed / d + d / dyn.jerk : 2 * std::sqrt(speed / dyn.jerk);
+  }
+  return ViaPeak{v * duration / 2, duration};
+}
+
+ViaPeak via_peak(const MotionState& start, double peak, const Dynamics& dyn) noexcept {
+  Integrator b(MotionState{0.0, start.velocity, start.acceleration});
   append_velocity_change(b, peak, dyn);
-  b.hold(cruise, 0.0);
-  append_velocity_change(b, 0.0, dyn);
-  return b.position();
+  const ViaPeak stop = stop_from(peak, dyn);
+  return ViaPeak{b.position() + stop.distance, b.time() + stop.duration};
+}
+
+// One bracket [x0, x1] of peak velocities with f(x) − D changing sign (or zero) at its ends.
+struct Bracket {
+  double x0, x1, f0, f1;
+  bool contains(double d) const noexcept { return std::min(f0, f1) <= d && d <= std::max(f0, f1); }
+};
+
+struct Root {
+  double peak;
+  double duration;
+  int iterations;
+};
+
+// Bracketed root search in u = peak·|peak|: the distance grows roughly with peak² (v²/2a), so in u it is
+// nearly linear and secant steps converge in a few iterations even when the root sits close to one end of a
+// wide bracket. Anderson–Björck regula falsi; a bisection step whenever the last two steps neither halved
+// the bracket nor divided the residual by 4, so the bracket shrinks whatever the shape of f (kinks where a
+// plateau starts to be reached, the non-monotonic middle interval). At most kMaxPositionIterations steps.
+Root solve_peak(const MotionState& start, const Dynamics& dyn, const Bracket& bracket, double distance,
+                double tolerance) noexcept {
+  auto to_u = [](double v) noexcept { return v * std::abs(v); };
+  auto to_peak = [](double u) noexcept { return std::copysign(std::sqrt(std::abs(u)), u); };
+  double x0 = to_u(bracket.x0), x1 = to_u(bracket.x1);
+  double g0 = bracket.f0 - distance, g1 = bracket.f1 - distance;
+  double best = std::abs(g0) <= std::abs(g1) ? bracket.x0 : bracket.x1;
+  double best_g = std::min(std::abs(g0), std::abs(g1));
+  double best_duration = -1;  // not evaluated yet (an end of the bracket)
+  const double eps = std::numeric_limits<double>::epsilon();
+  double width_before = INFINITY, width_before2 = INFINITY;  // bracket width 1 and 2 steps ago
+  double best_before = INFINITY, best_before2 = INFINITY;    // residual 1 and 2 steps ago
+  int retained = 0;                                          // which end was kept last time (-1: x0, +1: x1)
+  int iterations = 0;
+  while (best_g > tolerance && std::abs(x1 - x0) > 4 * eps * std::max(std::abs(x0), std::abs(x1)) &&
+         iterations < kMaxPositionIterations) {
+    ++iterations;
+    const double width = std::abs(x1 - x0);
+    double x = 0.5 * (x0 + x1);
+    const bool progressing = width <= 0.5 * width_before2 || best_g <= 0.25 * best_before2;
+    if (progressing && g1 != g0) {
+      // Anchored at the end with the smaller residual: near convergence the step is tiny and would be lost in
+      // rounding if computed from the far end.
+      const double secant =
+          std::abs(g1) < std::abs(g0) ? x1 - g1 * (x1 - x0) / (g1 - g0) : x0 - g0 * (x1 - x0) / (g1 - g0);
+      if (secant > std::min(x0, x1) && secant < std::max(x0, x1)) x = secant;
+    }
+    width_before2 = width_before;
+    width_before = progressing ? width : INFINITY;  // a bisection restarts the progress window
+    best_before2 = best_before;
+    best_before = progressing ? best_g : INFINITY;
+    if (!(x > std::min(x0, x1) && x < std::max(x0, x1))) break;  // bracket exhausted in floating point
+    const double peak_x = to_peak(x);
+    const ViaPeak v = via_peak(start, peak_x, dyn);
+    const double g = v.distance - distance;
+    if (std::abs(g) < best_g) {
+      best_g = std::abs(g);
+      best = peak_x;
+      best_duration = v.duration;
+    }
+    // Anderson–Björck: scale the retained end's residual by 1 - g/g_replaced (0.5 if that is not positive).
+    if ((g < 0) == (g0 < 0)) {
+      if (retained == 1) {
+        const double m = 1 - g / g0;
+        g1 *= m > 0 ? m : 0.5;
+      }
+      x0 = x;
+      g0 = g;
+      retained = 1;
+    } else {
+      if (retained == -1) {
+        const double m = 1 - g / g1;
+        g0 *= m > 0 ? m : 0.5;
+      }
+      x1 = x;
+      g1 = g;
+      retained = -1;
+    }
+  }
+  if (best_duration < 0) best_duration = via_peak(start, best, dyn).duration;
+  return Root{best, best_duration, iterations};
 }
 
 }  // namespace
@@ -206,7 +347,7 @@ double PositionProfile::distance_via_peak(const MotionState& start, double peak,
                                           const ProfileLimits& limits) noexcept {
   Dynamics dyn{};
   if (!make_dynamics(limits, dyn)) return 0.0;
-  return techobjects::distance_via_peak(start, peak, 0.0, dyn);
+  return via_peak(start, peak, dyn).distance;
 }
 
 bool PositionProfile::plan(const MotionState& start, double target_position,
@@ -217,9 +358,12 @@ bool PositionProfile::plan(const MotionState& start, double target_position,
   if (!finite(start.position) || !finite(start.velocity) || !finite(start.acceleration)) return false;
   if (!finite(target_position)) return false;
 
+  // Every time-optimal profile to rest has the form start -> peak (a = 0 there) -> cruise -> 0, each change
+  // time-optimal (the template of the jerk-limited positioning profile, spec 01 §8.7). The planner chooses
+  // the peak: ±vmax with a cruise when the distance needs one, else the fastest peak f(peak) = D.
   const double vmax = limits.velocity;
   const double distance = target_position - start.position;
-  auto f = [&](double peak) noexcept { return techobjects::distance_via_peak(start, peak, 0.0, dyn); };
+  auto f = [&](double peak) noexcept { return via_peak(start, peak, dyn); };
 
   // Velocity where a0 has been ramped out: start -> peak rises for peak above it and falls below it. f(peak)
   // is increasing on [max(v_stop, 0), vmax] and on [-vmax, min(v_stop, 0)]; in between (two changes in the
@@ -227,104 +371,42 @@ bool PositionProfile::plan(const MotionState& start, double target_position,
   const double v_stop =
       dyn.jerk > 0 ? start.velocity + start.acceleration * std::abs(start.acceleration) / (2 * dyn.jerk)
                    : start.velocity;
-  const double f_top = f(vmax);
-  const double f_bottom = f(-vmax);
+  const ViaPeak top = f(vmax);
+  const ViaPeak bottom = distance >= top.distance ? top : f(-vmax);  // not needed for a cruise at +vmax
   double peak = 0;
   double cruise = 0;
   int iterations = 0;
-  if (distance >= f_top) {
+  if (distance >= top.distance) {
     peak = vmax;
-    cruise = (distance - f_top) / vmax;
-  } else if (distance <= f_bottom) {
+    cruise = (distance - top.distance) / vmax;
+  } else if (distance <= bottom.distance) {
     peak = -vmax;
-    cruise = (f_bottom - distance) / vmax;
+    cruise = (bottom.distance - distance) / vmax;
   } else {
     // Breakpoints -vmax ≤ low ≤ high ≤ vmax, one of low/high is 0. f is continuous, f(-vmax) < D < f(vmax):
-    // one of the three intervals brackets D. Prefer the monotonic interval on the side the target lies
-    // (beyond the stopping point: a higher peak is faster), then the middle, then the other side.
+    // at least one of the three intervals brackets D; a root in each that does is a candidate (at most 3
+    // root searches), the fastest wins (a reversal against the motion can beat braking to a lower peak).
     const double low = std::clamp(std::min(v_stop, 0.0), -vmax, vmax);
     const double high = std::clamp(std::max(v_stop, 0.0), -vmax, vmax);
-    const double f_low = f(low);
-    const double f_high = f(high);
-    const double f_zero = low == 0.0 ? f_low : f_high;
-    struct Interval {
-      double x0, x1, f0, f1;
-    };
-    const Interval up{high, vmax, f_high, f_top};
-    const Interval middle{low, high, f_low, f_high};
-    const Interval down{-vmax, low, f_bottom, f_low};
-    const std::array<Interval, 3> order = distance >= f_zero ? std::array<Interval, 3>{up, middle, down}
-                                                             : std::array<Interval, 3>{down, middle, up};
-    Interval bracket = order[0];
-    for (const Interval& candidate : order) {
-      if (std::min(candidate.f0, candidate.f1) <= distance &&
-          distance <= std::max(candidate.f0, candidate.f1)) {
-        bracket = candidate;
-        break;
-      }
-    }
-    // Bracketed root search in u = peak·|peak|: the distance grows roughly with peak² (v²/2a), so in u it is
-    // nearly linear and secant steps converge in a few iterations even when the root sits close to one end of
-    // a wide bracket. Anderson–Björck regula falsi; a bisection step whenever the last two steps neither
-    // halved the bracket nor divided the residual by 4, so the bracket shrinks whatever the shape of f (kinks
-    // where a plateau starts to be reached, the non-monotonic middle interval). Fixed iteration bound.
-    auto to_u = [](double v) noexcept { return v * std::abs(v); };
-    auto to_peak = [](double u) noexcept { return std::copysign(std::sqrt(std::abs(u)), u); };
-    double x0 = to_u(bracket.x0), x1 = to_u(bracket.x1);
-    double g0 = bracket.f0 - distance, g1 = bracket.f1 - distance;
-    double best = std::abs(g0) <= std::abs(g1) ? bracket.x0 : bracket.x1;
-    double best_g = std::min(std::abs(g0), std::abs(g1));
+    const double f_low = f(low).distance;
+    const double f_high = high == low ? f_low : f(high).distance;
+    const std::array<Bracket, 3> brackets{Bracket{high, vmax, f_high, top.distance},
+                                          Bracket{low, high, f_low, f_high},
+                                          Bracket{-vmax, low, bottom.distance, f_low}};
     // f is evaluated to ~1e-16 of the motion; asking for more only burns iterations (the end error is
     // required below 1e-9 relative).
     const double tolerance = 1e-12 * (std::abs(distance) + std::abs(f_low) + std::abs(f_high)) + 1e-300;
-    const double eps = std::numeric_limits<double>::epsilon();
-    double width_before = INFINITY, width_before2 = INFINITY;  // bracket width 1 and 2 steps ago
-    double best_before = INFINITY, best_before2 = INFINITY;    // residual 1 and 2 steps ago
-    int retained = 0;  // which end was kept last time (-1: x0, +1: x1)
-    while (best_g > tolerance && std::abs(x1 - x0) > 4 * eps * std::max(std::abs(x0), std::abs(x1)) &&
-           iterations < kMaxPositionIterations) {
-      ++iterations;
-      const double width = std::abs(x1 - x0);
-      double x = 0.5 * (x0 + x1);
-      const bool progressing = width <= 0.5 * width_before2 || best_g <= 0.25 * best_before2;
-      if (progressing && g1 != g0) {
-        // Anchored at the end with the smaller residual: near convergence the step is tiny and would be lost
-        // in rounding if computed from the far end.
-        const double secant =
-            std::abs(g1) < std::abs(g0) ? x1 - g1 * (x1 - x0) / (g1 - g0) : x0 - g0 * (x1 - x0) / (g1 - g0);
-        if (secant > std::min(x0, x1) && secant < std::max(x0, x1)) x = secant;
-      }
-      width_before2 = width_before;
-      width_before = progressing ? width : INFINITY;  // a bisection restarts the progress window
-      best_before2 = best_before;
-      best_before = progressing ? best_g : INFINITY;
-      if (!(x > std::min(x0, x1) && x < std::max(x0, x1))) break;  // bracket exhausted in floating point
-      const double peak_x = to_peak(x);
-      const double g = f(peak_x) - distance;
-      if (std::abs(g) < best_g) {
-        best_g = std::abs(g);
-        best = peak_x;
-      }
-      // Anderson–Björck: scale the retained end's residual by 1 - g/g_replaced (0.5 if that is not positive).
-      if ((g < 0) == (g0 < 0)) {
-        if (retained == 1) {
-          const double m = 1 - g / g0;
-          g1 *= m > 0 ? m : 0.5;
-        }
-        x0 = x;
-        g0 = g;
-        retained = 1;
-      } else {
-        if (retained == -1) {
-          const double m = 1 - g / g1;
-          g0 *= m > 0 ? m : 0.5;
-        }
-        x1 = x;
-        g1 = g;
-        retained = -1;
+    double fastest = INFINITY;
+    for (const Bracket& bracket : brackets) {
+      if (!bracket.contains(distance) || bracket.x0 == bracket.x1) continue;
+      const Root root = solve_peak(start, dyn, bracket, distance, tolerance);
+      iterations = std::max(iterations, root.iterations);
+      if (root.duration < fastest) {
+        fastest = root.duration;
+        peak = root.peak;
       }
     }
-    peak = best;
+    if (fastest == INFINITY) peak = std::abs(f_low - distance) <= std::abs(f_high - distance) ? low : high;
   }
 
   ProfileBuilder b(&profile_, start);
@@ -339,20 +421,11 @@ bool PositionProfile::plan(const MotionState& start, double target_position,
   return true;
 }
 
-double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept {
-  if (!(jerk > 0.0) || a0 == 0.0) return jerk;
-  const double inf = std::numeric_limits<double>::infinity();
-  double needed = 0.0;
-  if (a0 * v0 >= 0.0) {
-    const double margin = v_limit - std::fabs(v0);
-    needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : inf;
-  } else if (to_standstill) {
-    needed = a0 * a0 / (2.0 * std::fabs(v0));
-  } else {
-    needed = a0 * a0 / (2.0 * (v_limit + std::fabs(v0)));
-  }
-  if (needed <= jerk) return jerk;
-  return std::isfinite(needed) ? needed : 0.0;
+double replanning_jerk(double v0, double a0, double jerk, bool to_standstill) noexcept {
+  // Decision R1 only: the job's jerk otherwise, whatever the velocity does on the way (decision S4).
+  if (!(jerk > 0.0) || !to_standstill || a0 * v0 >= 0.0) return jerk;
+  const double needed = a0 * a0 / (2.0 * std::fabs(v0));
+  return needed > jerk ? needed : jerk;
 }
 
 }  // namespace tomc::techobjects

@@ -408,7 +408,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   if (abort_acceleration) start.acceleration = 0.0;
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, target == 0.0);
   VelocityProfile planned;
   if (planned.plan(start, target, l)) {
     profile_ = planned;
@@ -419,10 +419,9 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 }
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
-  ProfileLimits l = limits;
-  l.jerk = replanning_jerk(setpoint_.velocity, setpoint_.acceleration, l.jerk, velocity_limit(), false);
+  // The job's jerk, whatever the start state (seed 004 §6.7.7, decision S4).
   PositionProfile planned;
-  if (planned.plan(setpoint_, target, l)) {
+  if (planned.plan(setpoint_, target, limits)) {
     profile_ = planned;
     profile_time_ = 0.0;
     profile_offset_ = 0.0;

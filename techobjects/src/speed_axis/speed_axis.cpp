@@ -122,9 +122,9 @@ void SpeedAxis::plan_velocity(double target, const ProfileLimits& limits, bool a
   if (abort_acceleration) start.acceleration = 0.0;  // MC_Halt/MC_Stop.AbortAcceleration (spec 03 §4.4)
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
-  // A jerk-limited replan carries the velocity on by a0²/(2j) before the acceleration is gone: the velocity
-  // limit wins over the job's jerk (docs/decisions.md S4), and a ramp to standstill does not reverse (R1).
-  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, velocity_limit(), target == 0.0);
+  // A jerk-limited replan carries the velocity on by a0²/(2j) before the acceleration is gone, through the
+  // job's jerk (seed 004 §6.7.7, docs/decisions.md S4); a ramp to standstill does not reverse (R1).
+  l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, target == 0.0);
   if (profile_.plan(start, target, l)) {
     profile_time_ = 0.0;
     generator_active_ = true;

@@ -6,6 +6,28 @@
 
 namespace tomc::techobjects {
 
+namespace {
+
+// The jerk for a synchronization step from (v0, a0): raised to what keeps |v| within v_limit, outward
+// (a0·v0 >= 0: |v0| + a0²/(2j)) and after a zero crossing (a0·v0 < 0: a0²/(2j) − |v0| on the other side);
+// 0 (no jerk limitation) when |v0| is at or beyond the limit already; R1 for a step to standstill.
+double synchronization_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept {
+  if (!(jerk > 0.0) || a0 == 0.0) return jerk;
+  if (a0 * v0 < 0.0 && to_standstill) return replanning_jerk(v0, a0, jerk, true);
+  const double inf = std::numeric_limits<double>::infinity();
+  double needed = 0.0;
+  if (a0 * v0 >= 0.0) {
+    const double margin = v_limit - std::fabs(v0);
+    needed = margin > 0.0 ? a0 * a0 / (2.0 * margin) : inf;
+  } else {
+    needed = a0 * a0 / (2.0 * (v_limit + std::fabs(v0)));
+  }
+  if (needed <= jerk) return jerk;
+  return std::isfinite(needed) ? needed : 0.0;
+}
+
+}  // namespace
+
 SynchronizationStep synchronization_step(const MotionState& f, double vT, double aT, const ProfileLimits& l,
                                          double T) noexcept {
   SynchronizationStep s;
@@ -18,11 +40,12 @@ SynchronizationStep synchronization_step(const MotionState& f, double vT, double
   }
   // A start acceleration that pushes |v| outward makes |v| overshoot by a0²/(2j) before the jerk can turn it
   // (a follower leaving synchronous travel keeps the leader's acceleration, spec 07 §2.1 "the current
-  // dynamics are blended into the new job"). As for every replanned job of the axis (profiles.hpp, decision
-  // S4), the jerk is raised so that the overshoot stays within the velocity limit (MC_GearIn: MaxVelocity,
-  // spec 07 §6.8), or dropped (trapezoid) when |v| is beyond it already.
+  // dynamics are blended into the new job"). Unlike a replacing job of the axis (decision S4, which keeps the
+  // job's jerk), a synchronization has its speed limited (spec 07 §2.1, §6.8): the jerk is raised so that the
+  // overshoot stays within the velocity limit (MC_GearIn: MaxVelocity), or dropped (trapezoid) when |v| is
+  // beyond it already; a step to standstill does not reverse (R1).
   const double v_limit = l.velocity > 0.0 ? l.velocity : std::numeric_limits<double>::infinity();
-  const double jerk = replanning_jerk(f.velocity, f.acceleration, l.jerk, v_limit, vT == 0.0);
+  const double jerk = synchronization_jerk(f.velocity, f.acceleration, l.jerk, v_limit, vT == 0.0);
   if (jerk > 0.0) {
     // Jerk-limited: the time-optimal velocity profile to vT from the present state, one cycle of it (the
     // profile brings the acceleration to 0 exactly at vT, never exceeding the jerk).

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "profile_reference.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
 
 namespace {
@@ -22,8 +23,10 @@ using tomc::techobjects::VelocityProfile;
 
 #ifdef TOMC_SANITIZED_BUILD
 constexpr int kRandomCases = 30'000;  // per planner; ASan+UBSan at -O0 (~4 s)
+constexpr int kOptimalityCases = 6;   // brute-force references (one per category)
 #else
 constexpr int kRandomCases = 60'000;  // per planner: 120 000 random cases in all
+constexpr int kOptimalityCases = 24;
 #endif
 
 // ---------------------------------------------------------------------------------------------------------
@@ -154,14 +157,19 @@ TEST(VelocityProfileTest, ReversalWithoutJerkStepsAtZero) {
   EXPECT_EQ(profile.at(3.0).acceleration, 2.0);
 }
 
-// Through zero with jerk: braking to standstill with a = 0 there, then accelerating (profiles.hpp).
-TEST(VelocityProfileTest, ReversalWithJerkPassesZeroWithoutAcceleration) {
+// Through zero with jerk (issue 23, time-optimal; before: braking to v = a = 0 first, 5.25 s): the
+// deceleration limit 3 while |v| shrinks, a = min(acc, dec) = 2 at v = 0, the acceleration limit 2 after.
+// Half 1: 0 -> 3 in 0.75 s, hold 3 for (6 - (2·9 - 4)/8)/3 = 17/12 s, 3 -> 2 in 0.25 s: v = 0 at 29/12 s.
+// Half 2: hold 2 for (4 - (8 - 4)/8)/2 = 1.75 s, 2 -> 0 in 0.5 s: 56/12 s in all.
+TEST(VelocityProfileTest, ReversalWithJerkCrossesZeroAccelerating) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan({0.0, -6.0, 0.0}, 4.0, {10.0, 2.0, 3.0, 4.0}));
-  const double t_zero = 6.0 / 3.0 + 3.0 / 4.0;
+  const double t_zero = 29.0 / 12.0;
+  EXPECT_NEAR(profile.at(1.0).acceleration, 3.0, 1e-12);
   EXPECT_NEAR(profile.at(t_zero).velocity, 0.0, 1e-12);
-  EXPECT_NEAR(profile.at(t_zero).acceleration, 0.0, 1e-12);
-  EXPECT_NEAR(profile.duration(), t_zero + 4.0 / 2.0 + 2.0 / 4.0, 1e-12);
+  EXPECT_NEAR(profile.at(t_zero).acceleration, 2.0, 1e-12);
+  EXPECT_NEAR(profile.at(3.0).acceleration, 2.0, 1e-12);
+  EXPECT_NEAR(profile.duration(), 56.0 / 12.0, 1e-12);
 }
 
 TEST(VelocityProfileTest, TargetClampedToVelocityLimit) {
@@ -238,6 +246,152 @@ TEST(PositionProfileTest, StartAboveVelocityLimit) {
   EXPECT_NEAR(profile.at(2.0).velocity, 10.0, 1e-12);
   EXPECT_NEAR(profile.at(1.0).velocity, 15.0, 1e-12);
   EXPECT_NEAR(profile.duration(), 2.0 + (1000.0 - 30.0 - 10.0) / 10.0 + 2.0, 1e-12);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Job replacement, seed 004 §6.7.7 (spec 01 §8.8): A1 MC_MoveVelocity accelerating at a = 100 from v = 15,
+// replaced by A2/A3/A4 (Velocity 0, Deceleration 100) with a low jerk, a high jerk and no jerk. "Tramite lo
+// strappo, l'accelerazione viene trasferita lentamente [A2] / velocemente [A3] alla decelerazione
+// dell'ordine sostitutivo"; A4: "la decelerazione dell'ordine sostitutivo è immediatamente attiva".
+// ---------------------------------------------------------------------------------------------------------
+
+constexpr MotionState kA1State{0.0, 15.0, 100.0};
+
+// A2, j = 200: a0 carries v on by a0²/(2j) = 25 to 40 at t = a0/j = 0.5 s; the deceleration peak ap
+// follows from (2ap² − a0²)/(2j) = 15 (the ramp 100 -> −ap -> 0 loses v0): ap = sqrt(8000) = 89.44 < 100.
+// Duration (100 + ap)/j + ap/j = 1.3944 s. The job's jerk throughout, never more.
+TEST(JobReplacementSeed677, A2LowJerkCarriesTheAccelerationOverSlowly) {
+  VelocityProfile profile;
+  ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 200.0}));
+  const double ap = std::sqrt(8000.0);
+  EXPECT_NEAR(profile.at(0.25).acceleration, 50.0, 1e-12);
+  EXPECT_NEAR(profile.at(0.25).velocity, 15.0 + (100.0 * 100.0 - 50.0 * 50.0) / 400.0, 1e-12);  // 33.75
+  EXPECT_NEAR(profile.at(0.5).velocity, 40.0, 1e-12);
+  EXPECT_NEAR(profile.at(0.5).acceleration, 0.0, 1e-12);
+  EXPECT_NEAR(profile.at((100.0 + ap) / 200.0).acceleration, -ap, 1e-9);
+  EXPECT_NEAR(profile.duration(), (100.0 + 2 * ap) / 200.0, 1e-12);
+  for (const ProfileSegment& s : profile.segments())
+    EXPECT_LE(std::abs(s.jerk), 200.0);
+}
+
+// A3, j = 5000: 100 -> -100 in 0.04 s (v: 15 -> 16 -> 15), hold -100 for 0.14 s, ramp out in 0.02 s: 0.2 s.
+TEST(JobReplacementSeed677, A3HighJerkCarriesTheAccelerationOverQuickly) {
+  VelocityProfile profile;
+  ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 5000.0}));
+  EXPECT_NEAR(profile.at(0.02).velocity, 16.0, 1e-12);
+  EXPECT_NEAR(profile.at(0.04).acceleration, -100.0, 1e-9);
+  EXPECT_NEAR(profile.at(0.04).velocity, 15.0, 1e-9);
+  EXPECT_NEAR(profile.at(0.1).velocity, 9.0, 1e-9);
+  EXPECT_NEAR(profile.duration(), 0.2, 1e-12);
+  for (const ProfileSegment& s : profile.segments())
+    EXPECT_LE(std::abs(s.jerk), 5000.0);
+}
+
+// A4 without jerk limitation: -100 at once, standstill after 15/100 = 0.15 s.
+TEST(JobReplacementSeed677, A4WithoutJerkDeceleratesAtOnce) {
+  VelocityProfile profile;
+  ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 0.0}));
+  EXPECT_EQ(profile.at(0.0).acceleration, -100.0);
+  EXPECT_NEAR(profile.at(0.05).velocity, 10.0, 1e-12);
+  EXPECT_NEAR(profile.duration(), 0.15, 1e-12);
+}
+
+// Decision S4 (re-decided from §6.7.7): the job's jerk is kept also when a0²/(2j) carries the velocity past
+// the limit (A2 above with a velocity limit of 30: v still peaks at 40, the manual's "movimento imprevisto"),
+// for a position job too; before, the jerk was raised to a0²/(2(30 − 15)) = 333.3.
+TEST(JobReplacementSeed677, TheJobsJerkIsKeptPastTheVelocityLimit) {
+  VelocityProfile velocity;
+  ASSERT_TRUE(velocity.plan(kA1State, 0.0, {30.0, 100.0, 100.0, 200.0}));
+  EXPECT_NEAR(velocity.at(0.5).velocity, 40.0, 1e-12);
+  PositionProfile position;
+  ASSERT_TRUE(position.plan(kA1State, 1000.0, {30.0, 100.0, 100.0, 200.0}));
+  EXPECT_NEAR(position.at(0.5).velocity, 40.0, 1e-12);
+  EXPECT_NEAR(position.at(0.5).acceleration, 0.0, 1e-12);
+  for (const ProfileSegment& s : position.segments())
+    EXPECT_LE(std::abs(s.jerk), 200.0);
+  // Back to the limit: from (40, 0) down to 30, peak deceleration sqrt(j·10) = 44.7 < 100: 2·sqrt(10/j) s.
+  EXPECT_NEAR(position.at(0.5 + 2 * std::sqrt(10.0 / 200.0)).velocity, 30.0, 1e-9);
+  EXPECT_EQ(position.at(position.duration()).position, 1000.0);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Closed form of each positioning profile class with jerk (issue 23): rest to rest, moving toward, moving
+// away, over the velocity limit, over the acceleration limit, reversal. Hand-derived phase durations.
+// ---------------------------------------------------------------------------------------------------------
+
+// Rest to rest, neither plateau nor cruise: four ramps of t, D = 2·j·t³: D = 1, j = 4: t = 0.5, T = 2.
+TEST(PositionProfileClassTest, RestToRestFourRamps) {
+  PositionProfile profile;
+  ASSERT_TRUE(profile.plan({0.0, 0.0, 0.0}, 1.0, {10.0, 5.0, 5.0, 4.0}));
+  EXPECT_NEAR(profile.duration(), 2.0, 1e-9);
+  EXPECT_NEAR(profile.at(1.0).velocity, 1.0, 1e-9);
+  EXPECT_NEAR(profile.at(0.5).acceleration, 2.0, 1e-9);
+}
+
+// Cruise classes, hand-derived phases (a = d = 2, j = 4, v = 4; a change of 2 takes 1 + 0.5 s, 4 -> 0 takes
+// 2.5 s over 5):
+//  * moving toward at v0 = 2: 2 -> 4 in 1.5 s over 4.5, cruise (20 − 9.5)/4 = 2.625 s;
+//  * over the velocity limit, v0 = 6: 6 -> 4 in 1.5 s over 7.5, cruise (30 − 12.5)/4 = 4.375 s.
+TEST(PositionProfileClassTest, MovingTowardAndOverTheVelocityLimit) {
+  struct Row {
+    double v0, target, duration, first_change_distance;
+  };
+  for (const Row& row : {Row{2.0, 20.0, 1.5 + 2.625 + 2.5, 4.5}, Row{6.0, 30.0, 1.5 + 4.375 + 2.5, 7.5}}) {
+    PositionProfile profile;
+    ASSERT_TRUE(profile.plan({0.0, row.v0, 0.0}, row.target, {4.0, 2.0, 2.0, 4.0}));
+    EXPECT_NEAR(profile.duration(), row.duration, 1e-12) << "v0 " << row.v0;
+    EXPECT_NEAR(profile.at(1.5).position, row.first_change_distance, 1e-12) << "v0 " << row.v0;
+  }
+}
+
+// Moving away at v0 = −1 to a target 10 ahead (a = d = 2, j = 4): one S-curve −1 -> 2 crossing v = 0 with
+// a = 2 (0.5 s ramp, 1 s at 2, 0.5 s ramp: 2 s over (−1 + 2)/2·2 = 1), 2 -> 0 in 1.5 s over 1.5, cruise
+// (10 − 2.5)/2 = 3.75 s. Braking to v = a = 0 first (before issue 23) took 0.5 s longer.
+TEST(PositionProfileClassTest, MovingAwayCrossesZeroAccelerating) {
+  PositionProfile profile;
+  ASSERT_TRUE(profile.plan({0.0, -1.0, 0.0}, 10.0, {2.0, 2.0, 2.0, 4.0}));
+  EXPECT_NEAR(profile.duration(), 2.0 + 3.75 + 1.5, 1e-12);
+  EXPECT_NEAR(profile.at(0.75).velocity, 0.0, 1e-12);
+  EXPECT_NEAR(profile.at(0.75).acceleration, 2.0, 1e-12);
+  EXPECT_NEAR(profile.at(2.0).position, 1.0, 1e-12);
+}
+
+// Over the acceleration limit, a0 = 3 > 2 at rest: 3 -> 2 in 0.25 s (v 0.625, p 1/12), 2 held for
+// (4 − 9/8)/2 = 1.4375 s (v 3.5), ramp out in 0.5 s (v 4): p = 1/12 + 2.96484375 + 23/12 = 4.96484375;
+// 4 -> 0 in 2.5 s over 5; cruise (20 − 9.96484375)/4.
+TEST(PositionProfileClassTest, OverTheAccelerationLimit) {
+  PositionProfile profile;
+  ASSERT_TRUE(profile.plan({0.0, 0.0, 3.0}, 20.0, {4.0, 2.0, 2.0, 4.0}));
+  EXPECT_NEAR(profile.at(0.25).acceleration, 2.0, 1e-12);
+  EXPECT_NEAR(profile.at(2.1875).velocity, 4.0, 1e-12);
+  EXPECT_NEAR(profile.at(2.1875).position, 4.96484375, 1e-12);
+  EXPECT_NEAR(profile.duration(), 2.1875 + (20.0 - 9.96484375) / 4.0 + 2.5, 1e-12);
+}
+
+// Reversal: v0 = 1, target 10 behind, a = 2, d = 3, j = 4. 1 -> −2 through zero: braking at up to d, the
+// crossing at min(a, d) = 2: peak sqrt((2j·1 + 2²)/2) = sqrt(6) < 3, ramps sqrt(6)/4 and (sqrt(6) − 2)/4;
+// then 2 held for (2 − (8 − 4)/8)/2 = 0.75 s and ramped out in 0.5 s. −2 -> 0: d²/j = 9/4 > 2, so no
+// plateau: 2·sqrt(2/j) s over 2·sqrt(2/j).
+TEST(PositionProfileClassTest, ReversalCrossesZeroAtTheSmallerLimit) {
+  PositionProfile profile;
+  ASSERT_TRUE(profile.plan({0.0, 1.0, 0.0}, -10.0, {2.0, 2.0, 3.0, 4.0}));
+  const double ap = std::sqrt(6.0);
+  const double t_up = ap / 4, t_down = (ap - 2) / 4, t_zero = t_up + t_down;
+  EXPECT_NEAR(profile.at(t_zero).velocity, 0.0, 1e-12);
+  EXPECT_NEAR(profile.at(t_zero).acceleration, -2.0, 1e-12);
+  // Position of the first change, phase by phase: p += v·t + a·t²/2 + j·t³/6.
+  double p = 0, v = 1, a = 0;
+  for (const auto& [t, j] :
+       {std::pair{t_up, -4.0}, std::pair{t_down, 4.0}, std::pair{0.75, 0.0}, std::pair{0.5, 4.0}}) {
+    p += v * t + a * t * t / 2 + j * t * t * t / 6;
+    v += a * t + j * t * t / 2;
+    a += j * t;
+  }
+  const double t_change = t_zero + 1.25;
+  EXPECT_NEAR(v, -2.0, 1e-12);
+  EXPECT_NEAR(profile.at(t_change).position, p, 1e-12);
+  const double t_brake = 2 * std::sqrt(2.0 / 4.0), s_brake = 2.0 * t_brake / 2;
+  EXPECT_NEAR(profile.duration(), t_change + (10.0 + p - s_brake) / 2.0 + t_brake, 1e-12);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -511,6 +665,59 @@ TEST(PositionProfileTest, DistanceIsNotMonotonicBetweenZeroAndStopVelocityWithJe
   const double f5 = PositionProfile::distance_via_peak(start, 5.0, limits);
   EXPECT_NEAR(f0, f5, 1e-12);
   EXPECT_GT(f_mid, f0 + 0.1);
+}
+
+// Issue 23: the planner is never slower than a brute-force search over the phase durations of the
+// positioning template (tests/support/profile_reference.hpp) on small random cases in the six start
+// categories (rest to rest, moving toward, moving away, over the velocity limit, over the acceleration limit,
+// reversal), asymmetric limits included.
+TEST(PositionProfileRandomTest, NeverLongerThanTheBruteForceReference) {
+  Random r(0x70C0'0023);
+  double worst_gap = -INFINITY;  // (planner − reference) / reference: ≤ 0 means the planner is as fast
+  double best_gap = INFINITY;
+  for (int i = 0; i < kOptimalityCases; ++i) {
+    ProfileLimits l;
+    l.velocity = r.uniform(0.5, 2.0);
+    l.acceleration = r.uniform(0.5, 2.0);
+    l.deceleration = r.chance(0.3) ? l.acceleration : r.uniform(0.5, 2.0);
+    l.jerk = r.uniform(1.0, 8.0);
+    const double a_both = std::min(l.acceleration, l.deceleration);
+    MotionState start{0.0, r.uniform(0.0, 1.0) * l.velocity, r.uniform(-1.0, 1.0) * a_both};
+    double distance = r.uniform(0.05, 3.0);
+    switch (i % 6) {
+      case 0:
+        start.velocity = start.acceleration = 0;
+        break;  // rest to rest
+      case 1:
+        break;  // moving toward
+      case 2:
+        start.velocity = -start.velocity;
+        break;  // moving away
+      case 3:
+        start.velocity = r.uniform(1.05, 1.5) * l.velocity;
+        break;  // over the velocity limit
+      case 4:
+        start.acceleration = r.uniform(1.05, 2.0) * l.acceleration;
+        break;  // over the acceleration limit
+      default:
+        distance = -distance;
+        break;  // reversal (target behind)
+    }
+    PositionProfile profile;
+    ASSERT_TRUE(profile.plan(start, distance, l));
+    const double reference = tomc::testing::ProfileReference(start, distance, l).solve(8, 24);
+    ASSERT_TRUE(std::isfinite(reference)) << "case " << i;
+    const double gap = (profile.duration() - reference) / reference;
+    worst_gap = std::max(worst_gap, gap);
+    best_gap = std::min(best_gap, gap);
+    // (the reference admits limits exceeded by 1e-9 relative, so it may be that much shorter)
+    ASSERT_LE(profile.duration(), reference * (1 + 1e-8))
+        << "case " << i << " v0=" << start.velocity << " a0=" << start.acceleration << " D=" << distance
+        << " limits v=" << l.velocity << " a=" << l.acceleration << " d=" << l.deceleration
+        << " j=" << l.jerk;
+  }
+  std::printf("position planner against the brute-force reference: duration gap %.3g ... %.3g\n", best_gap,
+              worst_gap);
 }
 
 }  // namespace

@@ -13,9 +13,10 @@
 //  P2 spec 02 §6.1, spec 03 §3.5  every Done of a positioning job comes with |ActualPosition − target| <=
 //                     PositioningMonitoring.Window (on the modulo circle for the rotary axis);
 //  P3 spec 01 §8.3, §8.5  |setpoint velocity| <= min(DynamicLimits.MaxVelocity, DynamicLimits.Velocity),
-//                     also under Override up to 200 % and right after a jerk-limited replan (the overshoot
-//                     a0²/(2j) of profiles.hpp "Start states outside the limits" may pass the job's velocity,
-//                     never the limit: decision S4);
+//                     also under Override up to 200 %; beyond it only while an outward acceleration is being
+//                     taken back (|a| shrinking): a jerk-limited replan carries a0 over "tramite lo strappo"
+//                     and the velocity on by a0²/(2j) (seed 004 §6.7.7, decision S4 as re-decided in issue
+//                     23; before, the jerk was raised and the limit was never passed);
 //  P4 spec 01 §8.3, §8.9  |setpoint acceleration| <= MaxAcceleration while |v| grows and MaxDeceleration
 //                     while it shrinks; EmergencyDeceleration while an emergency ramp is in force (MC_Stop
 //                     Mode 0, alarm reaction 3, MC_Power StopMode 0) and while a later plan brings that
@@ -155,18 +156,19 @@ struct Tracked {
 };
 
 struct Stats {
-  long done_checked = 0;         // P2 checks made
-  long done_after_homing = 0;    // Done of a job whose coordinate system changed under it (not checked)
-  long limited_cycles = 0;       // P1: cycles with a homed, monitored, generated setpoint
-  long rebased_cycles = 0;       // P1 not checked: homed during motion, not yet at standstill
-  long enabled_in_motion = 0;    // P5: enabled while the axis moved (braked onto the enable position)
-  long fe_alarms_in_motion = 0;  // 521 raised while doing so
-  long moving_cycles = 0;        // generated setpoint with v != 0
-  long controlled_cycles = 0;    // P5 checks made
-  long limit_stops = 0;          // 533 raised by the look-ahead
-  long emergency_cycles = 0;     // cycles braking beyond MaxDeceleration under an emergency ramp
-  long replans = 0;              // positioning jobs replacing a moving one (BufferMode 0)
-  long modulo_turns = 0;         // modulo cycle counter changes
+  long done_checked = 0;           // P2 checks made
+  long done_after_homing = 0;      // Done of a job whose coordinate system changed under it (not checked)
+  long limited_cycles = 0;         // P1: cycles with a homed, monitored, generated setpoint
+  long rebased_cycles = 0;         // P1 not checked: homed during motion, not yet at standstill
+  long enabled_in_motion = 0;      // P5: enabled while the axis moved (braked onto the enable position)
+  long fe_alarms_in_motion = 0;    // 521 raised while doing so
+  long moving_cycles = 0;          // generated setpoint with v != 0
+  long controlled_cycles = 0;      // P5 checks made
+  long limit_stops = 0;            // 533 raised by the look-ahead
+  long emergency_cycles = 0;       // cycles braking beyond MaxDeceleration under an emergency ramp
+  long replans = 0;                // positioning jobs replacing a moving one (BufferMode 0)
+  long beyond_velocity_limit = 0;  // P3: cycles past the limit while an outward acceleration is taken back
+  long modulo_turns = 0;           // modulo cycle counter changes
   double worst_window = 0, worst_fe_ratio = 0, worst_velocity_ratio = 0, worst_acceleration_ratio = 0;
 };
 
@@ -516,7 +518,14 @@ class Run {
       if (now.velocity != 0.0) ++stats_.moving_cycles;
       // P3 (spec 01 §8.3, §8.5).
       stats_.worst_velocity_ratio = std::max(stats_.worst_velocity_ratio, std::fabs(now.velocity) / v_limit);
-      EXPECT_LE(std::fabs(now.velocity), v_limit * (1 + 1e-9)) << where() << ": |v| above the limit";
+      if (std::fabs(now.velocity) > v_limit * (1 + 1e-9)) {
+        const bool taken_back =
+            now.acceleration * now.velocity <= 0.0 ||
+            (prev_.generated && std::fabs(now.acceleration) < std::fabs(prev_.acceleration));
+        EXPECT_TRUE(taken_back) << where() << ": |v| " << std::fabs(now.velocity) << " above the limit, a "
+                                << now.acceleration << " not being taken back";
+        ++stats_.beyond_velocity_limit;
+      }
     }
 
     // P4 (spec 01 §8.3, §8.9): the setpoint acceleration, and the velocity change per cycle.
@@ -607,12 +616,14 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
   const Stats& st = run.stats();
   std::printf(
       "seed %u, %s: %ld Done checked (%ld after homing), worst |x - target| %.4g; %ld limited cycles (%ld "
-      "after homing in motion), %ld limit stops; %ld replans; worst |v|/limit %.6f; worst |a|/bound "
+      "after homing in motion), %ld limit stops; %ld replans; worst |v|/limit %.6f (%ld cycles beyond); "
+      "worst |a|/bound "
       "%.4f (%ld cycles above the normal limit); worst FE/permitted %.3f (%ld enables in motion, %ld with "
       "521); %ld modulo turns\n",
       seed, s.name.c_str(), st.done_checked, st.done_after_homing, st.worst_window, st.limited_cycles,
-      st.rebased_cycles, st.limit_stops, st.replans, st.worst_velocity_ratio, st.worst_acceleration_ratio,
-      st.emergency_cycles, st.worst_fe_ratio, st.enabled_in_motion, st.fe_alarms_in_motion, st.modulo_turns);
+      st.rebased_cycles, st.limit_stops, st.replans, st.worst_velocity_ratio, st.beyond_velocity_limit,
+      st.worst_acceleration_ratio, st.emergency_cycles, st.worst_fe_ratio, st.enabled_in_motion,
+      st.fe_alarms_in_motion, st.modulo_turns);
   total.done_checked += st.done_checked;
   total.limited_cycles += st.limited_cycles;
   total.limit_stops += st.limit_stops;

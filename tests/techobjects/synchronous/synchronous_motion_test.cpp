@@ -59,8 +59,9 @@ TEST(SynchronousMotion, BrakingThroughStandstillAcceleratesWithTheAccelerationLi
 }
 
 // spec 07 §6.8 (MC_GearIn synchronization: MaxVelocity) with a jerk limit and a start state from synchronous
-// travel whose acceleration pushes |v| outward (found by gearing_property_test): the jerk is raised as for a
-// replanned job (decision S4) so that |v| stays within the limit; a |v| beyond it already does not grow.
+// travel whose acceleration pushes |v| outward (found by gearing_property_test): the speed of a
+// synchronization is limited (spec 07 §2.1), so the jerk is raised (unlike a replacing job, decision S4) and
+// |v| stays within the limit; a |v| beyond it already does not grow.
 TEST(SynchronousMotion, JerkLimitedStartFromSynchronousTravelKeepsTheVelocityLimit) {
   const ProfileLimits limits{600.0, 8000.0, 10000.0, 1.0e6};
   MotionState f{0.0, -569.656828, -23896.207};

@@ -9,13 +9,11 @@
 // Treatment of v = 0 crossings:
 //  * jerk = 0: the acceleration steps at v = 0 from the deceleration limit to the acceleration limit
 //    (time-optimal; at the instant v = 0 both values are admissible).
-//  * jerk > 0: the acceleration is continuous, so whatever value it has at v = 0 must be admissible on both
-//    sides. A velocity change through zero is planned as "brake to v = 0 reaching a = 0 there" followed by
-//    "accelerate from standstill", i.e. a = 0 exactly at the crossing. Only when that is impossible (the
-//    current acceleration already carries the axis through zero: v0·a0 < 0 and |v0| < a0²/(2j)) does the
-//    crossing happen with a ≠ 0; the plateau is then min(acceleration, deceleration) so it is admissible on
-//    both sides. (The split costs up to about min(acc, dec)/jerk against a two-plateau optimum; documented
-//    limitation.)
+//  * jerk > 0: the acceleration is continuous, so its value a_c at v = 0 must be admissible on both sides:
+//    a_c ≤ min(acceleration, deceleration). A velocity change through zero keeps a as high as the limits let
+//    it: deceleration limit while |v| shrinks, a_c as high as min(..) and the two halves allow, acceleration
+//    limit after (time-optimal; the crossing happens with a ≠ 0). Only when the current acceleration forces
+//    a_c above min(..) (a0 ramped back at once still crosses above it) is a0 ramped back to min(..) and held.
 // Start states outside the limits (spec 01 §8.8, job replacement): an initial |a0| above the applicable limit
 // is brought back with the jerk (never increased); an initial a0 that pushes |v| outward makes |v| overshoot
 // by a0²/(2j) before it can turn — physically unavoidable with a jerk limit. With jerk 0, a0 is irrelevant
@@ -54,8 +52,9 @@ struct ProfileSegment {
 
 // Worst case: a velocity change through zero (2 × 3 segments) + cruise + braking (3) = 10.
 inline constexpr std::size_t kMaxProfileSegments = 12;
-// Fixed bound of the PositionProfile root search (bracketed Anderson–Björck with bisection fallback); the
-// randomized tests and the benchmark see at most ~12.
+// Fixed bound of one PositionProfile root search (bracketed Anderson–Björck with bisection fallback); a plan
+// runs at most 3 of them (decision S18), so at most 4 + 3 × 101 evaluations of a closed-form velocity
+// change and stop. The randomized tests and the benchmark see at most ~12 iterations per search.
 inline constexpr int kMaxPositionIterations = 100;
 
 // The segment storage shared by both planners.
@@ -97,7 +96,8 @@ class VelocityProfile {
 // MC_MoveAbsolute / MC_MoveRelative: rest at the target.
 class PositionProfile {
  public:
-  // From any state (any v0 incl. above limits.velocity or away from the target, any a0) to rest at target.
+  // From any state (any v0 incl. above limits.velocity or away from the target, any a0) to rest at target,
+  // time-optimal within the positioning template start -> peak (a = 0) -> cruise -> 0 (issue 23, S18).
   // Returns false for invalid input (as VelocityProfile, and limits.velocity <= 0 or not finite).
   bool plan(const MotionState& start, double target_position, const ProfileLimits& limits) noexcept;
   MotionState at(double t) const noexcept { return profile_.at(t); }  // beyond duration(): rest at target
@@ -105,7 +105,8 @@ class PositionProfile {
   std::span<const ProfileSegment> segments() const noexcept { return profile_.segments(); }
   // Position error of the closed-form end state before it was snapped to the target (for tests).
   double end_error() const noexcept { return end_error_; }
-  // Peak (or cruise) velocity the plan settled on, and the root-search iterations it took (<= the bound).
+  // Peak (or cruise) velocity the plan settled on, and the iterations of its longest root search (<= the
+  // bound).
   double peak_velocity() const noexcept { return peak_velocity_; }
   int iterations() const noexcept { return iterations_; }
 
@@ -121,14 +122,12 @@ class PositionProfile {
   int iterations_ = 0;
 };
 
-// The jerk to plan a replacing profile with (spec 01 §8.8: the acceleration a0 moves to the new job's through
-// the new job's jerk j, changing the velocity by a0²/(2j) on the way). Two things win over the job's jerk:
-//  * decision S4: |v| stays within v_limit, outward (a0·v0 >= 0: |v0| + a0²/(2j)) and after a zero crossing
-//    (a0·v0 < 0: a0²/(2j) − |v0| on the other side);
-//  * decision R1: a ramp to standstill (to_standstill: MC_Halt, MC_Stop, stop reactions, override 0 %) never
-//    reverses: if a0 already carries v through zero, the jerk becomes a0²/(2|v0|) so that v and a reach 0
-//    together.
-// Returns the raised jerk (0 = none: the acceleration steps) or `jerk` unchanged (also for jerk 0).
-double replanning_jerk(double v0, double a0, double jerk, double v_limit, bool to_standstill) noexcept;
+// The jerk to plan a replacing profile with. Seed 004 §6.7.7 (spec 01 §8.8): the acceleration a0 moves to the
+// new job's "tramite lo strappo" — through the new job's jerk j, changing the velocity by a0²/(2j) on the
+// way, also past the velocity limit (decision S4: the manual's "movimento imprevisto"; the job's jerk is
+// kept). One exception, decision R1: a ramp to standstill (to_standstill: MC_Halt, MC_Stop, stop reactions,
+// override 0 %) never reverses: if a0 already carries v through zero, the jerk becomes a0²/(2|v0|) so that v
+// and a reach 0 together. Returns that raised jerk or `jerk` unchanged (also for jerk 0).
+double replanning_jerk(double v0, double a0, double jerk, bool to_standstill) noexcept;
 
 }  // namespace tomc::techobjects
