@@ -61,6 +61,7 @@ class SimulatedDrive final : public DriveAdapter {
   double load_speed() const noexcept;  // load units per second
   MachineInputs machine_inputs() const noexcept;
   const SimulatedDriveParameters& parameters() const noexcept { return p_; }
+  const MotorLoad& mechanics() const noexcept { return mechanics_; }
 
  private:
   struct EncoderState {
