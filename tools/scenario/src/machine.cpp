@@ -55,7 +55,8 @@ void drive_like_axis(const to::PositioningAxisData& d, drives::SimulatedDrivePar
 // The simulated servo amplifier of an analog drive: the simulated drive's motor, load and machine; its
 // encoder counts ×4 what the TO's encoder 1 counts per revolution (StepsPerRevolution ·
 // 2^FineResolutionXist1).
-drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive) {
+// Without an enable output the amplifier's enable input is not wired: it runs whenever it is ready.
+drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive, bool enable_output) {
   const auto& p = drive.parameters;
   const auto& a = *drive.analog;
   drives::io::SimulatedServoAmplifierParameters amp;
@@ -65,6 +66,7 @@ drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettin
                                                     : p.reference_speed_rpm / a.volts_at_reference;
   amp.input_offset_volts = a.amplifier_offset_volts;
   amp.ready_delay_s = a.ready_delay_s;
+  amp.enable_wired = enable_output;
   amp.encoder_shaft = p.encoder1.shaft;
   const double counts =
       telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1);
@@ -370,7 +372,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
-          analog_amplifier(drive), analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+          analog_amplifier(drive, itf.EnableDriveOutput), analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
       entry.mechanics = &owned->amplifier().mechanics();
       entry.analog_drive = owned.get();
       io = &runtime.add_device(std::move(owned));
