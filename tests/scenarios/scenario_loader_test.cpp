@@ -152,8 +152,7 @@ TEST(ScenarioDrive, AnalogAdapter) {
                   .empty());
   EXPECT_EQ(
       problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")),
-      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (leave it "
-      "out or write 3)");
+      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3)");
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "analog": {}})")),
             "technology_objects[0].drive.analog: only with \"adapter\": \"analog\"");
   EXPECT_EQ(
@@ -536,7 +535,7 @@ TEST(ScenarioLoader, FaultEvents) {
             "timeline[1].inject.fault: missing");
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
             "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
-            "link_loss, technology_alarm, fixed_stop_break");
+            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault");
   EXPECT_EQ(problem_of(with_event(
                 R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
             "timeline[1].inject.code: 0 out of range 1..4294967295");

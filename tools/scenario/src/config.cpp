@@ -397,10 +397,8 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
   // The analog actor is a telegram-3 drive to the TO (spec 01 §3.12: the S7 puts it behind the same
   // interface), with its encoder on the card's counter.
   if (settings.analog && settings.telegram != 0 && settings.telegram != 3) {
-    problems.add(r.path_of("telegram"),
-                 std::to_string(settings.telegram) +
-                     ": the analog actor is a telegram-3 drive to the TO (leave it out "
-                     "or write 3)");
+    problems.add(r.path_of("telegram"), std::to_string(settings.telegram) +
+                                            ": the analog actor is a telegram-3 drive to the TO (write 3)");
   }
   if (settings.analog && (settings.supplementary_telegram != 0 || settings.encoder_telegram != 0)) {
     problems.add(r.path(), "the analog actor has no telegram 750 and reads its encoder from the counter");
