@@ -1,15 +1,18 @@
 // Cost of one application cycle per simulated drive (issue 3): the runtime with N simulated PROFIdrive
 // drives, each driven by a small speed-commanding technology object through a DriveConnection; and the
-// simulated drive alone (setpoint in, one model cycle, actual frames out).
+// simulated drive alone (setpoint in, one model cycle, actual frames out); the analog actor on its simulated
+// amplifier and the PID regulator (issue 20).
 #include <benchmark/benchmark.h>
 
 #include <memory>
 #include <vector>
 
 #include "../tests/support/speed_command_object.hpp"
+#include "tomc/drives/simulated_analog_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
+#include "tomc/techobjects/position/pid_regulator.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
 
@@ -38,10 +41,11 @@ void BM_ApplicationCycle(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_SimulatedDriveCycle(benchmark::State& state) {
-  drives::DeviceConfig device;
-  device.drive_telegram = static_cast<std::uint16_t>(state.range(0));
-  drives::SimulatedDrive drive(device, drives::SimulatedDriveParameters{});
+// One drive cycle as the TO's drive connection sees it: setpoint frame in, one cycle of the drive, actual
+// frames out (STW1 0x047E/0x047F to S4 first, then a constant speed setpoint).
+template <class Drive>
+void run_drive_cycle(benchmark::State& state, Drive& drive) {
+  const drives::DeviceConfig device = drive.config();
   auto setpoint = drives::make_frames(device, telegrams::Direction::kSetpoint);
   auto actual = drives::make_frames(device, telegrams::Direction::kActual);
   const auto codec =
@@ -63,6 +67,42 @@ void BM_SimulatedDriveCycle(benchmark::State& state) {
     (void)codec.encode(sp, setpoint[drives::Slot::kDrive].view());
     drive.write_setpoint(setpoint);
     benchmark::DoNotOptimize(drive.read_actual(actual));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_SimulatedDriveCycle(benchmark::State& state) {
+  drives::DeviceConfig device;
+  device.drive_telegram = static_cast<std::uint16_t>(state.range(0));
+  drives::SimulatedDrive drive(device, drives::SimulatedDriveParameters{});
+  run_drive_cycle(state, drive);
+}
+
+// The analog actor on its simulated servo amplifier (issue 20), with enable output and ready input.
+void BM_AnalogDriveCycle(benchmark::State& state) {
+  drives::io::SimulatedServoAmplifierParameters amplifier;
+  drives::AnalogDriveParameters actor;
+  actor.enable_output = amplifier.enable_input;
+  actor.ready_input = amplifier.ready_output;
+  actor.counts_per_revolution = 4.0 * amplifier.counter.lines_per_revolution;
+  drives::SimulatedAnalogDrive drive(amplifier, actor);
+  run_drive_cycle(state, drive);
+}
+
+// The PID option of the position controller (issue 20): one update with P, I (clamped) and D.
+void BM_PidRegulatorUpdate(benchmark::State& state) {
+  techobjects::PidGains gains;
+  gains.IntegralTime = 0.1;
+  gains.DerivativeTime = 0.002;
+  gains.DerivativeCycles = 4;
+  gains.IntegralLimit = 50.0;
+  gains.OutputLimit = 500.0;
+  techobjects::PidRegulator pid;
+  (void)pid.configure(gains, 0.001);
+  double e = 0.0;
+  for (auto _ : state) {
+    e = e > 1.0 ? -1.0 : e + 0.001;
+    benchmark::DoNotOptimize(pid.update(e));
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -109,3 +149,5 @@ void BM_SpeedAxisCycle(benchmark::State& state) {
 BENCHMARK(BM_SpeedAxisCycle)->Arg(1)->Arg(16)->Arg(256);
 BENCHMARK(BM_ApplicationCycle)->Arg(1)->Arg(16)->Arg(256)->Arg(4096);
 BENCHMARK(BM_SimulatedDriveCycle)->Arg(1)->Arg(3)->Arg(105)->Arg(106);
+BENCHMARK(BM_AnalogDriveCycle);
+BENCHMARK(BM_PidRegulatorUpdate);

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "tomc/telegrams/layout.hpp"
 #include "tomc/telegrams/normalisation.hpp"
@@ -18,13 +17,6 @@ using Reaction = SimulatedDriveParameters::FaultReaction;
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double rpm_to_rad_s(double rpm) {
-  return rpm * kTwoPi / 60.0;
-}
-constexpr double rad_s_to_rpm(double w) {
-  return w * 60.0 / kTwoPi;
-}
 constexpr bool bit(std::uint16_t w, unsigned n) {
   return ((w >> n) & 1u) != 0;
 }
@@ -48,7 +40,7 @@ double counts_per_revolution(const SimulatedEncoderParameters& e) {
 }  // namespace
 
 SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveParameters& parameters)
-    : config_(config), p_(parameters) {
+    : config_(config), p_(parameters), mechanics_(p_) {
   if (p_.substeps == 0) p_.substeps = 1;
   for (std::size_t i = 0; i < kSlotCount; ++i) {
     const auto t = config_.telegram(static_cast<Slot>(i));
@@ -77,9 +69,7 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
   r_.dsc = has_dsc(config_.drive_telegram);
   r_.supplementary = config_.supplementary_telegram == 750;
   r_.ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;
-  r_.inertia = p_.motor_inertia_kgm2 + p_.load_inertia_kgm2 / (r_.ratio * r_.ratio);
   r_.dt = p_.servo_cycle_s / static_cast<double>(p_.substeps);
-  r_.lag = 1.0 - std::exp(-r_.dt / p_.speed_loop_time_constant_s);
   for (int i = 0; i < 2; ++i) {
     const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
     r_.xist1_scale[static_cast<std::size_t>(i)] =
@@ -97,11 +87,6 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
         1.0 / counts_per_revolution(p_.encoder1) *
         (p_.encoder1.shaft == SimulatedEncoderParameters::Shaft::kLoad ? r_.ratio : 1.0);
   }
-  load_position_ = p_.initial_load_position;
-  const double half_gap = std::max(0.0, 0.5 * p_.backlash);
-  gap_ = std::clamp(p_.initial_backlash_offset, -half_gap, half_gap);
-  motor_revolutions_ = (load_position_ + gap_) / p_.load_units_per_revolution *
-                       (p_.gear_motor_revolutions / p_.gear_load_revolutions);
   power_cycle();
 }
 
@@ -121,9 +106,9 @@ void SimulatedDrive::write_setpoint(const DeviceFrames& setpoint) noexcept {
 bool SimulatedDrive::read_actual(DeviceFrames& actual) noexcept {
   apply_setpoints();
   update_state_machine();
-  const double previous_load = load_position_;
-  const double previous_motor = motor_revolutions_;
-  motor_revolutions_at_sample_ = motor_revolutions_;
+  const double previous_load = mechanics_.load_position();
+  const double previous_motor = mechanics_.motor_revolutions();
+  motor_revolutions_at_sample_ = previous_motor;
   cycle_speed_setpoint_rpm_ = speed_setpoint_rpm();
   cycle_torque_limit_positive_ = torque_limit_positive();
   cycle_torque_limit_negative_ = torque_limit_negative();
@@ -268,7 +253,7 @@ void SimulatedDrive::update_state_machine() noexcept {
     }
   }
   if (!cyclic_data_) return;
-  const bool standstill = std::fabs(rad_s_to_rpm(omega_)) < p_.standstill_threshold_rpm;
+  const bool standstill = std::fabs(mechanics_.motor_speed_rpm()) < p_.standstill_threshold_rpm;
   tg::DriveState next = tg::next_drive_state(state_, effective, standstill);
   // A present fault inhibits switching on: the drive ends in S1 once its fault reaction is complete.
   if (fault_code_ != 0 && (next == tg::DriveState::kS2ReadyForSwitchingOn ||
@@ -277,7 +262,7 @@ void SimulatedDrive::update_state_machine() noexcept {
   }
   // Entering a ramp stop starts the ramp-function generator at the present speed.
   if ((next == tg::DriveState::kS5aRampStop || next == tg::DriveState::kS5bQuickStop) && next != state_) {
-    ramp_setpoint_rpm_ = rad_s_to_rpm(omega_);
+    ramp_setpoint_rpm_ = mechanics_.motor_speed_rpm();
   }
   state_ = next;
   pulses_enabled_ = state_ == tg::DriveState::kS4Operation || state_ == tg::DriveState::kS5aRampStop ||
@@ -319,18 +304,8 @@ double SimulatedDrive::torque_limit_negative() const noexcept {
 // Motor and load
 
 void SimulatedDrive::integrate(double dt) noexcept {
-  const double ratio = r_.ratio;  // motor rev per load rev
-  // With backlash the motor drives the load only in contact and moving into it; inside the gap it turns
-  // alone.
-  const double half_gap = 0.5 * p_.backlash;
-  const double drive_direction = omega_ != 0.0 ? omega_ : cycle_speed_setpoint_rpm_;
-  const bool coupled = half_gap <= 0.0 || (gap_ >= half_gap && drive_direction > 0.0) ||
-                       (gap_ <= -half_gap && drive_direction < 0.0);
-  const double inertia = coupled ? r_.inertia : p_.motor_inertia_kgm2;
-
   if (config_.drive_telegram == 0) {  // encoder-only device: the shaft moves as told
-    load_position_ += external_speed_ * dt;
-    motor_revolutions_ = load_position_ / p_.load_units_per_revolution * ratio;
+    mechanics_.move_externally(external_speed_, dt);
     return;
   }
 
@@ -342,7 +317,7 @@ void SimulatedDrive::integrate(double dt) noexcept {
     if (r_.dsc && drive_sp_.KPC != 0 && encoders_[0].present) {
       const double error_motor_revolutions =
           static_cast<double>(drive_sp_.XERR) * r_.dsc_counts_to_motor_revolutions;
-      const double moved = motor_revolutions_ - motor_revolutions_at_sample_;
+      const double moved = mechanics_.motor_revolutions() - motor_revolutions_at_sample_;
       reference_rpm += tg::kv_from_kpc(drive_sp_.KPC) * (error_motor_revolutions - moved) * 60.0;
     }
   } else if (state_ == tg::DriveState::kS5aRampStop || state_ == tg::DriveState::kS5bQuickStop) {
@@ -353,113 +328,27 @@ void SimulatedDrive::integrate(double dt) noexcept {
                                                   : std::min(0.0, ramp_setpoint_rpm_ + step);
     reference_rpm = ramp_setpoint_rpm_;
   }
-  reference_rpm = std::clamp(reference_rpm, -p_.max_speed_rpm, p_.max_speed_rpm);
-  const double reference = rpm_to_rad_s(reference_rpm);
-
-  // Friction at the motor shaft: viscous + Coulomb; static friction holds a shaft at rest.
-  const double moving_threshold = 1e-6;
-  const double coulomb =
-      std::fabs(omega_) > moving_threshold ? std::copysign(p_.coulomb_friction_nm, omega_) : 0.0;
-  const double friction = p_.viscous_friction_nm_per_rad_s * omega_ + coulomb;
-
-  double torque = 0.0;
-  if (pulses_enabled_) {
-    // Closed speed loop = first-order lag with time constant T (exact discretisation), friction compensated;
-    // the additional torque of telegram 750 (M_ADD1) is added to the demand.
-    const double lag = r_.lag;
-    const double accel_demand = (reference - omega_) * lag / dt;
-    double demand = inertia * accel_demand + friction;
-    // Break-away: at rest the friction to overcome acts against the reference (none with a zero reference).
-    if (std::fabs(omega_) <= moving_threshold && reference != 0.0) {
-      demand += std::copysign(p_.coulomb_friction_nm, reference);
-    }
-    if (config_.supplementary_telegram == 750)
-      demand += tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
-    if (blocked_) {
-      // At a fixed stop the speed controller's integral winds up until the torque limit (spec: torque rises).
-      stall_integral_ +=
-          inertia * reference / p_.speed_loop_time_constant_s * dt / p_.speed_loop_time_constant_s;
-      // Anti-windup: the integral grows only until the torque reaches the active limit (p1520/MOMRED/750), so
-      // the drive leaves the stop as soon as the speed setpoint reverses.
-      stall_integral_ = std::clamp(stall_integral_, std::min(0.0, cycle_torque_limit_negative_ - demand),
-                                   std::max(0.0, cycle_torque_limit_positive_ - demand));
-      demand += stall_integral_;
-    } else {
-      stall_integral_ = 0.0;
-    }
-    torque = std::clamp(demand, cycle_torque_limit_negative_, cycle_torque_limit_positive_);
-  }
-  torque_ = torque;
-
-  double omega_next = omega_;
-  if (std::fabs(omega_) <= moving_threshold && std::fabs(torque) <= p_.coulomb_friction_nm) {
-    omega_next = 0.0;  // static friction holds
-  } else {
-    // Breaking away from rest, the Coulomb friction opposes the starting motion (the direction of the
-    // torque).
-    const double acting_friction =
-        std::fabs(omega_) <= moving_threshold ? std::copysign(p_.coulomb_friction_nm, torque) : friction;
-    omega_next = omega_ + (torque - acting_friction) / inertia * dt;
-    if (!pulses_enabled_ && omega_ * omega_next < 0.0) omega_next = 0.0;  // friction alone never reverses
-  }
-  const double delta_motor_revolutions = 0.5 * (omega_ + omega_next) * dt / kTwoPi;
-  omega_ = omega_next;
-  motor_revolutions_ += delta_motor_revolutions;
-  const double motor_travel = delta_motor_revolutions / ratio * p_.load_units_per_revolution;
-  if (half_gap > 0.0) {
-    // Dead band (play): the load moves only by what the motor travels beyond the gap.
-    const double before = load_position_;
-    gap_ += motor_travel;
-    if (gap_ > half_gap) {
-      load_position_ += gap_ - half_gap;
-      gap_ = half_gap;
-    } else if (gap_ < -half_gap) {
-      load_position_ += gap_ + half_gap;
-      gap_ = -half_gap;
-    }
-    load_speed_ = (load_position_ - before) / dt;
-  } else {
-    load_position_ += motor_travel;
-  }
-
-  // Mechanical end stops: the load cannot pass; the motor shaft (rigid coupling) stops with it.
-  const auto& m = p_.machine;
-  blocked_ = false;
-  auto stop_at = [&](double stop) {
-    load_position_ = stop;
-    motor_revolutions_ = (stop + gap_) / p_.load_units_per_revolution * ratio;
-    omega_ = 0.0;
-    load_speed_ = 0.0;
-    blocked_ = true;
-  };
-  if (fixed_stops_broken_) return;
-  if (m.positive_fixed_stop && load_position_ >= *m.positive_fixed_stop && torque_ >= 0.0)
-    stop_at(*m.positive_fixed_stop);
-  if (m.negative_fixed_stop && load_position_ <= *m.negative_fixed_stop && torque_ <= 0.0)
-    stop_at(*m.negative_fixed_stop);
+  MotorLoadCommand command;
+  command.reference_rpm = std::clamp(reference_rpm, -p_.max_speed_rpm, p_.max_speed_rpm);
+  command.torque_enabled = pulses_enabled_;
+  command.torque_limit_positive = cycle_torque_limit_positive_;
+  command.torque_limit_negative = cycle_torque_limit_negative_;
+  if (config_.supplementary_telegram == 750)
+    command.additional_torque_nm = tg::n2_to_torque(supplementary_sp_.M_ADD1, p_.reference_torque_nm);
+  mechanics_.step(command, dt);
 }
 
 double SimulatedDrive::motor_speed_rpm() const noexcept {
-  return rad_s_to_rpm(omega_);
+  return mechanics_.motor_speed_rpm();
 }
 
 double SimulatedDrive::load_speed() const noexcept {
   if (config_.drive_telegram == 0) return external_speed_;
-  if (p_.backlash > 0.0) return load_speed_;
-  const double ratio = p_.gear_motor_revolutions / p_.gear_load_revolutions;
-  return omega_ / kTwoPi / ratio * p_.load_units_per_revolution;
+  return mechanics_.load_speed();
 }
 
 MachineInputs SimulatedDrive::machine_inputs() const noexcept {
-  const auto& m = p_.machine;
-  MachineInputs in;
-  in.negative_limit_switch = m.negative_limit_switch && load_position_ <= *m.negative_limit_switch;
-  in.positive_limit_switch = m.positive_limit_switch && load_position_ >= *m.positive_limit_switch;
-  in.reference_cam = m.reference_cam && m.reference_cam->contains(load_position_);
-  in.probe1 = m.probe1 && m.probe1->contains(load_position_);
-  in.probe2 = m.probe2 && m.probe2->contains(load_position_);
-  in.at_fixed_stop = blocked_;
-  return in;
+  return mechanics_.machine_inputs();
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -495,8 +384,8 @@ void SimulatedDrive::update_encoders(double previous_load_position,
     if (!encoders_[static_cast<std::size_t>(i)].present) continue;
     const auto& e = i == 0 ? p_.encoder1 : p_.encoder2;
     update_encoder(i, shaft_revolutions(e, previous_motor_revolutions, previous_load_position),
-                   shaft_revolutions(e, motor_revolutions_, load_position_), previous_load_position,
-                   load_position_);
+                   shaft_revolutions(e, mechanics_.motor_revolutions(), mechanics_.load_position()),
+                   previous_load_position, mechanics_.load_position());
   }
 }
 
@@ -652,7 +541,8 @@ void SimulatedDrive::power_cycle() noexcept {
     s.captured = 0;
     s.xist2 = 0;
     s.xist1_at_power_on = e.xist1_at_power_on;
-    s.revolutions_at_power_on = shaft_revolutions(e, motor_revolutions_, load_position_);
+    s.revolutions_at_power_on =
+        shaft_revolutions(e, mechanics_.motor_revolutions(), mechanics_.load_position());
   }
 }
 
@@ -661,7 +551,8 @@ void SimulatedDrive::power_cycle() noexcept {
 
 void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
   const bool fault = fault_code_ != 0;
-  const double speed_rpm = rad_s_to_rpm(omega_);
+  const double speed_rpm = mechanics_.motor_speed_rpm();
+  const double torque_nm = mechanics_.motor_torque_nm();
   for (std::size_t i = 0; i < kSlotCount; ++i) {
     const auto& codec = actual_codecs_[i];
     if (codec.frame_size() == 0) continue;
@@ -689,8 +580,8 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
                 state_ != tg::DriveState::kS5aRampStop && state_ != tg::DriveState::kS5bQuickStop);
       // Torque utilisation (r0033) is relative to the limit in force, MOMRED included (p2194 = 90 %).
       const double active_limit =
-          torque_ >= 0.0 ? cycle_torque_limit_positive_ : -cycle_torque_limit_negative_;
-      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_) < 0.9 * active_limit);
+          torque_nm >= 0.0 ? cycle_torque_limit_positive_ : -cycle_torque_limit_negative_;
+      meldw.set(tg::MeldwBit::kTorqueUtilisationBelowThreshold, std::fabs(torque_nm) < 0.9 * active_limit);
       meldw.set(tg::MeldwBit::kSpeedBelowStandstillThreshold,
                 std::fabs(speed_rpm) < p_.standstill_threshold_rpm);
       meldw.set(tg::MeldwBit::kSpeedAtOrBelowThreshold2, std::fabs(speed_rpm) <= p_.standstill_threshold_rpm);
@@ -703,14 +594,16 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       a.MELDW = meldw;
       a.G1_ZSW = tg::EncoderStatusWord{encoders_[0].status};
       if (encoders_[0].present)
-        a.G1_XIST1 = xist1_of(0, shaft_revolutions(p_.encoder1, motor_revolutions_, load_position_));
+        a.G1_XIST1 = xist1_of(
+            0, shaft_revolutions(p_.encoder1, mechanics_.motor_revolutions(), mechanics_.load_position()));
       a.G1_XIST2 = encoders_[0].xist2;
       a.G2_ZSW = tg::EncoderStatusWord{encoders_[1].status};
       if (encoders_[1].present)
-        a.G2_XIST1 = xist1_of(1, shaft_revolutions(p_.encoder2, motor_revolutions_, load_position_));
+        a.G2_XIST1 = xist1_of(
+            1, shaft_revolutions(p_.encoder2, mechanics_.motor_revolutions(), mechanics_.load_position()));
       a.G2_XIST2 = encoders_[1].xist2;
     } else if (slot == Slot::kSupplementary) {
-      a.M_ACT = tg::torque_to_n2(torque_, p_.reference_torque_nm);
+      a.M_ACT = tg::torque_to_n2(torque_nm, p_.reference_torque_nm);
     } else {
       const int e = encoder_index_of_slot(config_, slot);
       const auto& s = encoders_[static_cast<std::size_t>(e)];
@@ -723,7 +616,8 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       a.ZSW2_ENC = zsw2;
       const bool plc = sp.STW2_ENC.test(tg::Stw2EncBit::kControlByPlc);
       a.G1_ZSW = tg::EncoderStatusWord{plc ? s.status : static_cast<std::uint16_t>(s.status & 0x8000u)};
-      a.G1_XIST1 = xist1_of(e, shaft_revolutions(ep, motor_revolutions_, load_position_));
+      a.G1_XIST1 =
+          xist1_of(e, shaft_revolutions(ep, mechanics_.motor_revolutions(), mechanics_.load_position()));
       a.G1_XIST2 = plc ? s.xist2 : 0;  // no XIST2 without control by PLC (spec 06 §3.8)
       const double shaft_speed = ep.linear ? load_speed()
                                            : (ep.shaft == SimulatedEncoderParameters::Shaft::kMotor

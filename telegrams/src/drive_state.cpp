@@ -122,7 +122,10 @@ std::uint16_t zsw1_for(DriveState state, std::uint16_t stw1, bool cyclic_data, b
 }
 
 std::uint16_t Stw1Sequencer::next(std::uint16_t zsw1, DriveRequest request) noexcept {
-  // A fault acknowledge is one cycle of bit 7 with ON = 0 (TV26); it needs a 0 before it to be an edge.
+  // A fault acknowledge is one cycle of bit 7 with ON = 0 (TV26); it needs a 0 before it to be an edge. Only
+  // a drive that reports a fault (ZSW1.3) gets it: ON = 0 would switch a healthy drive off (OFF1) under an
+  // axis that stays enabled, e.g. on an MC_Reset for another TO's alarm (issue 22).
+  if (acknowledge_pending_ && decode_zsw1(zsw1).state != DriveState::kFault) acknowledge_pending_ = false;
   if (acknowledge_pending_ && !acknowledge_sent_last_) {
     acknowledge_pending_ = false;
     acknowledge_sent_last_ = true;

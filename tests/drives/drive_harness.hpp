@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/telegrams/codec.hpp"
@@ -51,12 +52,16 @@ inline double reflected_inertia(const SimulatedDriveParameters& p) {
   return p.motor_inertia_kgm2 + p.load_inertia_kgm2 / (i * i);
 }
 
-class Harness {
+// The harness around any DriveAdapter with state() and parameters().reference_speed_rpm: the simulated drive
+// (Harness) or the analog actor (analog_drive_test.cpp). `args` construct the drive.
+template <class Drive>
+class BasicHarness {
   DeviceConfig config_;  // first: initialised before the drive
 
  public:
-  Harness(const DeviceConfig& config, const SimulatedDriveParameters& parameters)
-      : config_(config), drive(config, parameters) {
+  template <class... Args>
+  explicit BasicHarness(const DeviceConfig& config, Args&&... args)
+      : config_(config), drive(std::forward<Args>(args)...) {
     EXPECT_EQ(validate(config), "");
     for (std::size_t i = 0; i < kSlotCount; ++i) {
       const auto t = config.telegram(static_cast<Slot>(i));
@@ -76,7 +81,7 @@ class Harness {
   }
 
   const DeviceConfig& config() const { return config_; }
-  const SimulatedDriveParameters& params() const { return drive.parameters(); }
+  const auto& params() const { return drive.parameters(); }
 
   // One servo cycle: write this cycle's setpoints, run the drive, decode its answer. Returns read_actual().
   bool cycle() {
@@ -139,7 +144,7 @@ class Harness {
   bool freeze_master = false;
   tg::SignOfLifeGenerator master;
 
-  SimulatedDrive drive;
+  Drive drive;
   tg::SetpointSignals drive_sp{};
   tg::SetpointSignals supplementary{};
   std::array<tg::SetpointSignals, 2> encoder{};
@@ -179,6 +184,12 @@ class Harness {
 
   std::array<tg::TelegramCodec, kSlotCount> setpoint_codecs_{};
   std::array<tg::TelegramCodec, kSlotCount> actual_codecs_{};
+};
+
+class Harness : public BasicHarness<SimulatedDrive> {
+ public:
+  Harness(const DeviceConfig& config, const SimulatedDriveParameters& parameters)
+      : BasicHarness(config, config, parameters) {}
 };
 
 }  // namespace tomc::drives::test

@@ -30,22 +30,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 }
 
 #ifdef TOMC_FUZZ_REPLAY
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-
-// Replays every file of the given directories (the seed corpus): exits 0 if none aborted.
-int main(int argc, char** argv) {
-  int files = 0;
-  for (int i = 1; i < argc; ++i) {
-    for (const auto& entry : std::filesystem::directory_iterator(argv[i])) {
-      std::ifstream in(entry.path(), std::ios::binary);
-      const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-      ++files;
-    }
-  }
-  std::printf("replayed %d inputs\n", files);
-  return files > 0 ? 0 : 1;
-}
+#include "replay_main.hpp"
 #endif

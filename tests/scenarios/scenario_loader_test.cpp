@@ -144,13 +144,41 @@ TEST(ScenarioConfig, LoaderWritesStartValues) {
 
 // ---- drive ----
 
+// The analog actor (docs/analog-drives.md) is a telegram-3 drive to the TO; its own keys live in "analog".
+TEST(ScenarioDrive, AnalogAdapter) {
+  EXPECT_TRUE(problems_of(with_drive(R"({"adapter": "analog", "telegram": 3,
+      "analog": {"volts_at_reference": 10, "overdrive_percent": 100, "dac_bits": 16, "dac_full_scale_volts": 10,
+                 "offset_volts": 0.01, "amplifier_offset_volts": -0.01, "ready_delay_s": 0}})"))
+                  .empty());
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")),
+      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "analog": {}})")),
+            "technology_objects[0].drive.analog: only with \"adapter\": \"analog\"");
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "analog": {"overdrive_percent": 120,
+      "dac_full_scale_volts": 10}})")),
+      "technology_objects[0].drive.analog: the overdrive range (12 V) exceeds the DAC's full scale (10 V)");
+  EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "analog": {"dac_bits": 20}})"))
+                .find("technology_objects[0].drive.analog.dac_bits: 20"),
+            std::string::npos);
+  Json d = base();
+  d["timeline"].push_back(
+      Json::parse(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "amplifier_fault"}})"));
+  EXPECT_EQ(problem_of(d), "timeline[1].inject.target: Axis1 has no analog drive (\"adapter\": \"analog\")");
+  d = base();
+  d["trace"] = Json::array({"Axis1.analog.output_volts"});
+  EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no analog drive");
+}
+
 TEST(ScenarioDrive, AdapterAndTelegram) {
   EXPECT_NE(problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
                 .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
                       "\"dds_gateway\""),
             std::string::npos);
-  EXPECT_NE(problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")).find("drive.adapter: 'analog'"),
-            std::string::npos);
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "stepper", "telegram": 3})")),
+            "technology_objects[0].drive.adapter: 'stepper' is not an adapter ('simulated', 'analog', or a "
+            "dds_gateway object)");
   EXPECT_EQ(problem_of(with_drive(R"({"adapter": "simulated"})")),
             "technology_objects[0].drive.telegram: missing");
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 81})")),
@@ -507,7 +535,7 @@ TEST(ScenarioLoader, FaultEvents) {
             "timeline[1].inject.fault: missing");
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
             "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
-            "link_loss, technology_alarm, fixed_stop_break");
+            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault");
   EXPECT_EQ(problem_of(with_event(
                 R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
             "timeline[1].inject.code: 0 out of range 1..4294967295");

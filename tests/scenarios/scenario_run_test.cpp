@@ -2,6 +2,8 @@
 // expectation check (docs/scenarios.md). The spec behaviour itself is tested by the *.json scenarios here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -199,6 +201,43 @@ TEST(ScenarioRun, VirtualAxisWithoutDrive) {
     "expect": [ { "cycle": 105, "values": { "m.InVelocity": true, "V.Velocity": 600 } } ] })");
   ASSERT_TRUE(s);
   EXPECT_TRUE(s->run(nullptr).ok());
+}
+
+// Determinism (issue 22): every scenario file of the repository (tests/scenarios, its open_issues, the
+// examples `tomc sim` runs) gives a byte-identical trace on a second run in the same process: time is the
+// cycle counter, never the wall clock, and nothing depends on addresses or on the order of a hash container.
+// A failure names the file and the first line that differs.
+TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  for (const char* dir : {"tests/scenarios", "tests/scenarios/open_issues"}) {
+    if (!fs::is_directory(fs::path(TOMC_SOURCE_DIR) / dir))
+      continue;  // open_issues/ only while there are some
+    for (const auto& entry : fs::directory_iterator(fs::path(TOMC_SOURCE_DIR) / dir)) {
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+    }
+  }
+  for (const char* example : {"speed_axis_conveyor.json", "positioning_machine.json", "gearing_machine.json"})
+    files.push_back(fs::path(TOMC_SOURCE_DIR) / "examples" / example);
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 50u);
+  auto trace_of = [](const fs::path& file) {
+    auto loaded = Scenario::load_file(file);
+    EXPECT_TRUE(loaded.scenario) << file << ": " << (loaded.problems.empty() ? "" : loaded.problems.front());
+    std::ostringstream trace;
+    if (loaded.scenario) (void)loaded.scenario->run(&trace);
+    return trace.str();
+  };
+  for (const auto& file : files) {
+    const std::string first = trace_of(file);
+    const std::string second = trace_of(file);
+    EXPECT_GT(first.size(), 0u) << file;
+    if (first == second) continue;
+    const auto at =
+        std::mismatch(first.begin(), first.end(), second.begin(), second.end()).first - first.begin();
+    const auto line = std::count(first.begin(), first.begin() + at, '\n') + 1;
+    ADD_FAILURE() << file << ": the traces differ from line " << line;
+  }
 }
 
 }  // namespace

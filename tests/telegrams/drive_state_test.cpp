@@ -352,6 +352,20 @@ TEST(Stw1Sequencer, AcknowledgeIsOneCycleEdgeAndCanBeRepeated) {
   EXPECT_EQ(sequencer.next(0x0248, DriveRequest::kOperate), 0x04FE);
 }
 
+// An acknowledge requested while the drive reports no fault (ZSW1.3 = 0) is dropped: its word has ON = 0
+// (0x04FE), which would be an OFF1 for a drive in operation (spec 06 §3.1 bit 0, §4.1 S4 -> S5a). An MC_Reset
+// for another alarm must not switch a healthy drive off (issue 22); a later fault is acknowledged as usual.
+TEST(Stw1Sequencer, AcknowledgeWithoutAFaultIsNotSent) {
+  Stw1Sequencer sequencer;
+  sequencer.request_acknowledge();
+  EXPECT_EQ(sequencer.next(0x0337, DriveRequest::kOperate), 0x047F);  // S4: stays in operation
+  EXPECT_EQ(sequencer.next(0x0337, DriveRequest::kOperate), 0x047F);
+  sequencer.request_acknowledge();
+  EXPECT_EQ(sequencer.next(0x0231, DriveRequest::kOperate), 0x047F);  // S2: switched on as requested
+  sequencer.request_acknowledge();
+  EXPECT_EQ(sequencer.next(0x0248, DriveRequest::kOperate), 0x04FE);  // fault: acknowledged
+}
+
 // spec 06 §4.3: switch on from power-up: S0 -> S1 -> S2 -> S3 -> S4.
 TEST(Stw1Sequencer, SwitchOnFromPowerUp) {
   SimulatedDrive drive;

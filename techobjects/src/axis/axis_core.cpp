@@ -239,8 +239,11 @@ std::optional<ProfileLimits> AxisCore::reaction_ramp(const ProfileLimits& curren
 // The drive
 
 void AxisCore::supervise_drive(const DriveConnection& drive) noexcept {
-  const bool held_off = this->held_off();
   const auto fault = drive.communication_fault();
+  // The hold-off covers a cause still present at the acknowledge; once the connection is healthy it ends, so
+  // that a new link or sign-of-life failure is raised in the cycle it is detected (issue 22).
+  if (fault == CommunicationFault::kNone) acknowledged_at_ = 0;
+  const bool held_off = this->held_off();
   // Drive fault: raised when it appears; raised again if it is still there after an acknowledge's hold-off.
   const bool drive_fault = fault == CommunicationFault::kDriveFault;
   if (drive_fault && (!drive_fault_seen_ || !held_off)) raise(kAlarmDriveFault);

@@ -269,6 +269,13 @@ constexpr auto kPositioningAxisVariables = std::to_array<VariableInfo>({
     TOMC_P_VARIABLE(PositionControl.ControlDifferenceQuantization.Value, kLreal, kRES, kConfiguration, 0.001,
                     k1e12, kAny, 0),
     TOMC_P_VARIABLE(PositionControl.VelocityModePowerOn, kDint, kRES, kConfiguration, 0.0, 1.0, kAny, 0),
+    // tomc extension (issue 20): PID position control (pid_regulator.hpp), DIR like Kv
+    TOMC_P_VARIABLE(PositionControl.Pid.IntegralTime, kLreal, kDIR, kConfiguration, 0.0, k1e12, kAny, 0),
+    TOMC_P_VARIABLE(PositionControl.Pid.DerivativeTime, kLreal, kDIR, kConfiguration, 0.0, k1e12, kAny, 0),
+    TOMC_P_VARIABLE(PositionControl.Pid.DerivativeCycles, kUdint, kDIR, kConfiguration, 1.0, 256.0, kAny, 0),
+    TOMC_P_VARIABLE(PositionControl.Pid.IntegralLimit, kLreal, kDIR, kConfiguration, 0.0, k1e12, kAny, 0),
+    TOMC_P_VARIABLE(PositionControl.Pid.DeadBand, kLreal, kDIR, kConfiguration, 0.0, k1e12, kAny, 0),
+    TOMC_P_VARIABLE(PositionControl.Pid.OutputLimit, kLreal, kDIR, kConfiguration, 0.0, k1e12, kAny, 0),
     // man. §10.3.22 TorquePreControl (spec 04 §3.21)
     TOMC_P_VARIABLE(TorquePreControl.Mode, kDint, kRES, kConfiguration, 0.0, 1.0, kAny, 0),
     TOMC_P_VARIABLE(TorquePreControl.Scale, kLreal, kDIR, kConfiguration, 0.0, 150.0, kAny, 0),

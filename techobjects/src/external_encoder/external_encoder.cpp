@@ -86,6 +86,11 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
   if (!communication && drive_.cycles_without_fresh_frame() > 0) {
     core_.raise(kAlarmDriveCommunication);
   }
+  // A failed ZSW2_ENC sign-of-life (spec 06 §5.2) makes the value invalid like a lost link: say so with the
+  // alarm the axes raise for it, instead of a silent StatusSensor.CommunicationOK = FALSE (issue 22).
+  if (connection_.communication_fault() == CommunicationFault::kSignOfLifeFailed) {
+    core_.raise(kAlarmDriveSignOfLife);
+  }
   valid_ = encoder_.valid() && communication;
   velocity_ = encoder_.chain().velocity();
   (void)standstill_.update(velocity_);

@@ -37,6 +37,19 @@ PositionControlConfigResult PositionController::configure(const PositionControlC
       !non_negative_finite(config.To) || !non_negative_finite(config.Tdc)) {
     return PositionControlConfigResult::kInvalidParameter;
   }
+  PidGains gains;
+  gains.Kv = config.Kv;
+  gains.IntegralTime = config.IntegralTime;
+  gains.DerivativeTime = config.DerivativeTime;
+  gains.DerivativeCycles = config.DerivativeCycles;
+  gains.IntegralLimit = config.IntegralLimit;
+  gains.DeadBand = config.DeadBand;
+  gains.OutputLimit = config.OutputLimit;
+  const bool pid_option = gains.IntegralTime != 0.0 || gains.DerivativeTime != 0.0 || gains.DeadBand != 0.0 ||
+                          gains.OutputLimit != 0.0;
+  if ((pid_option && config.EnableDSC) || !pid_.configure(gains, config.ServoCycle)) {
+    return PositionControlConfigResult::kInvalidParameter;
+  }
   config_ = config;
   const double ts = config.ServoCycle;
   kpc_ = std::min(config.Kpc, kMaxKpc) / 100.0;
@@ -55,6 +68,7 @@ PositionControlConfigResult PositionController::configure(const PositionControlC
 void PositionController::reset() noexcept {
   started_ = false;
   symmetry_state_ = 0.0;
+  pid_.reset();
 }
 
 PositionControlOutput PositionController::update(const PositionControlInput& in) noexcept {
@@ -83,7 +97,8 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
     out.dsc_position_error = e;
     out.dsc_kpc = config_.Kv;
   } else {
-    out.velocity_setpoint = precontrol + config_.Kv * e;
+    out.pid = pid_.update(e);
+    out.velocity_setpoint = precontrol + out.pid.output;
   }
   return out;
 }

@@ -20,6 +20,18 @@ namespace tg = tomc::telegrams;
 
 namespace {
 
+// PositionControl.Pid.* (tomc extension, issue 20) into the controller's configuration; velocities from the
+// velocity unit to the controller's units per second.
+void pid_config(const PositioningAxisData& db, double velocity_factor, PositionControlConfig& pc) {
+  const auto& pid = db.PositionControl.Pid;
+  pc.IntegralTime = pid.IntegralTime;
+  pc.DerivativeTime = pid.DerivativeTime;
+  pc.DerivativeCycles = pid.DerivativeCycles;
+  pc.IntegralLimit = pid.IntegralLimit / velocity_factor;
+  pc.DeadBand = pid.DeadBand;
+  pc.OutputLimit = pid.OutputLimit / velocity_factor;
+}
+
 bool finite(double x) {
   return std::isfinite(x);
 }
@@ -128,6 +140,7 @@ void PositioningAxis::configure_components() noexcept {
   pc.Ti = core_.communication_times.Ti;
   pc.To = core_.communication_times.To;
   pc.Tdc = core_.communication_times.Tdc;
+  pid_config(db_, units_.velocity, pc);
   if (auto* controller = this->controller()) (void)controller->configure(pc);
   configure_monitoring();
   configure_extrapolation();
@@ -585,6 +598,7 @@ void PositioningAxis::written(std::string_view path) noexcept {
       pc.Kpc = db_.PositionControl.Kpc;
       pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
       pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
+      pid_config(db_, units_.velocity, pc);
       (void)controller->configure(pc);
     }
   }

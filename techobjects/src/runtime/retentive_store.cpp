@@ -90,11 +90,15 @@ RetainFile read_retain_file(const std::filesystem::path& file) {
   }
   std::ostringstream whole;
   whole << in.rdbuf();
-  const std::string text = whole.str();
+  return parse_retain_file(whole.str(), file.string());
+}
+
+RetainFile parse_retain_file(std::string_view text, std::string_view source) {
+  RetainFile result;
   const auto corrupt = [&](std::size_t line, const std::string& why) {
     result.status = RetainFileStatus::kCorrupt;
     result.records.clear();
-    result.message = file.string() + ":" + std::to_string(line) + ": " + why;
+    result.message = std::string(source) + ":" + std::to_string(line) + ": " + why;
     return result;
   };
   // The checksum line is the last one; it covers every byte before it.
@@ -102,10 +106,10 @@ RetainFile read_retain_file(const std::filesystem::path& file) {
   if (last == std::string::npos || (last != 0 && text[last - 1] != '\n')) {
     return corrupt(1, "no checksum line (the file was cut short)");
   }
-  std::string checksum_line = text.substr(last + 9);
+  std::string checksum_line(text.substr(last + 9));
   while (!checksum_line.empty() && (checksum_line.back() == '\n' || checksum_line.back() == '\r'))
     checksum_line.pop_back();
-  const std::string body = text.substr(0, last);
+  const std::string body(text.substr(0, last));
   if (checksum_line != hex64(fnv1a(body)))
     return corrupt(1, "checksum mismatch (the file was altered or damaged)");
   std::istringstream lines(body);

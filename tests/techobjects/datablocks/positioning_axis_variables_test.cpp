@@ -232,6 +232,13 @@ std::vector<Expected> expected_positioning_axis() {
       {"PositionControl.ControlDifferenceQuantization.Value", kLreal, kRES, 0.001, 1.0E12, kConfiguration, 0,
        0.001},
       {"PositionControl.VelocityModePowerOn", kDint, kRES, 0, 1, kConfiguration, 0, 0},
+      // not in the manual: the PID option of issue 20 (a tomc extension, docs/analog-drives.md), all 0 = off
+      {"PositionControl.Pid.IntegralTime", kLreal, kDIR, 0.0, 1.0E12, kConfiguration, 0, 0.0},
+      {"PositionControl.Pid.DerivativeTime", kLreal, kDIR, 0.0, 1.0E12, kConfiguration, 0, 0.0},
+      {"PositionControl.Pid.DerivativeCycles", kUdint, kDIR, 1, 256, kConfiguration, 0, 1},
+      {"PositionControl.Pid.IntegralLimit", kLreal, kDIR, 0.0, 1.0E12, kConfiguration, 0, 0.0},
+      {"PositionControl.Pid.DeadBand", kLreal, kDIR, 0.0, 1.0E12, kConfiguration, 0, 0.0},
+      {"PositionControl.Pid.OutputLimit", kLreal, kDIR, 0.0, 1.0E12, kConfiguration, 0, 0.0},
       // spec 04 §3.21
       {"TorquePreControl.Mode", kDint, kRES, 0, 1, kConfiguration, 0, 0},
       {"TorquePreControl.Scale", kLreal, kDIR, 0.0, 150.0, kConfiguration, 0, 100.0},

@@ -145,6 +145,32 @@ TEST(ExternalEncoder, EncoderErrorRaisesTheSensorAlarmAndResetsHomed) {
   EXPECT_TRUE(m.power.Status);
 }
 
+// spec 06 §5.2 on ZSW2_ENC (telegram 83): a frozen encoder sign-of-life trips at the second wrong value, and
+// the external encoder says so with alarm 406 (as the axes do) instead of only dropping
+// StatusSensor.CommunicationOK; its value is invalid, the enable removed (reaction 10). Found by the
+// fault-matrix property (issue 22).
+TEST(ExternalEncoder, SignOfLifeFailureRaisesAnAlarm) {
+  EncoderMachine m(83);
+  m.power.Enable = true;
+  m.run(20);
+  ASSERT_TRUE(m.power.Status);
+  m.drive->freeze_sign_of_life(true);
+  m.run(1);  // first wrong value: error counter 10, tolerated
+  EXPECT_FALSE(m.encoder->alarms().pending(techobjects::kAlarmDriveSignOfLife));
+  m.run(1);  // second: 20 > 10
+  EXPECT_TRUE(m.encoder->alarms().pending(techobjects::kAlarmDriveSignOfLife));
+  EXPECT_FALSE(m.db().StatusSensor.CommunicationOK);
+  EXPECT_EQ(m.db().ErrorDetail.Reaction,
+            static_cast<std::int32_t>(techobjects::ExternalEncoderReaction::kRemoveEnable));
+  EXPECT_FALSE(m.encoder->leading_value(techobjects::LeadingValueCoupling::kActualValue).valid);
+  m.drive->freeze_sign_of_life(false);
+  m.reset.Execute = true;
+  m.run(30);
+  EXPECT_EQ(m.encoder->alarms().alarms().size(), 0u);
+  EXPECT_TRUE(m.db().StatusSensor.CommunicationOK);
+  EXPECT_TRUE(m.power.Status);
+}
+
 // Decision H11 (seed 004 §6.11: Adjusted = "encoder referenced"; only an absolute encoder keeps it): an
 // incremental encoder referenced by Mode 13 loses Adjusted with HomingDone when it reports an error.
 TEST(ExternalEncoder, EncoderErrorResetsAdjustedOfAnIncrementalEncoder) {

@@ -313,3 +313,69 @@ TEST(PositionControllerClosedLoop, PositioningMoveConvergesAndPositioningMonitor
 
 }  // namespace
 }  // namespace tomc::techobjects
+
+namespace tomc::techobjects {
+namespace {
+
+// ---- PID option (issue 20, pid_regulator.hpp) ----
+
+// Without precontrol on the speed-loop plant (2 ms lag, one cycle dead time), a ramp of 100 mm/s leaves
+// e = v/Kv with the S7's P controller; the integral of the PID option removes it (spec 05b A.2 "I removes the
+// steady error").
+TEST(PositionControllerPid, RampErrorVanishesWithIntegral) {
+  for (const double ti : {0.0, 0.1}) {
+    PositionControlConfig c;
+    c.Kv = 30.0;
+    c.Kpc = 0.0;
+    c.ServoCycle = 0.001;
+    c.IntegralTime = ti;
+    PositionController pc(c);
+    SpeedLoopPlant plant(0.002, 0.001, 1);
+    PositionControlOutput out;
+    for (int k = 0; k < 8000; ++k) {
+      out = pc.update(input(0.1 * k, 100.0, plant.position()));
+      plant.step(out.velocity_setpoint);
+    }
+    if (ti == 0.0) {
+      EXPECT_NEAR(out.control_difference, 100.0 / 30.0, 1e-3);
+      EXPECT_EQ(out.pid.i, 0.0);
+    } else {
+      EXPECT_NEAR(out.control_difference, 0.0, 1e-3);
+      EXPECT_NEAR(out.pid.i, 100.0, 1e-3);  // the integral carries the whole velocity
+    }
+  }
+}
+
+TEST(PositionControllerPid, RejectedWithDscOrInvalid) {
+  PositionControlConfig c;
+  c.IntegralTime = 0.1;
+  c.EnableDSC = true;
+  PositionController pc;
+  EXPECT_EQ(pc.configure(c), PositionControlConfigResult::kInvalidParameter);
+  c.EnableDSC = false;
+  c.DerivativeCycles = 0;
+  EXPECT_EQ(pc.configure(c), PositionControlConfigResult::kInvalidParameter);
+  c.DerivativeCycles = 4;
+  EXPECT_EQ(pc.configure(c), PositionControlConfigResult::kOk);
+}
+
+// FLdRP/FUpDRP: a loaded Kv acts from the update after apply_gains(), the integral is kept.
+TEST(PositionControllerPid, DoubleBufferedGainsKeepTheIntegral) {
+  PositionControlConfig c;
+  c.Kv = 10.0;
+  c.Kpc = 0.0;
+  c.IntegralTime = 0.01;
+  c.ServoCycle = 0.001;
+  PositionController pc(c);
+  for (int k = 0; k < 5; ++k)
+    (void)pc.update(input(1.0, 0.0, 0.0));  // e = 1: I grows by 1 per cycle
+  PidGains g = pc.active_gains();
+  g.Kv = 20.0;
+  ASSERT_TRUE(pc.load_gains(g));
+  EXPECT_DOUBLE_EQ(pc.update(input(1.0, 0.0, 0.0)).velocity_setpoint, 10.0 + 6.0);
+  pc.apply_gains();
+  EXPECT_DOUBLE_EQ(pc.update(input(1.0, 0.0, 0.0)).velocity_setpoint, 20.0 + 8.0);
+}
+
+}  // namespace
+}  // namespace tomc::techobjects

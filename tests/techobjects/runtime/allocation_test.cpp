@@ -10,6 +10,7 @@
 
 #include "counting_allocator.hpp"
 #include "speed_command_object.hpp"
+#include "tomc/drives/simulated_analog_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 
@@ -60,6 +61,37 @@ TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";
   EXPECT_EQ(user_cycles, static_cast<std::uint64_t>(kCycles));
   // The cycle did real work: every drive is in operation and moving.
+  for (auto* o : objects) {
+    EXPECT_TRUE(o->connection().in_operation());
+  }
+}
+
+// The analog actor on its simulated servo amplifier (issue 20): the hardware I/O layer, the counter
+// extension, the DAC quantisation and the ready-input supervision allocate nothing either.
+TEST(Allocation, AnalogDrivesRunWithoutAllocating) {
+  Runtime rt(RuntimeConfig{0.001, 1, 1});
+  std::vector<tomc::testing::SpeedCommandObject*> objects;
+  for (int i = 0; i < 4; ++i) {
+    tomc::drives::io::SimulatedServoAmplifierParameters amplifier;
+    tomc::drives::AnalogDriveParameters actor;
+    actor.counts_per_revolution = 4.0 * amplifier.counter.lines_per_revolution;
+    actor.counter_width_bits = amplifier.counter.width_bits = i % 2 == 0 ? 16 : 32;  // 16 bit: many wraps
+    if (i >= 2) {
+      actor.enable_output = amplifier.enable_input;
+      actor.ready_input = amplifier.ready_output;
+    }
+    auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedAnalogDrive>(amplifier, actor));
+    objects.push_back(
+        &rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
+  }
+  rt.start();
+
+  const auto before = tomc::testing::allocation_count();
+  for (int i = 0; i < kCycles / 4; ++i)
+    rt.step();
+  const auto allocated = tomc::testing::allocation_count() - before;
+
+  EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles / 4 << " cycles";
   for (auto* o : objects) {
     EXPECT_TRUE(o->connection().in_operation());
   }

@@ -297,6 +297,36 @@ TEST(SpeedAxis, SignOfLifeFailureRaisesAnAlarm) {
   EXPECT_FALSE(m.power.Status);
 }
 
+// MC_Reset on an enabled axis without a drive fault sends no fault acknowledge (its STW1 has ON = 0, an
+// OFF1): the drive stays in operation at speed and the axis enabled. Before issue 22 the drive ramped down
+// for a cycle and the TO's 20-cycle hold-off after MC_Reset hid it; the hold-off also hid a link loss that
+// began within it. Now the link loss of the next cycles is raised at the 4th missing frame
+// (link_loss_tolerance 3). Both found by the fault-matrix property
+// (tests/techobjects/runtime/fault_matrix_property_test.cpp).
+TEST(SpeedAxis, ResetOfAHealthyAxisKeepsItRunningAndLinkLossIsRaisedAtOnce) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move.Velocity = 1500.0;
+  m.move.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 3000), 0);
+  m.run(50);  // the motor settles at the setpoint (speed-loop lag)
+  m.reset.Execute = true;
+  for (int i = 0; i < 5; ++i) {
+    m.run(1);
+    EXPECT_EQ(m.drive->state(), telegrams::DriveState::kS4Operation) << "cycle " << i;
+  }
+  EXPECT_TRUE(m.reset.Done);
+  EXPECT_TRUE(m.power.Status);
+  EXPECT_NEAR(m.drive->motor_speed_rpm(), 1500.0, 1.0);
+  m.drive->set_link_lost(true);
+  m.run(3);  // 3 missing frames: within the tolerance
+  EXPECT_FALSE(m.axis->alarms().pending(techobjects::kAlarmDriveCommunication));
+  m.run(1);  // the 4th: alarm 405, remove enable in this cycle
+  EXPECT_TRUE(m.axis->alarms().pending(techobjects::kAlarmDriveCommunication));
+  EXPECT_EQ(m.axis->data().ErrorDetail.Reaction, 4);
+  EXPECT_FALSE(status_bit(m, techobjects::StatusWordBit::kEnable));
+}
+
 // spec 03 §3.4: J1 jog, J4 both inputs -> 16#8007 and braking, error until both are FALSE, J2 Busy ends at
 // rest.
 TEST(SpeedAxis, JogBothDirectionsIsAnError) {

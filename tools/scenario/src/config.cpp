@@ -255,6 +255,24 @@ void load_machine(const Json& value, const std::string& path, drives::SimulatedM
   }
 }
 
+void load_analog(const Json& value, const std::string& path, AnalogSettings& a, Problems& problems) {
+  ObjectReader r(value, path, problems);
+  r.real("volts_at_reference", a.volts_at_reference, detail::kPositive);
+  r.real("overdrive_percent", a.overdrive_percent, detail::Range{100.0, 200.0});
+  r.real("offset_volts", a.offset_volts);
+  r.integer("dac_bits", a.dac.bits, 8, 16);
+  r.real("dac_full_scale_volts", a.dac.full_scale_volts, detail::kPositive);
+  r.real("amplifier_rpm_per_volt", a.amplifier_rpm_per_volt, detail::kNonNegative);
+  r.real("amplifier_offset_volts", a.amplifier_offset_volts);
+  r.real("ready_delay_s", a.ready_delay_s, detail::kNonNegative);
+  r.finish();
+  if (a.volts_at_reference * a.overdrive_percent / 100.0 > a.dac.full_scale_volts * (1.0 + 1e-9)) {
+    problems.add(path,
+                 "the overdrive range (" + format_number(a.volts_at_reference * a.overdrive_percent / 100.0) +
+                     " V) exceeds the DAC's full scale (" + format_number(a.dac.full_scale_volts) + " V)");
+  }
+}
+
 }  // namespace
 
 void load_drive(const Json& drive, std::string_view path, double cycle_time_s, DriveSettings& settings,
@@ -272,11 +290,12 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
         problems.add(r.path_of("adapter"),
                      "the gateway adapter is an object: {\"type\": \"dds_gateway\", \"domain\": 0, "
                      "\"device\": \"<name at the gateway>\"}");
-      } else if (*a != "simulated") {
+      } else if (*a != "simulated" && *a != "analog") {
         problems.add(r.path_of("adapter"),
-                     "'" + *a + "' is not an adapter ('simulated', or a dds_gateway object)");
+                     "'" + *a + "' is not an adapter ('simulated', 'analog', or a dds_gateway object)");
       } else {
         settings.adapter = *a;
+        if (*a == "analog") settings.analog.emplace();
       }
     }
   }
@@ -368,6 +387,22 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
   if (const Json* v = r.get("encoder1")) load_encoder(*v, r.path_of("encoder1"), p.encoder1, problems);
   if (const Json* v = r.get("encoder2")) load_encoder(*v, r.path_of("encoder2"), p.encoder2, problems);
   if (const Json* v = r.get("machine")) load_machine(*v, r.path_of("machine"), p.machine, problems);
+  if (const Json* v = r.get("analog")) {
+    if (!settings.analog) {
+      problems.add(r.path_of("analog"), "only with \"adapter\": \"analog\"");
+    } else {
+      load_analog(*v, r.path_of("analog"), *settings.analog, problems);
+    }
+  }
+  // The analog actor is a telegram-3 drive to the TO (spec 01 §3.12: the S7 puts it behind the same
+  // interface), with its encoder on the card's counter.
+  if (settings.analog && settings.telegram != 0 && settings.telegram != 3) {
+    problems.add(r.path_of("telegram"), std::to_string(settings.telegram) +
+                                            ": the analog actor is a telegram-3 drive to the TO (write 3)");
+  }
+  if (settings.analog && (settings.supplementary_telegram != 0 || settings.encoder_telegram != 0)) {
+    problems.add(r.path(), "the analog actor has no telegram 750 and reads its encoder from the counter");
+  }
   r.finish();
 }
 

@@ -12,6 +12,7 @@
 #include "json_reader.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
+#include "tomc/telegrams/encoder.hpp"
 
 namespace tomc::scenario {
 
@@ -49,6 +50,56 @@ void drive_like_axis(const to::PositioningAxisData& d, drives::SimulatedDrivePar
   p.encoder1.steps_per_revolution = s1.Parameter.StepsPerRevolution;
   p.encoder1.fine_resolution_xist1 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist1);
   p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist2);
+}
+
+// The simulated servo amplifier of an analog drive: the simulated drive's motor, load and machine; its
+// encoder counts ×4 what the TO's encoder 1 counts per revolution (StepsPerRevolution ·
+// 2^FineResolutionXist1).
+// Without an enable output the amplifier's enable input is not wired: it runs whenever it is ready.
+drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive, bool enable_output) {
+  const auto& p = drive.parameters;
+  const auto& a = *drive.analog;
+  drives::io::SimulatedServoAmplifierParameters amp;
+  amp.mechanics = p;
+  amp.dac = a.dac;
+  amp.rpm_per_volt = a.amplifier_rpm_per_volt > 0.0 ? a.amplifier_rpm_per_volt
+                                                    : p.reference_speed_rpm / a.volts_at_reference;
+  amp.input_offset_volts = a.amplifier_offset_volts;
+  amp.ready_delay_s = a.ready_delay_s;
+  amp.enable_wired = enable_output;
+  amp.encoder_shaft = p.encoder1.shaft;
+  const double counts =
+      telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1);
+  amp.counter.lines_per_revolution = static_cast<std::uint32_t>(std::max(1.0, counts / 4.0));
+  amp.counter.width_bits = p.encoder1.xist1_width_bits;
+  amp.counter.count_at_power_on = p.encoder1.xist1_at_power_on;
+  amp.counter.zero_mark_offset_revolutions = p.encoder1.reference_mark_offset_revolutions;
+  return amp;
+}
+
+drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enable_output, bool ready_input) {
+  const auto& p = drive.parameters;
+  const auto& a = *drive.analog;
+  const drives::io::SimulatedServoAmplifierParameters wiring;  // the amplifier's default channels
+  drives::AnalogDriveParameters actor;
+  actor.servo_cycle_s = p.servo_cycle_s;
+  actor.reference_speed_rpm = p.reference_speed_rpm;
+  actor.volts_at_reference = a.volts_at_reference;
+  actor.overdrive_percent = a.overdrive_percent;
+  actor.offset_volts = a.offset_volts;
+  actor.dac = a.dac;
+  actor.analog_output = wiring.speed_input;
+  if (enable_output) actor.enable_output = wiring.enable_input;
+  if (ready_input) actor.ready_input = wiring.ready_output;
+  actor.counter = wiring.encoder;
+  actor.counter_width_bits = p.encoder1.xist1_width_bits;
+  // NIST_B is the motor speed: a load-side encoder turns 1/ratio revolutions per motor revolution.
+  const double ratio = p.gear_motor_revolutions / p.gear_load_revolutions;
+  actor.counts_per_revolution =
+      telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1) /
+      (p.encoder1.shaft == drives::SimulatedEncoderParameters::Shaft::kLoad ? ratio : 1.0);
+  actor.standstill_threshold_rpm = p.standstill_threshold_rpm;
+  return actor;
 }
 
 // "LeadingValueInterconnections": [ {"Leader": "<TO defined before>", "Coupling": "Setpoint" | "ActualValue"}
@@ -314,8 +365,20 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         problems.add(r.path_of("drive") + ".adapter", e.what());
         return entry.name.empty() ? std::nullopt : std::optional<MachineObject>(std::move(entry));
       }
+    } else if (has_drive && drive.analog) {
+      const auto& itf = *kind == TechnologyObjectKind::kSpeedAxis ? speed_data.Actor.Interface
+                                                                  : positioning_data.Actor.Interface;
+      // The S7 shows the analog setpoint interface in Actor.Type (RON, set by the configuration).
+      speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
+      positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
+      auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
+          analog_amplifier(drive, itf.EnableDriveOutput), analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+      entry.mechanics = &owned->amplifier().mechanics();
+      entry.analog_drive = owned.get();
+      io = &runtime.add_device(std::move(owned));
     } else if (has_drive) {
       auto owned = std::make_unique<drives::SimulatedDrive>(drive.device_config(), drive.parameters);
+      entry.mechanics = &owned->mechanics();
       owned->set_external_speed(drive.external_speed);
       drive_ptr = owned.get();
       io = &runtime.add_device(std::move(owned));
@@ -353,12 +416,13 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
 }
 
 void wire_machine_inputs(to::Runtime& runtime, std::span<const MachineObject> objects) {
-  std::vector<std::pair<to::PositioningAxis*, const drives::SimulatedDrive*>> wired;
-  std::vector<std::pair<to::ExternalEncoder*, const drives::SimulatedDrive*>> encoders;
+  std::vector<std::pair<to::PositioningAxis*, const drives::MotorLoad*>> wired;
+  std::vector<std::pair<to::ExternalEncoder*, const drives::MotorLoad*>> encoders;
   for (const auto& o : objects) {
-    if (o.positioning_axis != nullptr && o.drive != nullptr) wired.emplace_back(o.positioning_axis, o.drive);
-    if (o.external_encoder != nullptr && o.drive != nullptr)
-      encoders.emplace_back(o.external_encoder, o.drive);
+    if (o.positioning_axis != nullptr && o.mechanics != nullptr)
+      wired.emplace_back(o.positioning_axis, o.mechanics);
+    if (o.external_encoder != nullptr && o.mechanics != nullptr)
+      encoders.emplace_back(o.external_encoder, o.mechanics);
   }
   if (wired.empty() && encoders.empty()) return;
   runtime.set_pre_servo([wired = std::move(wired), encoders = std::move(encoders)](to::Runtime&) {

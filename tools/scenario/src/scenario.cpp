@@ -117,6 +117,38 @@ constexpr std::array<DriveObservable, 6> kDriveObservables{{
     {"load_speed", Format::kReal, [](const drives::SimulatedDrive& d) noexcept { return d.load_speed(); }},
 }};
 
+// What the analog actor and its amplifier show, as "<TO>.analog.<name>" (docs/analog-drives.md): the signals
+// the diagnostics show instead of telegram words for such an axis.
+struct AnalogObservable {
+  std::string_view name;
+  Format format;
+  double (*read)(const drives::SimulatedAnalogDrive&) noexcept;
+};
+constexpr std::array<AnalogObservable, 7> kAnalogObservables{{
+    {"output_volts", Format::kReal,
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().output_volts(); }},
+    {"output_code", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().output_code());
+     }},
+    {"enable_output", Format::kBool,
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().enable_output() ? 1.0 : 0.0; }},
+    {"ready_input", Format::kBool,
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().ready_input() ? 1.0 : 0.0; }},
+    {"counter", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().counter_value());
+     }},
+    {"active_fault", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().active_fault());
+     }},
+    {"load_position", Format::kReal,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return d.amplifier().mechanics().load_position();
+     }},
+}};
+
 using TechnologyObjectEntry = MachineObject;
 
 struct InstanceEntry {
@@ -135,10 +167,11 @@ enum class FaultKind : std::uint8_t {
   kLinkLoss,
   kTechnologyAlarm,
   kFixedStopBreak,
+  kAmplifierFault,  // analog drive: the servo amplifier faults, its ready output drops
 };
-constexpr std::array<std::string_view, 6> kFaultNames{"drive_fault",         "encoder_error",
-                                                      "sign_of_life_freeze", "link_loss",
-                                                      "technology_alarm",    "fixed_stop_break"};
+constexpr std::array<std::string_view, 7> kFaultNames{
+    "drive_fault",      "encoder_error",    "sign_of_life_freeze", "link_loss",
+    "technology_alarm", "fixed_stop_break", "amplifier_fault"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -637,11 +670,16 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
   }
   if (fault) {
     event.fault = static_cast<FaultKind>(*fault);
-    // Every fault but a technology alarm is one of the simulated drive's.
+    // Every fault but a technology alarm is one of the simulated drive's; amplifier_fault is the analog
+    // drive's.
+    const bool analog_fault = event.fault == FaultKind::kAmplifierFault;
     if (target_found && event.fault != FaultKind::kTechnologyAlarm && objects[event.target].built &&
-        objects[event.target].drive == nullptr) {
-      problems.add(fr.path_of("target"),
-                   objects[event.target].name + " has no simulated drive to inject faults into");
+        (analog_fault ? objects[event.target].analog_drive == nullptr
+                      : objects[event.target].drive == nullptr)) {
+      problems.add(
+          fr.path_of("target"),
+          objects[event.target].name + (analog_fault ? " has no analog drive (\"adapter\": \"analog\")"
+                                                     : " has no simulated drive to inject faults into"));
     }
     switch (event.fault) {
       case FaultKind::kDriveFault:
@@ -669,6 +707,7 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
       case FaultKind::kSignOfLifeFreeze:
       case FaultKind::kLinkLoss:
       case FaultKind::kFixedStopBreak:
+      case FaultKind::kAmplifierFault:
         break;
       case FaultKind::kTechnologyAlarm: {
         // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
@@ -764,6 +803,25 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
         return std::nullopt;
       }
       const drives::SimulatedDrive* drive = entry.drive;
+      column.format = it->format;
+      column.read = [drive, read = it->read] { return read(*drive); };
+      return column;
+    }
+    if (rest.starts_with("analog.")) {
+      const std::string_view observable = rest.substr(7);
+      const auto it = std::find_if(kAnalogObservables.begin(), kAnalogObservables.end(),
+                                   [&](const AnalogObservable& d) { return d.name == observable; });
+      if (entry.analog_drive == nullptr || it == kAnalogObservables.end()) {
+        std::string names;
+        for (const auto& d : kAnalogObservables)
+          names += (names.empty() ? "" : ", ") + std::string(d.name);
+        problems.add(path,
+                     entry.analog_drive == nullptr
+                         ? "'" + std::string(head) + "' has no analog drive"
+                         : "'" + std::string(observable) + "' is not an analog drive value (" + names + ")");
+        return std::nullopt;
+      }
+      const drives::SimulatedAnalogDrive* drive = entry.analog_drive;
       column.format = it->format;
       column.read = [drive, read = it->read] { return read(*drive); };
       return column;
@@ -866,6 +924,10 @@ void Scenario::Impl::apply(const Event& event) noexcept {
                                                  static_cast<to::AlarmReaction>(event.alarm_reaction));
         break;
       }
+      if (event.fault == FaultKind::kAmplifierFault) {
+        objects[event.target].analog_drive->amplifier().set_fault(event.kind == Event::Kind::kInject);
+        break;
+      }
       drives::SimulatedDrive& d = *objects[event.target].drive;
       const bool on = event.kind == Event::Kind::kInject;
       switch (event.fault) {
@@ -893,6 +955,7 @@ void Scenario::Impl::apply(const Event& event) noexcept {
           d.break_fixed_stops(on);
           break;
         case FaultKind::kTechnologyAlarm:
+        case FaultKind::kAmplifierFault:
           break;  // handled above
       }
       break;

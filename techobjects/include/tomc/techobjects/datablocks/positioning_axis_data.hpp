@@ -224,6 +224,17 @@ struct PositioningAxisData {
     // RES; chosen: 0 = brought to zero with the maximum dynamics
     std::int32_t VelocityModePowerOn =
         static_cast<std::int32_t>(tomc::techobjects::VelocityModePowerOn::kEmergencyStop);
+
+    // tomc extension (issue 20; spec 05b C.2, C.8 item 1): PID position control, pid_regulator.hpp. All DIR;
+    // all 0 = the S7's P controller. Not with EnableDSC.
+    struct TO_Struct_PositionControlPid {
+      double IntegralTime = 0.0;           // Ti [s], 0 = no I
+      double DerivativeTime = 0.0;         // Td [s], 0 = no D
+      std::uint32_t DerivativeCycles = 1;  // D sample in servo cycles, 1 ... 256
+      double IntegralLimit = 0.0;          // |I| bound [velocity unit], 0 = none
+      double DeadBand = 0.0;               // [length unit]
+      double OutputLimit = 0.0;            // |PID| bound [velocity unit], 0 = none
+    } Pid;
   } PositionControl;
 
   // ---- §3.21 TorquePreControl (man. §10.3.22) ----

@@ -11,6 +11,7 @@
 //   x_sym(k) = kpc·PT1_Tvtc(x_d)(k) + (1 − kpc)·x_d(k)          -> StatusServo.BalancedPosition §7.4 (3)
 //   e(k)     = x_sym(k) − x_act(k)                              -> StatusServo.ControlDifference §7.4 (4)
 //   PLC:  v_cmd(k) = kpc·v_f(k) + Kv·e(k)                                                §7.4 (5a)
+//         with the PID option (issue 20, pid_regulator.hpp): kpc·v_f(k) + PID(e)(k); PID = Kv·e by default
 //   DSC:  v_cmd(k) = NSOLL_B = kpc·v_f(k),  XERR = e(k),  KPC = Kv                       §7.4 (5b)
 //   FE(k)    = x_ipo(k − D_fe) − x_act(k),  D_fe = D_ctrl + T_add/T_s  -> StatusPositioning.FollowingError
 //
@@ -40,6 +41,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "tomc/techobjects/position/pid_regulator.hpp"
+
 namespace tomc::techobjects {
 
 // Capacity of the position controller's setpoint delay lines in servo cycles (current sample included):
@@ -60,12 +63,20 @@ struct PositionControlConfig {
   double Ti = 0.0;                           // MC_WriteParameter 1010 [s]
   double To = 0.0;                           // MC_WriteParameter 1011 [s]
   double Tdc = 0.0;                          // MC_WriteParameter 1012 [s]
+  // PID option (issue 20; PositionControl.Pid.*, a tomc extension): all 0 = the S7's P controller. Only with
+  // position control in the PLC (not with DSC).
+  double IntegralTime = 0.0;           // Ti [s]
+  double DerivativeTime = 0.0;         // Td [s]
+  std::uint32_t DerivativeCycles = 1;  // the D sample in servo cycles
+  double IntegralLimit = 0.0;          // |I| bound [unit/s], 0 = none
+  double DeadBand = 0.0;               // [unit]
+  double OutputLimit = 0.0;            // |PID| bound [unit/s], 0 = none
 };
 
 enum class PositionControlConfigResult : unsigned char {
   kOk = 0,
   kInvalidServoCycle,  // ServoCycle <= 0 or not finite: configuration rejected, previous one kept
-  kInvalidParameter,   // Kv, Kpc, T_vtc or a delay negative / not finite: configuration rejected
+  kInvalidParameter,   // Kv, Kpc, T_vtc, a delay or a PID value invalid, or PID with DSC: rejected
   kDelayClamped,       // accepted, but a delay exceeds the delay line and was clamped
 };
 
@@ -82,6 +93,7 @@ struct PositionControlOutput {
   double balanced_position = 0.0;   // StatusServo.BalancedPosition (x_sym)
   double control_difference = 0.0;  // StatusServo.ControlDifference (e)
   double following_error = 0.0;     // StatusPositioning.FollowingError
+  PidTerms pid{};                   // the PID terms of this cycle (p = Kv·e without the option)
   // DSC only (§7.2), zero otherwise: XERR as a position difference (caller converts to counts), KPC = Kv.
   double dsc_position_error = 0.0;
   double dsc_kpc = 0.0;
@@ -146,8 +158,13 @@ class PositionController {
 
   PositionControlConfigResult configure(const PositionControlConfig& config) noexcept;
   const PositionControlConfig& config() const noexcept { return config_; }
-  // Forgets the history; the next update() starts without a step.
+  // Forgets the history (and the PID's integral); the next update() starts without a step.
   void reset() noexcept;
+  // Double-buffered PID gains (H3 FLdRP/FUpDRP): load_gains() stores a set (Kv included), apply_gains() makes
+  // it active from the next update() without resetting the integral. False: invalid set, nothing stored.
+  bool load_gains(const PidGains& gains) noexcept { return pid_.load(gains); }
+  void apply_gains() noexcept { pid_.apply(); }
+  const PidGains& active_gains() const noexcept { return pid_.gains(); }
   // The coordinate system moved by delta (homing during motion, decision P7): the setpoint histories and the
   // symmetry filter move with it, so the following error and the output are unchanged.
   void shift(double delta) noexcept {
@@ -178,6 +195,7 @@ class PositionController {
   double symmetry_state_ = 0.0;
   SetpointDelayLine control_line_{};
   SetpointDelayLine fe_line_{};
+  PidRegulator pid_{};
 };
 
 }  // namespace tomc::techobjects

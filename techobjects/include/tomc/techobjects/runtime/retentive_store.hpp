@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tomc/techobjects/axis/job.hpp"
@@ -47,6 +48,9 @@ struct RetainFile {
 //   <name> <valid 0|1> <AbsEncoderOffset %.17g> <MeasuringRangeCount> <LastAbsoluteValue> <sequence>
 //   checksum <FNV-1a 64 of the lines above, 16 hex digits>
 RetainFile read_retain_file(const std::filesystem::path& file);
+// The same for the file's bytes (`source` names it in messages): what read_retain_file does after reading,
+// and what the retain-file fuzzer feeds (tests/fuzz/retain_file_fuzzer.cpp).
+RetainFile parse_retain_file(std::string_view text, std::string_view source);
 // Writes atomically; false and `error` on failure (the old file, if any, is untouched then).
 bool write_retain_file(const std::filesystem::path& file, std::span<const RetainedRecord> records,
                        std::string& error);

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tomc/drives/io/hardware_io.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
 #include "tomc/techobjects/datablocks/external_encoder_data.hpp"
@@ -59,8 +60,22 @@ void load_positioning_axis_config(const Json& config, std::string_view path,
 void load_external_encoder_config(const Json& config, std::string_view path,
                                   techobjects::ExternalEncoderData& data, Problems& problems);
 
-// The `drive` object: which adapter (the simulated drive, or a dds_gateway object), which telegram(s) and,
-// for the simulated drive, its machine model.
+// The `analog` object of a drive with "adapter": "analog" (docs/analog-drives.md): the actor's output
+// scaling and the simulated servo amplifier. The enable output and the ready input are the TO's
+// Actor.Interface.EnableDriveOutput / DriveReadyInput; the motor, load, encoder and machine keys are the
+// simulated drive's.
+struct AnalogSettings {
+  double volts_at_reference = 10.0;  // U_100%
+  double overdrive_percent = 117.0;
+  double offset_volts = 0.0;
+  drives::io::DacFormat dac{};
+  double amplifier_rpm_per_volt = 0.0;  // 0: matched, reference_speed_rpm / volts_at_reference
+  double amplifier_offset_volts = 0.0;  // the amplifier's drift
+  double ready_delay_s = 0.02;
+};
+
+// The `drive` object: which adapter (the simulated drive, the analog actor on a simulated amplifier, or a
+// dds_gateway object), which telegram(s) and, for the simulated drive and amplifier, the machine model.
 struct DriveSettings {
   std::string adapter = "simulated";
   std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
@@ -71,6 +86,7 @@ struct DriveSettings {
   // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and
   // the simulated-drive parameters do not apply (gateway_adapter.hpp).
   std::optional<GatewayAdapterSettings> gateway;
+  std::optional<AnalogSettings> analog;  // set when `adapter` is "analog"
   drives::DeviceConfig device_config() const;
 };
 

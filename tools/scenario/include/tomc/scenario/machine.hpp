@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "tomc/drives/simulated_analog_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/config.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
@@ -41,7 +42,9 @@ struct MachineObject {
   techobjects::PositioningAxis* positioning_axis = nullptr;  // also set for a synchronous axis
   techobjects::SynchronousAxis* synchronous_axis = nullptr;
   techobjects::ExternalEncoder* external_encoder = nullptr;
-  drives::SimulatedDrive* drive = nullptr;  // nullptr for a virtual or simulated axis
+  drives::SimulatedDrive* drive = nullptr;  // the simulated PROFIdrive drive, if that is the adapter
+  drives::SimulatedAnalogDrive* analog_drive = nullptr;  // the analog actor and its amplifier, if that is it
+  const drives::MotorLoad* mechanics = nullptr;          // the simulated machine of either; nullptr otherwise
 
   std::string_view type_name() const noexcept;
   const techobjects::VariableInfo* find_variable(std::string_view path) const noexcept;

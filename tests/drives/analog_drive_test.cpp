@@ -1,0 +1,316 @@
+// The analog drive actor on the simulated servo amplifier (issue 20): spec 01 §3.12 / seed 004 §6.2.7,
+// §6.5.1 (ready-input rules, 100 % = reference speed, overdrive ≈ ±117 %), DAC quantisation (spec 05b C.8
+// item 2), offset, the ×4 quadrature counter and its zero mark (spec 05b B.5). The test plays the TO on
+// telegram 3, as the TO's drive connection does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "drive_harness.hpp"
+#include "tomc/drives/analog_drive.hpp"
+#include "tomc/drives/io/simulated_servo_amplifier.hpp"
+
+namespace tomc::drives::test {
+namespace {
+
+using io::Channel;
+
+struct AnalogRig {
+  io::SimulatedServoAmplifierParameters amplifier_parameters;
+  AnalogDriveParameters actor_parameters;
+
+  AnalogRig() {
+    actor_parameters.enable_output = Channel{2, 0};
+    actor_parameters.ready_input = Channel{3, 0};
+    actor_parameters.counts_per_revolution = 4.0 * amplifier_parameters.counter.lines_per_revolution;
+  }
+};
+
+// The amplifier first (the actor holds a reference), then the harness around the actor.
+struct AnalogHarness {
+  explicit AnalogHarness(const AnalogRig& rig = AnalogRig())
+      : amplifier(rig.amplifier_parameters), h(drive_config(3), amplifier, rig.actor_parameters) {}
+  io::SimulatedServoAmplifier amplifier;
+  BasicHarness<AnalogDrive> h;
+};
+
+// spec 01 §3.12 test 18: reference speed 3000 1/min, 100 % = 10 V; 3300 1/min -> 11 V (110 %, within ±117 %).
+TEST(AnalogDrive, OverdriveAndClampSpec01Test18) {
+  AnalogHarness rig;
+  auto& h = rig.h;
+  h.power_up_to_s4();
+  struct Row {
+    double rpm;
+    double volts;
+  };
+  // 3510 = 117 %; beyond it the output is clamped at 11.7 V.
+  for (const Row row : {Row{3000.0, 10.0}, Row{3300.0, 11.0}, Row{-3300.0, -11.0}, Row{3510.0, 11.7},
+                        Row{4000.0, 11.7}, Row{-6000.0, -11.7}, Row{1500.0, 5.0}}) {
+    h.speed_rpm(row.rpm);
+    h.cycle();
+    // NSOLL_B is an N4 (2^30 = 100 %): the setpoint itself is exact to 1e-6 V.
+    EXPECT_NEAR(h.drive.output_volts(), row.volts, 1e-6) << row.rpm << " 1/min";
+    // The card's 16-bit S7 format: 27648 = 10 V, one step 0.36 mV.
+    EXPECT_NEAR(io::dac_volts(h.drive.output_code(), AnalogDriveParameters{}.dac), row.volts,
+                0.5 * io::dac_step_volts(AnalogDriveParameters{}.dac) + 1e-12);
+  }
+  h.speed_rpm(3000.0);
+  h.cycle();
+  EXPECT_EQ(h.drive.output_code(), 27648);  // S7 analog value format: 100 % = 27648
+  h.speed_rpm(3510.0);
+  h.cycle();
+  EXPECT_EQ(h.drive.output_code(), 32348);  // 117 % of 27648 = 32348.2
+}
+
+// DAC resolution (spec 05b A.2: 16-bit −32768…32767 = ±10 V; B.6: 12 bit + sign, ±10 V): the output is the
+// nearest code, saturated at the ends.
+TEST(AnalogDrive, DacQuantisationTable) {
+  const io::DacFormat joint{16, 10.0};
+  const io::DacFormat h3{13, 10.0};
+  struct Row {
+    io::DacFormat format;
+    double volts;
+    std::int32_t code;
+  };
+  const Row rows[] = {
+      {joint, 5.0, 16384},      {joint, 10.0, 32767},
+      {joint, -10.0, -32768},   {joint, 12.0, 32767},
+      {joint, 0.00015, 0},      {joint, 0.00016, 1},
+      {joint, -0.00016, -1},    {h3, 5.0, 2048},
+      {h3, 10.0, 4095},         {h3, -10.0, -4096},
+      {h3, 0.0012, 0},          {h3, 0.0013, 1},
+      {h3, 2.5 + 0.0024, 1025}, {AnalogDriveParameters{}.dac, 11.759, 32511},
+  };
+  for (const auto& r : rows) {
+    EXPECT_EQ(io::dac_code(r.volts, r.format), r.code) << r.volts << " V on " << int(r.format.bits) << " bit";
+  }
+  EXPECT_DOUBLE_EQ(io::dac_step_volts(joint), 10.0 / 32768.0);
+  EXPECT_DOUBLE_EQ(io::dac_step_volts(h3), 10.0 / 4096.0);
+  EXPECT_EQ(io::dac_code(std::nan(""), joint), 0);
+}
+
+// A 12-bit + sign card drives the amplifier in 2.44 mV steps: the speed it reaches is the quantised one.
+TEST(AnalogDrive, QuantisedOutputReachesTheAmplifier) {
+  AnalogRig rig;
+  rig.actor_parameters.dac = io::DacFormat{13, 10.0};
+  rig.amplifier_parameters.dac = rig.actor_parameters.dac;
+  AnalogHarness a(rig);
+  auto& h = a.h;
+  h.power_up_to_s4();
+  h.speed_rpm(1.0);  // 3.33 mV: one step (2.44 mV) after rounding
+  h.run(2);
+  EXPECT_EQ(h.drive.output_code(), 1);
+  EXPECT_DOUBLE_EQ(a.amplifier.input_volts(), 10.0 / 4096.0);
+}
+
+// The offset is added to the output while the axis is enabled, never while it is disabled.
+TEST(AnalogDrive, OffsetOnlyWhileEnabled) {
+  AnalogRig rig;
+  rig.actor_parameters.offset_volts = -0.05;
+  AnalogHarness a(rig);
+  auto& h = a.h;
+  h.stw1(0x047E);
+  h.run(3);
+  EXPECT_FALSE(h.drive.enable_output());
+  EXPECT_EQ(h.drive.output_volts(), 0.0);
+  h.power_up_to_s4();
+  h.speed_rpm(600.0);
+  h.cycle();
+  EXPECT_NEAR(h.drive.output_volts(), 2.0 - 0.05, 1e-6);
+  h.stw1(0x047C);  // OFF2: coast stop
+  h.cycle();
+  EXPECT_EQ(h.drive.output_volts(), 0.0);
+}
+
+// The amplifier's own offset turns the motor at 0 V; the actor's offset compensates it (TarOffs).
+TEST(AnalogDrive, AmplifierOffsetDriftAndCompensation) {
+  for (const double compensation : {0.0, -0.02}) {
+    AnalogRig rig;
+    rig.amplifier_parameters.input_offset_volts = 0.02;  // 6 1/min at 300 1/min per V
+    rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
+    rig.actor_parameters.offset_volts = compensation;
+    AnalogHarness a(rig);
+    auto& h = a.h;
+    h.power_up_to_s4();
+    h.speed_rpm(0.0);
+    h.run(500);
+    const double drift_rpm = a.amplifier.mechanics().motor_speed_rpm();
+    if (compensation == 0.0) {
+      EXPECT_NEAR(drift_rpm, 6.0, 0.05);
+    } else {
+      // Quantisation of -0.02 V (0.36 mV steps) leaves at most 0.06 1/min.
+      EXPECT_NEAR(drift_rpm, 0.0, 0.06);
+    }
+  }
+}
+
+// spec 01 §3.12 ready-input rules, spec 01 test 17.
+TEST(AnalogDrive, ReadyInputRule1NotEnabledBeforeReady) {
+  AnalogHarness a;
+  auto& h = a.h;
+  a.amplifier.set_power(false);
+  h.stw1(0x047E);
+  h.run(3);
+  h.stw1(0x047F);
+  h.run(20);
+  EXPECT_EQ(h.drive.state(), tg::DriveState::kS1SwitchingOnInhibited);
+  EXPECT_FALSE(h.drive.enable_output());
+  EXPECT_EQ(h.zsw1() & 0x0004u, 0u) << "ZSW1 " << hex16(h.zsw1());  // not in operation
+  a.amplifier.set_power(true);                                      // ready after ready_delay_s = 20 ms
+  const int cycles = h.run_until([&] { return h.drive.ready_input(); }, 100);
+  EXPECT_GE(cycles, 20);
+  EXPECT_LE(cycles, 21);
+  // The TO's sequencer sees S1 and starts again with 0x047E (spec 06 §4.3).
+  h.power_up_to_s4();
+  EXPECT_TRUE(h.drive.enable_output());
+  EXPECT_NE(h.zsw1() & 0x0004u, 0u);
+}
+
+TEST(AnalogDrive, ReadyInputRule2LossDisablesWithError) {
+  AnalogHarness a;
+  auto& h = a.h;
+  h.run_at_speed(600.0, 100);
+  EXPECT_TRUE(h.drive.enable_output());
+  a.amplifier.set_fault(true);
+  h.cycle();
+  // The same cycle: fault shown (ZSW1.3), enable output off, 0 V.
+  EXPECT_NE(h.zsw1() & 0x0008u, 0u) << "ZSW1 " << hex16(h.zsw1());
+  EXPECT_EQ(h.drive.active_fault(), kFaultDriveReadyLost);
+  EXPECT_FALSE(h.drive.enable_output());
+  EXPECT_EQ(h.drive.output_volts(), 0.0);
+  // Acknowledging while the ready signal is still missing does not clear it.
+  h.stw1(0x04FE);
+  h.cycle();
+  h.stw1(0x047E);
+  h.run(2);
+  EXPECT_EQ(h.drive.active_fault(), kFaultDriveReadyLost);
+  a.amplifier.set_fault(false);
+  h.run(25);  // ready delay
+  h.stw1(0x04FE);
+  h.cycle();
+  EXPECT_EQ(h.drive.active_fault(), 0u);
+  h.power_up_to_s4();
+  EXPECT_TRUE(h.drive.enable_output());
+}
+
+TEST(AnalogDrive, ReadyInputRule3EnableFalseDisablesDespiteReady) {
+  AnalogHarness a;
+  auto& h = a.h;
+  h.run_at_speed(600.0, 100);
+  EXPECT_TRUE(h.drive.ready_input());
+  h.stw1(0x047C);  // MC_Power Enable = FALSE with StopMode 3 (coast): OFF2
+  h.cycle();
+  EXPECT_FALSE(h.drive.enable_output());  // same cycle (spec 02 §5 item 13)
+  EXPECT_EQ(h.drive.output_volts(), 0.0);
+  EXPECT_TRUE(h.drive.ready_input());
+  EXPECT_EQ(h.drive.active_fault(), 0u);
+}
+
+// Normal stop (OFF1): zero speed output, enable kept until the measured speed is at standstill, then off.
+TEST(AnalogDrive, Off1KeepsEnableUntilStandstill) {
+  AnalogHarness a;
+  auto& h = a.h;
+  h.run_at_speed(1200.0, 100);
+  h.stw1(0x047E);
+  h.cycle();
+  EXPECT_EQ(h.drive.state(), tg::DriveState::kS5aRampStop);
+  EXPECT_TRUE(h.drive.enable_output());
+  EXPECT_EQ(h.drive.output_volts(), 0.0);
+  const int cycles = h.run_until([&] { return !h.drive.enable_output(); }, 200);
+  EXPECT_LT(cycles, 200);
+  EXPECT_LT(std::fabs(a.amplifier.mechanics().motor_speed_rpm()), 20.0);
+  EXPECT_EQ(h.drive.state(), tg::DriveState::kS2ReadyForSwitchingOn);
+}
+
+// Without ready input and enable output the axis switches on at once; the amplifier runs when powered.
+TEST(AnalogDrive, WithoutReadyInputAndEnableOutput) {
+  AnalogRig rig;
+  rig.actor_parameters.enable_output.reset();
+  rig.actor_parameters.ready_input.reset();
+  rig.amplifier_parameters.enable_wired = false;
+  AnalogHarness a(rig);
+  a.h.run_at_speed(900.0, 200);
+  EXPECT_NEAR(a.amplifier.mechanics().motor_speed_rpm(), 900.0, 1.0);
+  EXPECT_NEAR(a.h.nist_rpm(), 900.0, 6.0);  // one count per cycle is 6 1/min at 10000 counts/rev
+}
+
+// spec 05b B.5: ×4 quadrature, a 16-bit counter that wraps many times, continuous XIST1 without a lost count.
+TEST(AnalogDrive, QuadratureCounterWrapsWithoutLosingCounts) {
+  AnalogRig rig;
+  rig.amplifier_parameters.counter.lines_per_revolution = 500;  // 2000 counts/rev
+  rig.amplifier_parameters.counter.width_bits = 16;
+  rig.actor_parameters.counter_width_bits = 16;
+  rig.actor_parameters.counts_per_revolution = 2000.0;
+  AnalogHarness a(rig);
+  auto& h = a.h;
+  h.run_at_speed(3000.0, 1500);  // 1.5 s at 50 rev/s: ~70 revolutions = 140 000 counts = 2 wraps
+  const double revolutions = a.amplifier.mechanics().motor_revolutions();
+  EXPECT_GT(revolutions * 2000.0, 2.0 * 65536.0);
+  // XIST1 = floor(revolutions × 2000): whole counts only, none lost across the wraps.
+  EXPECT_EQ(h.actual.G1_XIST1, static_cast<std::uint32_t>(std::floor(revolutions * 2000.0)));
+  h.speed_rpm(-3000.0);
+  h.run(3000);
+  const double back = a.amplifier.mechanics().motor_revolutions();
+  EXPECT_LT(back, 0.0);
+  EXPECT_EQ(static_cast<std::int32_t>(h.actual.G1_XIST1),
+            static_cast<std::int32_t>(std::floor(back * 2000.0)));
+}
+
+TEST(AnalogDrive, CounterExtensionTable) {
+  struct Row {
+    std::uint8_t bits;
+    std::uint32_t first, second;
+    std::int64_t first_value;  // the first sample, sign-extended
+    std::int64_t delta;        // the shorter way round the counter range
+  };
+  for (const Row r :
+       {Row{16, 65530, 4, -6, 10}, Row{16, 4, 65530, 4, -10}, Row{32, 0xFFFFFFF0u, 0x10u, -16, 32},
+        Row{12, 4095, 0, -1, 1}, Row{16, 0, 32767, 0, 32767}, Row{16, 0, 32768, 0, -32768}}) {
+    io::CounterExtension e(r.bits);
+    EXPECT_EQ(e.update(r.first), r.first_value);
+    EXPECT_EQ(e.update(r.second), r.first_value + r.delta)
+        << int(r.bits) << " bit " << r.first << " -> " << r.second;
+  }
+}
+
+// Reference mark via G1_STW function 1 (spec 06 §6): the counter's zero-mark latch, read with command 2.
+TEST(AnalogDrive, ZeroMarkLatchThroughG1Stw) {
+  AnalogRig rig;
+  rig.amplifier_parameters.counter.zero_mark_offset_revolutions = 0.25;
+  AnalogHarness a(rig);
+  auto& h = a.h;
+  h.power_up_to_s4();
+  h.drive_sp.G1_STW = tg::EncoderControlWord{0x0011};  // function 1, command 1 (activate)
+  h.speed_rpm(60.0);                                   // 1 rev/s: the mark at 0.25 rev after ~0.25 s
+  const int cycles = h.run_until([&] { return (h.actual.G1_ZSW.value() & 0x0010u) != 0; }, 2000);
+  EXPECT_GT(cycles, 200);
+  EXPECT_LT(cycles, 400);
+  h.drive_sp.G1_STW = tg::EncoderControlWord{0x0021};  // command 2: read value 1
+  h.cycle();
+  EXPECT_EQ(h.actual.G1_XIST2, 2500u);  // 0.25 rev × 10 000 counts
+  // Flying measurement needs a probe input this actor does not have: a clear encoder error.
+  h.drive_sp.G1_STW = tg::EncoderControlWord{0x0091};
+  h.cycle();
+  EXPECT_NE(h.actual.G1_ZSW.value() & 0x8000u, 0u);
+  EXPECT_EQ(h.actual.G1_XIST2, tg::kEncoderErrorCommandNotSupported);
+}
+
+// A card that fails is a drive fault (ZSW1.3): the enable output drops.
+TEST(AnalogDrive, IoFailureIsADriveFault) {
+  AnalogHarness a;
+  auto& h = a.h;
+  h.run_at_speed(300.0, 50);
+  a.amplifier.inject_io_failure(io::IoStatus::kReadFailed);
+  h.cycle();
+  EXPECT_EQ(h.drive.active_fault(), kFaultIo);
+  EXPECT_NE(h.zsw1() & 0x0008u, 0u);
+  EXPECT_FALSE(h.drive.enable_output());
+  a.amplifier.inject_io_failure(io::IoStatus::kOk);
+  h.cycle();
+  h.stw1(0x04FE);
+  h.cycle();
+  EXPECT_EQ(h.drive.active_fault(), 0u);
+}
+
+}  // namespace
+}  // namespace tomc::drives::test
