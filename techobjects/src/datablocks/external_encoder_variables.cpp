@@ -213,15 +213,8 @@ constexpr auto kExternalEncoderVariables = std::to_array<VariableInfo>({
 #undef TOMC_E_VARIABLE
 #undef TOMC_E_ROW
 
-template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  std::array<std::string_view, N> paths{};
-  for (std::size_t i = 0; i < N; ++i)
-    paths[i] = table[i].path;
-  std::sort(paths.begin(), paths.end());
-  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
-}
-static_assert(paths_unique(kExternalEncoderVariables), "duplicate path in the external-encoder table");
+static_assert(detail::paths_unique(kExternalEncoderVariables),
+              "duplicate path in the external-encoder table");
 static_assert(detail::ranges_valid(kExternalEncoderVariables),
               "an external-encoder range is empty, exceeds its data type or excludes a permitted value");
 

@@ -3,10 +3,12 @@
 // data-type limits (spec 04 §0.2 "where a range is missing, the data-type limits apply"), the C++ type of
 // each data type (spec 04 §0.4), and compile-time checks of a table.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 #include "tomc/techobjects/datablocks/speed_axis_data.hpp"
@@ -108,6 +110,16 @@ constexpr bool ranges_valid(std::span<const VariableInfo> table) noexcept {
     }
   }
   return true;
+}
+
+// No path appears twice in a table.
+template <std::size_t N>
+constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
+  std::array<std::string_view, N> paths{};
+  for (std::size_t i = 0; i < N; ++i)
+    paths[i] = table[i].path;
+  std::sort(paths.begin(), paths.end());
+  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
 }
 
 // ---- permitted values the TO tables share (spec 04 §3.3, §3.11) ----
