@@ -9,16 +9,12 @@
 
 namespace tomc::instructions {
 
-// The scaling inputs both instructions share (MasterScaling ≠ 0; spec 07 §3.3).
-struct CamScalingInputs {
-  double MasterOffset = 0.0;
-  double SlaveOffset = 0.0;
-  double MasterScaling = 1.0;
-  double SlaveScaling = 1.0;
-  techobjects::CamScaling scaling() const noexcept {
-    return {MasterOffset, SlaveOffset, MasterScaling, SlaveScaling};
-  }
-};
+// The scaling inputs both instructions have (MasterScaling ≠ 0; spec 07 §3.3). They stay plain members of
+// each instruction, as in the manual.
+template <typename Instruction>
+techobjects::CamScaling cam_scaling(const Instruction& fb) noexcept {
+  return {fb.MasterOffset, fb.SlaveOffset, fb.MasterScaling, fb.SlaveScaling};
+}
 
 // A read instruction: one lookup on the rising edge, its result shown with Done.
 class CamReadHandshake {
@@ -45,9 +41,13 @@ class CamReadHandshake {
   techobjects::CamLookup result_{};
 };
 
-struct MC_GetCamFollowingValue : CamScalingInputs {
+struct MC_GetCamFollowingValue {
   bool Execute = false;
   double LeadingValue = 0.0;
+  double MasterOffset = 0.0;
+  double SlaveOffset = 0.0;
+  double MasterScaling = 1.0;
+  double SlaveScaling = 1.0;
   bool Done = false;
   bool Busy = false;
   bool CommandAborted = false;  // never set
@@ -58,7 +58,8 @@ struct MC_GetCamFollowingValue : CamScalingInputs {
   double SecondDerivative = 0.0;
 
   void operator()(const techobjects::Cam& cam) noexcept {
-    const auto& r = read_.call(Execute, [&] { return cam.get_following_value(LeadingValue, scaling()); });
+    const auto& r =
+        read_.call(Execute, [&] { return cam.get_following_value(LeadingValue, cam_scaling(*this)); });
     show_outputs(*this, read_.outputs());
     Value = r.value.y;
     FirstDerivative = r.value.dy;
@@ -69,11 +70,15 @@ struct MC_GetCamFollowingValue : CamScalingInputs {
   CamReadHandshake read_;
 };
 
-struct MC_GetCamLeadingValue : CamScalingInputs {
+struct MC_GetCamLeadingValue {
   bool Execute = false;
   double FollowingValue = 0.0;
   double ApproachLeadingValue = 0.0;
   std::int32_t ApproachDirection = 3;  // 1 positive, 2 negative, 3 nearest
+  double MasterOffset = 0.0;
+  double SlaveOffset = 0.0;
+  double MasterScaling = 1.0;
+  double SlaveScaling = 1.0;
   bool Done = false;
   bool Busy = false;
   bool CommandAborted = false;  // never set
@@ -83,7 +88,8 @@ struct MC_GetCamLeadingValue : CamScalingInputs {
 
   void operator()(const techobjects::Cam& cam) noexcept {
     const auto& r = read_.call(Execute, [&] {
-      return cam.get_leading_value(FollowingValue, ApproachLeadingValue, ApproachDirection, scaling());
+      return cam.get_leading_value(FollowingValue, ApproachLeadingValue, ApproachDirection,
+                                   cam_scaling(*this));
     });
     show_outputs(*this, read_.outputs());
     Value = r.leading_value;

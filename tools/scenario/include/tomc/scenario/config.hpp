@@ -15,6 +15,7 @@
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
+#include "tomc/techobjects/cam/cam_data.hpp"
 #include "tomc/techobjects/datablocks/external_encoder_data.hpp"
 #include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
 #include "tomc/techobjects/datablocks/speed_axis_data.hpp"
@@ -58,6 +59,10 @@ void load_positioning_axis_config(const Json& config, std::string_view path,
                                   std::string_view type_name = "TO_PositioningAxis");
 void load_external_encoder_config(const Json& config, std::string_view path,
                                   techobjects::ExternalEncoderData& data, Problems& problems);
+// The scalar variables of a cam (cam_variables(): "InterpolationSettings.InterpolationMode"); its points and
+// segments are keys beside `config` (docs/scenarios.md "Cams").
+void load_cam_config(const Json& config, std::string_view path, techobjects::CamData& data,
+                     Problems& problems, std::string_view type_name = "TO_Cam");
 
 // The `drive` object: which adapter (the simulated drive, or a dds_gateway object), which telegram(s) and,
 // for the simulated drive, its machine model.
