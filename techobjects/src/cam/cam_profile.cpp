@@ -25,6 +25,18 @@ std::size_t CamProfile::find(double x) const noexcept {
   return static_cast<std::size_t>(it - pieces_.begin());
 }
 
+std::size_t CamProfile::find(double x, std::size_t hint) const noexcept {
+  // The piece find(x) returns is the first whose x1 is not below x: piece i qualifies if x <= x1(i) and
+  // (i == 0 or x > x1(i − 1)).
+  const auto holds = [&](std::size_t i) {
+    return i < pieces_.size() && x <= pieces_[i].x1 && (i == 0 || x > pieces_[i - 1].x1);
+  };
+  if (holds(hint)) return hint;
+  if (holds(hint + 1)) return hint + 1;
+  if (hint > 0 && holds(hint - 1)) return hint - 1;
+  return find(x);
+}
+
 CamValue CamProfile::evaluate(const CamPiece& p, double x) noexcept {
   const double u = x - p.origin;
   // Horner for the value and both derivatives at once.

@@ -1,6 +1,7 @@
 // The synchronous function of camming (cam_synchronous_function.hpp; spec 07 §3.3, §6.2).
 #include "tomc/techobjects/cam/cam_synchronous_function.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tomc::techobjects {
@@ -11,6 +12,7 @@ void CamSynchronousFunction::start(const CamProfile& cam, const CamScaling& scal
   scaling_ = scaling;
   mode_ = mode;
   last_period_ = 0;
+  piece_ = 0;
   first_ = true;
   period_gain_ = cam_ == nullptr ? 0.0 : cam.evaluate(cam.end()).y - cam.evaluate(cam.start()).y;
 }
@@ -31,7 +33,10 @@ CamFollowingValue CamSynchronousFunction::evaluate(double x, double v, double a)
       u_cam = u < start ? start : end;
     }
   } else if (period_length > 0.0) {
-    n = static_cast<std::int64_t>(std::floor((u - start) / period_length));
+    // The period count of a leading value 1e18 cam lengths away is meaningless; the clamp keeps the cast
+    // defined.
+    const double periods = std::clamp(std::floor((u - start) / period_length), -4.0e18, 4.0e18);
+    n = std::isfinite(periods) ? static_cast<std::int64_t>(periods) : 0;
     u_cam = u - static_cast<double>(n) * period_length;
     // Rounding can leave u_cam a hair outside [start, end): the cam's own ends hold there.
     if (u_cam < start) u_cam = start;
@@ -40,7 +45,8 @@ CamFollowingValue CamSynchronousFunction::evaluate(double x, double v, double a)
       appended = static_cast<double>(n) * period_gain_;
     }
   }
-  const CamValue f = cam_->evaluate(u_cam);
+  piece_ = cam_->find(u_cam, piece_);
+  const CamValue f = CamProfile::evaluate(cam_->pieces()[piece_], u_cam);
   const double ms = scaling_.MasterScaling;
   const double ss = scaling_.SlaveScaling;
   out.position = ss * (f.y + appended) + scaling_.SlaveOffset;

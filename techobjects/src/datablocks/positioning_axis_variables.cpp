@@ -404,15 +404,8 @@ constexpr auto kPositioningAxisVariables = std::to_array<VariableInfo>({
 #undef TOMC_P_ROW
 
 // Paths are unique (sorted copy: O(n log n) constant-evaluation steps for the ~500 rows).
-template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  std::array<std::string_view, N> paths{};
-  for (std::size_t i = 0; i < N; ++i)
-    paths[i] = table[i].path;
-  std::sort(paths.begin(), paths.end());
-  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
-}
-static_assert(paths_unique(kPositioningAxisVariables), "duplicate path in the positioning-axis table");
+static_assert(detail::paths_unique(kPositioningAxisVariables),
+              "duplicate path in the positioning-axis table");
 static_assert(detail::ranges_valid(kPositioningAxisVariables),
               "a positioning-axis range is empty, exceeds its data type or excludes a permitted value");
 

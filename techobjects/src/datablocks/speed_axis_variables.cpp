@@ -132,15 +132,6 @@ constexpr auto kSpeedAxisVariables = std::to_array<VariableInfo>({
 
 // ---- compile-time consistency of a table ----
 template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  for (std::size_t i = 0; i < N; ++i) {
-    for (std::size_t j = i + 1; j < N; ++j) {
-      if (table[i].path == table[j].path) return false;
-    }
-  }
-  return true;
-}
-template <std::size_t N>
 constexpr bool ranges_valid(const std::array<VariableInfo, N>& table) {
   for (const VariableInfo& info : table) {
     if (!(info.minimum <= info.maximum)) return false;
@@ -148,7 +139,7 @@ constexpr bool ranges_valid(const std::array<VariableInfo, N>& table) {
   }
   return true;
 }
-static_assert(paths_unique(kSpeedAxisVariables), "duplicate path in the speed-axis table");
+static_assert(detail::paths_unique(kSpeedAxisVariables), "duplicate path in the speed-axis table");
 static_assert(ranges_valid(kSpeedAxisVariables), "a speed-axis range is empty or exceeds its data type");
 
 }  // namespace

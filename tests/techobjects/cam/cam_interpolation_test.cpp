@@ -400,6 +400,20 @@ TEST(CamInterpolation, Vdi2143MotionLaws) {
   EXPECT_EQ(motion_law_segments(MotionLaw::kLine, x1, y0, x0, y1, one), 0u);          // x1 <= x0
 }
 
+// The hinted search finds the same piece as the binary search, for every hint, at joins and inside pieces.
+TEST(CamInterpolation, HintedFindAgreesWithBinarySearch) {
+  Cam cam("Cam1");
+  set_points(cam, scattered_points(50, 11u));
+  ASSERT_TRUE(cam.interpolate_cam().accepted());
+  const CamProfile& p = cam.profile();
+  for (const CamPiece& piece : p.pieces()) {
+    for (const double x : {piece.x0, 0.5 * (piece.x0 + piece.x1), piece.x1}) {
+      for (std::size_t hint = 0; hint < p.pieces().size() + 2; ++hint)
+        ASSERT_EQ(p.find(x, hint), p.find(x)) << x << " " << hint;
+    }
+  }
+}
+
 // Scaling and shifting (spec 07 §3.3): y = SlaveScaling·f((x − MasterOffset)/MasterScaling) + SlaveOffset.
 // Cam C of spec 07 §8: (0,0), (180,100), (360,0), linear. CM-1 numbers: SS 2, SO 10, L = 90 → 110.
 TEST(CamInterpolation, ScalingAndShifting) {

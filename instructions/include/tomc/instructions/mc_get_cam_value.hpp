@@ -9,13 +9,6 @@
 
 namespace tomc::instructions {
 
-// The scaling inputs both instructions have (MasterScaling ≠ 0; spec 07 §3.3). They stay plain members of
-// each instruction, as in the manual.
-template <typename Instruction>
-techobjects::CamScaling cam_scaling(const Instruction& fb) noexcept {
-  return {fb.MasterOffset, fb.SlaveOffset, fb.MasterScaling, fb.SlaveScaling};
-}
-
 // A read instruction: one lookup on the rising edge, its result shown with Done.
 class CamReadHandshake {
  public:
@@ -41,9 +34,10 @@ class CamReadHandshake {
   techobjects::CamLookup result_{};
 };
 
-struct MC_GetCamFollowingValue {
+// What both read instructions have: the scaling inputs (MasterScaling ≠ 0; spec 07 §3.3) and the handshake
+// outputs, as plain members.
+struct CamReadInstruction {
   bool Execute = false;
-  double LeadingValue = 0.0;
   double MasterOffset = 0.0;
   double SlaveOffset = 0.0;
   double MasterScaling = 1.0;
@@ -53,50 +47,42 @@ struct MC_GetCamFollowingValue {
   bool CommandAborted = false;  // never set
   bool Error = false;
   std::uint16_t ErrorID = 0;
+
+ protected:
+  techobjects::CamScaling scaling() const noexcept {
+    return {MasterOffset, SlaveOffset, MasterScaling, SlaveScaling};
+  }
+  CamReadHandshake read_;
+};
+
+struct MC_GetCamFollowingValue : CamReadInstruction {
+  double LeadingValue = 0.0;
   double Value = 0.0;
   double FirstDerivative = 0.0;
   double SecondDerivative = 0.0;
 
   void operator()(const techobjects::Cam& cam) noexcept {
-    const auto& r =
-        read_.call(Execute, [&] { return cam.get_following_value(LeadingValue, cam_scaling(*this)); });
+    const auto& r = read_.call(Execute, [&] { return cam.get_following_value(LeadingValue, scaling()); });
     show_outputs(*this, read_.outputs());
     Value = r.value.y;
     FirstDerivative = r.value.dy;
     SecondDerivative = r.value.ddy;
   }
-
- private:
-  CamReadHandshake read_;
 };
 
-struct MC_GetCamLeadingValue {
-  bool Execute = false;
+struct MC_GetCamLeadingValue : CamReadInstruction {
   double FollowingValue = 0.0;
   double ApproachLeadingValue = 0.0;
   std::int32_t ApproachDirection = 3;  // 1 positive, 2 negative, 3 nearest
-  double MasterOffset = 0.0;
-  double SlaveOffset = 0.0;
-  double MasterScaling = 1.0;
-  double SlaveScaling = 1.0;
-  bool Done = false;
-  bool Busy = false;
-  bool CommandAborted = false;  // never set
-  bool Error = false;
-  std::uint16_t ErrorID = 0;
   double Value = 0.0;
 
   void operator()(const techobjects::Cam& cam) noexcept {
     const auto& r = read_.call(Execute, [&] {
-      return cam.get_leading_value(FollowingValue, ApproachLeadingValue, ApproachDirection,
-                                   cam_scaling(*this));
+      return cam.get_leading_value(FollowingValue, ApproachLeadingValue, ApproachDirection, scaling());
     });
     show_outputs(*this, read_.outputs());
     Value = r.leading_value;
   }
-
- private:
-  CamReadHandshake read_;
 };
 
 }  // namespace tomc::instructions

@@ -75,6 +75,9 @@ class CamProfile {
 
   // The piece that holds x (the first of two at a join is the left one); x is clamped to [start, end].
   std::size_t find(double x) const noexcept;
+  // The same, trying the piece `hint` and its neighbours first: a follower's leading value moves little per
+  // cycle, so its last piece almost always answers without the binary search.
+  std::size_t find(double x, std::size_t hint) const noexcept;
   // f(x) with x clamped to [start, end]; zero for an empty profile.
   CamValue evaluate(double x) const noexcept;
   static CamValue evaluate(const CamPiece& piece, double x) noexcept;

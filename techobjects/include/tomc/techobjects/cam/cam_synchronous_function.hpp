@@ -15,6 +15,7 @@
 // noexcept, no allocation; switching to another cam is a pointer assignment (use() with acquire/release of
 // the cam's StatusWord.X0 is the caller's business).
 
+#include <cstddef>
 #include <cstdint>
 
 #include "tomc/techobjects/cam/cam_profile.hpp"
@@ -51,6 +52,7 @@ class CamSynchronousFunction {
   CamApplicationMode mode_ = CamApplicationMode::kNotCyclic;
   double period_gain_ = 0.0;  // f(End) − f(Start): what cyclic appending adds per period
   std::int64_t last_period_ = 0;
+  std::size_t piece_ = 0;  // the piece of the last evaluation (CamProfile::find's hint)
   bool first_ = true;
 };
 
