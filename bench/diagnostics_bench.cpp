@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "positioning_machine.hpp"
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
@@ -117,7 +118,57 @@ void BM_ApplicationCycle(benchmark::State& state) {
   }
 }
 
+// Diagnostics::cycle() of 4 positioning axes (issue 21: a positioning axis reflects ~610 variables, a speed
+// axis 80) on simulated drives in steady motion, with a 32-channel trace of the values an engineer scopes
+// while commissioning. range(0): publish period (cycles). The axes move in their own runtime (its step is
+// timed too: the published values change as in a real cycle); the diagnostics are attached to a second
+// runtime that never runs and are called right after each step. Diagnostics' cost = this benchmark minus
+// BM_PositioningRuntimeStep.
+void BM_DiagnosticsCyclePositioning(benchmark::State& state) {
+  bench::PositioningMachine m(kAxes, true, 0);
+  diagnostics::Diagnostics d(
+      diagnostics::DiagnosticsConfig{static_cast<std::uint32_t>(state.range(0)), 8192, 100});
+  for (auto& axis : m.group().axes)
+    d.add(*axis);
+  techobjects::Runtime idle(techobjects::RuntimeConfig{0.001, 1, 1});
+  d.attach(idle);
+  // 32 channels: 8 of each axis.
+  diagnostics::TraceRequest r;
+  for (int a = 1; a <= kAxes; ++a) {
+    for (const char* p : {"ActualPosition", "ActualVelocity", "Position", "StatusPositioning.FollowingError",
+                          "StatusWord", "StatusWord.X7", "telegram.drive.NIST_B", "telegram.drive.G1_XIST1"})
+      r.channels.push_back("Axis" + std::to_string(a) + "." + p);
+  }
+  r.post_samples = diagnostics::kMaxTraceSamples;
+  if (!d.start_trace(r).empty()) std::abort();
+  techobjects::CycleClock clock = m.runtime().clock();
+  std::uint64_t n = 0;
+  for (auto _ : state) {
+    m.step();  // the axes move: the published values change
+    d.cycle(clock);
+    ++clock.servo_cycles;
+    if (++n % 20 == 0) {
+      state.PauseTiming();
+      d.poll();
+      const bool done = d.read([](const diagnostics::Diagnostics::State& s) {
+        return s.trace.state == diagnostics::TraceCapture::State::kComplete;
+      });
+      if (done && !d.start_trace(r).empty()) std::abort();
+      state.ResumeTiming();
+    }
+  }
+}
+
+// The same machine's runtime step alone: what the diagnostics' share is measured against.
+void BM_PositioningRuntimeStep(benchmark::State& state) {
+  bench::PositioningMachine m(kAxes, true, 0);
+  for (auto _ : state)
+    m.step();
+}
+
 }  // namespace
 
+BENCHMARK(BM_DiagnosticsCyclePositioning)->Arg(10)->Arg(1);
+BENCHMARK(BM_PositioningRuntimeStep);
 BENCHMARK(BM_DiagnosticsCycle)->Args({10, 0})->Args({1, 0})->Args({10, 1})->Args({1, 1});
 BENCHMARK(BM_ApplicationCycle)->Arg(0)->Arg(1);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "axis_group.hpp"
@@ -59,7 +60,7 @@ class PositioningMachine {
       }
       auto d = data;
       if (!with_drive) d.VirtualAxis.Mode = techobjects::kModeOn;
-      group_->axes.push_back(std::make_unique<PositioningAxis>("Axis", io, d));
+      group_->axes.push_back(std::make_unique<PositioningAxis>("Axis" + std::to_string(i + 1), io, d));
     }
     runtime_.add_technology_object(std::move(group));
     programs_.resize(static_cast<std::size_t>(axes));

@@ -53,9 +53,22 @@ Json number(double v) {
   return std::isfinite(v) ? Json(v) : Json(nullptr);
 }
 
-Json alarm_json(const to::PendingAlarm& a) {
+// When a pending alarm was raised by the wall clock: the time of its "raised" event in the history (D9);
+// null if the history no longer holds it.
+Json raised_unix_s(const Diagnostics::ObjectState& o, const to::PendingAlarm& a) {
+  for (std::size_t e = o.history.size(); e-- > 0;) {
+    const to::AlarmEvent& event = o.history[e];
+    if (event.kind == to::AlarmEvent::Kind::kRaised && event.number == a.number &&
+        event.cycle == a.raised_cycle)
+      return number(o.history_unix_s[e]);
+  }
+  return nullptr;
+}
+
+Json alarm_json(const to::PendingAlarm& a, const Diagnostics::ObjectState& o) {
   const to::AlarmDefinition* d = to::find_alarm(a.number);
   return Json{{"number", a.number},
+              {"unix_s", raised_unix_s(o, a)},
               {"additional_value", a.additional_value},
               {"class", class_name(a.alarm_class)},
               {"reaction", static_cast<int>(a.reaction)},
@@ -64,10 +77,11 @@ Json alarm_json(const to::PendingAlarm& a) {
               {"cycle", a.raised_cycle}};
 }
 
-Json event_json(const to::AlarmEvent& e) {
+Json event_json(const to::AlarmEvent& e, double unix_s) {
   const to::AlarmDefinition* d = to::find_alarm(e.number);
   return Json{{"sequence", e.sequence},
               {"cycle", e.cycle},
+              {"unix_s", number(unix_s)},
               {"kind", e.kind == to::AlarmEvent::Kind::kRaised ? "raised" : "acknowledged"},
               {"number", e.number},
               {"additional_value", e.additional_value},
@@ -116,10 +130,19 @@ Json describe_objects(const Diagnostics& diagnostics) {
   for (std::size_t i = 0; i < diagnostics.object_count(); ++i) {
     const ObjectView& view = diagnostics.view(i);
     Json layout = Json::array();
+    const ObjectUnits& units = diagnostics.units(i);
+    const auto table = view.variables();
+    auto unit_of = [&](std::string_view path) -> std::string_view {
+      const to::VariableInfo* v = to::find_variable(table, path);
+      return v == nullptr ? std::string_view() : units.symbol(quantity_of(*v));
+    };
     for (const LayoutArea& area : diagnostics_layout(view.type())) {
       Json items = Json::array();
       for (const LayoutItem& item : area.items)
-        items.push_back(Json{{"label", item.label}, {"source", item.source}, {"value", item.value}});
+        items.push_back(Json{{"label", item.label},
+                             {"source", item.source},
+                             {"value", item.value},
+                             {"unit", item.value ? unit_of(item.source) : std::string_view()}});
       layout.push_back(Json{{"page", area.page}, {"title", area.title}, {"items", std::move(items)}});
     }
     Json telegram = Json::array();
@@ -134,6 +157,7 @@ Json describe_objects(const Diagnostics& diagnostics) {
                {"signal", info.name},
                {"bits", info.bits},
                {"signed", info.kind == tg::SignalKind::kNormalised || info.kind == tg::SignalKind::kSigned},
+               {"normalised", info.kind == tg::SignalKind::kNormalised},
                {"fields", std::move(fields)}});
     }
     Json telegrams = Json::object();
@@ -154,6 +178,12 @@ Json describe_objects(const Diagnostics& diagnostics) {
              {"layout", std::move(layout)},
              {"telegrams", std::move(telegrams)},
              {"telegram", std::move(telegram)},
+             {"units",
+              {{"position", units.position},
+               {"velocity", units.velocity},
+               {"acceleration", units.acceleration},
+               {"jerk", units.jerk}}},
+             {"reference_speed", diagnostics.reference_speed(i)},
              {"variable_count", view.variables().size()}});
   }
   Json switches = Json::array();
@@ -191,17 +221,23 @@ Json status(const Diagnostics& diagnostics, const Diagnostics::State& state, std
       items.push_back(o.valid ? number(item.evaluate(s.values)) : Json(nullptr));
     Json alarms = Json::array();
     for (std::uint32_t a = 0; a < s.alarm_count; ++a)
-      alarms.push_back(alarm_json(s.alarms[a]));
+      alarms.push_back(alarm_json(s.alarms[a], o));
     Json history = Json::array();
     const std::size_t first = o.history.size() > history_events ? o.history.size() - history_events : 0;
     for (std::size_t e = first; e < o.history.size(); ++e)
-      history.push_back(event_json(o.history[e]));
+      history.push_back(event_json(o.history[e], o.history_unix_s[e]));
     const AxisPanel* panel = diagnostics.panel(i);
     objects.push_back(
         Json{{"name", view.name()},
              {"valid", o.valid},
              {"cycle", s.cycle},
              {"words", std::move(words)},
+             // The positions the TO derives from each encoder's XIST (telegram page: XIST as counts and
+             // position); null for a TO without them (a speed axis).
+             {"encoder_positions",
+              to::find_variable(table, "StatusSensor.Position") != nullptr
+                  ? Json::array({value_of("StatusSensor.Position"), nullptr})
+                  : Json::array({value_of("StatusSensor[1].Position"), value_of("StatusSensor[2].Position")})},
              {"error_detail",
               {{"number", value_of("ErrorDetail.Number")}, {"reaction", value_of("ErrorDetail.Reaction")}}},
              {"items", std::move(items)},
@@ -232,10 +268,12 @@ Json variables(const Diagnostics& diagnostics, const Diagnostics::State& state, 
   const Diagnostics::ObjectState& o = state.objects[object];
   Json list = Json::array();
   const auto table = view.variables();
+  const ObjectUnits& units = diagnostics.units(object);
   for (std::size_t i = 0; i < table.size(); ++i) {
     const to::VariableInfo& v = table[i];
     list.push_back(Json{{"path", v.path},
                         {"type", to::to_string(v.type)},
+                        {"unit", units.symbol(quantity_of(v))},
                         {"access", to::to_string(v.access)},
                         {"status", v.role == to::VariableRole::kStatus},
                         {"value", o.valid ? number(o.snapshot.values[i]) : Json(nullptr)}});
@@ -247,10 +285,10 @@ Json alarms(const Diagnostics& diagnostics, const Diagnostics::State& state, std
   const Diagnostics::ObjectState& o = state.objects[object];
   Json pending = Json::array();
   for (std::uint32_t a = 0; a < o.snapshot.alarm_count; ++a)
-    pending.push_back(alarm_json(o.snapshot.alarms[a]));
+    pending.push_back(alarm_json(o.snapshot.alarms[a], o));
   Json history = Json::array();
-  for (const to::AlarmEvent& e : o.history)
-    history.push_back(event_json(e));
+  for (std::size_t e = 0; e < o.history.size(); ++e)
+    history.push_back(event_json(o.history[e], o.history_unix_s[e]));
   return Json{{"name", diagnostics.view(object).name()},
               {"pending", std::move(pending)},
               {"history", std::move(history)},

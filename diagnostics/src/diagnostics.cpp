@@ -168,6 +168,12 @@ void Diagnostics::attach(to::Runtime& runtime) {
         (i * config_.publish_period_cycles / objects_.size()) % config_.publish_period_cycles;
     state_.objects[i].snapshot.values.assign(objects_[i]->view->variables().size(), 0.0);
     state_.objects[i].snapshot.words.assign(objects_[i]->view->telegram_channels().size(), 0);
+    // Configuration, fixed after download: read once here, before the cycle runs.
+    const ObjectView& view = *objects_[i]->view;
+    objects_[i]->units = object_units(view.variables(), view.data_block());
+    if (const to::VariableInfo* v =
+            to::find_variable(view.variables(), "Actor.DriveParameter.ReferenceSpeed"))
+      objects_[i]->reference_speed = v->read_fn(view.data_block());
   }
   runtime.set_post_interpolator([this](to::Runtime& rt) { cycle(rt.clock()); });
   attached_ = true;
@@ -281,6 +287,8 @@ bool Diagnostics::set_switch(std::string_view name, bool on) {
 void Diagnostics::poll() {
   std::lock_guard lock(mutex_);
   ++state_.polls;
+  const double now_unix_s =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   for (std::size_t i = 0; i < objects_.size(); ++i) {
     Object& o = *objects_[i];
     if (!o.buffer.update()) continue;
@@ -296,8 +304,13 @@ void Diagnostics::poll() {
       st.history_lost += event.sequence - st.last_sequence - 1;
       st.last_sequence = event.sequence;
       st.history.push_back(event);
-      while (st.history.size() > config_.alarm_history)
+      const double age_s =
+          s.cycle >= event.cycle ? static_cast<double>(s.cycle - event.cycle) * servo_cycle_s_ : 0.0;
+      st.history_unix_s.push_back(now_unix_s - age_s);
+      while (st.history.size() > config_.alarm_history) {
         st.history.pop_front();
+        st.history_unix_s.pop_front();
+      }
     }
   }
   // The trace: progress before the drain decides completion (every row of a finished recording is in the ring

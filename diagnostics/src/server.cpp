@@ -15,6 +15,7 @@
 
 #include "tomc/diagnostics/api.hpp"
 #include "tomc/diagnostics/trace_image.hpp"
+#include "web_assets.hpp"
 
 namespace tomc::diagnostics {
 
@@ -321,6 +322,19 @@ struct Server::Impl {
           "img-src 'self' data: blob:; connect-src 'self'; frame-ancestors 'none'");
       return r;
     });
+    // The plotting library: immutable for this build, shared without a copy per request.
+    for (const auto& [path, bytes, type] :
+         {std::tuple{"/vendor/uPlot.iife.min.js", uplot_script(), "text/javascript; charset=utf-8"},
+          std::tuple{"/vendor/uPlot.min.css", uplot_style(), "text/css; charset=utf-8"}}) {
+      auto body = std::make_shared<const std::string>(bytes);
+      http.route("GET", path, Lane::kInline, [body, type](const Request&) {
+        Response r;
+        r.content_type = type;
+        r.shared_body = body;
+        r.headers.emplace_back("Cache-Control", "max-age=3600");
+        return r;
+      });
+    }
     http.route("GET", "/favicon.ico", Lane::kInline, [](const Request&) {
       Response r;
       r.status = 204;

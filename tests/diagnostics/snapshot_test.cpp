@@ -2,6 +2,7 @@
 // words of the drive telegram with their probes, the alarm history, staggered publishing, program switches.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <set>
 
 #include "diagnostics_fixture.hpp"
@@ -137,6 +138,32 @@ TEST(Snapshots, AlarmHistoryCountsWhatItMissed) {
   const auto full = n.diagnostics.read([](const diagnostics::Diagnostics::State& s) { return s.objects[0]; });
   EXPECT_EQ(full.history.size(), 80u);
   EXPECT_EQ(full.history_lost, 0u);
+}
+
+// Issue 21: every event of the history has its wall-clock time, dated back from the newest snapshot's cycle
+// (the cycle runs in real time): an event 500 cycles of 1 ms before the snapshot happened 0.5 s before the
+// poll; events are in time order.
+TEST(Snapshots, AlarmHistoryHasWallClockTime) {
+  DiagnosticsMachine m;
+  ASSERT_TRUE(m.axes[0]->inject_alarm(techobjects::kAlarmDynamicsLimitedVelocity, 7,
+                                      techobjects::AlarmReaction::kNone));
+  m.run(1);
+  const std::uint64_t raised = m.runtime.clock().servo_cycles - 1;
+  m.run(500);
+  const double before =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  m.diagnostics.poll();
+  const double after =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const auto state =
+      m.diagnostics.read([](const diagnostics::Diagnostics::State& s) { return s.objects[0]; });
+  ASSERT_EQ(state.history.size(), 1u);
+  ASSERT_EQ(state.history_unix_s.size(), 1u);
+  EXPECT_EQ(state.history[0].cycle, raised);
+  const double age_s = static_cast<double>(state.snapshot.cycle - raised) * 0.001;
+  EXPECT_GE(age_s, 0.49);  // published at most one publish period (10 cycles) before the last cycle
+  EXPECT_GE(state.history_unix_s[0], before - age_s - 1e-6);
+  EXPECT_LE(state.history_unix_s[0], after - age_s + 1e-6);
 }
 
 TEST(Snapshots, ProgramSwitches) {

@@ -6,6 +6,7 @@
 #include <httplib.h>
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -29,6 +30,16 @@ constexpr const char* kSession = "00000000c0ffee01";
 
 std::size_t item_index(const Json& objects, std::string_view area, std::string_view label,
                        std::size_t object);
+
+// The index of a layout area of the first object by its title.
+std::size_t item_area(const Json& objects, std::string_view title) {
+  const Json& layout = objects["objects"][0]["layout"];
+  for (std::size_t a = 0; a < layout.size(); ++a) {
+    if (layout[a]["title"] == title) return a;
+  }
+  ADD_FAILURE() << "no area " << title;
+  return 0;
+}
 
 // The speed setpoint of an object in a /api/status answer (the cycle's data are only read through the API:
 // the runtime runs on another thread).
@@ -216,6 +227,16 @@ TEST(WebApi, ObjectsAndStatus) {
   ASSERT_EQ(vcode, 200);
   EXPECT_EQ(vars["variables"].size(), techobjects::speed_axis_variables().size());
   EXPECT_EQ(vars["variables"][0]["path"], "Velocity");
+  // Units from the TO's configuration (issue 21; spec 04 §3.11): a speed axis in 1/min, 1/s², 1/s³.
+  EXPECT_EQ(vars["variables"][0]["unit"], "1/min");
+  EXPECT_EQ(o["units"]["velocity"], "1/min");
+  EXPECT_EQ(o["units"]["acceleration"], "1/s²");
+  EXPECT_EQ(o["units"]["jerk"], "1/s³");
+  EXPECT_EQ(o["units"]["position"], "");
+  const Json& limits = o["layout"][item_area(objects, "Dynamic limits")]["items"][0];
+  EXPECT_EQ(limits["label"], "Velocity");
+  EXPECT_EQ(limits["unit"], "1/min");
+  EXPECT_GT(o["reference_speed"].get<double>(), 0.0);  // 100 % of NSOLL/NIST on the telegram page
   const auto [acode, alarms] = s.get("/api/objects/Axis1/alarms");
   ASSERT_EQ(acode, 200);
   EXPECT_TRUE(alarms["pending"].empty());
@@ -295,6 +316,10 @@ TEST(WebApi, PositioningPanelHomesAndPositions) {
   ServedSlide s;
   const auto objects = s.get("/api/objects").second;
   const auto caps = objects["objects"][0]["capabilities"].get<std::vector<std::string>>();
+  // A linear positioning axis in mm and mm/s (the data block's defaults, spec 04 §3.11).
+  EXPECT_EQ(objects["objects"][0]["units"]["position"], "mm");
+  EXPECT_EQ(objects["objects"][0]["units"]["velocity"], "mm/s");
+  EXPECT_EQ(objects["objects"][0]["units"]["acceleration"], "mm/s²");
   for (const char* c : {"home_active", "home_set", "move_absolute", "move_relative", "jog"})
     EXPECT_NE(std::find(caps.begin(), caps.end(), c), caps.end()) << c;
   EXPECT_EQ(objects["objects"][0]["instructions"].size(), 8u);
@@ -329,6 +354,12 @@ TEST(WebApi, PositioningPanelHomesAndPositions) {
   ASSERT_EQ(s.panel("home", {{"mode", "set"}, {"position", 40.0}}).first, 200);
   s.wait_status([](const Json& j) { return (ServedSlide::status_word(j) & (1u << 5)) != 0; });
   EXPECT_NEAR(s.variable("ActualPosition"), 40.0, 0.01);
+  // The telegram page shows XIST1 with the position the TO derives from encoder 1 (issue 21).
+  const Json homed = s.wait_status([](const Json& j) {
+    const Json& p = j["objects"][0]["encoder_positions"][0];
+    return p.is_number() && std::abs(p.get<double>() - 40.0) < 0.01;
+  });
+  EXPECT_TRUE(homed["objects"][0]["encoder_positions"][1].is_number());  // Sensor[2] exists, unused
   ASSERT_EQ(s.panel("move_absolute", {{"position", 60.0}}).first, 200);
   EXPECT_TRUE(s.wait_variable("Position", 60.0));
   ASSERT_EQ(s.panel("move_relative", {{"distance", 5.0}, {"direction", -1}}).first, 200);
@@ -514,6 +545,20 @@ TEST(WebApi, PageIsServed) {
   EXPECT_NE(r->get_header_value("Content-Type").find("text/html"), std::string::npos);
   EXPECT_FALSE(r->get_header_value("Content-Security-Policy").empty());
   EXPECT_EQ(r->body, std::string(diagnostics::web_page()));
+  // The plotting library comes from this server, not from a CDN (issue 21): the page names only local files.
+  EXPECT_EQ(r->body.find("https://"), std::string::npos);
+  for (const auto& [path, type] : {std::pair{"/vendor/uPlot.iife.min.js", "text/javascript"},
+                                   std::pair{"/vendor/uPlot.min.css", "text/css"}}) {
+    EXPECT_NE(r->body.find(path), std::string::npos) << path;
+    auto asset = c.Get(path);
+    ASSERT_TRUE(asset) << path;
+    EXPECT_EQ(asset->status, 200) << path;
+    EXPECT_NE(asset->get_header_value("Content-Type").find(type), std::string::npos) << path;
+    EXPECT_GT(asset->body.size(), 1000u) << path;  // the library (~50 KB), its style sheet (~2 KB)
+  }
+  auto script = c.Get("/vendor/uPlot.iife.min.js");
+  ASSERT_TRUE(script);
+  EXPECT_NE(script->body.find("uPlot"), std::string::npos);
 }
 
 // Issue 21: panel values are range-checked against the axis' limits and the data-block ranges before they

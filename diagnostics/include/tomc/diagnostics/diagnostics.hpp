@@ -33,6 +33,7 @@
 #include "tomc/diagnostics/panel.hpp"
 #include "tomc/diagnostics/trace.hpp"
 #include "tomc/diagnostics/triple_buffer.hpp"
+#include "tomc/diagnostics/units.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 
@@ -111,6 +112,10 @@ class Diagnostics {
   std::span<const ResolvedItem> layout_items(std::size_t object) const noexcept {
     return objects_[object]->items;
   }
+  // Unit symbols of the object's data block (read by attach(), before the cycle runs; units.hpp).
+  const ObjectUnits& units(std::size_t object) const noexcept { return objects_[object]->units; }
+  // Actor.DriveParameter.ReferenceSpeed (1/min; read by attach()): 100 % of NSOLL/NIST (spec 06). 0: none.
+  double reference_speed(std::size_t object) const noexcept { return objects_[object]->reference_speed; }
   std::span<const ProgramSwitch> switches() const noexcept { return switches_; }
   double servo_cycle_s() const noexcept { return servo_cycle_s_; }
 
@@ -133,7 +138,10 @@ class Diagnostics {
     bool valid = false;  // a snapshot arrived
     ObjectSnapshot snapshot;
     std::deque<techobjects::AlarmEvent> history;  // oldest first
-    std::uint64_t history_lost = 0;               // events the reader missed (overwritten before read)
+    // When each event of `history` happened by the wall clock (Unix time, s): the poll that first saw it
+    // dates it back from the newest snapshot's cycle (the cycle runs in real time).
+    std::deque<double> history_unix_s;
+    std::uint64_t history_lost = 0;  // events the reader missed (overwritten before read)
     std::uint64_t last_sequence = 0;
   };
   struct State {
@@ -158,6 +166,8 @@ class Diagnostics {
     std::vector<ResolvedItem> items;  // diagnostics_layout(type), in order
     TripleBuffer<ObjectSnapshot> buffer;
     std::uint64_t publish_slot = 0;  // published when servo_cycles % publish_period_cycles == publish_slot
+    ObjectUnits units;
+    double reference_speed = 0.0;
   };
   void publish(Object& object, std::uint64_t cycle) noexcept;
   void answer(std::uint64_t request, PanelAnswer answer) noexcept;

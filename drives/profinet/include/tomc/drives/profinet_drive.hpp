@@ -1,0 +1,47 @@
+#pragma once
+// A simulated PROFIdrive drive behind a PROFINET IO device: the device emulator of the PROFINET tests
+// (docs/profinet-gateway.md). The device has a DAP (slot 0, subslot 1) and a drive object (slot 1) whose
+// telegram submodule (subslot 2) carries the drive's setpoint and actual telegram; the telegram number is in
+// the submodule's ident, so a controller configured for another telegram gets a ModuleDiffBlock.
+
+#include <vector>
+
+#include "tomc/drives/simulated_drive.hpp"
+#include "tomc/profinet/io_device.hpp"
+
+namespace tomc::drives {
+
+inline constexpr std::uint32_t kDapIdent = 0x00000001;
+inline constexpr std::uint32_t kDriveObjectIdent = 0x00000100;
+inline constexpr std::uint16_t kDriveObjectSlot = 1;
+inline constexpr std::uint16_t kTelegramSubslot = 2;
+constexpr std::uint32_t telegram_submodule_ident(std::uint16_t telegram) noexcept {
+  return 0x00010000u + telegram;
+}
+
+// The modules a controller expects for a drive on `telegram` (the same the emulator has).
+std::vector<profinet::ExpectedModule> profidrive_modules(std::uint16_t telegram);
+
+class ProfinetDrive {
+ public:
+  // identity: name, IP, MAC, IDs; its modules are replaced by the drive's. config.drive_telegram only (no
+  // supplementary or encoder telegrams behind PROFINET yet).
+  ProfinetDrive(profinet::DeviceIdentity identity, const DeviceConfig& config,
+                const SimulatedDriveParameters& parameters);
+
+  profinet::IoDevice& device() noexcept { return device_; }
+  SimulatedDrive& drive() noexcept { return drive_; }
+
+  // One drive cycle: while the AR runs, the received setpoint telegram goes to the drive (without an AR the
+  // drive gets none and ends in F08501 after its timeout, as a real one); the drive's actual telegram goes
+  // into the input image. No allocation.
+  void cycle() noexcept;
+
+ private:
+  profinet::IoDevice device_;
+  SimulatedDrive drive_;
+  DeviceFrames setpoint_;
+  DeviceFrames actual_;
+};
+
+}  // namespace tomc::drives

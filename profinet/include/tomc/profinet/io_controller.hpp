@@ -1,0 +1,139 @@
+#pragma once
+// The protocol side of a PROFINET IO controller for one device (one AR), without sockets: the gateway puts
+// its frames on a raw socket and its RPC packets on UDP port 34964. Start-up in the order of
+// IEC 61158-6-10: DCP Identify by name of station (and Set of the IP suite if the device has another one),
+// Connect with the expected modules, the start-up record writes one by one, PrmEnd, the device's
+// ApplicationReady answered; then cyclic frames each send clock × reduction ratio with the data-hold
+// watchdog, alarms acknowledged, Release. Cyclic calls are noexcept and do not allocate.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tomc/profinet/alarm.hpp"
+#include "tomc/profinet/blocks.hpp"
+#include "tomc/profinet/cyclic.hpp"
+#include "tomc/profinet/dcp.hpp"
+
+namespace tomc::profinet {
+
+struct StartupRecord {
+  std::uint16_t slot = 0;
+  std::uint16_t subslot = 1;
+  std::uint16_t index = 0;
+  std::vector<std::uint8_t> data;
+};
+
+struct ControllerDeviceConfig {
+  std::string name_of_station;
+  IpSuite ip;
+  std::vector<ExpectedModule> modules;  // DAP first
+  std::vector<StartupRecord> startup_records;
+  std::uint16_t send_clock_factor = 32;  // × 31.25 µs
+  std::uint16_t reduction_ratio = 1;
+  std::uint16_t watchdog_factor = 3;
+  std::uint16_t data_hold_factor = 3;
+  std::uint16_t input_frame_id = kFrameIdRtClass1First;  // proposed; the device may change it
+  std::uint16_t output_frame_id = kFrameIdRtClass1First + 1;
+};
+
+enum class ControllerArState : std::uint8_t {
+  kOffline,         // not found yet / AR lost: Identify again
+  kConnecting,      // Connect sent
+  kParameterizing,  // writing the start-up records
+  kPrmEnd,          // PrmEnd sent
+  kWaitApplicationReady,
+  kRunning,
+};
+
+class IoController {
+ public:
+  IoController(MacAddress own_mac, std::string own_name, ControllerDeviceConfig device, Uuid ar_uuid);
+
+  ControllerArState state() const noexcept { return state_; }
+  const ControllerDeviceConfig& device() const noexcept { return device_; }
+  const std::optional<MacAddress>& device_mac() const noexcept { return device_mac_; }
+  const std::vector<ModuleDiff>& module_diff() const noexcept { return module_diff_; }
+  PnioStatus last_error() const noexcept { return last_error_; }
+  std::uint32_t ar_count() const noexcept { return ar_count_; }
+
+  // --- DCP ---
+  std::vector<std::uint8_t> identify_request(std::uint32_t xid) const;
+  // An Identify response (or Hello) of this device's name: learns its MAC; returns the Set request of the
+  // configured IP suite when the device has another one, else empty.
+  std::vector<std::uint8_t> on_dcp(std::span<const std::uint8_t> frame, std::uint32_t xid);
+
+  // --- Connection establishment (RPC payloads) ---
+  std::vector<std::uint8_t> connect_request();
+  // The Connect response: false (state kOffline, last_error set) on an error status or a missing block.
+  // A ModuleDiffBlock is kept in module_diff(); the AR goes on (its submodules' data have bad IOPS).
+  bool on_connect_response(std::span<const std::uint8_t> payload);
+  // The next start-up record write, or PrmEnd once all are acknowledged; empty while an answer is pending.
+  std::vector<std::uint8_t> next_request();
+  bool on_response(std::span<const std::uint8_t> payload);
+  // The device's ApplicationReady request (to the controller interface): the answer to send back.
+  std::vector<std::uint8_t> on_application_ready(std::span<const std::uint8_t> payload);
+  std::vector<std::uint8_t> release_request();
+
+  // --- Cyclic (noexcept, allocation-free) ---
+  std::span<std::uint8_t> output_data(std::uint16_t slot, std::uint16_t subslot) noexcept;
+  std::span<const std::uint8_t> input_data(std::uint16_t slot, std::uint16_t subslot) const noexcept;
+  std::uint8_t input_iops(std::uint16_t slot, std::uint16_t subslot) const noexcept;
+  // The output frame of this cycle into out (0 before the Connect response).
+  std::size_t next_output_frame(std::span<std::uint8_t> out) noexcept;
+  // A received input frame of this AR; false if it is another frame or malformed.
+  bool on_input_frame(std::span<const std::uint8_t> frame, std::uint64_t now_us) noexcept;
+  // True while the last input frame is valid data (DataValid, provider RUN) and younger than the watchdog.
+  bool input_valid(std::uint64_t now_us) const noexcept;
+  // The watchdog: no input frame for watchdog factor × cycle ends the AR (kOffline; reconnect from DCP).
+  bool watchdog_expired(std::uint64_t now_us) noexcept;
+  ApduStatus last_input_status() const noexcept { return input_status_; }
+
+  // --- Alarms ---
+  // A received alarm frame: the frames to send (transport ACK of the notification, then its AlarmAck);
+  // the notification is kept in last_alarm(). Returns 0 frames for anything else.
+  std::size_t on_alarm(std::span<const std::uint8_t> frame, std::span<std::uint8_t> ack_out,
+                       std::span<std::uint8_t> alarm_ack_out, std::size_t& ack_bytes,
+                       std::size_t& alarm_ack_bytes) noexcept;
+  const std::optional<AlarmBlock>& last_alarm() const noexcept { return last_alarm_; }
+  std::uint32_t alarms_acknowledged() const noexcept { return alarms_acknowledged_; }
+
+  void abort_ar() noexcept;
+
+ private:
+  std::vector<std::uint8_t> rpc_request(PnioOperation operation, std::span<const std::uint8_t> blocks);
+  bool check_response(std::span<const std::uint8_t> payload, RpcPacket& packet);
+  bool build_layouts();
+
+  MacAddress own_mac_;
+  std::string own_name_;
+  ControllerDeviceConfig device_;
+  Uuid ar_uuid_;
+  Uuid activity_;
+  std::uint32_t sequence_ = 0;
+  std::uint16_t session_key_ = 0;
+  ControllerArState state_ = ControllerArState::kOffline;
+  std::optional<MacAddress> device_mac_;
+  std::vector<ModuleDiff> module_diff_;
+  PnioStatus last_error_;
+  std::uint32_t ar_count_ = 0;
+  std::size_t next_record_ = 0;
+  bool waiting_ = false;
+  CyclicCodec output_codec_;
+  CyclicCodec input_codec_;
+  std::array<std::uint8_t, kMaxCSduLength> output_image_{};
+  std::array<std::uint8_t, kMaxCSduLength> input_image_{};
+  std::uint16_t output_cycle_counter_ = 0;
+  ApduStatus input_status_{0, 0, 0};
+  std::uint64_t last_input_us_ = 0;
+  bool input_seen_ = false;
+  std::uint64_t watchdog_us_ = 3000;
+  std::uint16_t alarm_send_sequence_ = 0;
+  std::optional<AlarmBlock> last_alarm_;
+  std::uint32_t alarms_acknowledged_ = 0;
+};
+
+}  // namespace tomc::profinet

@@ -1,0 +1,240 @@
+// IoController against IoDevice in memory (frames and RPC packets handed over directly, time in µs): the
+// start-up sequence of IEC 61158-6-10 (DCP identify + set IP, Connect, start-up record, PrmEnd,
+// ApplicationReady), 4 drives exchanging telegrams at 1 ms, a cut cable (both watchdogs, reconnect), a wrong
+// module, a refused Connect, an alarm acknowledged, no allocation in the cyclic calls.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "counting_allocator.hpp"
+#include "in_memory_start_up.hpp"
+#include "sample_frames.hpp"
+#include "tomc/profinet/io_controller.hpp"
+#include "tomc/profinet/io_device.hpp"
+
+namespace pn = tomc::profinet;
+
+namespace {
+
+constexpr std::uint64_t kCycleUs = 1000;
+
+std::vector<pn::ExpectedModule> drive_modules(std::uint32_t telegram_module = 0x100) {
+  return {{0, 0, 0x1, {{1, 0x1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
+          {0, 1, telegram_module, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
+}
+
+pn::DeviceIdentity device_identity(int index, std::uint32_t telegram_module = 0x100) {
+  pn::DeviceIdentity identity;
+  identity.name_of_station = "drive-" + std::to_string(index);
+  identity.mac = {0x02, 0, 0, 0, 1, static_cast<std::uint8_t>(index)};
+  identity.vendor_id = 0x002A;
+  identity.device_id = 0x0C01;
+  for (const pn::ExpectedModule& module : drive_modules(telegram_module)) {
+    pn::DeviceModule real{module.slot, module.ident, {}};
+    for (const pn::ExpectedSubmodule& sub : module.submodules) {
+      real.submodules.push_back({sub.subslot, sub.ident, sub.direction, sub.input_length, sub.output_length});
+    }
+    identity.modules.push_back(real);
+  }
+  return identity;
+}
+
+pn::ControllerDeviceConfig device_config(int index) {
+  pn::ControllerDeviceConfig config;
+  config.name_of_station = "drive-" + std::to_string(index);
+  config.ip = {{10, 0, 0, static_cast<std::uint8_t>(10 + index)}, {255, 255, 255, 0}, {}};
+  config.modules = drive_modules();
+  config.startup_records = {{1, 1, 0xB02E, pn::testing::read_p0922_request().data}};
+  config.input_frame_id = static_cast<std::uint16_t>(0x8000 + 2 * index);
+  config.output_frame_id = static_cast<std::uint16_t>(0x8001 + 2 * index);
+  return config;
+}
+
+struct Pair {
+  std::unique_ptr<pn::IoController> controller;
+  std::unique_ptr<pn::IoDevice> device;
+  bool cable = true;
+};
+
+Pair make_pair(int index, std::uint32_t real_telegram_module = 0x100) {
+  pn::Uuid ar{0x10000000u + static_cast<std::uint32_t>(index), 1, 2, {3}};
+  return {
+      std::make_unique<pn::IoController>(pn::testing::kController, "tomc-gateway", device_config(index), ar),
+      std::make_unique<pn::IoDevice>(device_identity(index, real_telegram_module))};
+}
+
+// One cycle of both sides: controller output -> device, device input -> controller.
+bool start_up(Pair& pair, std::uint32_t xid = 1) {
+  return pn::testing::start_up(*pair.controller, *pair.device, xid);
+}
+
+void cycle(Pair& pair, std::uint64_t now_us) {
+  std::array<std::uint8_t, 1518> frame{};
+  std::size_t n = pair.controller->next_output_frame(frame);
+  if (n != 0 && pair.cable) pair.device->on_cyclic(std::span(frame).first(n), now_us);
+  n = pair.device->next_input_frame(frame);
+  if (n != 0 && pair.cable) pair.controller->on_input_frame(std::span(frame).first(n), now_us);
+  pair.device->watchdog_expired(now_us);
+  pair.controller->watchdog_expired(now_us);
+}
+
+}  // namespace
+
+TEST(IoController, StartUpNamesConnectsWritesAndRuns) {
+  Pair pair = make_pair(1);
+  ASSERT_TRUE(start_up(pair));
+  // The device got the configured IP through DCP Set, and the start-up record through a write.
+  EXPECT_EQ(pair.device->identity().ip, device_config(1).ip);
+  EXPECT_EQ(pair.device->state(), pn::ArState::kRunning);
+  EXPECT_TRUE(pair.controller->module_diff().empty());
+  EXPECT_EQ(pair.controller->ar_count(), 1u);
+  EXPECT_EQ(*pair.controller->device_mac(), pair.device->identity().mac);
+  // The IOCR offsets the controller chose are the ones the device uses: the same 4 bytes arrive each way.
+  const std::array<std::uint8_t, 4> stw1_nsoll{0x04, 0x7F, 0x10, 0x00};
+  std::copy(stw1_nsoll.begin(), stw1_nsoll.end(), pair.controller->output_data(1, 2).begin());
+  const std::array<std::uint8_t, 4> zsw1_nist{0x0B, 0x37, 0x10, 0x00};
+  cycle(pair, 1000);
+  std::copy(zsw1_nist.begin(), zsw1_nist.end(), pair.device->input_data(1, 2).begin());
+  cycle(pair, 2000);
+  const auto at_device = pair.device->output_data(1, 2);
+  EXPECT_TRUE(std::equal(at_device.begin(), at_device.end(), stw1_nsoll.begin(), stw1_nsoll.end()));
+  const auto at_controller = pair.controller->input_data(1, 2);
+  EXPECT_TRUE(std::equal(at_controller.begin(), at_controller.end(), zsw1_nist.begin(), zsw1_nist.end()));
+  EXPECT_EQ(pair.controller->input_iops(1, 2), pn::kIoxsGood);
+  EXPECT_TRUE(pair.controller->input_valid(2000));
+  EXPECT_FALSE(pair.controller->input_valid(2000 + 3 * kCycleUs + 1));  // older than the watchdog
+  // Release ends both sides.
+  const auto release = pair.controller->release_request();
+  EXPECT_TRUE(pair.controller->on_response(pair.device->on_rpc(release)));
+  EXPECT_EQ(pair.device->state(), pn::ArState::kNone);
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+}
+
+TEST(IoController, FourDrivesAtOneMillisecondThenACableCutAndReconnect) {
+  std::vector<Pair> drives;
+  for (int i = 0; i < 4; ++i) {
+    drives.push_back(make_pair(i));
+    ASSERT_TRUE(start_up(drives.back())) << i;
+  }
+  std::uint64_t now = 0;
+  // 100 cycles: each drive echoes a counter the controller sends; the answer arrives in the same cycle
+  // (the device's frame follows the controller's).
+  for (int k = 0; k < 100; ++k) {
+    now += kCycleUs;
+    for (std::size_t i = 0; i < drives.size(); ++i) {
+      drives[i].controller->output_data(1, 2)[3] = static_cast<std::uint8_t>(k + i);
+      cycle(drives[i], now);
+      std::copy_n(drives[i].device->output_data(1, 2).begin(), 4, drives[i].device->input_data(1, 2).begin());
+      ASSERT_TRUE(drives[i].controller->input_valid(now));
+    }
+  }
+  for (std::size_t i = 0; i < drives.size(); ++i) {
+    EXPECT_EQ(drives[i].controller->input_data(1, 2)[3],
+              static_cast<std::uint8_t>(98 + i));  // one cycle behind
+    EXPECT_EQ(drives[i].controller->last_input_status().cycle_counter, static_cast<std::uint16_t>(100 * 32));
+  }
+  // Cable of drive 2 cut: after watchdog factor 3 x 1 ms without frames both sides end the AR (the others
+  // keep running); then the controller starts again with DCP and reconnects.
+  drives[2].cable = false;
+  int cycles_to_loss = 0;
+  while (drives[2].controller->state() == pn::ControllerArState::kRunning && cycles_to_loss < 10) {
+    now += kCycleUs;
+    for (Pair& pair : drives)
+      cycle(pair, now);
+    ++cycles_to_loss;
+  }
+  EXPECT_EQ(cycles_to_loss, 4);  // 3 ms of silence is still tolerated; the 4th millisecond is not
+  EXPECT_EQ(drives[2].device->state(), pn::ArState::kNone);
+  for (int i : {0, 1, 3})
+    EXPECT_EQ(drives[i].controller->state(), pn::ControllerArState::kRunning) << i;
+  drives[2].cable = true;
+  ASSERT_TRUE(start_up(drives[2], 100));
+  EXPECT_EQ(drives[2].controller->ar_count(), 2u);
+  now += kCycleUs;
+  cycle(drives[2], now);
+  EXPECT_TRUE(drives[2].controller->input_valid(now));
+}
+
+TEST(IoController, WrongModuleIsReportedWithItsDifference) {
+  Pair pair = make_pair(1, 0x102);
+  ASSERT_TRUE(start_up(pair));
+  ASSERT_EQ(pair.controller->module_diff().size(), 1u);
+  const pn::ModuleDiff& diff = pair.controller->module_diff()[0];
+  EXPECT_EQ(diff.slot, 1);
+  EXPECT_EQ(diff.ident, 0x102u);
+  EXPECT_EQ(diff.state, pn::ModuleState::kWrongModule);
+  cycle(pair, 1000);
+  EXPECT_EQ(pair.controller->input_iops(1, 2), pn::kIoxsBad);
+}
+
+TEST(IoController, RefusedConnectIsReportedAndIdentifyIgnoresOtherNames) {
+  Pair first = make_pair(1);
+  ASSERT_TRUE(start_up(first));
+  // A second controller (other AR UUID) for the same device: the device refuses (no AR resources).
+  pn::IoController second(pn::testing::kController, "other", device_config(1), pn::Uuid{0x77, 0, 0, {}});
+  ASSERT_TRUE(second.on_dcp(first.device->on_dcp(second.identify_request(5)), 6).empty());
+  EXPECT_FALSE(second.on_connect_response(first.device->on_rpc(second.connect_request())));
+  EXPECT_EQ(second.last_error(), (pn::PnioStatus{0xDB, 0x81, 0x40, 0x04}));
+  EXPECT_EQ(second.state(), pn::ControllerArState::kOffline);
+  // An Identify answer of another station is not taken.
+  pn::IoController third(pn::testing::kController, "x", device_config(7), pn::Uuid{0x78, 0, 0, {}});
+  EXPECT_TRUE(third.on_dcp(first.device->on_dcp(second.identify_request(9)), 10).empty());
+  EXPECT_FALSE(third.device_mac());
+  EXPECT_TRUE(third.connect_request().empty());
+}
+
+TEST(IoController, AlarmIsAcknowledged) {
+  Pair pair = make_pair(1);
+  ASSERT_TRUE(start_up(pair));
+  std::array<std::uint8_t, 256> alarm{};
+  std::size_t alarm_bytes = 0;
+  const pn::RtaFrame notification = pn::testing::diagnosis_alarm();
+  ASSERT_EQ(pn::encode({pn::testing::kController, pair.device->identity().mac, pn::VlanTag{6, 0}},
+                       notification, alarm, alarm_bytes),
+            pn::ProfinetError::kNone);
+  std::array<std::uint8_t, 128> transport{};
+  std::array<std::uint8_t, 128> ack{};
+  std::size_t transport_bytes = 0;
+  std::size_t ack_bytes = 0;
+  ASSERT_EQ(pair.controller->on_alarm(std::span(alarm).first(alarm_bytes), transport, ack, transport_bytes,
+                                      ack_bytes),
+            2u);
+  pn::RtaFrame decoded;
+  ASSERT_EQ(pn::decode_rta(std::span(transport).first(transport_bytes), decoded), pn::ProfinetError::kNone);
+  EXPECT_EQ(decoded.pdu_type, pn::RtaPduType::kAck);
+  EXPECT_EQ(decoded.ack_sequence, notification.send_sequence);
+  EXPECT_EQ(decoded.destination_endpoint, notification.source_endpoint);
+  ASSERT_EQ(pn::decode_rta(std::span(ack).first(ack_bytes), decoded), pn::ProfinetError::kNone);
+  EXPECT_TRUE(decoded.block.is_ack);
+  EXPECT_EQ(decoded.block.sequence_number(), 5);
+  EXPECT_EQ(decoded.block.subslot, 2);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
+  EXPECT_EQ(pair.controller->last_alarm()->alarm_type, pn::alarm_type::kDiagnosis);
+  // An AlarmAck (from the device's direction) or a non-alarm frame is not acknowledged again.
+  EXPECT_EQ(
+      pair.controller->on_alarm(std::span(ack).first(ack_bytes), transport, ack, transport_bytes, ack_bytes),
+      0u);
+}
+
+TEST(IoController, CyclicCallsDoNotAllocate) {
+  Pair pair = make_pair(1);
+  ASSERT_TRUE(start_up(pair));
+  std::array<std::uint8_t, 1518> frame{};
+  std::uint32_t bad = 0;
+  std::uint64_t now = 0;
+  const std::uint64_t before = tomc::testing::allocation_count();
+  for (int k = 0; k < 10000; ++k) {
+    now += kCycleUs;
+    std::size_t n = pair.controller->next_output_frame(frame);
+    bad += n == 0;
+    pair.controller->output_data(1, 2)[0] = static_cast<std::uint8_t>(k);
+    n = pair.device->next_input_frame(frame);
+    bad += !pair.controller->on_input_frame(std::span(frame).first(n), now);
+    bad += !pair.controller->input_valid(now);
+    bad += pair.controller->watchdog_expired(now);
+  }
+  EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
+  EXPECT_EQ(bad, 0u);
+}
