@@ -249,6 +249,12 @@ tomc_status load(const std::string& text, tomc_runtime** out) {
       if (auto o =
               scenario::load_technology_object((*list)[i], "technology_objects[" + std::to_string(i) + "]",
                                                cycle_time, *rt->runtime, objects, problems, "the C ABI")) {
+        if (o->kind == scenario::TechnologyObjectKind::kCam) {
+          // <tomc/tomc.h> has no cam type and no cam instructions yet (docs/embedding.md).
+          problems.add("technology_objects[" + std::to_string(i) + "].type",
+                       std::string(o->type_name()) + " is not yet available through the C ABI");
+          continue;
+        }
         objects.push_back(std::move(*o));
       }
     }
@@ -339,6 +345,7 @@ Kind kind_of(const tomc_object& o) noexcept {
     case scenario::TechnologyObjectKind::kSynchronousAxis:
       return kSynchronous;
     case scenario::TechnologyObjectKind::kExternalEncoder:
+    case scenario::TechnologyObjectKind::kCam:  // never loaded (load() refuses cams)
       return kEncoder;
   }
   return kSpeed;

@@ -227,6 +227,8 @@ std::span<const LayoutArea> diagnostics_layout(to::TechnologyObjectType type) no
       return kPositioningLayout;
     case to::TechnologyObjectType::kExternalEncoder:
       return kEncoderLayout;
+    case to::TechnologyObjectType::kCam:  // no axis panel for a cam
+      return {};
   }
   return {};
 }

@@ -3,6 +3,7 @@
 
 #include <charconv>
 
+#include "tomc/techobjects/cam/cam_data.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/telegrams/layout.hpp"
 
@@ -20,6 +21,8 @@ std::span<const to::VariableInfo> variables_of(to::TechnologyObjectType type) no
       return to::positioning_axis_variables();
     case to::TechnologyObjectType::kExternalEncoder:
       return to::external_encoder_variables();
+    case to::TechnologyObjectType::kCam:
+      return to::cam_variables();
   }
   return {};
 }
@@ -34,6 +37,8 @@ std::string_view type_name(to::TechnologyObjectType type) noexcept {
       return "TO_SynchronousAxis";
     case to::TechnologyObjectType::kExternalEncoder:
       return "TO_ExternalEncoder";
+    case to::TechnologyObjectType::kCam:
+      return "TO_Cam";
   }
   return "?";
 }

@@ -346,6 +346,68 @@ TEST(ScenarioLoader, TopLevel) {
   EXPECT_EQ(problem_of(Json::parse("[]")), ": expected an object, got an array");
 }
 
+// A cam in a machine file (docs/scenarios.md "Cams", decisions C7): its elements beside config, every problem
+// named by its JSON path.
+TEST(ScenarioLoader, Cams) {
+  const auto with_cam = [](const char* cam) {
+    Json d = base();
+    d["technology_objects"].push_back(Json::parse(cam));
+    return d;
+  };
+  EXPECT_TRUE(problems_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Points": [[0, 0], [1, 1]],
+      "Interpolate": true})"))
+                  .empty());
+  EXPECT_EQ(problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Points": [[0, 0], [1]]})")),
+            "technology_objects[1].Points[1]: expected [x, y]");
+  EXPECT_EQ(
+      problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Points": [[0, 0]], "Interpolate": true})")),
+      "technology_objects[1].Interpolate: MC_InterpolateCam fails with 16#80AC: the cam elements make no "
+      "cam (a single point, points out of order, a segment with xmin >= xmax, a value that is not finite)");
+  EXPECT_EQ(
+      problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Points": [[0, 0], [5, 1], [2, 2]],
+      "Interpolate": true})")),
+      "technology_objects[1].Interpolate: MC_InterpolateCam fails with 16#80AC: the cam elements make no "
+      "cam (a single point, points out of order, a segment with xmin >= xmax, a value that is not finite) "
+      "(element 3)");
+  EXPECT_EQ(
+      problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Points": {"file": "no_such_file.csv"}})")),
+      "technology_objects[1].Points.file: cannot read 'no_such_file.csv'");
+  EXPECT_EQ(problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "Segments": [{"xmin": 0, "a0": 1}]})")),
+            "technology_objects[1].Segments[0].xmax: missing");
+  EXPECT_NE(problem_of(with_cam(R"({"name": "C", "type": "TO_Cam",
+      "MotionLaws": [{"law": "Cycloid", "x0": 0, "y0": 0, "x1": 1, "y1": 1}]})"))
+                .find("technology_objects[1].MotionLaws[0].law: 'Cycloid' is not one of"),
+            std::string::npos);
+  EXPECT_EQ(problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "drive": {"telegram": 3}})")),
+            "technology_objects[1].drive: a cam has no drive (it is a transfer function, spec 07 §3.1)");
+  EXPECT_EQ(problem_of(with_cam(R"({"name": "C", "type": "TO_Cam",
+      "config": {"InterpolationSettings.InterpolationMode": 3}})")),
+            "technology_objects[1].config.InterpolationSettings.InterpolationMode: 3 out of range 0..2");
+  EXPECT_EQ(
+      problem_of(with_cam(R"({"name": "C", "type": "TO_Cam", "config": {"StatusCam.EndLeadingValue": 3}})")),
+      "technology_objects[1].config.StatusCam.EndLeadingValue: cannot be configured: status variable, "
+      "written by "
+      "the technology object only");
+  Json points = Json::array();
+  for (int i = 0; i < 1001; ++i)
+    points.push_back(Json::array({i, 0}));
+  Json d = with_cam(R"({"name": "C", "type": "TO_Cam"})");
+  d["technology_objects"][1]["Points"] = points;
+  EXPECT_EQ(problem_of(d), "technology_objects[1].Points: 1001 points, a TO_Cam holds 1000");
+  d["technology_objects"][1]["type"] = "TO_Cam_10k";
+  EXPECT_TRUE(problems_of(d).empty());
+  // The cam instructions on a cam; MC_CopyCamData (arrays) is not available in scenarios.
+  d = with_cam(R"({"name": "C", "type": "TO_Cam", "Points": [[0, 0], [1, 1]]})");
+  d["timeline"].push_back(Json::parse(
+      R"({"cycle": 1, "instance": "i", "instruction": "MC_InterpolateCam", "axis": "C", "inputs": {"Execute": true}})"));
+  EXPECT_TRUE(problems_of(d).empty());
+  d["timeline"][1]["instruction"] = "MC_CopyCamData";
+  EXPECT_NE(problem_of(d).find("timeline[1].instruction: MC_CopyCamData is not yet supported by tomc sim"),
+            std::string::npos);
+  d["timeline"][1]["instruction"] = "MC_Power";
+  EXPECT_NE(problem_of(d).find("MC_Power is not an instruction of TO_Cam C"), std::string::npos);
+}
+
 TEST(ScenarioLoader, TechnologyObjects) {
   Json d = base();
   d["technology_objects"] = Json::array();
@@ -355,11 +417,13 @@ TEST(ScenarioLoader, TechnologyObjects) {
   d["technology_objects"][0]["type"] = "TO_OutputCam";
   EXPECT_EQ(problem_of(d),
             "technology_objects[0].type: TO_OutputCam is not yet supported by tomc (supported: "
-            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder, TO_Cam, TO_Cam_10k, "
+            "TO_Cam_600Seg, TO_Cam_6kSeg)");
   d["technology_objects"][0]["type"] = "TO_Spindle";
   EXPECT_EQ(problem_of(d),
             "technology_objects[0].type: unknown technology object type 'TO_Spindle' (one of "
-            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder, TO_Cam, TO_Cam_10k, "
+            "TO_Cam_600Seg, TO_Cam_6kSeg)");
   // A positioning axis needs an encoder: telegram 2 carries none (spec 01 §3.3), named by the TO's path.
   d["technology_objects"][0]["type"] = "TO_PositioningAxis";
   EXPECT_EQ(problem_of(d),
@@ -379,7 +443,8 @@ TEST(ScenarioLoader, TechnologyObjects) {
   d["technology_objects"][0]["type"] = "TO_Conveyor";
   EXPECT_EQ(problem_of(d),
             "technology_objects[0].type: unknown technology object type 'TO_Conveyor' (one of "
-            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder)");
+            "TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder, TO_Cam, TO_Cam_10k, "
+            "TO_Cam_600Seg, TO_Cam_6kSeg)");
   d = base();
   d["technology_objects"][0]["name"] = "Axis 1";
   EXPECT_NE(problems_of(d).front().find("technology_objects[0].name: 'Axis 1' is not a name"),

@@ -370,6 +370,8 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
           load_speed_program(entry, path, name, config, problems);
         } else if (object->kind == Kind::kPositioningAxis || object->kind == Kind::kSynchronousAxis) {
           load_positioning_program(entry, path, name, object->positioning_axis, config, problems);
+        } else if (object->kind == Kind::kCam) {
+          problems.add(path, "a cam has no program (it is read by its followers)");
         } else {
           problems.add(path, "an external encoder has no program (it is enabled and read)");
         }

@@ -29,6 +29,32 @@ std::string_view describe(std::uint16_t id) noexcept {
     case kInvalidSlavePosition:
       return "invalid SlavePosition (a linear follower is already inside the stop travel before it, or past "
              "it)";
+    case kInvalidMasterScaling:
+      return "invalid MasterScaling (0.0)";
+    case kInvalidSlaveScaling:
+      return "invalid SlaveScaling (0.0 cannot be inverted)";
+    case kInvalidApproachValue:
+      return "invalid approach value";
+    case kNoLeadingValue:
+      return "the cam reaches this following value at no leading value";
+    case kNoFollowingValue:
+      return "the leading value is outside the cam";
+    case kInvalidApproachDirection:
+      return "invalid ApproachDirection (1, 2 or 3)";
+    case kCamEndReached:
+      return "no solution in the approach direction before the end of the cam";
+    case kCamEmpty:
+      return "the cam has no valid point or segment";
+    case kCamInUse:
+      return "the cam is in use by camming";
+    case kCamInvalid:
+      return "the cam elements make no cam (a single point, points out of order, a segment with xmin >= "
+             "xmax, "
+             "a value that is not finite)";
+    case kCamNotInterpolated:
+      return "the cam is not interpolated (MC_InterpolateCam)";
+    case kInvalidCamElementRange:
+      return "MC_CopyCamData: element range outside the cam or the source array";
     case kNoGearing:
       return "no MC_GearIn / MC_GearInPos pending or active";
     case kHomingDuringGearInPos:

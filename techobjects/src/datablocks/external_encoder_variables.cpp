@@ -175,7 +175,8 @@ constexpr auto kExternalEncoderVariables = std::to_array<VariableInfo>({
 #undef TOMC_E_VARIABLE
 #undef TOMC_E_ROW
 
-static_assert(paths_unique(kExternalEncoderVariables), "duplicate path in the external-encoder table");
+static_assert(detail::paths_unique(kExternalEncoderVariables),
+              "duplicate path in the external-encoder table");
 static_assert(detail::ranges_valid(kExternalEncoderVariables),
               "an external-encoder range is empty, exceeds its data type or excludes a permitted value");
 

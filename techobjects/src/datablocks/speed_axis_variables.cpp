@@ -139,7 +139,7 @@ constexpr bool ranges_valid(const std::array<VariableInfo, N>& table) {
   }
   return true;
 }
-static_assert(paths_unique(kSpeedAxisVariables), "duplicate path in the speed-axis table");
+static_assert(detail::paths_unique(kSpeedAxisVariables), "duplicate path in the speed-axis table");
 static_assert(ranges_valid(kSpeedAxisVariables), "a speed-axis range is empty or exceeds its data type");
 
 }  // namespace

@@ -130,6 +130,11 @@ void load_external_encoder_config(const Json& config, std::string_view path, to:
               &to::find_external_encoder_variable, data, problems);
 }
 
+void load_cam_config(const Json& config, std::string_view path, to::CamData& data, Problems& problems,
+                     std::string_view type_name) {
+  load_config(config, path, type_name, to::cam_variables(), &to::find_cam_variable, data, problems);
+}
+
 namespace detail {
 
 std::optional<double> read_variable_value(const to::VariableInfo& info, const Json& value,

@@ -10,8 +10,10 @@
 #include "tomc/instructions/mc_gear_in_pos.hpp"
 #include "tomc/instructions/mc_gear_in_velocity.hpp"
 #include "tomc/instructions/mc_gear_out.hpp"
+#include "tomc/instructions/mc_get_cam_value.hpp"
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_home.hpp"
+#include "tomc/instructions/mc_interpolate_cam.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
@@ -40,6 +42,19 @@ struct axis_of;
 template <template <typename> class Instruction, typename Axis>
 struct axis_of<Instruction<Axis>> {
   using type = Axis;
+};
+// The cam instructions are not templates: their TO is always a cam.
+template <>
+struct axis_of<instructions::MC_InterpolateCam> {
+  using type = techobjects::Cam;
+};
+template <>
+struct axis_of<instructions::MC_GetCamFollowingValue> {
+  using type = techobjects::Cam;
+};
+template <>
+struct axis_of<instructions::MC_GetCamLeadingValue> {
+  using type = techobjects::Cam;
 };
 
 template <typename FB>
@@ -404,6 +419,49 @@ const auto kGearOut = std::to_array<Parameter<GearOut>>({
     out("ErrorID", &GearOut::ErrorID),
 });
 
+// The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
+// a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
+using InterpolateCam = instructions::MC_InterpolateCam;
+const auto kInterpolateCam = std::to_array<Parameter<InterpolateCam>>({
+    in("Execute", &InterpolateCam::Execute),
+    out("Done", &InterpolateCam::Done),
+    out("Busy", &InterpolateCam::Busy),
+    out("Error", &InterpolateCam::Error),
+    out("ErrorID", &InterpolateCam::ErrorID),
+});
+using GetCamFollowingValue = instructions::MC_GetCamFollowingValue;
+const auto kGetCamFollowingValue = std::to_array<Parameter<GetCamFollowingValue>>({
+    in<GetCamFollowingValue, bool>("Execute", &GetCamFollowingValue::Execute),
+    in("LeadingValue", &GetCamFollowingValue::LeadingValue),
+    in<GetCamFollowingValue, double>("MasterOffset", &GetCamFollowingValue::MasterOffset),
+    in<GetCamFollowingValue, double>("SlaveOffset", &GetCamFollowingValue::SlaveOffset),
+    in<GetCamFollowingValue, double>("MasterScaling", &GetCamFollowingValue::MasterScaling),
+    in<GetCamFollowingValue, double>("SlaveScaling", &GetCamFollowingValue::SlaveScaling),
+    out<GetCamFollowingValue, bool>("Done", &GetCamFollowingValue::Done),
+    out<GetCamFollowingValue, bool>("Busy", &GetCamFollowingValue::Busy),
+    out<GetCamFollowingValue, bool>("Error", &GetCamFollowingValue::Error),
+    out<GetCamFollowingValue, std::uint16_t>("ErrorID", &GetCamFollowingValue::ErrorID),
+    out("Value", &GetCamFollowingValue::Value),
+    out("FirstDerivative", &GetCamFollowingValue::FirstDerivative),
+    out("SecondDerivative", &GetCamFollowingValue::SecondDerivative),
+});
+using GetCamLeadingValue = instructions::MC_GetCamLeadingValue;
+const auto kGetCamLeadingValue = std::to_array<Parameter<GetCamLeadingValue>>({
+    in<GetCamLeadingValue, bool>("Execute", &GetCamLeadingValue::Execute),
+    in("FollowingValue", &GetCamLeadingValue::FollowingValue),
+    in("ApproachLeadingValue", &GetCamLeadingValue::ApproachLeadingValue),
+    in("ApproachDirection", &GetCamLeadingValue::ApproachDirection),
+    in<GetCamLeadingValue, double>("MasterOffset", &GetCamLeadingValue::MasterOffset),
+    in<GetCamLeadingValue, double>("SlaveOffset", &GetCamLeadingValue::SlaveOffset),
+    in<GetCamLeadingValue, double>("MasterScaling", &GetCamLeadingValue::MasterScaling),
+    in<GetCamLeadingValue, double>("SlaveScaling", &GetCamLeadingValue::SlaveScaling),
+    out<GetCamLeadingValue, bool>("Done", &GetCamLeadingValue::Done),
+    out<GetCamLeadingValue, bool>("Busy", &GetCamLeadingValue::Busy),
+    out<GetCamLeadingValue, bool>("Error", &GetCamLeadingValue::Error),
+    out<GetCamLeadingValue, std::uint16_t>("ErrorID", &GetCamLeadingValue::ErrorID),
+    out("Value", &GetCamLeadingValue::Value),
+});
+
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
 constexpr std::array<std::string_view, 9> kSpeedAxisInstructions{
     "MC_Power", "MC_Reset",      "MC_MoveVelocity",   "MC_MoveJog",        "MC_Halt",
@@ -421,9 +479,12 @@ constexpr std::array<std::string_view, 16> kSynchronousAxisInstructions{
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
+constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", "MC_GetCamFollowingValue",
+                                                           "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 18> kPlannedInstructions{
+constexpr std::array<std::string_view, 19> kPlannedInstructions{
+    "MC_CopyCamData",
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
     "MC_TorqueAdditive",
@@ -481,6 +542,8 @@ std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) no
       return kSynchronousAxisInstructions;
     case TechnologyObjectKind::kExternalEncoder:
       return kExternalEncoderInstructions;
+    case TechnologyObjectKind::kCam:
+      return kCamInstructions;
   }
   return {};
 }
@@ -535,6 +598,11 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);
       return make_common<ExternalEncoder>(instruction);
+    case TechnologyObjectKind::kCam:
+      if (instruction == "MC_InterpolateCam") return make(kInterpolateCam);
+      if (instruction == "MC_GetCamFollowingValue") return make(kGetCamFollowingValue);
+      if (instruction == "MC_GetCamLeadingValue") return make(kGetCamLeadingValue);
+      return nullptr;
   }
   return nullptr;
 }

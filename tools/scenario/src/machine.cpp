@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cam_elements.hpp"
 #include "json_reader.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
@@ -21,13 +22,21 @@ using detail::ObjectReader;
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kToTypeNames{"TO_SpeedAxis", "TO_PositioningAxis",
-                                                       "TO_SynchronousAxis", "TO_ExternalEncoder"};
-constexpr std::array<std::string_view, 6> kPlannedToTypeNames{
-    "TO_OutputCam", "TO_CamTrack", "TO_MeasuringInput", "TO_Cam", "TO_Kinematics", "TO_LeadingAxisProxy"};
-constexpr std::array<TechnologyObjectKind, 4> kToKinds{
-    TechnologyObjectKind::kSpeedAxis, TechnologyObjectKind::kPositioningAxis,
-    TechnologyObjectKind::kSynchronousAxis, TechnologyObjectKind::kExternalEncoder};
+// The cam types are the last four, in the order of techobjects::CamVariant.
+constexpr std::array<std::string_view, 8> kToTypeNames{
+    "TO_SpeedAxis", "TO_PositioningAxis", "TO_SynchronousAxis", "TO_ExternalEncoder",
+    "TO_Cam",       "TO_Cam_10k",         "TO_Cam_600Seg",      "TO_Cam_6kSeg"};
+constexpr std::size_t kFirstCamType = 4;
+constexpr std::array<std::string_view, 5> kPlannedToTypeNames{
+    "TO_OutputCam", "TO_CamTrack", "TO_MeasuringInput", "TO_Kinematics", "TO_LeadingAxisProxy"};
+constexpr std::array<TechnologyObjectKind, 8> kToKinds{TechnologyObjectKind::kSpeedAxis,
+                                                       TechnologyObjectKind::kPositioningAxis,
+                                                       TechnologyObjectKind::kSynchronousAxis,
+                                                       TechnologyObjectKind::kExternalEncoder,
+                                                       TechnologyObjectKind::kCam,
+                                                       TechnologyObjectKind::kCam,
+                                                       TechnologyObjectKind::kCam,
+                                                       TechnologyObjectKind::kCam};
 
 std::string list_of(std::span<const std::string_view> names) {
   std::string s;
@@ -153,6 +162,7 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
 }  // namespace
 
 std::string_view MachineObject::type_name() const noexcept {
+  if (cam != nullptr) return to::type_name(cam->variant());
   return kToTypeNames[static_cast<std::size_t>(std::find(kToKinds.begin(), kToKinds.end(), kind) -
                                                kToKinds.begin())];
 }
@@ -166,6 +176,8 @@ const to::VariableInfo* MachineObject::find_variable(std::string_view path) cons
       return to::find_positioning_axis_variable(path);
     case TechnologyObjectKind::kExternalEncoder:
       return to::find_external_encoder_variable(path);
+    case TechnologyObjectKind::kCam:
+      return to::find_cam_variable(path);
   }
   return nullptr;
 }
@@ -179,6 +191,8 @@ std::optional<to::BitReference> MachineObject::find_bit(std::string_view path) c
       return to::find_positioning_axis_bit(path);
     case TechnologyObjectKind::kExternalEncoder:
       return to::find_external_encoder_bit(path);
+    case TechnologyObjectKind::kCam:
+      return to::find_cam_bit(path);
   }
   return std::nullopt;
 }
@@ -196,6 +210,8 @@ std::function<double()> MachineObject::reader(const to::VariableInfo* info,
       return [a = positioning_axis, read] { return read(a->data()); };
     case TechnologyObjectKind::kExternalEncoder:
       return [a = external_encoder, read] { return read(a->data()); };
+    case TechnologyObjectKind::kCam:
+      return [a = cam, read] { return read(a->data()); };
   }
   return [] { return std::numeric_limits<double>::quiet_NaN(); };
 }
@@ -205,12 +221,14 @@ double MachineObject::read(std::string_view path) const noexcept {
   if (positioning_axis != nullptr) return positioning_axis->read(path);
   if (speed_axis != nullptr) return speed_axis->read(path);
   if (external_encoder != nullptr) return external_encoder->read(path);
+  if (cam != nullptr) return cam->read(path);
   return std::numeric_limits<double>::quiet_NaN();
 }
 
 to::WriteResult MachineObject::write(std::string_view variable, double value) const noexcept {
   if (speed_axis != nullptr) return speed_axis->write(variable, value);
   if (positioning_axis != nullptr) return positioning_axis->write(variable, value);
+  if (cam != nullptr) return cam->write(variable, value);
   return external_encoder->write(variable, value);
 }
 
@@ -218,12 +236,17 @@ bool MachineObject::inject_alarm(std::uint32_t number, std::uint32_t additional,
                                  to::AlarmReaction reaction) const noexcept {
   if (speed_axis != nullptr) return speed_axis->inject_alarm(number, additional, reaction);
   if (positioning_axis != nullptr) return positioning_axis->inject_alarm(number, additional, reaction);
+  if (cam != nullptr) return false;  // a cam has no technology alarms of its own
   return external_encoder->inject_alarm(number, additional, reaction);
 }
 
 const to::AlarmList& MachineObject::alarms() const noexcept {
   if (speed_axis != nullptr) return speed_axis->alarms();
   if (positioning_axis != nullptr) return positioning_axis->alarms();
+  if (cam != nullptr) {
+    static const to::AlarmList kNone;  // a cam raises none
+    return kNone;
+  }
   return external_encoder->alarms();
 }
 
@@ -243,7 +266,8 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
                                                     double cycle_time_s, to::Runtime& runtime,
                                                     std::span<const MachineObject> existing,
                                                     Problems& problems, std::string_view tool,
-                                                    GatewayLinks* gateways) {
+                                                    GatewayLinks* gateways,
+                                                    const std::filesystem::path& directory) {
   ObjectReader r(value, path, problems);
   if (!r.valid()) return std::nullopt;
   MachineObject entry;
@@ -262,6 +286,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
     }
   }
   std::optional<TechnologyObjectKind> kind;
+  to::CamVariant cam_variant = to::CamVariant::kCam;
   if (const Json* v = r.get("type", true)) {
     if (auto t = detail::read_string(*v, r.path_of("type"), problems)) {
       const auto it = std::find(kToTypeNames.begin(), kToTypeNames.end(), *t);
@@ -275,7 +300,9 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
                      planned ? *t + " is not yet supported by tomc (supported: " + supported + ")"
                              : "unknown technology object type '" + *t + "' (one of " + supported + ")");
       } else {
-        kind = kToKinds[static_cast<std::size_t>(it - kToTypeNames.begin())];
+        const auto index = static_cast<std::size_t>(it - kToTypeNames.begin());
+        kind = kToKinds[index];
+        if (index >= kFirstCamType) cam_variant = static_cast<to::CamVariant>(index - kFirstCamType);
       }
     }
   }
@@ -284,6 +311,8 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
   to::PositioningAxisData positioning_data;
   to::ExternalEncoderData encoder_data;
   std::vector<to::LeadingValueInterconnection> interconnections;
+  std::unique_ptr<to::CamData> cam_settings;
+  detail::CamElements cam_elements;
   DriveSettings drive;
   bool has_drive = false;
   if (kind) {
@@ -327,9 +356,19 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         drive.encoder_telegram = 81;  // an encoder-only device unless the file says otherwise
         break;
       }
+      case TechnologyObjectKind::kCam:
+        cam_settings = std::make_unique<to::CamData>(to::CamVariant::kCam);  // only its scalar variables
+        if (config != nullptr)
+          load_cam_config(*config, r.path_of("config"), *cam_settings, problems, to::type_name(cam_variant));
+        cam_elements = detail::load_cam_elements(r, cam_variant, directory, problems);
+        needs_drive = false;
+        break;
     }
     entry.kind = *kind;
-    if (const Json* v = r.get("drive")) {
+    if (*kind == TechnologyObjectKind::kCam && r.has("drive")) {
+      r.get("drive");
+      problems.add(r.path_of("drive"), "a cam has no drive (it is a transfer function, spec 07 §3.1)");
+    } else if (const Json* v = r.get("drive")) {
       load_drive(*v, r.path_of("drive"), cycle_time_s, drive, problems);
       has_drive = true;
     } else if (needs_drive) {
@@ -344,6 +383,8 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
     r.get("config");
     r.get("drive");
     r.get("LeadingValueInterconnections");
+    for (const char* key : {"Points", "Segments", "MotionLaws", "Interpolate"})
+      r.get(key);
   }
   if (kind && *kind != TechnologyObjectKind::kSynchronousAxis && r.has("LeadingValueInterconnections")) {
     r.get("LeadingValueInterconnections");
@@ -402,6 +443,15 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         case TechnologyObjectKind::kExternalEncoder:
           entry.external_encoder = &runtime.emplace<to::ExternalEncoder>(entry.name, io, encoder_data);
           entry.object = entry.external_encoder;
+          break;
+        case TechnologyObjectKind::kCam:
+          entry.cam = &runtime.emplace<to::Cam>(entry.name, cam_variant);
+          entry.object = entry.cam;
+          (void)entry.cam->write("InterpolationSettings.InterpolationMode",
+                                 cam_settings->InterpolationSettings.InterpolationMode);
+          (void)entry.cam->write("InterpolationSettings.BoundaryConditions",
+                                 cam_settings->InterpolationSettings.BoundaryConditions);
+          detail::apply_cam_elements(cam_elements, *entry.cam, path, problems);
           break;
       }
       entry.drive = drive_ptr;

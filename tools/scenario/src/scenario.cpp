@@ -230,6 +230,7 @@ struct Scenario::Impl {
   std::unique_ptr<to::RetentiveStore> retain;  // "retain_file": absolute-encoder adjustments across runs
   std::string retain_report;                   // what restoring it found (for the CLI's summary)
   Problems problems;
+  std::filesystem::path directory;  // files named by the document are relative to it
   // A broken technology_objects or timeline array makes every later reference to its names fail; those
   // follow-up problems would only bury the real one, so they are not reported.
   bool objects_broken = false;
@@ -409,7 +410,7 @@ void Scenario::Impl::load(const Json& document) {
 
 void Scenario::Impl::load_technology_object(const Json& value, const std::string& path) {
   if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems,
-                                                    "tomc sim", &gateways)) {
+                                                    "tomc sim", &gateways, directory)) {
     objects.push_back(std::move(*entry));
   }
 }
@@ -519,7 +520,8 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
         const std::string supported = list_of(detail::instructions_for(object.kind));
         bool other_type = false;
         for (auto kind : {TechnologyObjectKind::kSpeedAxis, TechnologyObjectKind::kPositioningAxis,
-                          TechnologyObjectKind::kSynchronousAxis, TechnologyObjectKind::kExternalEncoder}) {
+                          TechnologyObjectKind::kSynchronousAxis, TechnologyObjectKind::kExternalEncoder,
+                          TechnologyObjectKind::kCam}) {
           const auto names = detail::instructions_for(kind);
           other_type = other_type || std::find(names.begin(), names.end(), *instruction) != names.end();
         }
@@ -977,8 +979,9 @@ void Scenario::Impl::user_program() noexcept {
 Scenario::Scenario(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Scenario::~Scenario() = default;
 
-LoadResult Scenario::load(const Json& document) {
+LoadResult Scenario::load(const Json& document, const std::filesystem::path& directory) {
   auto impl = std::make_unique<Impl>();
+  impl->directory = directory;
   impl->load(document);
   LoadResult result;
   if (!impl->problems.empty()) {
@@ -1006,7 +1009,8 @@ LoadResult Scenario::load(const Json& document) {
   return result;
 }
 
-LoadResult Scenario::load_text(std::string_view text, std::string_view source) {
+LoadResult Scenario::load_text(std::string_view text, std::string_view source,
+                               const std::filesystem::path& directory) {
   Json document;
   try {
     document = Json::parse(text);
@@ -1021,7 +1025,7 @@ LoadResult Scenario::load_text(std::string_view text, std::string_view source) {
     result.problems.push_back(std::string(source) + ": malformed JSON: " + what);
     return result;
   }
-  return load(document);
+  return load(document, directory);
 }
 
 LoadResult Scenario::load_file(const std::filesystem::path& file) {
@@ -1033,7 +1037,7 @@ LoadResult Scenario::load_file(const std::filesystem::path& file) {
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return load_text(text.str(), file.string());
+  return load_text(text.str(), file.string(), file.parent_path());
 }
 
 double Scenario::cycle_time() const noexcept {

@@ -19,6 +19,18 @@ inline constexpr std::uint16_t kLifebeatExpired = 0x8013;     // the panel's lif
 inline constexpr std::uint16_t kInvalidRatioNumerator = 0x8017;    // RatioNumerator = 0
 inline constexpr std::uint16_t kInvalidRatioDenominator = 0x8018;  // RatioDenominator < 1
 inline constexpr std::uint16_t kRecursiveLeadingValue = 0x8019;    // the follower leads its own leader
+// Cams (spec 07 §1.10, §3.2, §3.6; ALM8):
+inline constexpr std::uint16_t kInvalidMasterScaling = 0x8023;  // MasterScaling = 0.0 (or not finite)
+inline constexpr std::uint16_t kInvalidSlaveScaling = 0x8024;   // SlaveScaling unusable (inversion: 0.0)
+inline constexpr std::uint16_t kInvalidApproachValue = 0x8062;  // MC_GetCamLeadingValue
+inline constexpr std::uint16_t kNoLeadingValue = 0x8063;        // no leading value for this following value
+inline constexpr std::uint16_t kNoFollowingValue = 0x8064;      // the leading value is outside the cam
+inline constexpr std::uint16_t kInvalidApproachDirection = 0x8065;  // ApproachDirection not 1...3
+inline constexpr std::uint16_t kCamEndReached =
+    0x8066;                                           // no solution in ApproachDirection before the cam ends
+inline constexpr std::uint16_t kCamEmpty = 0x80AA;    // MC_InterpolateCam: no valid point or segment
+inline constexpr std::uint16_t kCamInUse = 0x80AB;    // MC_InterpolateCam: the cam is used by camming
+inline constexpr std::uint16_t kCamInvalid = 0x80AC;  // MC_InterpolateCam: the elements make no cam
 inline constexpr std::uint16_t kInvalidMasterStartDistance =
     0x8026;  // MasterStartDistance / MasterStopDistance
 inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
@@ -63,6 +75,11 @@ inline constexpr std::uint16_t kNoTorqueReduction = 0x8141;
 // MC_TorqueLimiting Mode 1: Clamping.PositionTolerance >= Clamping.FollowingErrorDeviation, or the
 // following-error monitoring's MaxValue <= Clamping.FollowingErrorDeviation (spec 01 §8.11)
 inline constexpr std::uint16_t kInvalidClampingConfiguration = 0x8142;
+// Cams, tomc's own: MC_GetCamFollowingValue/LeadingValue on a cam that is not interpolated (the manual names
+// alarm 612 for camming with such a cam, spec 07 §3.2, but no ErrorID for the read instructions)
+inline constexpr std::uint16_t kCamNotInterpolated = 0x8150;
+// MC_CopyCamData: an element range outside the cam's Point/Segment arrays or outside the given source arrays
+inline constexpr std::uint16_t kInvalidCamElementRange = 0x8151;
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

@@ -23,6 +23,7 @@ enum class TechnologyObjectType : std::uint8_t {
   kPositioningAxis,  // P, TO_PositioningAxis
   kSynchronousAxis,  // Y, TO_SynchronousAxis
   kExternalEncoder,  // E, TO_ExternalEncoder
+  kCam,  // TO_Cam and its variants (spec 07 §3.1): StatusWord bits of their own (CamStatusWordBit)
 };
 
 // ---- bit numbers ----
@@ -486,6 +487,8 @@ constexpr std::uint32_t status_word_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kExternalEncoder:  // spec 04 §5.1 column E (man. §10.4.15)
       return bit_mask({kEnable, kError, kRestartActive, kOnlineStartValuesChanged, kHomingDone, kDone,
                        kStandstill, kHomingCommand});
+    case TechnologyObjectType::kCam:  // the cam's StatusWord has its own bits (CamStatusWordBit)
+      return 0;
   }
   return 0;
 }
@@ -501,6 +504,7 @@ constexpr std::uint32_t status_word2_mask(TechnologyObjectType type) noexcept {
       return bit_mask({kStopCommand, kPassingBacklash, kMotionInSuperimposedCommand, kHaltSuperimposedCommand,
                        kMotionInSuperimposedAxesCommand, kPositionProfileCommand, kOnProfile});
     case TechnologyObjectType::kExternalEncoder:  // spec 04 §5.2: not present on E
+    case TechnologyObjectType::kCam:
       return 0;
   }
   return 0;
@@ -522,6 +526,8 @@ constexpr std::uint32_t error_word_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kExternalEncoder:
       return bit_mask({kSystemFault, kConfigFault, kUserFault, kCommandNotAccepted, kSensorFault,
                        kCommunicationFault, kHomingError, kPeripheralError, kAdaptionError});
+    case TechnologyObjectType::kCam:  // spec 07 §3.1: X0...X3
+      return bit_mask({kSystemFault, kConfigFault, kUserFault, kCommandNotAccepted});
   }
   return 0;
 }
@@ -542,6 +548,8 @@ constexpr std::uint32_t warning_word_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kExternalEncoder:
       return bit_mask({kSystemWarning, kConfigWarning, kUserWarning, kCommandNotAccepted, kSensorWarning,
                        kCommunicationWarning, kHomingWarning, kPeripheralWarning, kAdaptionWarning});
+    case TechnologyObjectType::kCam:  // spec 07 §3.1: X0...X3
+      return bit_mask({kSystemWarning, kConfigWarning, kUserWarning, kCommandNotAccepted});
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 #include "tomc/techobjects/datablocks/speed_axis_data.hpp"
@@ -111,6 +112,16 @@ constexpr bool ranges_valid(std::span<const VariableInfo> table) noexcept {
   return true;
 }
 
+// No path appears twice in a table (sorted copy: O(n log n) constant-evaluation steps for ~500 rows).
+template <std::size_t N>
+constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
+  std::array<std::string_view, N> paths{};
+  for (std::size_t i = 0; i < N; ++i)
+    paths[i] = table[i].path;
+  std::sort(paths.begin(), paths.end());
+  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
+}
+
 // ---- permitted values the TO tables share (spec 04 §3.3, §3.11) ----
 // Actor.RemoveEnableReaction: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 are invalid (man. §10.2.4, spec 04 §3.3).
 inline constexpr std::array<double, 4> kRemoveEnableReactionValues{0x1, 0x3, 0x5, 0x7};
@@ -153,16 +164,6 @@ inline constexpr std::array<double, 19> kPositionVelocityUnits{unit_code::kDegre
                                                                unit_code::kFootPerSecond,
                                                                unit_code::kFootPerMinute,
                                                                unit_code::kMilePerHour};
-
-// No path twice in a table (sorted copy: O(n log n) constant-evaluation steps for the ~500 rows).
-template <std::size_t N>
-constexpr bool paths_unique(const std::array<VariableInfo, N>& table) {
-  std::array<std::string_view, N> paths{};
-  for (std::size_t i = 0; i < N; ++i)
-    paths[i] = table[i].path;
-  std::sort(paths.begin(), paths.end());
-  return std::adjacent_find(paths.begin(), paths.end()) == paths.end();
-}
 
 }  // namespace detail
 

@@ -16,6 +16,7 @@
 #include "tomc/drives/io/hardware_io.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
+#include "tomc/techobjects/cam/cam_data.hpp"
 #include "tomc/techobjects/datablocks/external_encoder_data.hpp"
 #include "tomc/techobjects/datablocks/positioning_axis_data.hpp"
 #include "tomc/techobjects/datablocks/speed_axis_data.hpp"
@@ -59,6 +60,10 @@ void load_positioning_axis_config(const Json& config, std::string_view path,
                                   std::string_view type_name = "TO_PositioningAxis");
 void load_external_encoder_config(const Json& config, std::string_view path,
                                   techobjects::ExternalEncoderData& data, Problems& problems);
+// The scalar variables of a cam (cam_variables(): "InterpolationSettings.InterpolationMode"); its points and
+// segments are keys beside `config` (docs/scenarios.md "Cams").
+void load_cam_config(const Json& config, std::string_view path, techobjects::CamData& data,
+                     Problems& problems, std::string_view type_name = "TO_Cam");
 
 // The `analog` object of a drive with "adapter": "analog" (docs/analog-drives.md): the actor's output
 // scaling and the simulated servo amplifier. The enable output and the ready input are the TO's

@@ -1,11 +1,12 @@
 #pragma once
 // Building the technology objects of a machine and their simulated drives from JSON: one entry of the
 // `technology_objects` array of docs/scenarios.md ("name", "type", "config", "drive", and for a synchronous
-// axis "LeadingValueInterconnections"). `tomc sim` and `tomc demo` share it, so a machine configured for one
-// runs in the other unchanged.
+// axis "LeadingValueInterconnections", for a cam its elements). `tomc sim` and `tomc demo` share it, so a
+// machine configured for one runs in the other unchanged.
 //
 // Nothing here throws for bad input; problems are reported with their JSON paths.
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <span>
@@ -16,6 +17,7 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/config.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
+#include "tomc/techobjects/cam/cam.hpp"
 #include "tomc/techobjects/datablocks/variables.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
@@ -30,7 +32,8 @@ enum class TechnologyObjectKind : std::uint8_t {
   kSpeedAxis,
   kPositioningAxis,
   kSynchronousAxis,
-  kExternalEncoder
+  kExternalEncoder,
+  kCam  // TO_Cam, TO_Cam_10k, TO_Cam_600Seg, TO_Cam_6kSeg
 };
 
 struct MachineObject {
@@ -42,6 +45,7 @@ struct MachineObject {
   techobjects::PositioningAxis* positioning_axis = nullptr;  // also set for a synchronous axis
   techobjects::SynchronousAxis* synchronous_axis = nullptr;
   techobjects::ExternalEncoder* external_encoder = nullptr;
+  techobjects::Cam* cam = nullptr;
   drives::SimulatedDrive* drive = nullptr;  // the simulated PROFIdrive drive, if that is the adapter
   drives::SimulatedAnalogDrive* analog_drive = nullptr;  // the analog actor and its amplifier, if that is it
   const drives::MotorLoad* mechanics = nullptr;          // the simulated machine of either; nullptr otherwise
@@ -70,12 +74,14 @@ bool is_identifier(std::string_view name) noexcept;
 // (which must not have started). `existing` are the objects read before (names must be unique; a synchronous
 // axis' leading values must be among them). Returns the entry whenever it has a usable name (built or not),
 // nullopt otherwise. `tool` names the program in "not yet supported by ..." messages. Drives whose adapter is
-// a Fast DDS gateway are built through `gateways`; without it such a drive is a problem of the file.
+// a Fast DDS gateway are built through `gateways`; without it such a drive is a problem of the file. A cam's
+// points file is read relative to `directory` (the machine file's folder; empty: the working directory).
 std::optional<MachineObject> load_technology_object(const Json& value, const std::string& path,
                                                     double cycle_time_s, techobjects::Runtime& runtime,
                                                     std::span<const MachineObject> existing,
                                                     Problems& problems, std::string_view tool = "tomc sim",
-                                                    GatewayLinks* gateways = nullptr);
+                                                    GatewayLinks* gateways = nullptr,
+                                                    const std::filesystem::path& directory = {});
 
 // The simulated machine's position switches reach every positioning axis as a PLC's servo process image would
 // (spec 02 §4.4 "TPA OB Servo"): a pre-servo hook on `runtime`, at the levels PositionLimits_HW.*SwitchLevel

@@ -39,9 +39,11 @@ class Scenario {
   Scenario(const Scenario&) = delete;
   Scenario& operator=(const Scenario&) = delete;
 
-  // Validates and builds. `source` names the document in messages about malformed JSON.
-  static LoadResult load(const Json& document);
-  static LoadResult load_text(std::string_view text, std::string_view source);
+  // Validates and builds. `source` names the document in messages about malformed JSON; files the document
+  // names (a cam's points) are relative to `directory` (load_file: the scenario file's folder).
+  static LoadResult load(const Json& document, const std::filesystem::path& directory = {});
+  static LoadResult load_text(std::string_view text, std::string_view source,
+                              const std::filesystem::path& directory = {});
   static LoadResult load_file(const std::filesystem::path& file);
 
   double cycle_time() const noexcept;
