@@ -15,7 +15,7 @@ namespace tomc::techobjects {
 
 ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const ExternalEncoderData& start_values,
                                  const DriveConnectionConfig& connection)
-    : DataBlockObject(std::move(name), device, start_values, connection),
+    : DataBlockObject(std::move(name), device, start_values),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kEncoderG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
     fail_start_value(name_, path, message);
@@ -30,7 +30,7 @@ ExternalEncoder::ExternalEncoder(std::string name, DeviceIo* device, const Exter
     fail("Sensor.Interface", "the device carries no encoder telegram 81 or 83 (spec 01 §3.3)");
   }
   source_ = EncoderSource::kEncoderG1;
-  drive_ = DriveConnection(*device_, drive_config_);
+  drive_ = DriveConnection(*device_, connection);
   configure();
   if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
 }
@@ -88,7 +88,7 @@ void ExternalEncoder::servo(const CycleClock& clock) noexcept {
   }
   // A failed ZSW2_ENC sign-of-life (spec 06 §5.2) makes the value invalid like a lost link: say so with the
   // alarm the axes raise for it, instead of a silent StatusSensor.CommunicationOK = FALSE (issue 22).
-  if (connection_.communication_fault() == CommunicationFault::kSignOfLifeFailed) {
+  if (drive_.communication_fault() == CommunicationFault::kSignOfLifeFailed) {
     core_.raise(kAlarmDriveSignOfLife);
   }
   valid_ = encoder_.valid() && communication;
@@ -140,7 +140,7 @@ void ExternalEncoder::interpolate(const CycleClock& clock) noexcept {
       const std::int32_t adjusted = db_.StatusSensor.Adjusted;
       db_ = *start_;
       core_.restart();  // MC_WriteParameter 1010...1012 take effect now
-      drive_.restart(drive_config_);
+      drive_.restart(drive_.config());
       configure();
       configure_extrapolation();
       if (encoder_.chain().absolute_type()) {

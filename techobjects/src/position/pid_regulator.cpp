@@ -42,7 +42,6 @@ void PidRegulator::reset() noexcept {
   e_at_last_sample_ = 0.0;
   cycles_since_sample_ = 0;
   started_ = false;
-  terms_ = {};
 }
 
 PidTerms PidRegulator::update(double control_difference) noexcept {
@@ -95,7 +94,6 @@ PidTerms PidRegulator::update(double control_difference) noexcept {
   const double sum = t.p + t.i + t.d;
   t.output = g.OutputLimit > 0.0 ? std::clamp(sum, -g.OutputLimit, g.OutputLimit) : sum;
   t.saturated = t.output != sum;
-  terms_ = t;
   return t;
 }
 

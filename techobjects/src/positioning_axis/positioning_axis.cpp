@@ -46,7 +46,7 @@ bool carries(std::uint16_t telegram, tg::Signal signal, tg::Direction direction 
 
 PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
                                  const DriveConnectionConfig& drive)
-    : AxisObject(std::move(name), device, start_values, drive),
+    : AxisObject(std::move(name), device, start_values),
       encoder_(AxisMechanics{}, EncoderMechanics{}, 0.001, EncoderSource::kDriveG1) {
   const auto fail = [&](std::string_view path, std::string_view message) {
     fail_start_value(name_, path, message);
@@ -60,8 +60,6 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   }
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
   if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
-  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
-  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
   if (device_ != nullptr) {
     // Which telegram carries the operative encoder (decision P3).
     const auto& cfg = device_->adapter->config();
@@ -73,7 +71,7 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
                std::to_string(cfg.encoder_telegrams[0]) + ")");
     }
     encoder_source_ = *source;
-    drive_ = DriveConnection(*device_, drive_config_);
+    drive_ = DriveConnection(*device_, with_reference_values(drive, start_->Actor));
   }
   configure_components();
   if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);

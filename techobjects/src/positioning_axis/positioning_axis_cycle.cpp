@@ -777,10 +777,8 @@ void PositioningAxis::restart() noexcept {
     backlash_.reset();  // not homed: the first motion is not compensated (spec 01 §5.9)
   }
   setpoint_ = MotionState{actual_position_, 0.0, 0.0};
-  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
-  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
   command_.travel_to_fixed_stop = false;  // the restarted connection clears STW2 (AxisCore::restart)
-  if (device_ != nullptr) drive_.restart(drive_config_);
+  if (device_ != nullptr) drive_.restart(with_reference_values(drive_.config(), start_->Actor));
 }
 
 }  // namespace tomc::techobjects

@@ -31,13 +31,11 @@ bool finite(double x) {
 
 SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& start_values,
                      const DriveConnectionConfig& drive)
-    : AxisObject(std::move(name), device, start_values, drive) {
+    : AxisObject(std::move(name), device, start_values) {
   check_start_values(name_, speed_axis_variables(), *start_);
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
-  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
-  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
   if (device_ != nullptr) {
-    drive_ = DriveConnection(*device_, drive_config_);
+    drive_ = DriveConnection(*device_, with_reference_values(drive, start_->Actor));
     const std::uint16_t telegram = device_->adapter->config().drive_telegram;
     const auto setpoint = tg::find_layout(telegram, tg::Direction::kSetpoint);
     const auto actual = tg::find_layout(telegram, tg::Direction::kActual);
@@ -453,10 +451,10 @@ void SpeedAxis::restart() noexcept {
   motion_ = Motion{};
   generator_active_ = false;
   setpoint_ = MotionState{};
-  drive_config_.reference_speed_rpm = start_->Actor.DriveParameter.ReferenceSpeed;
-  drive_config_.reference_torque_nm = start_->Actor.DriveParameter.ReferenceTorque;
   command_.travel_to_fixed_stop = false;  // the restarted connection clears STW2 (AxisCore::restart)
-  if (device_ != nullptr) drive_.restart(drive_config_);  // the PROFIdrive link runs on
+  if (device_ != nullptr) {
+    drive_.restart(with_reference_values(drive_.config(), start_->Actor));  // the PROFIdrive link runs on
+  }
 }
 
 }  // namespace tomc::techobjects

@@ -19,6 +19,14 @@
 
 namespace tomc::techobjects {
 
+// The drive's reference speed (p2000) and torque (p2003) are the axis' Actor.DriveParameter values.
+inline DriveConnectionConfig with_reference_values(DriveConnectionConfig config,
+                                                   const TO_Struct_Actor& actor) noexcept {
+  config.reference_speed_rpm = actor.DriveParameter.ReferenceSpeed;
+  config.reference_torque_nm = actor.DriveParameter.ReferenceTorque;
+  return config;
+}
+
 // The reflection table of each data-block type (spec 04 §1 columns S, P/Y, E).
 template <typename Data>
 struct DataBlockTraits;
@@ -76,13 +84,8 @@ class DataBlockObject : public TechnologyObject {
   const CommunicationTimes& communication_times() const noexcept { return core_.communication_times; }
 
  protected:
-  DataBlockObject(std::string name, DeviceIo* device, const Data& start_values,
-                  const DriveConnectionConfig& drive)
-      : name_(std::move(name)),
-        device_(device),
-        start_(start_values),
-        db_(start_values),
-        drive_config_(drive) {}
+  DataBlockObject(std::string name, DeviceIo* device, const Data& start_values)
+      : name_(std::move(name)), device_(device), start_(start_values), db_(start_values) {}
 
   static constexpr const DataBlockTable<Data>& table() noexcept { return DataBlockTraits<Data>::table; }
   // A DIR/CAL variable changed by a user-program write: re-configure what depends on it (user call, not
@@ -102,8 +105,7 @@ class DataBlockObject : public TechnologyObject {
   DeviceIo* device_ = nullptr;  // nullptr: a virtual axis or simulation
   StartValues<Data> start_;     // load memory (the runtime's StartValueStore once attached)
   Data db_;                     // work memory
-  DriveConnectionConfig drive_config_;
-  DriveConnection drive_;
+  DriveConnection drive_;       // its configuration: drive_.config()
   AxisCore core_;
 };
 

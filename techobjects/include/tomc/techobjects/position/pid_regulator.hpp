@@ -56,8 +56,7 @@ class PidRegulator {
   // Forgets I, the D history and the held D: the next update starts from e alone.
   void reset() noexcept;
 
-  PidTerms update(double control_difference) noexcept;
-  const PidTerms& terms() const noexcept { return terms_; }
+  PidTerms update(double control_difference) noexcept;  // the terms of this cycle
 
  private:
   static bool valid(const PidGains& g) noexcept;
@@ -72,7 +71,6 @@ class PidRegulator {
   double e_at_last_sample_ = 0.0;  // e'(k − n)
   std::uint32_t cycles_since_sample_ = 0;
   bool started_ = false;
-  PidTerms terms_{};
 };
 
 }  // namespace tomc::techobjects

@@ -48,7 +48,7 @@ namespace tomc::techobjects {
 // Capacity of the position controller's setpoint delay lines in servo cycles (current sample included):
 // delays up to 31 cycles (T_i + T_o + T_DC + T_servo and AdditionalSetpointDelayTime; decision M3). Longer
 // delays are clamped and reported by configure().
-inline constexpr std::size_t kMaxSetpointDelayCycles = 32;
+inline constexpr std::size_t kMaxSetpointDelayCycles = 24;
 // The simulated control loop of a simulated axis (Simulation.Mode = 1): T_t up to 63 cycles.
 inline constexpr std::size_t kSimulationDelayCycles = 64;
 
