@@ -327,9 +327,10 @@ struct Server::Impl {
          {std::tuple{"/vendor/uPlot.iife.min.js", uplot_script(), "text/javascript; charset=utf-8"},
           std::tuple{"/vendor/uPlot.min.css", uplot_style(), "text/css; charset=utf-8"}}) {
       auto body = std::make_shared<const std::string>(bytes);
-      http.route("GET", path, Lane::kInline, [body, type](const Request&) {
+      const char* content_type = type;  // a structured binding cannot be captured before C++20 in clang 14
+      http.route("GET", path, Lane::kInline, [body, content_type](const Request&) {
         Response r;
-        r.content_type = type;
+        r.content_type = content_type;
         r.shared_body = body;
         r.headers.emplace_back("Cache-Control", "max-age=3600");
         return r;
