@@ -184,8 +184,9 @@ std::vector<std::uint8_t> call(pn::UdpSocket& udp, std::span<const std::uint8_t>
 TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   Namespaces hosts;
   if (const std::string why = hosts.make(); !why.empty()) GTEST_SKIP() << why;
-  EXPECT_EQ(hosts.interfaces(hosts.controller), (std::set<std::string>{"lo", "pn-c"}));
-  EXPECT_EQ(hosts.interfaces(hosts.device), (std::set<std::string>{"lo", "pn-d"}));
+  // Nothing is sent unless each namespace sees only lo and its own veth end (never the machine's interfaces).
+  ASSERT_EQ(hosts.interfaces(hosts.controller), (std::set<std::string>{"lo", "pn-c"}));
+  ASSERT_EQ(hosts.interfaces(hosts.device), (std::set<std::string>{"lo", "pn-d"}));
   ASSERT_TRUE(hosts.carrier(hosts.controller, "pn-c"));
 
   const bool capture = !output_of("command -v tshark").empty();
@@ -304,12 +305,12 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
       cycle(deadline += 1000);
       cycles_valid += controller.input_valid(now_us()) ? 1 : 0;
     }
-    quiet("ip link set pn-c down");  // this thread is in the controller namespace
+    quiet("ip -n " + hosts.controller + " link set pn-c down");  // named: never the host's namespace
     while (controller.state() == pn::ControllerArState::kRunning && cycles_to_loss < 200) {
       cycle(deadline += 1000);
       ++cycles_to_loss;
     }
-    quiet("ip link set pn-c up");
+    quiet("ip -n " + hosts.controller + " link set pn-c up");
     bool reconnected = false;
     for (int attempt = 0; attempt < 20 && !reconnected; ++attempt) {
       reconnected = start_up(20 + 2 * static_cast<std::uint32_t>(attempt));
