@@ -739,3 +739,20 @@ TEST(SpeedAxis, FollowSetpointReaction) {
 }
 
 }  // namespace
+
+// spec 03 §4.14, decision K8: STW2 bit 8 is one of the user's MC_SetAxisSTW bits and also the "travel to fixed
+// stop" bit MC_TorqueLimiting sets. The one writer applies the torque limit's level only when it changes, so a
+// bit the user set stays in the telegram cycle after cycle while no torque limiting runs.
+TEST(SpeedAxis, UsersStw2Bit8SurvivesTheServoCommand) {
+  SpeedAxisMachine m(2, trapezoid_data());
+  ASSERT_GT(m.enable(), 0);
+  m.set_stw.STW2 = 0x0100;
+  m.set_stw.STW2BitMask = 0x0100;
+  m.set_stw.Execute = true;
+  m.run(2);
+  ASSERT_TRUE(m.set_stw.Done);
+  for (int k = 0; k < 20; ++k) {
+    m.run(1);
+    ASSERT_TRUE(m.axis->drive()->drive_setpoint().STW2.test(telegrams::Stw2Bit::kTravelToFixedStop)) << k;
+  }
+}
