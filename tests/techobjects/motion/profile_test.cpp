@@ -19,6 +19,7 @@ using tomc::techobjects::MotionState;
 using tomc::techobjects::PositionProfile;
 using tomc::techobjects::ProfileLimits;
 using tomc::techobjects::ProfileSegment;
+using tomc::techobjects::replanning_jerk;
 using tomc::techobjects::VelocityProfile;
 
 #ifdef TOMC_SANITIZED_BUILD
@@ -314,6 +315,42 @@ TEST(JobReplacementSeed677, TheJobsJerkIsKeptPastTheVelocityLimit) {
   // Back to the limit: from (40, 0) down to 30, peak deceleration sqrt(j·10) = 44.7 < 100: 2·sqrt(10/j) s.
   EXPECT_NEAR(position.at(0.5 + 2 * std::sqrt(10.0 / 200.0)).velocity, 30.0, 1e-9);
   EXPECT_EQ(position.at(position.duration()).position, 1000.0);
+}
+
+// Decision R1, the one case where the jerk is raised: a ramp to standstill whose a0 already carries v through
+// zero (|v0| < a0²/(2j)). With the job's jerk the "stop" reverses the axis; R1's jerk a0²/(2|v0|) is the
+// least that does not: v and a reach 0 together. The example of R1: MC_Halt at 1000 mm/s³ from 92.5 mm/s
+// braking at 5000 mm/s² → 5000²/(2·92.5) = 135,135 mm/s³.
+TEST(JobReplacementSeed677, RampToStandstillRaisesTheJerkOnlyWhereItWouldReverse) {
+  struct Row {
+    double v0, a0, jerk;
+    bool to_standstill;
+    double expected;
+  };
+  const Row rows[] = {
+      {92.5, -5000.0, 1000.0, true, 5000.0 * 5000.0 / (2 * 92.5)},  // R1's example: raised
+      {-92.5, 5000.0, 1000.0, true, 5000.0 * 5000.0 / (2 * 92.5)},  // mirrored
+      {92.5, -5000.0, 1000.0, false, 1000.0},                       // not to standstill: S4, kept
+      {92.5, 5000.0, 1000.0, true, 1000.0},                         // a0 along v0: kept
+      {20000.0, -5000.0, 1000.0, true, 1000.0},                     // |v0| ≥ a0²/(2j): reaches 0 anyway
+      {92.5, -5000.0, 0.0, true, 0.0},                              // no jerk limitation
+  };
+  for (const Row& row : rows) {
+    SCOPED_TRACE(::testing::Message() << "v0 " << row.v0 << " a0 " << row.a0 << " jerk " << row.jerk);
+    EXPECT_DOUBLE_EQ(replanning_jerk(row.v0, row.a0, row.jerk, row.to_standstill), row.expected);
+  }
+  // The halt of R1's example with the job's jerk and with R1's.
+  const MotionState start{0.0, 92.5, -5000.0};
+  auto lowest_velocity = [&](double jerk) {
+    VelocityProfile halt;
+    EXPECT_TRUE(halt.plan(start, 0.0, {0.0, 5000.0, 5000.0, jerk}));
+    double lowest = INFINITY;
+    for (int k = 0; k <= 1000; ++k)
+      lowest = std::min(lowest, halt.at(halt.duration() * k / 1000).velocity);
+    return lowest;
+  };
+  EXPECT_LT(lowest_velocity(1000.0), -2000.0);  // the job's jerk: backwards at more than 2 m/s
+  EXPECT_GE(lowest_velocity(replanning_jerk(92.5, -5000.0, 1000.0, true)), -1e-9);
 }
 
 // ---------------------------------------------------------------------------------------------------------
