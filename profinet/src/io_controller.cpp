@@ -346,6 +346,12 @@ std::uint8_t IoController::input_iops(std::uint16_t slot, std::uint16_t subslot)
   return kIoxsBad;
 }
 
+void IoController::set_outputs_valid(bool valid) noexcept {
+  const std::size_t count = output_codec_.layout().data_object_count;
+  for (std::size_t i = 0; i < count; ++i)
+    output_codec_.iops(output_image_, i) = valid ? kIoxsGood : kIoxsBad;
+}
+
 std::size_t IoController::next_output_frame(std::span<std::uint8_t> out) noexcept {
   if (state_ == ControllerArState::kOffline || state_ == ControllerArState::kConnecting || !device_mac_)
     return 0;

@@ -41,12 +41,35 @@ ProfinetDrive::ProfinetDrive(profinet::DeviceIdentity identity, const DeviceConf
     : device_(with_modules(std::move(identity), config.drive_telegram)),
       drive_(config, parameters),
       setpoint_(make_frames(config, telegrams::Direction::kSetpoint)),
-      actual_(make_frames(config, telegrams::Direction::kActual)) {}
+      actual_(make_frames(config, telegrams::Direction::kActual)) {
+  if (auto codec = telegrams::TelegramCodec::create(config.drive_telegram, telegrams::Direction::kSetpoint,
+                                                    config.codec)) {
+    setpoint_codec_ = *codec;
+  }
+}
+
+bool ProfinetDrive::follow_controller() noexcept {
+  const auto received = device_.output_data(kDriveObjectSlot, kTelegramSubslot);
+  if (device_.state() != profinet::ArState::kRunning || received.size() != setpoint_codec_.frame_size() ||
+      !setpoint_codec_.carries(telegrams::Signal::STW2)) {
+    return false;
+  }
+  telegrams::SetpointSignals signals{};
+  if (setpoint_codec_.decode(std::as_bytes(received), signals) != telegrams::TelegramError::kNone)
+    return false;
+  const auto master = static_cast<std::uint8_t>(signals.STW2.field(telegrams::kSignOfLifeField));
+  if (master == 0 || master == master_sign_of_life_) return false;
+  master_sign_of_life_ = master;
+  cycle();
+  return true;
+}
 
 void ProfinetDrive::cycle() noexcept {
   const auto received = device_.output_data(kDriveObjectSlot, kTelegramSubslot);
   Frame& setpoint = setpoint_[Slot::kDrive];
-  if (device_.state() == profinet::ArState::kRunning && received.size() == setpoint.length) {
+  if (device_.state() == profinet::ArState::kRunning &&
+      device_.output_iops(kDriveObjectSlot, kTelegramSubslot) == profinet::kIoxsGood &&
+      received.size() == setpoint.length) {
     std::memcpy(setpoint.bytes.data(), received.data(), received.size());
     drive_.write_setpoint(setpoint_);
   }

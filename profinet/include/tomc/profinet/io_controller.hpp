@@ -82,6 +82,9 @@ class IoController {
   std::span<std::uint8_t> output_data(std::uint16_t slot, std::uint16_t subslot) noexcept;
   std::span<const std::uint8_t> input_data(std::uint16_t slot, std::uint16_t subslot) const noexcept;
   std::uint8_t input_iops(std::uint16_t slot, std::uint16_t subslot) const noexcept;
+  // The provider state (IOPS) of every output data object: false = BAD, the device must not use the data
+  // (the gateway's watchdog when its controller went silent, docs/gateway.md G6); true = GOOD (default).
+  void set_outputs_valid(bool valid) noexcept;
   // The output frame of this cycle into out (0 before the Connect response).
   std::size_t next_output_frame(std::span<std::uint8_t> out) noexcept;
   // A received input frame of this AR; false if it is another frame or malformed.

@@ -8,6 +8,7 @@
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/profinet/io_device.hpp"
+#include "tomc/telegrams/codec.hpp"
 
 namespace tomc::drives {
 
@@ -32,16 +33,23 @@ class ProfinetDrive {
   profinet::IoDevice& device() noexcept { return device_; }
   SimulatedDrive& drive() noexcept { return drive_; }
 
-  // One drive cycle: while the AR runs, the received setpoint telegram goes to the drive (without an AR the
-  // drive gets none and ends in F08501 after its timeout, as a real one); the drive's actual telegram goes
-  // into the input image. No allocation.
+  // One drive cycle: while the AR runs and the controller's provider state (IOPS) is GOOD, the received
+  // setpoint telegram goes to the drive (otherwise the drive gets none and ends in F08501 after its timeout,
+  // as a real one); the drive's actual telegram goes into the input image. No allocation.
   void cycle() noexcept;
+  // Isochronous operation: the drive application runs once per master application cycle, i.e. when the
+  // controller's sign-of-life in STW2 (bits 12-15, spec 06 §5) has advanced since the last cycle. Call it for
+  // every received output frame; it runs cycle() and returns true then. Telegrams without STW2, or a
+  // controller that does not count (0), never advance it: such a drive runs cycle() on its own clock.
+  bool follow_controller() noexcept;
 
  private:
   profinet::IoDevice device_;
   SimulatedDrive drive_;
   DeviceFrames setpoint_;
   DeviceFrames actual_;
+  telegrams::TelegramCodec setpoint_codec_;
+  std::uint8_t master_sign_of_life_ = 0;
 };
 
 }  // namespace tomc::drives
