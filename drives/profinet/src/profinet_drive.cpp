@@ -1,7 +1,10 @@
 #include "tomc/drives/profinet_drive.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
+
+#include "tomc/profinet/parameter_access.hpp"
 
 namespace tomc::drives {
 
@@ -46,6 +49,40 @@ ProfinetDrive::ProfinetDrive(profinet::DeviceIdentity identity, const DeviceConf
                                                     config.codec)) {
     setpoint_codec_ = *codec;
   }
+  telegram_ = config.drive_telegram;
+  reference_speed_rpm_ = parameters.reference_speed_rpm;
+  namespace pn = profinet;
+  // PNIOStatus of a refused record access: ErrorCode 0xDF (write) / 0xDE (read), ErrorDecode 0x80 (PNIORW),
+  // ErrorCode1 0xB0 (access: invalid index) or 0xB8 (invalid parameter / no request pending).
+  device_.set_write_handler([this](const pn::RecordHeader& header, std::span<const std::uint8_t> data) {
+    if (header.slot != kDriveObjectSlot || header.index != pn::kParameterAccessIndex)
+      return pn::PnioStatus{0xDF, 0x80, 0xB0, 0x00};
+    const auto request = pn::decode_parameter_request(data);
+    if (!request) return pn::PnioStatus{0xDF, 0x80, 0xB8, 0x00};
+    pn::ParameterResponse response{request->reference, pn::parameter_response_id::kReadOk, request->axis, {}};
+    for (const pn::ParameterAddress& p : request->parameters) {
+      if (p.attribute == 0x10 && p.number == 922) {
+        response.parameters.push_back({pn::parameter_format::kUnsigned16, {telegram_}});
+      } else if (p.attribute == 0x10 && p.number == 2000) {
+        response.parameters.push_back(
+            {pn::parameter_format::kFloatingPoint,
+             {std::bit_cast<std::uint32_t>(static_cast<float>(reference_speed_rpm_))}});
+      } else {
+        response.id = pn::parameter_response_id::kReadError;
+        response.parameters.push_back({pn::parameter_format::kError, {0}});
+      }
+    }
+    parameter_response_ = pn::encode(response);
+    return pn::PnioStatus{};
+  });
+  device_.set_read_handler([this](const pn::RecordHeader& header, std::vector<std::uint8_t>& data) {
+    if (header.slot != kDriveObjectSlot || header.index != pn::kParameterAccessIndex)
+      return pn::PnioStatus{0xDE, 0x80, 0xB0, 0x00};
+    if (parameter_response_.empty()) return pn::PnioStatus{0xDE, 0x80, 0xB8, 0x00};
+    data = std::move(parameter_response_);
+    parameter_response_.clear();
+    return pn::PnioStatus{};
+  });
 }
 
 bool ProfinetDrive::follow_controller() noexcept {

@@ -107,6 +107,7 @@ struct ProfinetGateway::Impl {
     std::atomic<bool> faulted{false};
     std::atomic<std::uint32_t> alarms{0};
     std::atomic<std::uint32_t> ars{0};
+    std::atomic<float> reference_speed_rpm{0.0f};  // p2000 as read at start-up (0: not read)
     // Cyclic thread only.
     bool has_setpoint = false;
     std::uint64_t setpoint_cycle = 0;  // the newest setpoint applied
@@ -434,7 +435,9 @@ struct ProfinetGateway::Impl {
         if (stop.load()) return;
         Device& d = *owned;
         if (d.cyclic.load(std::memory_order_acquire)) continue;
-        const std::string problem = detail::start_up(*d.controller, start_socket, rpc_socket, xid);
+        detail::TelegramCheck check{d.config.telegram_slot, d.config.telegram, 0.0f};
+        const std::string problem = detail::start_up(*d.controller, start_socket, rpc_socket, xid,
+                                                     d.config.check_telegram ? &check : nullptr);
         std::string text = problem;
         if (problem.empty()) {
           if (const std::string diff = detail::describe(d.controller->module_diff()); !diff.empty())
@@ -442,6 +445,7 @@ struct ProfinetGateway::Impl {
           d.has_setpoint = false;
           d.controller->set_outputs_valid(false);  // until a controller's setpoint is applied (G6)
           d.ars.fetch_add(1, std::memory_order_relaxed);
+          d.reference_speed_rpm.store(check.reference_speed_rpm, std::memory_order_relaxed);
           d.cyclic.store(true, std::memory_order_release);
         } else {
           waiting = true;
@@ -577,7 +581,7 @@ std::vector<GatewayDeviceStatus> ProfinetGateway::devices() const {
   std::lock_guard<std::mutex> lock(impl_->detail_mutex);
   for (const auto& d : impl_->devices) {
     out.push_back({d->config.name, d->cyclic.load(std::memory_order_acquire), d->ars.load(), d->alarms.load(),
-                   d->detail});
+                   d->reference_speed_rpm.load(), d->detail});
   }
   return out;
 }

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 
+#include "tomc/profinet/parameter_access.hpp"
+
 namespace tomc::profinet_gateway::detail {
 
 namespace pn = tomc::profinet;
@@ -63,8 +65,41 @@ std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device
 
 }  // namespace
 
-std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp,
-                     std::uint32_t& xid) {
+namespace {
+
+// p0922 and p2000 of the drive object through base-mode parameter access (write the request, read the
+// answer).
+std::string check_telegram(pn::IoController& controller, pn::UdpSocket& udp, TelegramCheck& check) {
+  const pn::Ipv4Address& ip = controller.device().ip.address;
+  const pn::ParameterRequest request{
+      1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}};
+  const auto status = [&] { return "PNIOStatus " + hex(controller.last_error().value()); };
+  const auto written =
+      call(udp, ip,
+           controller.record_write_request(check.slot, 1, pn::kParameterAccessIndex, pn::encode(request)));
+  if (written.empty()) return "no answer to the parameter request (p0922)";
+  if (!controller.on_record_response(written)) return "parameter request (p0922) refused, " + status();
+  const auto read =
+      call(udp, ip, controller.record_read_request(check.slot, 1, pn::kParameterAccessIndex, 240));
+  if (read.empty()) return "no answer to the parameter read (p0922)";
+  const auto data = controller.on_record_response(read);
+  if (!data) return "parameter read (p0922) refused, " + status();
+  const auto response = pn::decode_parameter_response(*data);
+  const auto telegram = response ? pn::integer_value(*response, 0) : std::nullopt;
+  if (!telegram) return "p0922 unreadable in the drive's parameter response";
+  if (*telegram != check.telegram) {
+    return "p0922 is " + std::to_string(*telegram) + ": the drive sends telegram " +
+           std::to_string(*telegram) + ", the file says " + std::to_string(check.telegram);
+  }
+  check.reference_speed_rpm =
+      response->parameters.size() > 1 ? pn::float_value(*response, 1).value_or(0.0f) : 0.0f;
+  return {};
+}
+
+}  // namespace
+
+std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp, std::uint32_t& xid,
+                     TelegramCheck* check) {
   const std::string& name = controller.device().name_of_station;
   const pn::Ipv4Address& ip = controller.device().ip.address;
   const std::uint32_t identify = ++xid;
@@ -104,7 +139,15 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     if (n == 0 || from != ip) continue;
     const auto answer = controller.on_application_ready(std::span(ready).first(n));
     if (!answer.empty()) udp.send_to(answer, from, port);
-    if (controller.state() == pn::ControllerArState::kRunning) return {};
+    if (controller.state() != pn::ControllerArState::kRunning) continue;
+    if (check == nullptr) return {};
+    const std::string problem = check_telegram(controller, udp, *check);
+    if (!problem.empty()) {
+      // Not this drive's telegram (or unknown): the AR must not carry setpoints of another layout.
+      udp.send_to(controller.release_request(), ip, pn::kPnioUdpPort);
+      controller.abort_ar();
+    }
+    return problem;
   }
   controller.abort_ar();
   return "no ApplicationReady from '" + name + "'";

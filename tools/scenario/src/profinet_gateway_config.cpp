@@ -182,6 +182,7 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
           problems.add(r.path_of("telegram"), why);
       }
       r.integer("telegram_slot", device.telegram_slot, 0, 0x7FFF);
+      r.boolean("check_telegram", device.check_telegram);
       r.integer("telegram_subslot", device.telegram_subslot, 1, 0x9FFF, true);
       if (const Json* m = r.get("modules")) read_modules(*m, r.path_of("modules"), device, problems);
       r.finish();

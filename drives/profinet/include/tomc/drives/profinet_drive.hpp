@@ -26,9 +26,14 @@ std::vector<profinet::ExpectedModule> profidrive_modules(std::uint16_t telegram)
 class ProfinetDrive {
  public:
   // identity: name, IP, MAC, IDs; its modules are replaced by the drive's. config.drive_telegram only (no
-  // supplementary or encoder telegrams behind PROFINET yet).
+  // supplementary or encoder telegrams behind PROFINET yet). The drive object answers PROFIdrive base-mode
+  // parameter requests (record index 0xB02E, any subslot of its slot) for p0922 (the telegram, Unsigned16)
+  // and p2000 (the reference speed, FloatingPoint); any other parameter gets error value 0 (impermissible
+  // parameter number).
   ProfinetDrive(profinet::DeviceIdentity identity, const DeviceConfig& config,
                 const SimulatedDriveParameters& parameters);
+  ProfinetDrive(const ProfinetDrive&) = delete;  // the record handlers refer to this object
+  ProfinetDrive& operator=(const ProfinetDrive&) = delete;
 
   profinet::IoDevice& device() noexcept { return device_; }
   SimulatedDrive& drive() noexcept { return drive_; }
@@ -50,6 +55,9 @@ class ProfinetDrive {
   DeviceFrames actual_;
   telegrams::TelegramCodec setpoint_codec_;
   std::uint8_t master_sign_of_life_ = 0;
+  std::uint16_t telegram_ = 0;
+  double reference_speed_rpm_ = 0.0;
+  std::vector<std::uint8_t> parameter_response_;  // the answer to the last parameter request, read once
 };
 
 }  // namespace tomc::drives

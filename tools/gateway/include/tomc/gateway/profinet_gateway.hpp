@@ -21,10 +21,11 @@ namespace tomc::profinet_gateway {
 
 struct GatewayDeviceStatus {
   std::string name;
-  bool exchanging = false;   // the AR runs and the cyclic thread exchanges with the device
-  std::uint32_t ars = 0;     // ARs established so far
-  std::uint32_t alarms = 0;  // alarms received and acknowledged
-  std::string detail;        // the last start-up problem or module difference; "" when none
+  bool exchanging = false;        // the AR runs and the cyclic thread exchanges with the device
+  std::uint32_t ars = 0;          // ARs established so far
+  std::uint32_t alarms = 0;       // alarms received and acknowledged
+  float reference_speed_rpm = 0;  // p2000 read at start-up (0: not checked)
+  std::string detail;             // the last start-up problem or module difference; "" when none
 };
 
 struct GatewayCounters {

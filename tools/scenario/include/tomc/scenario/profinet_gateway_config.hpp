@@ -43,6 +43,9 @@ struct ProfinetDeviceConfig {
   std::uint16_t telegram_slot = 1;
   std::uint16_t telegram_subslot = 2;
   std::vector<ProfinetModuleConfig> modules;  // DAP first; default: the emulated drive's layout
+  // At start-up, read p0922 (and p2000) through PROFIdrive parameter access and refuse the AR unless p0922 is
+  // `telegram`; false for a device without base-mode parameter access.
+  bool check_telegram = true;
   drives::DeviceConfig device_config() const;
 };
 
