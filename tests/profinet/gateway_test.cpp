@@ -427,12 +427,12 @@ TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACabl
   // 2. The cable cut: the gateway's veth goes down at cycle 300 and comes back 300 ms later. The scenario is
   // a new controller: the gateway takes it once the first has been silent for its watchdog (G1).
   std::this_thread::sleep_for(std::chrono::milliseconds(800));
-  constexpr int kCutCycles = 1500;
+  constexpr int kCutCycles = 1200;
   std::atomic<int> cut_at{-1};
   std::atomic<int> restored_at{-1};
   std::thread cutter;
   const auto rows = run(
-      scenario(true, kCutCycles, 150), hosts.first,
+      scenario(true, kCutCycles, 100), hosts.first,
       [&](int cycle, const std::vector<double>&) {
         if (cycle == 300) {
           cut_at = cycle;

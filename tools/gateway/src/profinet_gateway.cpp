@@ -34,9 +34,10 @@ namespace {
 
 constexpr std::uint16_t kZsw1Fault = 1u << 3;  // ZSW1 bit 3: fault present (spec 06 §3)
 // How many send clocks an answer waits for the input frames sent after its setpoint: one is the normal case
-// (the frames arrive within the cycle), more cover a device that answers late; never longer, since the
-// controller's next setpoint waits for this answer (lock-step) or the answer grows stale (real time).
-constexpr int kAnswerWaitCycles = 3;
+// (the frames arrive within the cycle), more cover a device (or a loaded machine) that answers late. A new
+// setpoint ends the wait at once (the answer goes out as it is, stale for the controller), so a controller in
+// real time never waits on it; one in lock-step waits for it at most its answer timeout.
+constexpr int kAnswerWaitCycles = 20;
 
 std::uint64_t now_us() {
   return static_cast<std::uint64_t>(
@@ -216,7 +217,7 @@ struct ProfinetGateway::Impl {
     // The answer to the applied setpoint goes out as soon as every exchanging device has sent an input frame
     // after it (docs/gateway.md §4), at the latest after kAnswerWaitCycles; while idle, every cycle (G7).
     if (answer_wait > 0) {
-      if (all_answered(now) || answer_wait == 1) {
+      if (all_answered(now) || answer_wait == 1 || setpoints.pending()) {
         publish_answer(now);
         answer_wait = 0;
       } else {
