@@ -22,7 +22,7 @@ struct AnalogRig {
   AnalogRig() {
     actor_parameters.enable_output = Channel{2, 0};
     actor_parameters.ready_input = Channel{3, 0};
-    actor_parameters.counts_per_revolution = 4.0 * amplifier_parameters.counter.lines_per_revolution;
+    actor_parameters.counts_per_revolution = 4.0 * amplifier_parameters.encoder.lines_per_revolution;
   }
 };
 
@@ -237,8 +237,8 @@ TEST(AnalogDrive, WithoutReadyInputAndEnableOutput) {
 // spec 05b B.5: ×4 quadrature, a 16-bit counter that wraps many times, continuous XIST1 without a lost count.
 TEST(AnalogDrive, QuadratureCounterWrapsWithoutLosingCounts) {
   AnalogRig rig;
-  rig.amplifier_parameters.counter.lines_per_revolution = 500;  // 2000 counts/rev
-  rig.amplifier_parameters.counter.width_bits = 16;
+  rig.amplifier_parameters.encoder.lines_per_revolution = 500;  // 2000 counts/rev
+  rig.amplifier_parameters.encoder.width_bits = 16;
   rig.actor_parameters.counter_width_bits = 16;
   rig.actor_parameters.counts_per_revolution = 2000.0;
   AnalogHarness a(rig);
@@ -276,7 +276,7 @@ TEST(AnalogDrive, CounterExtensionTable) {
 // Reference mark via G1_STW function 1 (spec 06 §6): the counter's zero-mark latch, read with command 2.
 TEST(AnalogDrive, ZeroMarkLatchThroughG1Stw) {
   AnalogRig rig;
-  rig.amplifier_parameters.counter.zero_mark_offset_revolutions = 0.25;
+  rig.amplifier_parameters.encoder.zero_mark_offset_revolutions = 0.25;
   AnalogHarness a(rig);
   auto& h = a.h;
   h.power_up_to_s4();
