@@ -3,6 +3,7 @@
 #include "tomc/drives/analog_drive.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tomc::drives {
 
@@ -13,7 +14,68 @@ AnalogDrive::AnalogDrive(io::HardwareIo& hardware, const AnalogDriveParameters& 
   (void)hardware.write_outputs();
 }
 
+void AnalogDrive::offset_calibration(bool enable, bool reset) noexcept {
+  const bool rising = enable && !calibration_enable_;
+  calibration_enable_ = enable;
+  if (!enable) {
+    calibration_state_ = Calibration::kIdle;
+    calibration_.EndTr = false;
+    return;
+  }
+  if (!rising) return;
+  calibration_.Error = 0;
+  calibration_.EndTr = false;
+  if (reset) {  // "Reset Offset": Reset TRUE, then En
+    p_.offset_volts = 0.0;
+    calibration_.ValOf = 0;
+    calibration_.EndTr = true;
+    calibration_state_ = Calibration::kFinished;
+    return;
+  }
+  calibration_state_ = Calibration::kWaitingForStandstill;
+  calibration_cycles_ = 0;
+}
+
+// TarOffs [derived, spec 05a §3.1: "integrated standstill command = offset, stored as a DAC bias"]: while the
+// TO holds the axis at standstill, its command is what cancels the amplifier's drift; its mean over
+// calibration_measure_s, added to the offset, becomes the new offset.
+void AnalogDrive::calibrate(bool enabled, double speed) noexcept {
+  if (calibration_state_ != Calibration::kWaitingForStandstill &&
+      calibration_state_ != Calibration::kMeasuring) {
+    return;
+  }
+  const bool standstill = enabled && state() == telegrams::DriveState::kS4Operation &&
+                          std::fabs(measured_speed_rpm()) < p_.standstill_threshold_rpm;
+  if (!standstill) {  // "not finished until the axis stands still"; motion restarts the wait
+    calibration_state_ = Calibration::kWaitingForStandstill;
+    calibration_cycles_ = 0;
+    return;
+  }
+  ++calibration_cycles_;
+  if (calibration_state_ == Calibration::kWaitingForStandstill) {
+    if (static_cast<double>(calibration_cycles_) * p_.servo_cycle_s >= p_.calibration_settle_s) {
+      calibration_state_ = Calibration::kMeasuring;
+      calibration_cycles_ = 0;
+      calibration_sum_volts_ = 0.0;
+    }
+    return;
+  }
+  calibration_sum_volts_ += speed * p_.volts_at_reference;
+  if (static_cast<double>(calibration_cycles_) * p_.servo_cycle_s < p_.calibration_measure_s) return;
+  const double offset = p_.offset_volts + calibration_sum_volts_ / static_cast<double>(calibration_cycles_);
+  // Error 11 (seed 000): more than 1 % of the DAC's maximum value; the offset in use stays.
+  if (std::fabs(offset) > 0.01 * p_.dac.full_scale_volts) {
+    calibration_.Error = kErrorOffsetExcessive;
+  } else {
+    p_.offset_volts = offset;
+  }
+  calibration_.ValOf = io::dac_code(p_.offset_volts, p_.dac);
+  calibration_.EndTr = true;
+  calibration_state_ = Calibration::kFinished;
+}
+
 void AnalogDrive::set_speed_output(bool enabled, double speed) noexcept {
+  calibrate(enabled, speed);
   double volts = 0.0;
   if (enabled) {
     // spec 01 §3.12: U = clamp(n/ReferenceSpeed, ±overdrive) · U_100% (+ the offset, also in S5).

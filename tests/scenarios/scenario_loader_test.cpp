@@ -171,6 +171,15 @@ TEST(ScenarioDrive, AnalogAdapter) {
   d = base();
   d["trace"] = Json::array({"Axis1.analog.output_volts"});
   EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no analog drive");
+  // TarOffs inputs (docs/analog-drives.md) are set like variables, on an analog drive only, as BOOL.
+  d = base();
+  d["timeline"].push_back(Json::parse(R"({"cycle": 1, "set": {"Axis1.analog.TarOffs.En": true}})"));
+  EXPECT_EQ(problem_of(d),
+            "timeline[1].set.Axis1.analog.TarOffs.En: Axis1 has no analog drive (\"adapter\": \"analog\")");
+  d["technology_objects"][0]["drive"] = Json::parse(R"({"adapter": "analog", "telegram": 3})");
+  EXPECT_TRUE(problems_of(d).empty());
+  d["timeline"][1]["set"]["Axis1.analog.TarOffs.Reset"] = 1;
+  EXPECT_EQ(problem_of(d), "timeline[1].set.Axis1.analog.TarOffs.Reset: expected true or false");
 }
 
 // The stepper actor (docs/analog-drives.md, spec 01 §3.11) is a telegram-3 drive to the TO; its own keys live

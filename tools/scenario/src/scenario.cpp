@@ -128,7 +128,21 @@ struct ActorObservable {
 };
 using AnalogObservable = ActorObservable<drives::SimulatedAnalogDrive>;
 using StepperObservable = ActorObservable<drives::SimulatedStepperDrive>;
-constexpr std::array<AnalogObservable, 7> kAnalogObservables{{
+constexpr std::array<AnalogObservable, 11> kAnalogObservables{{
+    {"offset_volts", Format::kReal,
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().parameters().offset_volts; }},
+    {"TarOffs.ValOf", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().offset_calibration_status().ValOf);
+     }},
+    {"TarOffs.EndTr", Format::kBool,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return d.actor().offset_calibration_status().EndTr ? 1.0 : 0.0;
+     }},
+    {"TarOffs.Error", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().offset_calibration_status().Error);
+     }},
     {"output_volts", Format::kReal,
      [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().output_volts(); }},
     {"output_code", Format::kInteger,
@@ -238,6 +252,10 @@ struct SetItem {
   std::string variable;
   std::string path;  // JSON path, for a (never expected) refusal at run time
   double value = 0.0;
+  // "<TO>.analog.TarOffs.En" / ".Reset": an input of the analog actor's offset calibration, not a TO
+  // variable.
+  enum class Target : std::uint8_t { kVariable, kTarOffsEn, kTarOffsReset };
+  Target target = Target::kVariable;
 };
 
 struct Event {
@@ -283,6 +301,7 @@ struct Scenario::Impl {
   // Drives behind a Fast DDS gateway (gateway_adapter.hpp); empty with simulated drives only.
   GatewayLinks gateways;
   std::vector<TechnologyObjectEntry> objects;
+  std::vector<std::array<bool, 2>> tar_offs_inputs;  // per object: TarOffs En, Reset as last set
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
   std::vector<Column> trace;
@@ -472,6 +491,7 @@ void Scenario::Impl::load_technology_object(const Json& value, const std::string
   if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems,
                                                     "tomc sim", &gateways, directory)) {
     objects.push_back(std::move(*entry));
+    tar_offs_inputs.push_back({false, false});
   }
 }
 
@@ -691,6 +711,18 @@ void Scenario::Impl::load_set_event(ObjectReader& r, Event& event) {
     }
     if (!objects[*to_index].built) continue;  // its definition was already reported
     const std::string variable = key.substr(dot + 1);
+    if (variable == "analog.TarOffs.En" || variable == "analog.TarOffs.Reset") {
+      if (objects[*to_index].analog_drive == nullptr) {
+        problems.add(path, objects[*to_index].name + " has no analog drive (\"adapter\": \"analog\")");
+      } else if (!value.is_boolean()) {
+        problems.add(path, "expected true or false");
+      } else {
+        event.sets.push_back(
+            SetItem{*to_index, variable, path, value.get<bool>() ? 1.0 : 0.0,
+                    variable.ends_with("En") ? SetItem::Target::kTarOffsEn : SetItem::Target::kTarOffsReset});
+      }
+      continue;
+    }
     const to::VariableInfo* info = objects[*to_index].find_variable(variable);
     if (info == nullptr) {
       problems.add(path, "unknown variable of " + std::string(objects[*to_index].type_name()) + " " +
@@ -956,6 +988,14 @@ void Scenario::Impl::apply(const Event& event) noexcept {
     }
     case Event::Kind::kSet:
       for (const SetItem& s : event.sets) {
+        if (s.target != SetItem::Target::kVariable) {
+          // TarOffs inputs (docs/analog-drives.md): the actor sees En and Reset together, as the legacy
+          // block.
+          auto& inputs = tar_offs_inputs[s.to];
+          inputs[s.target == SetItem::Target::kTarOffsEn ? 0 : 1] = s.value != 0.0;
+          objects[s.to].analog_drive->actor().offset_calibration(inputs[0], inputs[1]);
+          continue;
+        }
         const to::WriteResult result = objects[s.to].write(s.variable, s.value);
         if (!result.ok()) {
           // Validated at load time with the same rules; if the TO ever disagrees the run must not go on

@@ -17,7 +17,18 @@ struct AnalogDriveParameters : ActorParameters {
   double offset_volts = 0.0;         // added to the output while the axis is enabled (TarOffs)
   io::DacFormat dac{};
   io::Channel analog_output{0, 0};  // <TO>.Actor.Interface.AddressOut
+  // TarOffs (decision A15): standstill this long before measuring, then the mean output over measure_s.
+  double calibration_settle_s = 0.1;
+  double calibration_measure_s = 0.5;
 };
+
+// The outputs of the offset auto-calibration (seed 000 TarOffs, spec 05a §3.1), under the legacy names.
+struct OffsetCalibration {
+  bool EndTr = false;       // the calibration finished (with En still TRUE)
+  std::int32_t ValOf = 0;   // the offset in use, in DAC codes (0 = none)
+  std::uint32_t Error = 0;  // 11: the offset found exceeds 1 % of the DAC's full scale (not applied)
+};
+inline constexpr std::uint32_t kErrorOffsetExcessive = 11;  // seed 000 appendix 1, error 11
 
 class AnalogDrive final : public Telegram3Actor {
  public:
@@ -26,6 +37,11 @@ class AnalogDrive final : public Telegram3Actor {
 
   // Analog offset auto-calibration result (TarOffs): added to the output from the next cycle.
   void set_offset_volts(double volts) noexcept { p_.offset_volts = volts; }
+  // TarOffs as an actor function, its inputs each cycle: `enable` (En) starts a calibration on its rising
+  // edge (or, with `reset` TRUE, clears the offset); FALSE ends it and clears EndTr. The axis must stand
+  // still in operation: EndTr stays FALSE until it does (spec 05a §3.1).
+  void offset_calibration(bool enable, bool reset) noexcept;
+  const OffsetCalibration& offset_calibration_status() const noexcept { return calibration_; }
 
   // ---- observation (diagnostics, tests) ----
   double output_volts() const noexcept { return output_volts_; }  // commanded, before quantisation
@@ -35,9 +51,18 @@ class AnalogDrive final : public Telegram3Actor {
  private:
   void set_speed_output(bool enabled, double speed) noexcept override;
 
+  void calibrate(bool enabled, double speed) noexcept;
+
   AnalogDriveParameters p_;
   double output_volts_ = 0.0;
   std::int32_t output_code_ = 0;
+
+  enum class Calibration : std::uint8_t { kIdle, kWaitingForStandstill, kMeasuring, kFinished };
+  Calibration calibration_state_ = Calibration::kIdle;
+  bool calibration_enable_ = false;
+  std::uint32_t calibration_cycles_ = 0;
+  double calibration_sum_volts_ = 0.0;
+  OffsetCalibration calibration_{};
 };
 
 }  // namespace tomc::drives
