@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "../tests/support/speed_command_object.hpp"
-#include "tomc/drives/simulated_analog_drive.hpp"
+#include "tomc/drives/simulated_actor_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
@@ -84,8 +84,22 @@ void BM_AnalogDriveCycle(benchmark::State& state) {
   drives::AnalogDriveParameters actor;
   actor.enable_output = amplifier.enable_input;
   actor.ready_input = amplifier.ready_output;
-  actor.counts_per_revolution = 4.0 * amplifier.counter.lines_per_revolution;
+  actor.counts_per_revolution = 4.0 * amplifier.encoder.lines_per_revolution;
   drives::SimulatedAnalogDrive drive(amplifier, actor);
+  run_drive_cycle(state, drive);
+}
+
+// The stepper actor on its simulated PTO and stepper motor (issue 20), encoder feedback, enable and ready;
+// the motor pulls in at the 20 kHz of the run_drive_cycle setpoint (750 1/min), so it runs in step.
+void BM_StepperDriveCycle(benchmark::State& state) {
+  drives::io::SimulatedStepperMotorParameters motor;
+  motor.feedback = drives::io::SimulatedStepperMotorParameters::Feedback::kEncoder;
+  motor.pull_in_rate_hz = 25000.0;
+  drives::StepperDriveParameters actor;
+  actor.enable_output = motor.enable_input;
+  actor.ready_input = motor.ready_output;
+  actor.counts_per_revolution = 4.0 * motor.encoder.lines_per_revolution;
+  drives::SimulatedStepperDrive drive(motor, actor);
   run_drive_cycle(state, drive);
 }
 
@@ -150,4 +164,5 @@ BENCHMARK(BM_SpeedAxisCycle)->Arg(1)->Arg(16)->Arg(256);
 BENCHMARK(BM_ApplicationCycle)->Arg(1)->Arg(16)->Arg(256)->Arg(4096);
 BENCHMARK(BM_SimulatedDriveCycle)->Arg(1)->Arg(3)->Arg(105)->Arg(106);
 BENCHMARK(BM_AnalogDriveCycle);
+BENCHMARK(BM_StepperDriveCycle);
 BENCHMARK(BM_PidRegulatorUpdate);

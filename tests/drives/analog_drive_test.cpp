@@ -22,7 +22,7 @@ struct AnalogRig {
   AnalogRig() {
     actor_parameters.enable_output = Channel{2, 0};
     actor_parameters.ready_input = Channel{3, 0};
-    actor_parameters.counts_per_revolution = 4.0 * amplifier_parameters.counter.lines_per_revolution;
+    actor_parameters.counts_per_revolution = 4.0 * amplifier_parameters.encoder.lines_per_revolution;
   }
 };
 
@@ -144,6 +144,54 @@ TEST(AnalogDrive, AmplifierOffsetDriftAndCompensation) {
   }
 }
 
+// TarOffs (seed 000, spec 05a §3.1; decision A15): the axis held at standstill by a P position loop (played
+// by the test: n = −0.5 1/min per count) against an amplifier drift; the mean command over 0.5 s after 0.1 s
+// of standstill becomes the offset (ValOf in DAC codes, EndTr). 0.02 V drift: offset −0.02 V = −55 codes
+// (0.362 mV per code), the loop's command returns to 0. 0.2 V drift exceeds 1 % of the DAC's 11.852 V: error
+// 11, the offset stays 0. Reset then En clears the offset at once.
+TEST(AnalogDrive, OffsetAutoCalibrationTarOffs) {
+  struct Row {
+    double drift_volts;
+    std::uint32_t error;
+    std::int32_t value_codes;
+  };
+  for (const Row row : {Row{0.02, 0, -55}, Row{-0.05, 0, 138}, Row{0.2, kErrorOffsetExcessive, 0}}) {
+    AnalogRig rig;
+    rig.amplifier_parameters.input_offset_volts = row.drift_volts;
+    rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
+    AnalogHarness a(rig);
+    auto& h = a.h;
+    auto hold = [&](int cycles) {
+      for (int i = 0; i < cycles; ++i) {
+        h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
+        h.cycle();
+      }
+    };
+    h.power_up_to_s4();
+    h.drive.offset_calibration(true, false);  // En while not yet at standstill: EndTr waits
+    hold(300);
+    EXPECT_FALSE(h.drive.offset_calibration_status().EndTr);
+    hold(600);
+    const auto& status = h.drive.offset_calibration_status();
+    EXPECT_TRUE(status.EndTr) << row.drift_volts;
+    EXPECT_EQ(status.Error, row.error) << row.drift_volts;
+    EXPECT_NEAR(status.ValOf, row.value_codes, 1) << row.drift_volts;
+    if (row.error == 0) {
+      EXPECT_NEAR(h.drive.parameters().offset_volts, -row.drift_volts, 0.001);
+      hold(500);  // with the offset the loop needs no command: the axis stands where it is, error 0
+      EXPECT_NEAR(h.drive.output_volts() - h.drive.parameters().offset_volts, 0.0, 0.0005);
+    } else {
+      EXPECT_EQ(h.drive.parameters().offset_volts, 0.0);
+    }
+    h.drive.offset_calibration(false, false);
+    EXPECT_FALSE(h.drive.offset_calibration_status().EndTr);
+    h.drive.offset_calibration(true, true);  // Reset Offset: Reset TRUE, then En
+    EXPECT_TRUE(h.drive.offset_calibration_status().EndTr);
+    EXPECT_EQ(h.drive.offset_calibration_status().ValOf, 0);
+    EXPECT_EQ(h.drive.parameters().offset_volts, 0.0);
+  }
+}
+
 // spec 01 §3.12 ready-input rules, spec 01 test 17.
 TEST(AnalogDrive, ReadyInputRule1NotEnabledBeforeReady) {
   AnalogHarness a;
@@ -237,8 +285,8 @@ TEST(AnalogDrive, WithoutReadyInputAndEnableOutput) {
 // spec 05b B.5: ×4 quadrature, a 16-bit counter that wraps many times, continuous XIST1 without a lost count.
 TEST(AnalogDrive, QuadratureCounterWrapsWithoutLosingCounts) {
   AnalogRig rig;
-  rig.amplifier_parameters.counter.lines_per_revolution = 500;  // 2000 counts/rev
-  rig.amplifier_parameters.counter.width_bits = 16;
+  rig.amplifier_parameters.encoder.lines_per_revolution = 500;  // 2000 counts/rev
+  rig.amplifier_parameters.encoder.width_bits = 16;
   rig.actor_parameters.counter_width_bits = 16;
   rig.actor_parameters.counts_per_revolution = 2000.0;
   AnalogHarness a(rig);
@@ -276,7 +324,7 @@ TEST(AnalogDrive, CounterExtensionTable) {
 // Reference mark via G1_STW function 1 (spec 06 §6): the counter's zero-mark latch, read with command 2.
 TEST(AnalogDrive, ZeroMarkLatchThroughG1Stw) {
   AnalogRig rig;
-  rig.amplifier_parameters.counter.zero_mark_offset_revolutions = 0.25;
+  rig.amplifier_parameters.encoder.zero_mark_offset_revolutions = 0.25;
   AnalogHarness a(rig);
   auto& h = a.h;
   h.power_up_to_s4();

@@ -165,10 +165,60 @@ TEST(ScenarioDrive, AnalogAdapter) {
   Json d = base();
   d["timeline"].push_back(
       Json::parse(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "amplifier_fault"}})"));
-  EXPECT_EQ(problem_of(d), "timeline[1].inject.target: Axis1 has no analog drive (\"adapter\": \"analog\")");
+  EXPECT_EQ(problem_of(d),
+            "timeline[1].inject.target: Axis1 has no analog or stepper drive (\"adapter\": \"analog\" or "
+            "\"stepper\")");
   d = base();
   d["trace"] = Json::array({"Axis1.analog.output_volts"});
   EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no analog drive");
+  // TarOffs inputs (docs/analog-drives.md) are set like variables, on an analog drive only, as BOOL.
+  d = base();
+  d["timeline"].push_back(Json::parse(R"({"cycle": 1, "set": {"Axis1.analog.TarOffs.En": true}})"));
+  EXPECT_EQ(problem_of(d),
+            "timeline[1].set.Axis1.analog.TarOffs.En: Axis1 has no analog drive (\"adapter\": \"analog\")");
+  d["technology_objects"][0]["drive"] = Json::parse(R"({"adapter": "analog", "telegram": 3})");
+  EXPECT_TRUE(problems_of(d).empty());
+  d["timeline"][1]["set"]["Axis1.analog.TarOffs.Reset"] = 1;
+  EXPECT_EQ(problem_of(d), "timeline[1].set.Axis1.analog.TarOffs.Reset: expected true or false");
+}
+
+// The stepper actor (docs/analog-drives.md, spec 01 §3.11) is a telegram-3 drive to the TO; its own keys live
+// in "stepper". With the PTO's pulse count as the position the TO's encoder must count motor steps.
+TEST(ScenarioDrive, StepperAdapter) {
+  EXPECT_TRUE(problems_of(with_drive(R"({"adapter": "stepper", "telegram": 3,
+      "stepper": {"steps_per_revolution": 1600, "max_frequency_hz": 50000, "feedback": "pulses",
+                  "pull_in_rate_hz": 1000, "pull_out_rate_hz": 30000, "max_acceleration_hz_per_s": 200000,
+                  "ready_delay_s": 0}})"))
+                  .empty());
+  Json d = base();
+  d["technology_objects"][0]["type"] = "TO_PositioningAxis";
+  d["technology_objects"][0]["drive"] = Json::parse(R"({"adapter": "stepper", "telegram": 3})");
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].drive.stepper.steps_per_revolution: 1600: with \"feedback\": \"pulses\" the "
+      "TO's encoder counts motor steps (Sensor[1] StepsPerRevolution · 2^FineResolutionXist1 = 4194304)");
+  d["technology_objects"][0]["config"]["Sensor[1].Parameter.StepsPerRevolution"] = 1600;
+  d["technology_objects"][0]["config"]["Sensor[1].Parameter.FineResolutionXist1"] = 0;
+  EXPECT_TRUE(problems_of(d).empty());
+  d["technology_objects"][0]["drive"]["stepper"]["feedback"] = "encoder";
+  d["technology_objects"][0]["config"] = Json::object();
+  EXPECT_TRUE(problems_of(d).empty());
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"adapter": "stepper", "telegram": 1})")),
+      "technology_objects[0].drive.telegram: 1: the stepper actor is a telegram-3 drive to the TO (write 3)");
+  EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "stepper": {}})")),
+            "technology_objects[0].drive.stepper: only with \"adapter\": \"stepper\"");
+  EXPECT_EQ(
+      problem_of(with_drive(
+          R"({"adapter": "stepper", "telegram": 3, "stepper": {"pull_in_rate_hz": 5000, "pull_out_rate_hz": 4000}})")),
+      "technology_objects[0].drive.stepper: pull_in_rate_hz (5000) must not exceed pull_out_rate_hz (4000)");
+  EXPECT_NE(
+      problem_of(with_drive(R"({"adapter": "stepper", "telegram": 3, "stepper": {"feedback": "none"}})"))
+          .find("technology_objects[0].drive.stepper.feedback"),
+      std::string::npos);
+  d = base();
+  d["trace"] = Json::array({"Axis1.stepper.lost_steps"});
+  EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no stepper drive");
 }
 
 TEST(ScenarioDrive, AdapterAndTelegram) {
@@ -176,9 +226,10 @@ TEST(ScenarioDrive, AdapterAndTelegram) {
                 .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
                       "\"dds_gateway\""),
             std::string::npos);
-  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "stepper", "telegram": 3})")),
-            "technology_objects[0].drive.adapter: 'stepper' is not an adapter ('simulated', 'analog', or a "
-            "dds_gateway object)");
+  EXPECT_EQ(
+      problem_of(with_drive(R"({"adapter": "servo", "telegram": 3})")),
+      "technology_objects[0].drive.adapter: 'servo' is not an adapter ('simulated', 'analog', 'stepper', or "
+      "a dds_gateway object)");
   EXPECT_EQ(problem_of(with_drive(R"({"adapter": "simulated"})")),
             "technology_objects[0].drive.telegram: missing");
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 81})")),

@@ -34,7 +34,8 @@ PositionControlConfigResult PositionController::configure(const PositionControlC
   if (!non_negative_finite(config.Kv) || !non_negative_finite(config.Kpc) ||
       !non_negative_finite(config.VelocityTimeConstant) ||
       !non_negative_finite(config.AdditionalSetpointDelayTime) || !non_negative_finite(config.Ti) ||
-      !non_negative_finite(config.To) || !non_negative_finite(config.Tdc)) {
+      !non_negative_finite(config.To) || !non_negative_finite(config.Tdc) ||
+      !non_negative_finite(config.ControlDifferenceQuantization)) {
     return PositionControlConfigResult::kInvalidParameter;
   }
   PidGains gains;
@@ -86,6 +87,9 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
   symmetry_state_ += symmetry_gain_ * (x_d - symmetry_state_);
   const double x_sym = kpc_ * symmetry_state_ + (1.0 - kpc_) * x_d;
   const double e = x_sym - in.actual_position;
+  // spec 01 §3.11 / spec 02 §7.4 (4): the controller sees q·trunc(e/q); |e| < q -> 0.
+  const double q = config_.ControlDifferenceQuantization;
+  const double e_controlled = q > 0.0 ? q * std::trunc(e / q) : e;
   const double precontrol = kpc_ * in.velocity_setpoint;
 
   PositionControlOutput out;
@@ -94,10 +98,10 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
   out.following_error = fe_line_.delayed(fe_tap_) - in.actual_position;
   if (config_.EnableDSC) {
     out.velocity_setpoint = precontrol;
-    out.dsc_position_error = e;
+    out.dsc_position_error = e_controlled;
     out.dsc_kpc = config_.Kv;
   } else {
-    out.pid = pid_.update(e);
+    out.pid = pid_.update(e_controlled);
     out.velocity_setpoint = precontrol + out.pid.output;
   }
   return out;

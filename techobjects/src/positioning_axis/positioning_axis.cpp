@@ -32,6 +32,21 @@ void pid_config(const PositioningAxisData& db, double velocity_factor, PositionC
   pc.OutputLimit = pid.OutputLimit / velocity_factor;
 }
 
+// PositionControl.ControlDifferenceQuantization (spec 01 §3.11): Mode 1 = one increment of the operative
+// encoder (re-adapted whenever the encoder is configured), Mode 2 = Value; both in the position unit.
+double control_difference_quantization(const PositioningAxisData& db, double units_per_count) {
+  const auto& q = db.PositionControl.ControlDifferenceQuantization;
+  switch (static_cast<QuantizationMode>(q.Mode)) {
+    case QuantizationMode::kEncoderResolution:
+      return units_per_count;
+    case QuantizationMode::kDirectValue:
+      return q.Value;
+    case QuantizationMode::kNone:
+      break;
+  }
+  return 0.0;
+}
+
 bool finite(double x) {
   return std::isfinite(x);
 }
@@ -139,6 +154,7 @@ void PositioningAxis::configure_components() noexcept {
   pc.To = core_.communication_times.To;
   pc.Tdc = core_.communication_times.Tdc;
   pid_config(db_, units_.velocity, pc);
+  pc.ControlDifferenceQuantization = control_difference_quantization(db_, encoder_.chain().units_per_count());
   if (auto* controller = this->controller()) (void)controller->configure(pc);
   configure_monitoring();
   configure_extrapolation();

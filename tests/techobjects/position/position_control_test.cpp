@@ -218,6 +218,37 @@ TEST(PositionController, DscOutputsPrecontrolXerrAndKpc) {
   EXPECT_DOUBLE_EQ(p.dsc_kpc, 0.0);
 }
 
+// spec 01 §3.11 / spec 02 §7.4 (4): ControlDifferenceQuantization, e_q = q·trunc(e/q): the controller sees
+// e_q (PLC: Kv·e_q; DSC: XERR = e_q), StatusServo.ControlDifference shows e. q = 0.1 mm, Kv 50, no
+// precontrol.
+TEST(PositionController, ControlDifferenceQuantizationTable) {
+  struct Row {
+    double e;
+    double e_q;
+  };
+  for (const bool dsc : {false, true}) {
+    PositionControlConfig c;
+    c.Kv = 50.0;
+    c.Kpc = 0.0;
+    c.EnableDSC = dsc;
+    c.ControlDifferenceQuantization = 0.1;
+    for (const Row row : {Row{0.0, 0.0}, Row{0.05, 0.0}, Row{-0.099, 0.0}, Row{0.1, 0.1}, Row{0.25, 0.2},
+                          Row{-0.25, -0.2}, Row{-0.31, -0.3}, Row{1.0, 1.0}}) {
+      PositionController pc(c);
+      const auto out = pc.update(input(0.0, 0.0, -row.e));  // first cycle: x_sym = 0, e = 0 − x_act
+      EXPECT_DOUBLE_EQ(out.control_difference, row.e);
+      if (dsc) {
+        EXPECT_NEAR(out.dsc_position_error, row.e_q, 1e-12) << row.e;
+      } else {
+        EXPECT_NEAR(out.velocity_setpoint, 50.0 * row.e_q, 1e-10) << row.e;
+      }
+    }
+  }
+  PositionControlConfig invalid;
+  invalid.ControlDifferenceQuantization = -0.1;
+  EXPECT_EQ(PositionController().configure(invalid), PositionControlConfigResult::kInvalidParameter);
+}
+
 // ---- closed loop against the speed-loop plant ----
 
 struct RampResult {

@@ -10,7 +10,7 @@
 
 #include "counting_allocator.hpp"
 #include "speed_command_object.hpp"
-#include "tomc/drives/simulated_analog_drive.hpp"
+#include "tomc/drives/simulated_actor_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 
@@ -66,21 +66,35 @@ TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
   }
 }
 
-// The analog actor on its simulated servo amplifier (issue 20): the hardware I/O layer, the counter
-// extension, the DAC quantisation and the ready-input supervision allocate nothing either.
-TEST(Allocation, AnalogDrivesRunWithoutAllocating) {
+// The analog actor on its simulated servo amplifier and the stepper actor on its simulated PTO/stepper motor
+// (issue 20): the hardware I/O layer, the counter extension, the DAC quantisation, the pulse train, the
+// lost-step model and the ready-input supervision allocate nothing either.
+TEST(Allocation, AnalogAndStepperDrivesRunWithoutAllocating) {
   Runtime rt(RuntimeConfig{0.001, 1, 1});
   std::vector<tomc::testing::SpeedCommandObject*> objects;
   for (int i = 0; i < 4; ++i) {
     tomc::drives::io::SimulatedServoAmplifierParameters amplifier;
     tomc::drives::AnalogDriveParameters actor;
-    actor.counts_per_revolution = 4.0 * amplifier.counter.lines_per_revolution;
-    actor.counter_width_bits = amplifier.counter.width_bits = i % 2 == 0 ? 16 : 32;  // 16 bit: many wraps
+    actor.counts_per_revolution = 4.0 * amplifier.encoder.lines_per_revolution;
+    actor.counter_width_bits = amplifier.encoder.width_bits = i % 2 == 0 ? 16 : 32;  // 16 bit: many wraps
     if (i >= 2) {
       actor.enable_output = amplifier.enable_input;
       actor.ready_input = amplifier.ready_output;
     }
     auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedAnalogDrive>(amplifier, actor));
+    objects.push_back(
+        &rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
+  }
+  for (int i = 0; i < 2; ++i) {
+    tomc::drives::io::SimulatedStepperMotorParameters motor;
+    motor.feedback = i == 0 ? tomc::drives::io::SimulatedStepperMotorParameters::Feedback::kPulseCount
+                            : tomc::drives::io::SimulatedStepperMotorParameters::Feedback::kEncoder;
+    tomc::drives::StepperDriveParameters actor;
+    actor.counts_per_revolution =
+        i == 0 ? motor.steps_per_revolution : 4.0 * motor.encoder.lines_per_revolution;
+    actor.enable_output = motor.enable_input;
+    actor.ready_input = motor.ready_output;
+    auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedStepperDrive>(motor, actor));
     objects.push_back(
         &rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
   }

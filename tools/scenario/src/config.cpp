@@ -278,6 +278,26 @@ void load_analog(const Json& value, const std::string& path, AnalogSettings& a, 
   }
 }
 
+void load_stepper(const Json& value, const std::string& path, StepperSettings& st, Problems& problems) {
+  ObjectReader r(value, path, problems);
+  r.real("steps_per_revolution", st.steps_per_revolution, detail::kPositive);
+  r.real("max_frequency_hz", st.max_frequency_hz, detail::kPositive);
+  if (const Json* v = r.get("feedback")) {
+    if (auto f = detail::read_choice(*v, r.path_of("feedback"), {"pulses", "encoder"}, problems)) {
+      st.encoder_feedback = *f == 1;
+    }
+  }
+  r.real("pull_in_rate_hz", st.pull_in_rate_hz, detail::kNonNegative);
+  r.real("pull_out_rate_hz", st.pull_out_rate_hz, detail::kPositive);
+  r.real("max_acceleration_hz_per_s", st.max_acceleration_hz_per_s, detail::kPositive);
+  r.real("ready_delay_s", st.ready_delay_s, detail::kNonNegative);
+  r.finish();
+  if (st.pull_in_rate_hz > st.pull_out_rate_hz) {
+    problems.add(path, "pull_in_rate_hz (" + format_number(st.pull_in_rate_hz) +
+                           ") must not exceed pull_out_rate_hz (" + format_number(st.pull_out_rate_hz) + ")");
+  }
+}
+
 }  // namespace
 
 void load_drive(const Json& drive, std::string_view path, double cycle_time_s, DriveSettings& settings,
@@ -295,12 +315,14 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
         problems.add(r.path_of("adapter"),
                      "the gateway adapter is an object: {\"type\": \"dds_gateway\", \"domain\": 0, "
                      "\"device\": \"<name at the gateway>\"}");
-      } else if (*a != "simulated" && *a != "analog") {
-        problems.add(r.path_of("adapter"),
-                     "'" + *a + "' is not an adapter ('simulated', 'analog', or a dds_gateway object)");
+      } else if (*a != "simulated" && *a != "analog" && *a != "stepper") {
+        problems.add(
+            r.path_of("adapter"),
+            "'" + *a + "' is not an adapter ('simulated', 'analog', 'stepper', or a dds_gateway object)");
       } else {
         settings.adapter = *a;
         if (*a == "analog") settings.analog.emplace();
+        if (*a == "stepper") settings.stepper.emplace();
       }
     }
   }
@@ -399,14 +421,24 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
       load_analog(*v, r.path_of("analog"), *settings.analog, problems);
     }
   }
-  // The analog actor is a telegram-3 drive to the TO (spec 01 §3.12: the S7 puts it behind the same
-  // interface), with its encoder on the card's counter.
-  if (settings.analog && settings.telegram != 0 && settings.telegram != 3) {
-    problems.add(r.path_of("telegram"), std::to_string(settings.telegram) +
-                                            ": the analog actor is a telegram-3 drive to the TO (write 3)");
+  if (const Json* v = r.get("stepper")) {
+    if (!settings.stepper) {
+      problems.add(r.path_of("stepper"), "only with \"adapter\": \"stepper\"");
+    } else {
+      load_stepper(*v, r.path_of("stepper"), *settings.stepper, problems);
+    }
   }
-  if (settings.analog && (settings.supplementary_telegram != 0 || settings.encoder_telegram != 0)) {
-    problems.add(r.path(), "the analog actor has no telegram 750 and reads its encoder from the counter");
+  // The analog and the stepper actor are telegram-3 drives to the TO (spec 01 §3.11, §3.12: the S7 puts them
+  // behind the same interface), with the position on the card's counter.
+  if (settings.analog || settings.stepper) {
+    const std::string actor = settings.analog ? "the analog actor" : "the stepper actor";
+    if (settings.telegram != 0 && settings.telegram != 3) {
+      problems.add(r.path_of("telegram"), std::to_string(settings.telegram) + ": " + actor +
+                                              " is a telegram-3 drive to the TO (write 3)");
+    }
+    if (settings.supplementary_telegram != 0 || settings.encoder_telegram != 0) {
+      problems.add(r.path(), actor + " has no telegram 750 and reads its position from the counter");
+    }
   }
   r.finish();
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -61,11 +62,23 @@ void drive_like_axis(const to::PositioningAxisData& d, drives::SimulatedDrivePar
   p.encoder1.fine_resolution_xist2 = static_cast<std::uint8_t>(s1.Parameter.FineResolutionXist2);
 }
 
-// The simulated servo amplifier of an analog drive: the simulated drive's motor, load and machine; its
-// encoder counts ×4 what the TO's encoder 1 counts per revolution (StepsPerRevolution ·
-// 2^FineResolutionXist1).
+// The incremental encoder of an analog or stepper drive on the card's counter: ×4 what the TO's encoder 1
+// counts per revolution (StepsPerRevolution · 2^FineResolutionXist1).
+drives::io::QuadratureEncoderParameters counter_encoder(const drives::SimulatedDriveParameters& p) {
+  drives::io::QuadratureEncoderParameters e;
+  const double counts =
+      telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1);
+  e.lines_per_revolution = static_cast<std::uint32_t>(std::max(1.0, counts / 4.0));
+  e.width_bits = p.encoder1.xist1_width_bits;
+  e.count_at_power_on = p.encoder1.xist1_at_power_on;
+  e.zero_mark_offset_revolutions = p.encoder1.reference_mark_offset_revolutions;
+  return e;
+}
+
+// The simulated servo amplifier of an analog drive: the simulated drive's motor, load and machine.
 // Without an enable output the amplifier's enable input is not wired: it runs whenever it is ready.
-drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive, bool enable_output) {
+drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive,
+                                                               bool enable_output) {
   const auto& p = drive.parameters;
   const auto& a = *drive.analog;
   drives::io::SimulatedServoAmplifierParameters amp;
@@ -77,30 +90,21 @@ drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettin
   amp.ready_delay_s = a.ready_delay_s;
   amp.enable_wired = enable_output;
   amp.encoder_shaft = p.encoder1.shaft;
-  const double counts =
-      telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1);
-  amp.counter.lines_per_revolution = static_cast<std::uint32_t>(std::max(1.0, counts / 4.0));
-  amp.counter.width_bits = p.encoder1.xist1_width_bits;
-  amp.counter.count_at_power_on = p.encoder1.xist1_at_power_on;
-  amp.counter.zero_mark_offset_revolutions = p.encoder1.reference_mark_offset_revolutions;
+  amp.encoder = counter_encoder(p);
   return amp;
 }
 
-drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enable_output, bool ready_input) {
+// The telegram-3 side of either actor, wired to the simulated hardware's default channels (the servo
+// amplifier and the stepper motor use the same ones for enable, ready and counter).
+void actor_base(const DriveSettings& drive, bool enable_output, bool ready_input,
+                drives::ActorParameters& actor) {
   const auto& p = drive.parameters;
-  const auto& a = *drive.analog;
-  const drives::io::SimulatedServoAmplifierParameters wiring;  // the amplifier's default channels
-  drives::AnalogDriveParameters actor;
+  const drives::io::SimulatedServoAmplifierParameters wiring;
   actor.servo_cycle_s = p.servo_cycle_s;
   actor.reference_speed_rpm = p.reference_speed_rpm;
-  actor.volts_at_reference = a.volts_at_reference;
-  actor.overdrive_percent = a.overdrive_percent;
-  actor.offset_volts = a.offset_volts;
-  actor.dac = a.dac;
-  actor.analog_output = wiring.speed_input;
   if (enable_output) actor.enable_output = wiring.enable_input;
   if (ready_input) actor.ready_input = wiring.ready_output;
-  actor.counter = wiring.encoder;
+  actor.counter = wiring.counter;
   actor.counter_width_bits = p.encoder1.xist1_width_bits;
   // NIST_B is the motor speed: a load-side encoder turns 1/ratio revolutions per motor revolution.
   const double ratio = p.gear_motor_revolutions / p.gear_load_revolutions;
@@ -108,6 +112,51 @@ drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enab
       telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1) /
       (p.encoder1.shaft == drives::SimulatedEncoderParameters::Shaft::kLoad ? ratio : 1.0);
   actor.standstill_threshold_rpm = p.standstill_threshold_rpm;
+}
+
+drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enable_output, bool ready_input) {
+  const auto& a = *drive.analog;
+  drives::AnalogDriveParameters actor;
+  actor_base(drive, enable_output, ready_input, actor);
+  actor.volts_at_reference = a.volts_at_reference;
+  actor.overdrive_percent = a.overdrive_percent;
+  actor.offset_volts = a.offset_volts;
+  actor.dac = a.dac;
+  actor.analog_output = drives::io::SimulatedServoAmplifierParameters{}.speed_input;
+  return actor;
+}
+
+// The simulated stepper driver and motor (decision A12) on the simulated drive's gear, load and machine. With
+// "feedback": "pulses" the counter is the PTO's pulse count, so the TO's encoder 1 counts motor steps; with
+// "encoder" it is the incremental encoder of encoder 1.
+drives::io::SimulatedStepperMotorParameters stepper_motor(const DriveSettings& drive, bool enable_output) {
+  const auto& p = drive.parameters;
+  const auto& st = *drive.stepper;
+  drives::io::SimulatedStepperMotorParameters m;
+  m.mechanics = p;
+  m.feedback = st.encoder_feedback ? drives::io::SimulatedStepperMotorParameters::Feedback::kEncoder
+                                   : drives::io::SimulatedStepperMotorParameters::Feedback::kPulseCount;
+  m.pulse_counter_width_bits = p.encoder1.xist1_width_bits;
+  m.steps_per_revolution = st.steps_per_revolution;
+  m.pull_in_rate_hz = st.pull_in_rate_hz;
+  m.pull_out_rate_hz = st.pull_out_rate_hz;
+  m.max_acceleration_hz_per_s = st.max_acceleration_hz_per_s;
+  m.enable_wired = enable_output;
+  m.ready_delay_s = st.ready_delay_s;
+  m.encoder_shaft = p.encoder1.shaft;
+  m.encoder = counter_encoder(p);
+  return m;
+}
+
+drives::StepperDriveParameters stepper_actor(const DriveSettings& drive, bool enable_output,
+                                             bool ready_input) {
+  const auto& st = *drive.stepper;
+  drives::StepperDriveParameters actor;
+  actor_base(drive, enable_output, ready_input, actor);
+  actor.steps_per_revolution = st.steps_per_revolution;
+  if (!st.encoder_feedback) actor.counts_per_revolution = st.steps_per_revolution;  // the pulse count
+  actor.max_frequency_hz = st.max_frequency_hz;
+  actor.pulse_output = drives::io::SimulatedStepperMotorParameters{}.pulse_input;
   return actor;
 }
 
@@ -413,9 +462,31 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
-          analog_amplifier(drive, itf.EnableDriveOutput), analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
-      entry.mechanics = &owned->amplifier().mechanics();
+          analog_amplifier(drive, itf.EnableDriveOutput),
+          analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+      entry.mechanics = &owned->hardware().mechanics();
       entry.analog_drive = owned.get();
+      io = &runtime.add_device(std::move(owned));
+    } else if (has_drive && drive.stepper) {
+      // A PTO module is a telegram-3 drive to the S7 (spec 01 §3.11): Actor.Type stays 1.
+      const auto& itf = *kind == TechnologyObjectKind::kSpeedAxis ? speed_data.Actor.Interface
+                                                                  : positioning_data.Actor.Interface;
+      const auto& e = drive.parameters.encoder1;
+      const double counts = telegrams::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist1);
+      if (*kind != TechnologyObjectKind::kSpeedAxis && !drive.stepper->encoder_feedback &&
+          std::fabs(counts - drive.stepper->steps_per_revolution) > 1e-9) {
+        problems.add(r.path_of("drive") + ".stepper.steps_per_revolution",
+                     format_number(drive.stepper->steps_per_revolution) +
+                         ": with \"feedback\": \"pulses\" the TO's encoder counts motor steps (Sensor[1] "
+                         "StepsPerRevolution · 2^FineResolutionXist1 = " +
+                         format_number(counts) + ")");
+        return entry.name.empty() ? std::nullopt : std::optional<MachineObject>(std::move(entry));
+      }
+      auto owned = std::make_unique<drives::SimulatedStepperDrive>(
+          stepper_motor(drive, itf.EnableDriveOutput),
+          stepper_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+      entry.mechanics = &owned->hardware().mechanics();
+      entry.stepper_drive = owned.get();
       io = &runtime.add_device(std::move(owned));
     } else if (has_drive) {
       auto owned = std::make_unique<drives::SimulatedDrive>(drive.device_config(), drive.parameters);

@@ -117,14 +117,32 @@ constexpr std::array<DriveObservable, 6> kDriveObservables{{
     {"load_speed", Format::kReal, [](const drives::SimulatedDrive& d) noexcept { return d.load_speed(); }},
 }};
 
-// What the analog actor and its amplifier show, as "<TO>.analog.<name>" (docs/analog-drives.md): the signals
-// the diagnostics show instead of telegram words for such an axis.
-struct AnalogObservable {
+// What the analog actor and its amplifier show, as "<TO>.analog.<name>", and what the stepper actor and its
+// motor show, as "<TO>.stepper.<name>" (docs/analog-drives.md): the signals the diagnostics show instead of
+// telegram words for such an axis.
+template <class Drive>
+struct ActorObservable {
   std::string_view name;
   Format format;
-  double (*read)(const drives::SimulatedAnalogDrive&) noexcept;
+  double (*read)(const Drive&) noexcept;
 };
-constexpr std::array<AnalogObservable, 7> kAnalogObservables{{
+using AnalogObservable = ActorObservable<drives::SimulatedAnalogDrive>;
+using StepperObservable = ActorObservable<drives::SimulatedStepperDrive>;
+constexpr std::array<AnalogObservable, 11> kAnalogObservables{{
+    {"offset_volts", Format::kReal,
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().parameters().offset_volts; }},
+    {"TarOffs.ValOf", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().offset_calibration_status().ValOf);
+     }},
+    {"TarOffs.EndTr", Format::kBool,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return d.actor().offset_calibration_status().EndTr ? 1.0 : 0.0;
+     }},
+    {"TarOffs.Error", Format::kInteger,
+     [](const drives::SimulatedAnalogDrive& d) noexcept {
+       return static_cast<double>(d.actor().offset_calibration_status().Error);
+     }},
     {"output_volts", Format::kReal,
      [](const drives::SimulatedAnalogDrive& d) noexcept { return d.actor().output_volts(); }},
     {"output_code", Format::kInteger,
@@ -144,10 +162,66 @@ constexpr std::array<AnalogObservable, 7> kAnalogObservables{{
        return static_cast<double>(d.actor().active_fault());
      }},
     {"load_position", Format::kReal,
-     [](const drives::SimulatedAnalogDrive& d) noexcept {
-       return d.amplifier().mechanics().load_position();
+     [](const drives::SimulatedAnalogDrive& d) noexcept { return d.hardware().mechanics().load_position(); }},
+}};
+constexpr std::array<StepperObservable, 10> kStepperObservables{{
+    {"pulse_frequency_hz", Format::kReal,
+     [](const drives::SimulatedStepperDrive& d) noexcept { return d.actor().pulse_frequency_hz(); }},
+    {"enable_output", Format::kBool,
+     [](const drives::SimulatedStepperDrive& d) noexcept { return d.actor().enable_output() ? 1.0 : 0.0; }},
+    {"ready_input", Format::kBool,
+     [](const drives::SimulatedStepperDrive& d) noexcept { return d.actor().ready_input() ? 1.0 : 0.0; }},
+    {"counter", Format::kInteger,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return static_cast<double>(d.actor().counter_value());
+     }},
+    {"active_fault", Format::kInteger,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return static_cast<double>(d.actor().active_fault());
+     }},
+    {"pulses_sent", Format::kInteger,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return static_cast<double>(d.hardware().pulses_sent());
+     }},
+    {"rotor_steps", Format::kInteger,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return static_cast<double>(d.hardware().rotor_steps());
+     }},
+    {"lost_steps", Format::kInteger,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return static_cast<double>(d.hardware().lost_steps());
+     }},
+    {"in_step", Format::kBool,
+     [](const drives::SimulatedStepperDrive& d) noexcept { return d.hardware().in_step() ? 1.0 : 0.0; }},
+    {"load_position", Format::kReal,
+     [](const drives::SimulatedStepperDrive& d) noexcept {
+       return d.hardware().mechanics().load_position();
      }},
 }};
+
+// "<TO>.<kind>.<observable>" of an actor drive (analog or stepper); nullopt and a problem when the TO has no
+// such drive or the name is unknown.
+template <class Drive, std::size_t N>
+std::optional<std::function<double()>> actor_observable(const std::array<ActorObservable<Drive>, N>& table,
+                                                        const Drive* drive, std::string_view kind,
+                                                        std::string_view head, std::string_view observable,
+                                                        const std::string& path, Format& format,
+                                                        Problems& problems) {
+  const auto it = std::find_if(table.begin(), table.end(),
+                               [&](const ActorObservable<Drive>& d) { return d.name == observable; });
+  if (drive == nullptr || it == table.end()) {
+    std::string names;
+    for (const auto& d : table)
+      names += (names.empty() ? "" : ", ") + std::string(d.name);
+    problems.add(path, drive == nullptr
+                           ? "'" + std::string(head) + "' has no " + std::string(kind) + " drive"
+                           : "'" + std::string(observable) + "' is not " + (kind == "analog" ? "an " : "a ") +
+                                 std::string(kind) + " drive value (" + names + ")");
+    return std::nullopt;
+  }
+  format = it->format;
+  return [drive, read = it->read] { return read(*drive); };
+}
 
 using TechnologyObjectEntry = MachineObject;
 
@@ -167,7 +241,7 @@ enum class FaultKind : std::uint8_t {
   kLinkLoss,
   kTechnologyAlarm,
   kFixedStopBreak,
-  kAmplifierFault,  // analog drive: the servo amplifier faults, its ready output drops
+  kAmplifierFault,  // analog/stepper drive: the servo amplifier or stepper driver faults, its ready drops
 };
 constexpr std::array<std::string_view, 7> kFaultNames{
     "drive_fault",      "encoder_error",    "sign_of_life_freeze", "link_loss",
@@ -178,6 +252,10 @@ struct SetItem {
   std::string variable;
   std::string path;  // JSON path, for a (never expected) refusal at run time
   double value = 0.0;
+  // "<TO>.analog.TarOffs.En" / ".Reset": an input of the analog actor's offset calibration, not a TO
+  // variable.
+  enum class Target : std::uint8_t { kVariable, kTarOffsEn, kTarOffsReset };
+  Target target = Target::kVariable;
 };
 
 struct Event {
@@ -223,6 +301,7 @@ struct Scenario::Impl {
   // Drives behind a Fast DDS gateway (gateway_adapter.hpp); empty with simulated drives only.
   GatewayLinks gateways;
   std::vector<TechnologyObjectEntry> objects;
+  std::vector<std::array<bool, 2>> tar_offs_inputs;  // per object: TarOffs En, Reset as last set
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
   std::vector<Column> trace;
@@ -412,6 +491,7 @@ void Scenario::Impl::load_technology_object(const Json& value, const std::string
   if (auto entry = scenario::load_technology_object(value, path, cycle_time, *runtime, objects, problems,
                                                     "tomc sim", &gateways, directory)) {
     objects.push_back(std::move(*entry));
+    tar_offs_inputs.push_back({false, false});
   }
 }
 
@@ -631,6 +711,18 @@ void Scenario::Impl::load_set_event(ObjectReader& r, Event& event) {
     }
     if (!objects[*to_index].built) continue;  // its definition was already reported
     const std::string variable = key.substr(dot + 1);
+    if (variable == "analog.TarOffs.En" || variable == "analog.TarOffs.Reset") {
+      if (objects[*to_index].analog_drive == nullptr) {
+        problems.add(path, objects[*to_index].name + " has no analog drive (\"adapter\": \"analog\")");
+      } else if (!value.is_boolean()) {
+        problems.add(path, "expected true or false");
+      } else {
+        event.sets.push_back(
+            SetItem{*to_index, variable, path, value.get<bool>() ? 1.0 : 0.0,
+                    variable.ends_with("En") ? SetItem::Target::kTarOffsEn : SetItem::Target::kTarOffsReset});
+      }
+      continue;
+    }
     const to::VariableInfo* info = objects[*to_index].find_variable(variable);
     if (info == nullptr) {
       problems.add(path, "unknown variable of " + std::string(objects[*to_index].type_name()) + " " +
@@ -672,16 +764,18 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
   }
   if (fault) {
     event.fault = static_cast<FaultKind>(*fault);
-    // Every fault but a technology alarm is one of the simulated drive's; amplifier_fault is the analog
-    // drive's.
+    // Every fault but a technology alarm is one of the simulated drive's; amplifier_fault is the analog or
+    // stepper drive's.
     const bool analog_fault = event.fault == FaultKind::kAmplifierFault;
     if (target_found && event.fault != FaultKind::kTechnologyAlarm && objects[event.target].built &&
-        (analog_fault ? objects[event.target].analog_drive == nullptr
-                      : objects[event.target].drive == nullptr)) {
+        (analog_fault
+             ? objects[event.target].analog_drive == nullptr && objects[event.target].stepper_drive == nullptr
+             : objects[event.target].drive == nullptr)) {
       problems.add(
           fr.path_of("target"),
-          objects[event.target].name + (analog_fault ? " has no analog drive (\"adapter\": \"analog\")"
-                                                     : " has no simulated drive to inject faults into"));
+          objects[event.target].name +
+              (analog_fault ? " has no analog or stepper drive (\"adapter\": \"analog\" or \"stepper\")"
+                            : " has no simulated drive to inject faults into"));
     }
     switch (event.fault) {
       case FaultKind::kDriveFault:
@@ -809,23 +903,14 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       column.read = [drive, read = it->read] { return read(*drive); };
       return column;
     }
-    if (rest.starts_with("analog.")) {
-      const std::string_view observable = rest.substr(7);
-      const auto it = std::find_if(kAnalogObservables.begin(), kAnalogObservables.end(),
-                                   [&](const AnalogObservable& d) { return d.name == observable; });
-      if (entry.analog_drive == nullptr || it == kAnalogObservables.end()) {
-        std::string names;
-        for (const auto& d : kAnalogObservables)
-          names += (names.empty() ? "" : ", ") + std::string(d.name);
-        problems.add(path,
-                     entry.analog_drive == nullptr
-                         ? "'" + std::string(head) + "' has no analog drive"
-                         : "'" + std::string(observable) + "' is not an analog drive value (" + names + ")");
-        return std::nullopt;
-      }
-      const drives::SimulatedAnalogDrive* drive = entry.analog_drive;
-      column.format = it->format;
-      column.read = [drive, read = it->read] { return read(*drive); };
+    if (rest.starts_with("analog.") || rest.starts_with("stepper.")) {
+      const bool analog = rest.starts_with("analog.");
+      auto read = analog ? actor_observable(kAnalogObservables, entry.analog_drive, "analog", head,
+                                            rest.substr(7), path, column.format, problems)
+                         : actor_observable(kStepperObservables, entry.stepper_drive, "stepper", head,
+                                            rest.substr(8), path, column.format, problems);
+      if (!read) return std::nullopt;
+      column.read = std::move(*read);
       return column;
     }
     if (rest.starts_with("alarm.")) return resolve_alarm(entry, rest.substr(6), path, std::move(column));
@@ -903,6 +988,14 @@ void Scenario::Impl::apply(const Event& event) noexcept {
     }
     case Event::Kind::kSet:
       for (const SetItem& s : event.sets) {
+        if (s.target != SetItem::Target::kVariable) {
+          // TarOffs inputs (docs/analog-drives.md): the actor sees En and Reset together, as the legacy
+          // block.
+          auto& inputs = tar_offs_inputs[s.to];
+          inputs[s.target == SetItem::Target::kTarOffsEn ? 0 : 1] = s.value != 0.0;
+          objects[s.to].analog_drive->actor().offset_calibration(inputs[0], inputs[1]);
+          continue;
+        }
         const to::WriteResult result = objects[s.to].write(s.variable, s.value);
         if (!result.ok()) {
           // Validated at load time with the same rules; if the TO ever disagrees the run must not go on
@@ -927,7 +1020,9 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         break;
       }
       if (event.fault == FaultKind::kAmplifierFault) {
-        objects[event.target].analog_drive->amplifier().set_fault(event.kind == Event::Kind::kInject);
+        const bool on = event.kind == Event::Kind::kInject;
+        if (auto* analog = objects[event.target].analog_drive) analog->hardware().set_fault(on);
+        if (auto* stepper = objects[event.target].stepper_drive) stepper->hardware().set_fault(on);
         break;
       }
       drives::SimulatedDrive& d = *objects[event.target].drive;

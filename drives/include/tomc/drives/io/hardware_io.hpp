@@ -1,8 +1,9 @@
 #pragma once
 // The hardware I/O layer under the analog and stepper actors (issue 20): analog outputs, digital inputs and
-// outputs, and counters, addressed as a Linux DAQ card addresses them (subdevice, channel). Two backends: the
-// simulated servo amplifier (simulated_servo_amplifier.hpp, the default) and a comedi card (comedi_io.hpp,
-// optional build). Called from MC_Servo: every function is noexcept and allocation-free.
+// outputs, pulse-train outputs and counters, addressed as a Linux DAQ card addresses them (subdevice,
+// channel). Two backends: the simulated servo amplifier (simulated_servo_amplifier.hpp, the default), the
+// simulated stepper motor (simulated_stepper_motor.hpp) and, not built yet, a comedi card. Called from
+// MC_Servo: every function is noexcept and allocation-free.
 
 #include <cstdint>
 
@@ -57,6 +58,9 @@ class HardwareIo {
   // Outputs of this cycle, sent to the hardware by write_outputs() at the end of MC_Servo.
   virtual void set_analog_output(Channel channel, std::int32_t code) noexcept = 0;
   virtual void set_digital_output(Channel channel, bool value) noexcept = 0;
+  // A pulse-train output (PTO: step and direction): pulses per second, the sign is the direction. The
+  // module keeps the fractional pulse between cycles, so a frequency held for T seconds gives f·T pulses.
+  virtual void set_pulse_frequency(Channel channel, double hertz) noexcept = 0;
   virtual IoStatus write_outputs() noexcept = 0;
 };
 

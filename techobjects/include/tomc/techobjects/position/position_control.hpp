@@ -28,7 +28,10 @@
 // - x_ipo (before the dynamic filter, §6.2) and x_f (after it, §7.6) are separate inputs; without a dynamic
 //   filter the caller passes the same value twice. T_add = FollowingError.AdditionalSetpointDelayTime
 //   enters only the following error, never the control path.
-// - Control-difference quantisation (§7.3 ControlDifferenceQuantization) is not part of this component.
+// - Control-difference quantisation (spec 01 §3.11, spec 02 §7.4 (4), for stepper drives): the controller
+//   (PID or DSC's XERR) gets e_q = q·trunc(e/q), so |e| < q gives 0 and the motor does not hunt between two
+//   increments; StatusServo.ControlDifference shows e unquantised. q = 0: none. The caller resolves
+//   ControlDifferenceQuantization.Mode 1 (encoder resolution) / 2 (Value) to q.
 // - The output velocity is a load velocity in position units/s; conversion to NSOLL (% of the reference
 //   speed) and of XERR to counts is the caller's job (actual_value_chain.hpp).
 // - The first update() after construction/configure()/reset() fills the delay line and the symmetry filter
@@ -65,12 +68,13 @@ struct PositionControlConfig {
   double Tdc = 0.0;                          // MC_WriteParameter 1012 [s]
   // PID option (issue 20; PositionControl.Pid.*, a tomc extension): all 0 = the S7's P controller. Only with
   // position control in the PLC (not with DSC).
-  double IntegralTime = 0.0;           // Ti [s]
-  double DerivativeTime = 0.0;         // Td [s]
-  std::uint32_t DerivativeCycles = 1;  // the D sample in servo cycles
-  double IntegralLimit = 0.0;          // |I| bound [unit/s], 0 = none
-  double DeadBand = 0.0;               // [unit]
-  double OutputLimit = 0.0;            // |PID| bound [unit/s], 0 = none
+  double IntegralTime = 0.0;                   // Ti [s]
+  double DerivativeTime = 0.0;                 // Td [s]
+  std::uint32_t DerivativeCycles = 1;          // the D sample in servo cycles
+  double IntegralLimit = 0.0;                  // |I| bound [unit/s], 0 = none
+  double DeadBand = 0.0;                       // [unit]
+  double OutputLimit = 0.0;                    // |PID| bound [unit/s], 0 = none
+  double ControlDifferenceQuantization = 0.0;  // q [unit], 0 = none (spec 01 §3.11)
 };
 
 enum class PositionControlConfigResult : unsigned char {

@@ -79,8 +79,23 @@ struct AnalogSettings {
   double ready_delay_s = 0.02;
 };
 
-// The `drive` object: which adapter (the simulated drive, the analog actor on a simulated amplifier, or a
-// dds_gateway object), which telegram(s) and, for the simulated drive and amplifier, the machine model.
+// The `stepper` object of a drive with "adapter": "stepper" (docs/analog-drives.md): the PTO module and the
+// simulated stepper driver and motor (decision A12). The enable output and the ready input are the TO's
+// Actor.Interface.EnableDriveOutput / DriveReadyInput; gear, load, encoder 1 and machine keys are the
+// simulated drive's.
+struct StepperSettings {
+  double steps_per_revolution = 1600.0;  // motor steps per revolution (full steps × microsteps)
+  double max_frequency_hz = 200000.0;    // the PTO's output range
+  bool encoder_feedback = false;         // "feedback": "pulses" (the PTO's pulse count) or "encoder"
+  double pull_in_rate_hz = 2000.0;
+  double pull_out_rate_hz = 40000.0;
+  double max_acceleration_hz_per_s = 400000.0;
+  double ready_delay_s = 0.02;
+};
+
+// The `drive` object: which adapter (the simulated drive, the analog actor on a simulated amplifier, the
+// stepper actor on a simulated stepper motor, or a dds_gateway object), which telegram(s) and, for the
+// simulated drive and amplifier, the machine model.
 struct DriveSettings {
   std::string adapter = "simulated";
   std::uint16_t telegram = 0;                // a drive telegram (1..6, 102, 103, 105, 106)
@@ -91,7 +106,8 @@ struct DriveSettings {
   // Set when `adapter` is a dds_gateway object: the drive is a real or simulated one behind a gateway, and
   // the simulated-drive parameters do not apply (gateway_adapter.hpp).
   std::optional<GatewayAdapterSettings> gateway;
-  std::optional<AnalogSettings> analog;  // set when `adapter` is "analog"
+  std::optional<AnalogSettings> analog;    // set when `adapter` is "analog"
+  std::optional<StepperSettings> stepper;  // set when `adapter` is "stepper"
   drives::DeviceConfig device_config() const;
 };
 

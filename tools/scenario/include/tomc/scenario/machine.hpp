@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "tomc/drives/simulated_analog_drive.hpp"
+#include "tomc/drives/simulated_actor_drive.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/config.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
@@ -48,7 +48,8 @@ struct MachineObject {
   techobjects::Cam* cam = nullptr;
   drives::SimulatedDrive* drive = nullptr;  // the simulated PROFIdrive drive, if that is the adapter
   drives::SimulatedAnalogDrive* analog_drive = nullptr;  // the analog actor and its amplifier, if that is it
-  const drives::MotorLoad* mechanics = nullptr;          // the simulated machine of either; nullptr otherwise
+  drives::SimulatedStepperDrive* stepper_drive = nullptr;  // the stepper actor and its motor, if that is it
+  const drives::MotorLoad* mechanics = nullptr;  // the simulated machine of either; nullptr otherwise
 
   std::string_view type_name() const noexcept;
   const techobjects::VariableInfo* find_variable(std::string_view path) const noexcept;
