@@ -65,7 +65,8 @@ void drive_like_axis(const to::PositioningAxisData& d, drives::SimulatedDrivePar
 // encoder counts ×4 what the TO's encoder 1 counts per revolution (StepsPerRevolution ·
 // 2^FineResolutionXist1).
 // Without an enable output the amplifier's enable input is not wired: it runs whenever it is ready.
-drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive, bool enable_output) {
+drives::io::SimulatedServoAmplifierParameters analog_amplifier(const DriveSettings& drive,
+                                                               bool enable_output) {
   const auto& p = drive.parameters;
   const auto& a = *drive.analog;
   drives::io::SimulatedServoAmplifierParameters amp;
@@ -413,7 +414,8 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
-          analog_amplifier(drive, itf.EnableDriveOutput), analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+          analog_amplifier(drive, itf.EnableDriveOutput),
+          analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
       entry.mechanics = &owned->amplifier().mechanics();
       entry.analog_drive = owned.get();
       io = &runtime.add_device(std::move(owned));
@@ -445,7 +447,9 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
           entry.object = entry.external_encoder;
           break;
         case TechnologyObjectKind::kCam:
-          entry.cam = &runtime.emplace<to::Cam>(entry.name, cam_variant);
+          // Its number (StatusSynchronizedMotion.ActualCam): the 1-based place in the file (decision C8).
+          entry.cam = &runtime.emplace<to::Cam>(entry.name, cam_variant,
+                                                static_cast<std::uint16_t>(existing.size() + 1));
           entry.object = entry.cam;
           (void)entry.cam->write("InterpolationSettings.InterpolationMode",
                                  cam_settings->InterpolationSettings.InterpolationMode);
