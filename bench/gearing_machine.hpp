@@ -24,6 +24,7 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_cam_in.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
+#include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
@@ -40,6 +41,7 @@ struct FollowerProgram {
   instructions::MC_Power<SynchronousAxis> power;
   instructions::MC_GearIn<SynchronousAxis> gear;
   instructions::MC_CamIn<SynchronousAxis> cam;
+  instructions::MC_Home<SynchronousAxis> home;  // camming needs a homed follower (spec 07 §3.4)
   bool synchronous() const noexcept { return gear.InGear || cam.InSync; }
 };
 
@@ -126,7 +128,10 @@ class GearingMachine {
         p.gear.Execute = start;
         p.gear(f);
       } else {
-        p.cam.Execute = start;
+        p.home.Mode = 0;  // direct homing: the position stays, the axis is homed
+        p.home.Execute = p.power.Status;
+        p.home(f);
+        p.cam.Execute = start && p.home.Done;
         p.cam(f);
       }
     }
