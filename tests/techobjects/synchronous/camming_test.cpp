@@ -172,6 +172,7 @@ TEST(Camming, CM3NonCyclicEnd) {
   EXPECT_TRUE(c.Busy);
   m.leader_moves(200.0);  // past 360
   EXPECT_TRUE(end_seen);
+  EXPECT_TRUE(c.EndOfProfile);  // held while Execute is TRUE (O-10)
   EXPECT_FALSE(c.Busy);
   EXPECT_FALSE(c.InSync);
   EXPECT_FALSE(c.Error);

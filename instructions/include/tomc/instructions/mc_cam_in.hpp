@@ -3,7 +3,9 @@
 // scaled and shifted, once or cyclically; pending until the start of synchronization (profiles 0, 1, 3, 4, 6)
 // or the end of the running cam (profile 5), StartSync during it, InSync from the synchronous point on.
 // EndOfProfile is TRUE for one call after each end of the cam passed. No Done: Busy until another job ends
-// the camming, or a non-cyclic cam ends (then Busy and InSync FALSE, EndOfProfile TRUE; spec 07 O-10).
+// the camming, or a non-cyclic cam ends (then Busy and InSync FALSE, EndOfProfile TRUE as long as Done would
+// be; spec 07 O-10, decision C11).
+#include <algorithm>
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
@@ -45,8 +47,9 @@ struct MC_CamIn : SyncInOutputs {  // outputs: StartSync, InSync, Busy, CommandA
     const auto s = slave.sync_outputs(handshake_.job());
     show_sync_in_outputs(*this, handshake_.outputs(), s);
     if (handshake_.job() != before) ends_seen_ = 0;  // a new job counts its own cam ends
-    EndOfProfile = s.EndOfProfileCount != ends_seen_;
-    ends_seen_ = s.EndOfProfileCount;
+    // A new end passed, or the end of a non-cyclic cam that finished the job (held as Done would be).
+    EndOfProfile = s.EndOfProfileCount > ends_seen_ || handshake_.outputs().Done;
+    ends_seen_ = std::max(ends_seen_, s.EndOfProfileCount);
   }
 
  private:
