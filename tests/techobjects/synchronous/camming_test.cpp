@@ -464,8 +464,7 @@ TEST(Camming, CamOutAndTheFamilies) {
   EXPECT_TRUE(bit(m.f(), StatusWordBit::kStandstill));
 }
 
-// §9.19.2: MC_Home 3/5 during an active MC_CamIn is refused with 16#80A1 on a real axis; MC_Halt ends the
-// camming and releases the cam.
+// §9.19.2: MC_Halt ends an active camming (CommandAborted) and releases the cam.
 TEST(Camming, OverrideByHaltReleasesTheCam) {
   CammingMachine m;
   auto& c = m.cam_in;
