@@ -1,6 +1,7 @@
-// Cost of TO_SynchronousAxis per follower and cycle (issue 9), Google Benchmark, on the machine of
+// Cost of TO_SynchronousAxis per follower and cycle (issues 9, 19), Google Benchmark, on the machine of
 // gearing_machine.hpp (one leader on a simulated drive at 100 mm/s, N followers on simulated drives, telegram
-// 3, MC_GearIn 1:1, steady synchronous travel):
+// 3, MC_GearIn 1:1 — or, the "camming" variants, MC_CamIn on a cyclic spline cam — steady synchronous
+// travel):
 //   BM_GearingCycle/followers            — one whole Runtime::step(): MC_Servo + MC_Interpolator of the
 //   leader
 //       and every follower, the user program (MC_Power, MC_GearIn per follower) and the simulated drives; CPU
@@ -8,7 +9,7 @@
 //   BM_GearingServoInterpolator/followers — of the same cycle only the followers' MC_Servo + MC_Interpolator
 //       (the TO with its telegram codec; no drive model, no user program, no leader), timed around the group;
 //       median of per-cycle samples per follower, also with the two clock reads per phase subtracted.
-// Figures and commands: docs/performance.md "Synchronous axis (issue 9)".
+// Figures and commands: docs/performance.md "Synchronous axis (issue 9)" and "Camming (issue 19)".
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 
 namespace {
 
+using tomc::bench::Function;
 using tomc::bench::GearingMachine;
 
 double median(std::vector<double>& v) {
@@ -41,9 +43,9 @@ double clock_overhead_ns() {
   return 2.0 * median(samples);
 }
 
-void BM_GearingCycle(benchmark::State& state) {
+void BM_GearingCycle(benchmark::State& state, Function function) {
   const auto followers = static_cast<int>(state.range(0));
-  GearingMachine m(followers);
+  GearingMachine m(followers, function);
   for (auto _ : state)
     m.step();
   state.SetItemsProcessed(state.iterations() * followers);
@@ -52,9 +54,9 @@ void BM_GearingCycle(benchmark::State& state) {
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_GearingServoInterpolator(benchmark::State& state) {
+void BM_GearingServoInterpolator(benchmark::State& state, Function function) {
   const auto followers = static_cast<int>(state.range(0));
-  GearingMachine m(followers);
+  GearingMachine m(followers, function);
   const double overhead = clock_overhead_ns();
   std::vector<double> samples;
   samples.reserve(1 << 22);
@@ -74,10 +76,30 @@ void BM_GearingServoInterpolator(benchmark::State& state) {
   state.counters["median_ns_per_follower"] = med / followers;
   state.counters["median_minus_clock_ns_per_follower"] = (med - overhead) / followers;
   // Still in synchronous travel at the end (the workload is what it claims to be).
-  if (!m.programs().front().gear.InGear) state.SkipWithError("a follower left synchronous travel");
+  if (!m.programs().front().synchronous()) state.SkipWithError("a follower left synchronous travel");
 }
 
 }  // namespace
 
-BENCHMARK(BM_GearingCycle)->Arg(1)->Arg(64)->Arg(1024)->ArgName("followers");
-BENCHMARK(BM_GearingServoInterpolator)->Arg(1)->Arg(64)->Arg(1024)->ArgName("followers")->UseManualTime();
+BENCHMARK_CAPTURE(BM_GearingCycle, gearing, Function::kGearing)
+    ->Arg(1)
+    ->Arg(64)
+    ->Arg(1024)
+    ->ArgName("followers");
+BENCHMARK_CAPTURE(BM_GearingServoInterpolator, gearing, Function::kGearing)
+    ->Arg(1)
+    ->Arg(64)
+    ->Arg(1024)
+    ->ArgName("followers")
+    ->UseManualTime();
+BENCHMARK_CAPTURE(BM_GearingCycle, camming, Function::kCamming)
+    ->Arg(1)
+    ->Arg(64)
+    ->Arg(1024)
+    ->ArgName("followers");
+BENCHMARK_CAPTURE(BM_GearingServoInterpolator, camming, Function::kCamming)
+    ->Arg(1)
+    ->Arg(64)
+    ->Arg(1024)
+    ->ArgName("followers")
+    ->UseManualTime();

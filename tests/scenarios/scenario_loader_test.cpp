@@ -555,10 +555,11 @@ TEST(ScenarioLoader, InstanceCreation) {
               "timeline[1].instruction: MC_MoveAbsolute is not an instruction of TO_SpeedAxis Axis1 (spec 01 "
               "§1.3; its instructions: MC_Power, MC_Reset"),
       std::string::npos);
-  EXPECT_NE(
-      problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_CamIn", "axis": "Axis1"})"))
-          .find("timeline[1].instruction: MC_CamIn is not yet supported by tomc sim"),
-      std::string::npos);
+  EXPECT_NE(problem_of(
+                with_event(
+                    R"({"cycle": 1, "instance": "m", "instruction": "MC_PhasingRelative", "axis": "Axis1"})"))
+                .find("timeline[1].instruction: MC_PhasingRelative is not yet supported by tomc sim"),
+            std::string::npos);
   EXPECT_EQ(
       problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Halt", "axis": "Axis2"})")),
       "timeline[1].axis: unknown technology object 'Axis2' (defined: Axis1)");
@@ -780,6 +781,33 @@ TEST(ScenarioLoader, MisplacedLeadingValueInterconnections) {
   ASSERT_NE(other, positioning.end());
   EXPECT_NE(other->find("only a TO_SynchronousAxis has LeadingValueInterconnections"), std::string::npos)
       << *other;
+}
+
+// MC_CamIn.Cam names a cam of the scenario (spec 07 §3.4): another TO type or an unknown name is a problem of
+// the event's input, with its path.
+TEST(ScenarioLoader, CamInputNamesACam) {
+  Json d = base();
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "L", "type": "TO_PositioningAxis",
+    "config": { "VirtualAxis.Mode": 1 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "F", "type": "TO_SynchronousAxis",
+    "config": { "VirtualAxis.Mode": 1 }, "LeadingValueInterconnections": [ { "Leader": "L" } ] })"));
+  d["technology_objects"].push_back(
+      Json::parse(R"({ "name": "C", "type": "TO_Cam", "Points": [[0, 0], [1, 1]] })"));
+  const auto cam_in = [&](const char* cam) {
+    Json e = d;
+    e["timeline"].push_back(
+        Json::parse(std::string(R"({"cycle": 1, "instance": "c", "instruction": "MC_CamIn",
+      "axis": "F", "inputs": {"Master": "L", "Cam": )") +
+                    cam + "}}"));
+    return problems_of(e);
+  };
+  EXPECT_TRUE(cam_in(R"("C")").empty());
+  const auto not_a_cam = cam_in(R"("L")");
+  ASSERT_FALSE(not_a_cam.empty());
+  EXPECT_EQ(not_a_cam.front(), "timeline[1].inputs.Cam: 'L' is a TO_PositioningAxis, not a cam");
+  const auto unknown = cam_in(R"("D")");
+  ASSERT_FALSE(unknown.empty());
+  EXPECT_EQ(unknown.front(), "timeline[1].inputs.Cam: unknown technology object 'D'");
 }
 
 TEST(ScenarioLoader, Expectations) {

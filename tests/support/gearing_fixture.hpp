@@ -7,6 +7,8 @@
 #include <functional>
 #include <memory>
 
+#include "tomc/instructions/mc_cam_in.hpp"
+#include "tomc/instructions/mc_cam_out.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_gear_in_pos.hpp"
 #include "tomc/instructions/mc_gear_in_velocity.hpp"
@@ -53,8 +55,10 @@ inline techobjects::PositioningAxisData virtual_rotary_modulo() {
 }
 
 struct GearingMachine {
+  // `add` adds further TOs (cams) before the runtime starts.
   explicit GearingMachine(techobjects::PositioningAxisData leader = virtual_linear(),
-                          techobjects::PositioningAxisData follower = virtual_linear())
+                          techobjects::PositioningAxisData follower = virtual_linear(),
+                          const std::function<void(techobjects::Runtime&)>& add = {})
       : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
     // The follower is added first: the runtime still runs the leader first (leaders()).
     L = std::make_unique<PositioningAxis>("L", nullptr, leader);
@@ -72,6 +76,8 @@ struct GearingMachine {
     gear2.Master = leader2_axis;
     gear_pos.Master = leader_axis;
     gear_velocity.Master = leader_axis;
+    cam_in.Master = cam_in2.Master = leader_axis;
+    if (add) add(runtime);
     runtime.set_user_program([this](techobjects::Runtime&) {
       power_L(*leader_axis);
       power_L2(*leader2_axis);
@@ -84,6 +90,9 @@ struct GearingMachine {
       gear_pos(*F);
       gear_velocity(*F);
       gear_out(*F);
+      cam_out(*F);
+      cam_in(*F);
+      cam_in2(*F);
       move_F(*F);
       move_abs_F(*F);
       halt_F(*F);
@@ -131,6 +140,9 @@ struct GearingMachine {
   instructions::MC_GearInPos<SynchronousAxis> gear_pos;
   instructions::MC_GearInVelocity<SynchronousAxis> gear_velocity;
   instructions::MC_GearOut<SynchronousAxis> gear_out;
+  instructions::MC_CamIn<SynchronousAxis> cam_in;
+  instructions::MC_CamIn<SynchronousAxis> cam_in2;
+  instructions::MC_CamOut<SynchronousAxis> cam_out;
   instructions::MC_MoveVelocity<SynchronousAxis> move_F;
   instructions::MC_MoveAbsolute<SynchronousAxis> move_abs_F;
   instructions::MC_Halt<SynchronousAxis> halt_F;

@@ -63,6 +63,8 @@ constexpr AlarmDefinition kAlarms[] = {
      "leading axis not position-controlled (setpoint coupling)", B::kSynchronous},
     {kAlarmSynchronizationError, C::kAcknowledge, R::kStopMaxDynamics,
      "error during synchronization / desynchronization: the leading value reversed", B::kSynchronous},
+    {kAlarmCamNotInterpolated, C::kAcknowledge, R::kRemoveEnable, "cyclic cam not interpolated (MC_CamIn)",
+     B::kSynchronous},
 };
 
 }  // namespace

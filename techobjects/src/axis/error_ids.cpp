@@ -57,6 +57,18 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "MC_CopyCamData: element range outside the cam or the source array";
     case kNoGearing:
       return "no MC_GearIn / MC_GearInPos pending or active";
+    case kNoCamming:
+      return "no MC_CamIn pending or active";
+    case kNoActiveCamming:
+      return "MC_CamIn SyncProfileReference 5 without active camming";
+    case kOutsideCam:
+      return "MasterSyncPosition outside the cam, or the leader outside the scaled and shifted cam";
+    case kInvalidMasterOffset:
+      return "invalid MasterOffset";
+    case kInvalidSlaveOffset:
+      return "invalid SlaveOffset";
+    case kInvalidApplicationMode:
+      return "invalid ApplicationMode";
     case kHomingDuringGearInPos:
       return "MC_Home is not possible while MC_GearInPos is active";
     case kRejectedByRunningJob:

@@ -14,8 +14,9 @@ namespace {
 constexpr DataBlockTable<CamData> kTable{&find_cam_variable, &find_cam_bit};
 }  // namespace
 
-Cam::Cam(std::string name, CamVariant variant)
+Cam::Cam(std::string name, CamVariant variant, std::uint16_t number)
     : name_(std::move(name)),
+      number_(number),
       variant_(variant),
       db_(variant),
       profile_(profile_capacity(capacity_of(variant))) {}

@@ -33,7 +33,34 @@ constexpr std::array<std::array<SyncCell, kRunningSyncJobCount>, kNewSyncRowCoun
 }};
 // clang-format on
 
+using R = NewSyncRow;
+using C = RunningSyncJob;
+constexpr std::array<SyncInstructionPlace, 6> kPlaces{{
+    {"MC_GearIn", SyncFamily::kGearing, R::kGearIn, R::kGearIn, C::kGearIn, C::kGearIn},
+    {"MC_GearInVelocity", SyncFamily::kGearing, R::kGearIn, R::kGearIn, C::kGearInVelocity,
+     C::kGearInVelocity},
+    {"MC_GearInPos", SyncFamily::kGearing, R::kSyncInPending, R::kSyncInActive, C::kSyncInPending,
+     C::kSyncInActive},
+    {"MC_CamIn", SyncFamily::kCamming, R::kSyncInPending, R::kSyncInActive, C::kSyncInPending,
+     C::kSyncInActive},
+    {"MC_GearOut", SyncFamily::kGearing, R::kSyncOutPending, R::kSyncOutActive, C::kSyncOutPending,
+     C::kSyncOutActive},
+    {"MC_CamOut", SyncFamily::kCamming, R::kSyncOutPending, R::kSyncOutActive, C::kSyncOutPending,
+     C::kSyncOutActive},
+}};
+
 }  // namespace
+
+std::span<const SyncInstructionPlace> sync_instruction_places() noexcept {
+  return kPlaces;
+}
+
+const SyncInstructionPlace* find_sync_instruction(std::string_view instruction) noexcept {
+  for (const auto& p : kPlaces) {
+    if (p.instruction == instruction) return &p;
+  }
+  return nullptr;
+}
 
 SyncCell sync_priority_cell(NewSyncRow row, RunningSyncJob column) noexcept {
   return kMatrix[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)];

@@ -130,6 +130,22 @@ void LeaderDomainBlend::start(double x_a, double length, double x_target, double
   x_target_ = x_target;
   y_target_ = y_target;
   slope_ = slope;
+  deviate(f, v_a, a_a, line(x_a), slope, 0.0);
+}
+
+void LeaderDomainBlend::start_deviation(double x_a, double length, double target, double target_slope,
+                                        double target_curvature, const MotionState& f, double v_a,
+                                        double a_a) noexcept {
+  x_a_ = x_a;
+  length_ = length != 0.0 ? length : 1.0;
+  x_target_ = 0.0;
+  y_target_ = 0.0;
+  slope_ = 0.0;
+  deviate(f, v_a, a_a, target, target_slope, target_curvature);
+}
+
+void LeaderDomainBlend::deviate(const MotionState& f, double v_a, double a_a, double y, double dy,
+                                double ddy) noexcept {
   // Follower slope and curvature in the leader domain (spec 07 §6.4); a leader at rest gives 0 (a dynamic
   // step is then possible, as the manual warns).
   double s0 = 0.0;
@@ -138,9 +154,9 @@ void LeaderDomainBlend::start(double x_a, double length, double x_target, double
     s0 = f.velocity / v_a;
     c0 = (f.acceleration - s0 * a_a) / (v_a * v_a);
   }
-  d0_ = f.position - line(x_a);
-  d1_ = s0 - slope;
-  d2_ = c0;
+  d0_ = f.position - y;
+  d1_ = s0 - dy;
+  d2_ = c0 - ddy;
 }
 
 double LeaderDomainBlend::progress(double x) const noexcept {

@@ -1,4 +1,5 @@
-// The synchronous operation of a synchronous axis: gearing (spec 07 §2, §5, §6).
+// The synchronous operation of a synchronous axis: gearing (spec 07 §2, §5, §6) and what gearing and camming
+// share — job states, §9.19.2, the pending start, desynchronization, the status (camming: camming.cpp).
 #include "tomc/techobjects/synchronous/synchronous_operation.hpp"
 
 #include <algorithm>
@@ -123,13 +124,11 @@ double SynchronousOperation::choose_slave_sync(double slave_sync, std::int32_t d
 // Acceleration/Deceleration for the present leader velocity (decision Y6). The candidate blend is the one
 // start_pending_sync would run; it is sampled at 17 points (2 % reserve for the peaks between them). The
 // shortest fitting length is bracketed by doubling and then bisected: a fixed number of steps, no allocation.
-double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p,
-                                                  const LeadingValue& leader) const noexcept {
+// A cam is sized by its tangent at the synchronous point (`slope`; decision C9).
+double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader,
+                                                  double y_target, double r) const noexcept {
   const double v = std::max(std::fabs(leader.velocity), 1e-9);
   const double v_leader = p.direction * v;
-  const double r = ratio(p.numerator, p.denominator);
-  const double y_target = choose_slave_sync(
-      p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
   const double max_v = 0.98 * p.limits.velocity;
   const double max_a = 0.98 * p.limits.acceleration;
   const double max_d = 0.98 * p.limits.deceleration;
@@ -178,6 +177,8 @@ void SynchronousOperation::end_active(JobState state, std::uint16_t error_id) no
   if (active_.id == 0) return;
   last_synchronous_job_ = active_.id;
   last_outputs_ = SyncJobOutputs{};
+  last_outputs_.EndOfProfileCount = active_.cam.ends;
+  release_cam(active_.cam);
   axis_.jobs().set(active_.id, state, error_id);
   axis_.end_motion(active_.id);
   active_ = ActiveSync{};
@@ -187,6 +188,7 @@ void SynchronousOperation::end_active(JobState state, std::uint16_t error_id) no
 void SynchronousOperation::end_pending(JobState state, std::uint16_t error_id) noexcept {
   if (pending_sync_.id == 0) return;
   axis_.jobs().set(pending_sync_.id, state, error_id);
+  release_cam(pending_sync_.cam);
   pending_sync_ = PendingSyncIn{};
 }
 
@@ -245,28 +247,48 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
   struct Running {
     RunningSyncJob column;
     int which;  // 0 active, 1 pending sync-in, 2 desync
+    SyncFamily family;
   };
   std::array<Running, 3> running{};
   std::size_t n = 0;
+  // The columns of each instruction come from the table beside the matrix (sync_priority.hpp).
+  const auto place = [](JobKind kind) noexcept {
+    switch (kind) {
+      case JobKind::kGearIn:
+        return find_sync_instruction("MC_GearIn");
+      case JobKind::kGearInVelocity:
+        return find_sync_instruction("MC_GearInVelocity");
+      case JobKind::kCamIn:
+        return find_sync_instruction("MC_CamIn");
+      case JobKind::kGearOut:
+        return find_sync_instruction("MC_GearOut");
+      case JobKind::kCamOut:
+        return find_sync_instruction("MC_CamOut");
+      default:
+        return find_sync_instruction("MC_GearInPos");
+    }
+  };
   if (active_.id != 0) {
-    running[n++] = Running{active_.kind == JobKind::kGearIn           ? RunningSyncJob::kGearIn
-                           : active_.kind == JobKind::kGearInVelocity ? RunningSyncJob::kGearInVelocity
-                                                                      : RunningSyncJob::kSyncInActive,
-                           0};
+    const auto* p = place(active_.kind);
+    running[n++] = Running{p->active_column, 0, p->family};
   }
-  if (pending_sync_.id != 0) running[n++] = Running{RunningSyncJob::kSyncInPending, 1};
+  if (pending_sync_.id != 0) {
+    const auto* p = place(pending_sync_.kind);
+    running[n++] = Running{p->pending_column, 1, p->family};
+  }
   if (desync_.id != 0) {
-    running[n++] =
-        Running{desync_.active ? RunningSyncJob::kSyncOutActive : RunningSyncJob::kSyncOutPending, 2};
+    const auto* p = place(desync_.kind);
+    running[n++] = Running{desync_.active ? p->active_column : p->pending_column, 2, p->family};
   }
   SyncContext ctx;
   ctx.follower_position_controlled = axis_.position_controlled();
   ctx.virtual_or_simulated_axis = axis_.virtual_axis();
   std::uint8_t abort_mask = 0;
   for (std::size_t i = 0; i < n; ++i) {
+    ctx.same_family = running[i].family == new_job_family_;
     switch (resolve(r, running[i].column, ctx)) {
       case Outcome::kRejectNew:
-        // MC_Home 3/5 while MC_GearInPos is active has its own ErrorID (spec 07 §1.10, 16#80A1).
+        // MC_Home 3/5 while MC_GearInPos/MC_CamIn is active has its own ErrorID (spec 07 §1.10, 16#80A1).
         return r == NewSyncRow::kActiveHoming && running[i].column == RunningSyncJob::kSyncInActive
                    ? error_id::kHomingDuringGearInPos
                    : error_id::kRejectedByRunningJob;
@@ -395,6 +417,11 @@ Submission SynchronousOperation::gear_in_pos(const GearInPosInputs& in) noexcept
 }
 
 Submission SynchronousOperation::gear_out(const GearOutInputs& in) noexcept {
+  return desynchronize(in, JobKind::kGearOut);
+}
+
+// MC_GearOut and MC_CamOut (spec 07 §2.4, §3.5): the same parameters and behaviour, each for its own family.
+Submission SynchronousOperation::desynchronize(const GearOutInputs& in, JobKind kind) noexcept {
   if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 5) {
     return Submission::reject(error_id::kInvalidSyncProfileReference);
@@ -407,21 +434,32 @@ Submission SynchronousOperation::gear_out(const GearOutInputs& in) noexcept {
   if (in.SyncOutDirection < 1 || in.SyncOutDirection > 3)
     return Submission::reject(error_id::kInvalidDirection);
   if (!axis_.enabled()) return Submission::reject(error_id::kAxisNotEnabled);
-  const bool gearing = (active_.id != 0 && active_.kind != JobKind::kGearInVelocity) || pending_sync_.id != 0;
-  if (!gearing) return Submission::reject(error_id::kNoGearing);  // spec 07 §2.4 requirements
+  // Requirement: a job of the family active or pending (spec 07 §2.4: 16#8077, §3.5: 16#8078).
+  const SyncFamily family = family_of(kind);
+  const bool active =
+      active_.id != 0 && active_.kind != JobKind::kGearInVelocity && family_of(active_.kind) == family;
+  const bool pending = pending_sync_.id != 0 && family_of(pending_sync_.kind) == family;
+  if (!active && !pending) {
+    return Submission::reject(family == SyncFamily::kCamming ? error_id::kNoCamming : error_id::kNoGearing);
+  }
   if (in.SyncProfileReference == 5) {
-    // Only cancel a pending gearing (and a pending MC_GearOut); an active gearing is not affected (§5 fn. 8).
-    end_pending(JobState::kAborted, 0);
-    if (desync_.id != 0 && !desync_.active) end_desync(JobState::kAborted, 0);
-    return Submission::accept(axis_.jobs().create(JobKind::kGearOut, JobState::kDone));
+    // Only cancel a pending synchronization (and a pending desynchronization) of the family; an active one is
+    // not affected (§5 fn. 7, 8).
+    if (pending) end_pending(JobState::kAborted, 0);
+    if (desync_.id != 0 && !desync_.active && desync_.kind == kind) end_desync(JobState::kAborted, 0);
+    return Submission::accept(axis_.jobs().create(kind, JobState::kDone));
   }
   ProfileLimits limits;
   if (const auto e = axis_.resolve_dynamics(std::numeric_limits<double>::quiet_NaN(), in.Deceleration,
                                             in.Deceleration, in.Jerk, limits))
     return Submission::reject(*e);
-  if (const auto e = axis_.arbitrate(NewJob::kSyncOutPending)) return Submission::reject(e);
+  new_job_family_ = family;
+  const std::uint16_t rejected = axis_.arbitrate(NewJob::kSyncOutPending);
+  new_job_family_ = SyncFamily::kGearing;
+  if (rejected != 0) return Submission::reject(rejected);
   Desync d;
-  d.id = axis_.jobs().create(JobKind::kGearOut, JobState::kActive);
+  d.kind = kind;
+  d.id = axis_.jobs().create(kind, JobState::kActive);
   d.profile = in.SyncProfileReference;
   d.slave_position = in.SlavePosition;
   d.stop_distance = in.MasterStopDistance;
@@ -442,10 +480,12 @@ void SynchronousOperation::update_ratio(JobId job, std::int32_t numerator,
 
 SyncJobOutputs SynchronousOperation::sync_outputs(JobId job) const noexcept {
   SyncJobOutputs o;
+  if (job != 0 && job == last_synchronous_job_ && job != active_.id) o = last_outputs_;
   if (job != 0 && job == active_.id) {
     o.StartSync = active_.start_sync;
     o.InSync = active_.in_sync;
     o.ContinuousUpdateActive = active_.continuous_update && active_.in_sync;
+    o.EndOfProfileCount = active_.cam.ends;
   }
   if (job != 0 && job == desync_.id) o.StartSyncOut = desync_.start_sync_out;
   return o;
@@ -457,6 +497,7 @@ SyncJobOutputs SynchronousOperation::sync_outputs(JobId job) const noexcept {
 // A pending MC_GearInPos starts when the leader crosses its start position in its direction of travel
 // (spec 07 §2.2): it becomes active (§9.19.1 R10, §9.19.2 "active" row) and blends onto the gear line.
 bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexcept {
+  if (pending_sync_.kind == JobKind::kCamIn) return start_pending_cam(leader);
   PendingSyncIn& p = pending_sync_;
   const double r = ratio(p.numerator, p.denominator);
   double length = p.length;
@@ -468,30 +509,15 @@ bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexce
         axis_.setpoint().position != p.sized_follower.position ||
         axis_.setpoint().velocity != p.sized_follower.velocity ||
         axis_.setpoint().acceleration != p.sized_follower.acceleration) {
-      p.sized_length = sync_length_profile0(p, leader);
+      const double y_target = choose_slave_sync(
+          p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
+      p.sized_length = sync_length_profile0(p, leader, y_target, r);
       p.sized_leader_velocity = leader.velocity;
       p.sized_follower = axis_.setpoint();
     }
     length = p.sized_length;
     x_a = p.master_sync - p.direction * length;
-    // The start position moves with the computed length. Synchronization starts only when the leader crosses
-    // it, within one cycle's travel (spec 07 §6.5); a start position already passed (at the job's start, or
-    // because the length grew) is not caught up with a step of the follower: a modulo leader waits for the
-    // next pass, a linear one remains pending (decision Y12).
-    const double past = p.direction * (leader.position - x_a);
-    if (past < 0.0) {
-      p.armed = true;
-      return false;
-    }
-    if (!p.armed || past > std::fabs(leader.velocity) * axis_.ipo_cycle_s() * (1.0 + 1e-9) + 1e-12) {
-      p.armed = false;
-      const ModuloRange range =
-          interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
-      if (range.enabled && range.length > 0.0) {
-        p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
-      }
-      return false;
-    }
+    if (!profile0_start_crossed(p, leader, x_a)) return false;
   } else if (p.profile == 1) {
     x_a = p.master_sync - p.direction * length;
   } else {  // 3: subsequent — the blend starts at MasterSyncPosition and ends a distance later
@@ -503,39 +529,77 @@ bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexce
   const double y_estimate = axis_.setpoint().position + r * (x_target - leader.position);
   const double y_target = choose_slave_sync(p.slave_sync, p.sync_direction, y_estimate);
   const PendingSyncIn started = p;
-  pending_sync_ = PendingSyncIn{};
-  // Active now: aborts what R10 / the "active" row say (the pending job itself is no longer pending).
-  const JobId id = started.id;
-  axis_.jobs().set(id, JobState::kActive);
-  if (axis_.arbitrate(NewJob::kSyncActive) != 0) {
-    axis_.jobs().set(id, JobState::kError, error_id::kRejectedByRunningJob);
-    return false;
-  }
-  axis_.abort_pending();
-  active_ = ActiveSync{};
-  active_.id = id;
-  active_.kind = JobKind::kGearInPos;
-  active_.source = started.source;
+  if (!activate_pending(JobKind::kGearInPos)) return false;
   active_.numerator = started.numerator;
   active_.denominator = started.denominator;
-  active_.phase = Phase::kBlend;
   active_.x_sync = x_target;
   active_.y_sync = y_target;
-  active_.direction = started.direction;
-  active_.start_sync = true;
   const double signed_length = started.direction * (started.profile == 3 ? started.length : length);
   // Profile 3: the line is y = SlaveSync + r·(x − MasterSync); the blend covers [MasterSync, MasterSync + L].
   // The blend starts at the nominal start position, so that it ends exactly at the synchronous point (the
   // leader may already be up to one cycle past the start when the crossing is seen).
   active_.blend.start(x_a, signed_length, x_target, y_target, r, axis_.setpoint(), leader.velocity,
                       leader.acceleration);
+  return true;
+}
+
+// Profile 0 (GearInPos, CamIn): the start position moves with the computed length. Synchronization starts
+// only when the leader crosses it, within one cycle's travel (spec 07 §6.5); a start position already passed
+// (at the job's start, or because the length grew) is not caught up with a step of the follower: a modulo
+// leader waits for the next pass, a linear one remains pending (decision Y12).
+bool SynchronousOperation::profile0_start_crossed(PendingSyncIn& p, const LeadingValue& leader,
+                                                  double x_a) noexcept {
+  const double past = p.direction * (leader.position - x_a);
+  if (past < 0.0) {
+    p.armed = true;
+    return false;
+  }
+  if (!p.armed || past > std::fabs(leader.velocity) * axis_.ipo_cycle_s() * (1.0 + 1e-9) + 1e-12) {
+    p.armed = false;
+    const ModuloRange range =
+        interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
+    if (range.enabled && range.length > 0.0) {
+      p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
+    }
+    return false;
+  }
+  return true;
+}
+
+// The pending job starts: it becomes active (§9.19.1 R10, §9.19.2 "active" row, its aborts applied; the
+// pending job itself is no longer pending) and takes the follower over in the blend phase. The caller sets
+// the synchronous function and the blend. False if a running job rejects it (the job ends with Error).
+bool SynchronousOperation::activate_pending(JobKind kind) noexcept {
+  const PendingSyncIn started = pending_sync_;
+  pending_sync_ = PendingSyncIn{};
+  const JobId id = started.id;
+  axis_.jobs().set(id, JobState::kActive);
+  if (axis_.arbitrate(NewJob::kSyncActive) != 0) {
+    axis_.jobs().set(id, JobState::kError, error_id::kRejectedByRunningJob);
+    CamJob cam = started.cam;
+    release_cam(cam);
+    return false;
+  }
+  axis_.abort_pending();
+  active_ = ActiveSync{};
+  active_.id = id;
+  active_.kind = kind;
+  active_.source = started.source;
+  active_.phase = Phase::kBlend;
+  active_.direction = started.direction;
+  active_.start_sync = true;
+  active_.cam = started.cam;
   axis_.set_position_controlled(true);
   sync_setpoint_ = axis_.setpoint();
-  axis_.take_over(id, JobKind::kGearInPos);
+  axis_.take_over(id, kind);
   return true;
 }
 
 void SynchronousOperation::step_active(const LeadingValue& leader) noexcept {
+  if (active_.kind == JobKind::kCamIn) {
+    step_cam(leader);
+    return;
+  }
   ActiveSync& a = active_;
   const double T = axis_.ipo_cycle_s();
   const double r = ratio(a.numerator, a.denominator);
@@ -604,7 +668,7 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
     if (dir == 0.0) return;
     if ((d.direction == 1 && dir < 0.0) || (d.direction == 2 && dir > 0.0)) return;  // SyncOutDirection
     const ModuloRange follower = axis_.modulo();
-    const double r = ratio(active_.numerator, active_.denominator);
+    const double r = function_slope(leader);
     bool start = false;
     // The stop travel: the follower's distance from the start of desynchronization to standstill.
     const double step = std::fabs(v) * T;  // the follower's travel in one cycle: a start is seen within it
@@ -613,7 +677,8 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
       stop_travel = limits::braking_distance(std::fabs(v), sync_setpoint_.acceleration * dir,
                                              d.limits.deceleration, d.limits.jerk);
     } else {
-      // Profile 1: over L of leader travel the gear's follower covers slope·L/2 (spec 07 §6.7).
+      // Profile 1: over L of leader travel the follower covers slope·L/2 (spec 07 §6.7; a cam: its present
+      // slope, the [OPEN] predicate y_f(x) + Y'(x)·L/2 ≥ y_stop).
       if (sign_or(leader.velocity, 0.0) == 0.0) return;
       stop_travel = std::fabs(r) * d.stop_distance / 2.0;
     }
@@ -645,7 +710,7 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
       }
     }
     if (!start) return;
-    // Desynchronization starts: the gearing job ends (CommandAborted, §9.19.2 "GearOut active" row).
+    // Desynchronization starts: the synchronous job ends (CommandAborted, §9.19.2 "GearOut/CamOut active").
     d.active = true;
     d.start_sync_out = true;
     d.source = active_.source;
@@ -657,10 +722,10 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
       ProfileLimits l = d.limits;
       l.velocity = std::max(std::fabs(at.velocity), 1e-9);
       l.acceleration = std::max(l.acceleration, l.deceleration);
-      axis_.position_to(d.id, JobKind::kGearOut, d.y_stop, l);
+      axis_.position_to(d.id, d.kind, d.y_stop, l);
     } else {
       axis_.set_setpoint(at);
-      axis_.take_over(d.id, JobKind::kGearOut);
+      axis_.take_over(d.id, d.kind);
     }
     return;
   }
@@ -716,10 +781,32 @@ void SynchronousOperation::update_status() noexcept {
   const int source = active_.id != 0 ? active_.source : pending_sync_.id != 0 ? pending_sync_.source : -1;
   s.FunctionState = 0;
   if (active_.id != 0) {
-    s.FunctionState = active_.kind == JobKind::kGearIn ? 1 : active_.kind == JobKind::kGearInPos ? 2 : 6;
+    s.FunctionState = active_.kind == JobKind::kGearIn      ? 1
+                      : active_.kind == JobKind::kGearInPos ? 2
+                      : active_.kind == JobKind::kCamIn     ? 3
+                                                            : 6;
   }
-  if (desync_.active) s.FunctionState = 4;
-  s.WaitingFunctionState = pending_sync_.id != 0 ? 2 : (desync_.id != 0 && !desync_.active) ? 4 : 0;
+  const bool cam_out = desync_.kind == JobKind::kCamOut;
+  if (desync_.active) s.FunctionState = cam_out ? 5 : 4;
+  s.WaitingFunctionState = pending_sync_.id != 0 ? (pending_sync_.kind == JobKind::kCamIn ? 3 : 2)
+                           : (desync_.id != 0 && !desync_.active) ? (cam_out ? 5 : 4)
+                                                                  : 0;
+  // The cam in use and its offsets and scalings (a pending switch shows the running cam until it starts).
+  const CamJob* cam = active_.id != 0 && active_.kind == JobKind::kCamIn               ? &active_.cam
+                      : pending_sync_.id != 0 && pending_sync_.kind == JobKind::kCamIn ? &pending_sync_.cam
+                                                                                       : nullptr;
+  s.ActualCam = cam != nullptr && cam->cam != nullptr ? cam->cam->number() : 0;
+  if (cam != nullptr) {
+    const CamScaling& k = cam->function.scaling();
+    s.MasterOffset = cam->shown_master_offset;
+    s.MasterScaling = k.MasterScaling;
+    s.SlaveOffset = k.SlaveOffset;
+    s.SlaveScaling = k.SlaveScaling;
+  } else {
+    s.MasterOffset = s.SlaveOffset = 0.0;
+    s.MasterScaling = s.SlaveScaling = 1.0;
+  }
+  s.Offset = cam != nullptr ? s.SlaveOffset : 0.0;  // offset jobs add here (spec 07 §1.8, O-4)
   s.ActualMaster = static_cast<std::uint16_t>(source >= 0 ? source + 1 : 0);
   if (source >= 0) {
     const LeadingValue v = source == cycle_leader_source_ ? cycle_leader_ : sample(source);
@@ -759,6 +846,11 @@ double SynchronousOperation::read(std::string_view m) const noexcept {
   if (m == "WaitingFunctionState") return s.WaitingFunctionState;
   if (m == "PhaseShift") return s.PhaseShift;
   if (m == "ActualMaster") return s.ActualMaster;
+  if (m == "ActualCam") return s.ActualCam;
+  if (m == "MasterOffset") return s.MasterOffset;
+  if (m == "MasterScaling") return s.MasterScaling;
+  if (m == "SlaveOffset") return s.SlaveOffset;
+  if (m == "SlaveScaling") return s.SlaveScaling;
   if (m == "Offset") return s.Offset;
   if (m == "EffectiveLeadingValue.Position") return s.EffectiveLeadingValue.Position;
   if (m == "EffectiveLeadingValue.Velocity") return s.EffectiveLeadingValue.Velocity;

@@ -10,7 +10,9 @@
 // MC_GearInVelocity with ContinuousUpdate and ratio changes, MC_GearInPos profiles 0, 1 and 3, MC_GearOut
 // profiles 0, 1 and 5 (cancelling a pending MC_GearInPos), MC_Halt and MC_Stop ending a gearing, rejected
 // jobs (illegal ratio, a GearOut without gearing), a leading value reversing during synchronization (alarm
-// 608) and MC_Reset. The test also checks that the script reached every job kind.
+// 608) and MC_Reset; then camming (issue 19): MC_CamIn direct and cyclic, the switch to another cam at the
+// end of the cam (profile 5, cyclic appending), MC_CamOut profiles 0 and 1, MC_CamIn profile 1. The test also
+// checks that the script reached every job kind.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -26,6 +28,7 @@
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_reset.hpp"
+#include "tomc/techobjects/cam/cam.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
 
 namespace {
@@ -54,6 +57,9 @@ struct FollowerProgram {
   instructions::MC_GearOut<Axis> gear_out;
   instructions::MC_Halt<Axis> halt;
   instructions::MC_Stop<Axis> stop;
+  instructions::MC_CamIn<Axis> cam_in;
+  instructions::MC_CamIn<Axis> cam_in2;
+  instructions::MC_CamOut<Axis> cam_out;
   void call(Axis& a) {
     power(a);
     reset(a);
@@ -65,6 +71,9 @@ struct FollowerProgram {
     gear2(a);
     gear_velocity(a);
     gear_pos(a);
+    cam_out(a);
+    cam_in(a);
+    cam_in2(a);
   }
 };
 
@@ -85,6 +94,10 @@ enum Reached {
   kAlarm608,
   kResetDone,
   kChainInGear,
+  kCamInSync,
+  kCamSwitched,
+  kCamProfile1,
+  kCamOutDone,
   kReachedCount
 };
 constexpr const char* kReachedNames[kReachedCount] = {"MC_GearIn InGear",
@@ -101,7 +114,11 @@ constexpr const char* kReachedNames[kReachedCount] = {"MC_GearIn InGear",
                                                       "job rejected (Error)",
                                                       "alarm 608",
                                                       "MC_Reset Done",
-                                                      "chained follower InGear"};
+                                                      "chained follower InGear",
+                                                      "MC_CamIn profile 2 InSync",
+                                                      "MC_CamIn profile 5 switched at the cam end",
+                                                      "MC_CamIn profile 1 InSync",
+                                                      "MC_CamOut Done"};
 
 struct Machine {
   Machine() : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
@@ -132,6 +149,17 @@ struct Machine {
         "F2", nullptr, tomc::testing::virtual_linear(),
         std::vector<techobjects::LeadingValueInterconnection>{{F1, F1, LeadingValueCoupling::kSetpoint},
                                                               {L, L, LeadingValueCoupling::kSetpoint}});
+    // Two cams on 0…36 mm: C a closed curve (cyclic), C2 rising by 20 per period (cyclic appending).
+    C = &runtime.emplace<techobjects::Cam>("C");
+    C2 = &runtime.emplace<techobjects::Cam>("C2");
+    const techobjects::TO_Cam_Struct_PointData c[] = {{0, 0}, {9, 1}, {18, 0}, {27, -1}, {36, 0}};
+    const techobjects::TO_Cam_Struct_PointData c2[] = {{0, 0}, {18, 5}, {36, 20}};
+    for (std::size_t i = 0; i < std::size(c); ++i)
+      (void)C->write_point(i + 1, c[i], true);
+    for (std::size_t i = 0; i < std::size(c2); ++i)
+      (void)C2->write_point(i + 1, c2[i], true);
+    (void)C->write("InterpolationSettings.InterpolationMode", 1.0);
+    (void)C->write("InterpolationSettings.BoundaryConditions", 1.0);
     runtime.set_user_program([this](techobjects::Runtime&) {
       power_L(*L);
       reset_L(*L);
@@ -141,6 +169,8 @@ struct Machine {
       f2.call(*F2);
     });
     runtime.start();
+    (void)C->interpolate_cam();
+    (void)C2->interpolate_cam();
   }
   techobjects::Runtime runtime;
   PositioningAxis* L = nullptr;
@@ -148,6 +178,8 @@ struct Machine {
   SynchronousAxis* F1 = nullptr;
   SynchronousAxis* F2 = nullptr;
   drives::SimulatedDrive* encoder_drive = nullptr;
+  techobjects::Cam* C = nullptr;
+  techobjects::Cam* C2 = nullptr;
   instructions::MC_Power<PositioningAxis> power_L;
   instructions::MC_Reset<PositioningAxis> reset_L;
   instructions::MC_MoveVelocity<PositioningAxis> move_L;
@@ -402,6 +434,69 @@ std::vector<Step> script() {
                },
                [](M& m, int k) { return k > 300 && m.f1.reset.Done && m.f1.power.Status; },
                [](M& m) { m.f1.reset.Execute = false; }});
+  // Camming on F1 (L at 50 mm/s): direct and cyclic on C, switched at the end of C to C2 (appending), CamOut
+  // profile 0; CamIn profile 1 on C2, CamOut profile 1.
+  s.push_back({"cam in direct, cyclic",
+               [](M& m) {
+                 auto& c = m.f1.cam_in;
+                 c.Master = m.L;
+                 c.Cam = m.C;
+                 c.SyncProfileReference = 2;
+                 c.ApplicationMode = 1;
+                 execute(c, *m.F1);
+               },
+               [](M& m, int k) { return k > 100 && m.f1.cam_in.InSync; }, nothing});
+  s.push_back({"cam switch at the end of the cam",
+               [](M& m) {
+                 auto& c = m.f1.cam_in2;
+                 c.Master = m.L;
+                 c.Cam = m.C2;
+                 c.SyncProfileReference = 5;
+                 c.ApplicationMode = 2;
+                 execute(c, *m.F1);
+               },
+               [](M& m, int) { return m.f1.cam_in2.InSync && m.f1.cam_in.CommandAborted; },
+               [](M& m) { m.f1.cam_in.Execute = false; }, 3000});
+  s.push_back({"cam out profile 0",
+               [](M& m) {
+                 auto& o = m.f1.cam_out;
+                 o.SyncProfileReference = 0;
+                 o.SlavePosition = m.F1->setpoint().position + 20.0;
+                 o.Deceleration = 2000.0;
+                 execute(o, *m.F1);
+               },
+               [](M& m, int) { return m.f1.cam_out.Done; },
+               [](M& m) {
+                 m.f1.cam_out.Execute = false;
+                 m.f1.cam_in2.Execute = false;
+               }});
+  s.push_back({"cam in profile 1",
+               [](M& m) {
+                 auto& c = m.f1.cam_in;
+                 c.Cam = m.C2;
+                 c.SyncProfileReference = 1;
+                 c.ApplicationMode = 2;
+                 c.MasterOffset = m.L->setpoint().position + 40.0;
+                 c.SlaveOffset = m.F1->setpoint().position;  // the cam where the follower stands
+                 c.MasterStartDistance = 20.0;
+                 execute(c, *m.F1);
+               },
+               [](M& m, int k) { return k > 20 && m.f1.cam_in.InSync; }, nothing});
+  s.push_back({"cam out profile 1",
+               [](M& m) {
+                 auto& o = m.f1.cam_out;
+                 o.SyncProfileReference = 1;
+                 o.MasterStopDistance = 10.0;
+                 o.SlavePosition = m.F1->setpoint().position + 30.0;
+                 execute(o, *m.F1);
+               },
+               [](M& m, int) { return m.f1.cam_out.Done; },
+               [](M& m) {
+                 m.f1.cam_out.Execute = false;
+                 m.f1.cam_in.Execute = false;
+                 m.f1.cam_in.MasterOffset = 0.0;
+                 m.f1.cam_in.SlaveOffset = 0.0;
+               }});
   // F2 back on the chain for the next loop.
   s.push_back({"chain again",
                [](M& m) {
@@ -464,6 +559,10 @@ TEST(GearingAllocation, EveryGearingJobKindRunsWithoutAllocating) {
     see(kAlarm608, m.F1->alarms().pending(techobjects::kAlarmSynchronizationError));
     see(kResetDone, f1.reset.Done);
     see(kChainInGear, m.f2.gear.InGear && m.f2.gear.Master == m.F1);
+    see(kCamInSync, f1.cam_in.InSync && f1.cam_in.SyncProfileReference == 2);
+    see(kCamSwitched, f1.cam_in2.InSync && f1.cam_in2.SyncProfileReference == 5);
+    see(kCamProfile1, f1.cam_in.InSync && f1.cam_in.SyncProfileReference == 1);
+    see(kCamOutDone, f1.cam_out.Done);
   }
   const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";

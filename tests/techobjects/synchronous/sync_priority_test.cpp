@@ -4,6 +4,7 @@
 #include <array>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tomc/techobjects/synchronous/sync_priority.hpp"
@@ -81,6 +82,31 @@ TEST(SyncPriority, Footnotes7And8And1) {
   EXPECT_EQ(resolve(NewSyncRow::kActiveHoming, RunningSyncJob::kGearIn, simulated), Outcome::kProceed);
   EXPECT_EQ(resolve(NewSyncRow::kActiveHoming, RunningSyncJob::kGearIn, SyncContext{}),
             Outcome::kAbortRunning);
+}
+
+// The camming instructions stand in the §9.19.2 rows and columns of their gearing counterparts (spec 07 §5.1:
+// "GearInPos/CamIn", "GearOut/CamOut"), in the other family of footnote 7; every instruction has one place.
+TEST(SyncPriority, CammingTakesTheRowsAndColumnsOfItsGearingCounterpart) {
+  const auto* cam_in = find_sync_instruction("MC_CamIn");
+  const auto* gear_in_pos = find_sync_instruction("MC_GearInPos");
+  const auto* cam_out = find_sync_instruction("MC_CamOut");
+  const auto* gear_out = find_sync_instruction("MC_GearOut");
+  ASSERT_TRUE(cam_in && gear_in_pos && cam_out && gear_out);
+  EXPECT_EQ(find_sync_instruction("MC_Phasing"), nullptr);
+  for (const auto& [cam, gear] : {std::pair{cam_in, gear_in_pos}, std::pair{cam_out, gear_out}}) {
+    EXPECT_EQ(cam->family, SyncFamily::kCamming);
+    EXPECT_EQ(gear->family, SyncFamily::kGearing);
+    EXPECT_EQ(cam->pending_row, gear->pending_row);
+    EXPECT_EQ(cam->active_row, gear->active_row);
+    EXPECT_EQ(cam->pending_column, gear->pending_column);
+    EXPECT_EQ(cam->active_column, gear->active_column);
+  }
+  EXPECT_EQ(cam_in->pending_row, NewSyncRow::kSyncInPending);
+  EXPECT_EQ(cam_in->active_column, RunningSyncJob::kSyncInActive);
+  EXPECT_EQ(cam_out->active_row, NewSyncRow::kSyncOutActive);
+  EXPECT_EQ(sync_instruction_places().size(), 6u);
+  // MC_Home 3/5 against an active MC_CamIn: "N" (16#80A1 on the axis), as against MC_GearInPos.
+  EXPECT_EQ(to_string(sync_priority_cell(NewSyncRow::kActiveHoming, cam_in->active_column)), "N");
 }
 
 }  // namespace

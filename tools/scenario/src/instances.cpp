@@ -6,6 +6,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "tomc/instructions/mc_cam_in.hpp"
+#include "tomc/instructions/mc_cam_out.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_gear_in_pos.hpp"
 #include "tomc/instructions/mc_gear_in_velocity.hpp"
@@ -35,6 +37,7 @@ using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
 using techobjects::SynchronousAxis;
 using Source = const techobjects::LeadingValueSource*;
+using CamReference = techobjects::Cam*;
 
 // The axis type an instruction class works on: MC_Power<SpeedAxis> -> SpeedAxis.
 template <typename FB>
@@ -44,6 +47,11 @@ struct axis_of<Instruction<Axis>> {
   using type = Axis;
 };
 // The cam instructions are not templates: their TO is always a cam.
+// MC_GearOut and MC_CamOut are one instruction class (mc_gear_out.hpp); their tables name its members.
+template <typename Axis, bool kCamming>
+struct axis_of<instructions::detail::SynchronousOut<Axis, kCamming>> {
+  using type = Axis;
+};
 template <>
 struct axis_of<instructions::MC_InterpolateCam> {
   using type = techobjects::Cam;
@@ -59,7 +67,7 @@ struct axis_of<instructions::MC_GetCamLeadingValue> {
 
 template <typename FB>
 using Member = std::variant<bool FB::*, std::int16_t FB::*, std::int32_t FB::*, std::uint16_t FB::*,
-                            double FB::*, Source FB::*>;
+                            double FB::*, Source FB::*, CamReference FB::*>;
 
 template <typename FB>
 struct Parameter {
@@ -79,6 +87,8 @@ constexpr ParameterType type_of() {
     return ParameterType::kWord;
   } else if constexpr (std::is_same_v<T, Source>) {
     return ParameterType::kTechnologyObject;
+  } else if constexpr (std::is_same_v<T, CamReference>) {
+    return ParameterType::kCam;
   } else {
     static_assert(std::is_same_v<T, double>);
     return ParameterType::kLreal;
@@ -109,7 +119,7 @@ class InstanceOf final : public Instance {
           using T = std::remove_reference_t<decltype(fb_.*member)>;
           if constexpr (std::is_same_v<T, bool>) {
             fb_.*member = value != 0.0;
-          } else if constexpr (std::is_same_v<T, Source>) {
+          } else if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference>) {
             // set_object() sets these
           } else {
             fb_.*member = static_cast<T>(value);
@@ -121,7 +131,7 @@ class InstanceOf final : public Instance {
     return std::visit(
         [&](auto member) {
           using T = std::remove_cv_t<std::remove_reference_t<decltype(fb_.*member)>>;
-          if constexpr (std::is_same_v<T, Source>) {
+          if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference>) {
             return std::numeric_limits<double>::quiet_NaN();
           } else {
             return static_cast<double>(fb_.*member);
@@ -129,8 +139,10 @@ class InstanceOf final : public Instance {
         },
         table_[parameter].member);
   }
-  void set_object(std::size_t parameter, Source object) noexcept override {
-    if (auto* member = std::get_if<Source FB::*>(&table_[parameter].member)) fb_.** member = object;
+  void set_object(std::size_t parameter, const MachineObject& object) noexcept override {
+    if (auto* member = std::get_if<Source FB::*>(&table_[parameter].member))
+      fb_.** member = object.leading_value_source();
+    if (auto* member = std::get_if<CamReference FB::*>(&table_[parameter].member)) fb_.** member = object.cam;
   }
   // The loader creates an instance only for a TO of the instruction's axis type.
   void call(techobjects::TechnologyObject& object) noexcept override {
@@ -374,12 +386,12 @@ const auto kGearInPos = std::to_array<Parameter<GearInPos>>({
     in("Deceleration", &GearInPos::Deceleration),
     in("Jerk", &GearInPos::Jerk),
     in("SyncDirection", &GearInPos::SyncDirection),
-    out("StartSync", &GearInPos::StartSync),
-    out("InSync", &GearInPos::InSync),
-    out("Busy", &GearInPos::Busy),
-    out("CommandAborted", &GearInPos::CommandAborted),
-    out("Error", &GearInPos::Error),
-    out("ErrorID", &GearInPos::ErrorID),
+    out<GearInPos, bool>("StartSync", &GearInPos::StartSync),
+    out<GearInPos, bool>("InSync", &GearInPos::InSync),
+    out<GearInPos, bool>("Busy", &GearInPos::Busy),
+    out<GearInPos, bool>("CommandAborted", &GearInPos::CommandAborted),
+    out<GearInPos, bool>("Error", &GearInPos::Error),
+    out<GearInPos, std::uint16_t>("ErrorID", &GearInPos::ErrorID),
 });
 
 using GearInVelocity = instructions::MC_GearInVelocity<SynchronousAxis>;
@@ -402,21 +414,51 @@ const auto kGearInVelocity = std::to_array<Parameter<GearInVelocity>>({
     out("ErrorID", &GearInVelocity::ErrorID),
 });
 
-using GearOut = instructions::MC_GearOut<SynchronousAxis>;
-const auto kGearOut = std::to_array<Parameter<GearOut>>({
-    in("Execute", &GearOut::Execute),
-    in("SlavePosition", &GearOut::SlavePosition),
-    in("SyncProfileReference", &GearOut::SyncProfileReference),
-    in("MasterStopDistance", &GearOut::MasterStopDistance),
-    in("Deceleration", &GearOut::Deceleration),
-    in("Jerk", &GearOut::Jerk),
-    in("SyncOutDirection", &GearOut::SyncOutDirection),
-    out("StartSyncOut", &GearOut::StartSyncOut),
-    out("Done", &GearOut::Done),
-    out("Busy", &GearOut::Busy),
-    out("CommandAborted", &GearOut::CommandAborted),
-    out("Error", &GearOut::Error),
-    out("ErrorID", &GearOut::ErrorID),
+// MC_GearOut and MC_CamOut: one instruction class, one table (mc_gear_out.hpp).
+template <bool kCamming>
+using SyncOut = instructions::detail::SynchronousOut<SynchronousAxis, kCamming>;
+template <bool kCamming>
+const auto kSyncOut = std::to_array<Parameter<SyncOut<kCamming>>>({
+    in("Execute", &SyncOut<kCamming>::Execute),
+    in("SlavePosition", &SyncOut<kCamming>::SlavePosition),
+    in("SyncProfileReference", &SyncOut<kCamming>::SyncProfileReference),
+    in("MasterStopDistance", &SyncOut<kCamming>::MasterStopDistance),
+    in("Deceleration", &SyncOut<kCamming>::Deceleration),
+    in("Jerk", &SyncOut<kCamming>::Jerk),
+    in("SyncOutDirection", &SyncOut<kCamming>::SyncOutDirection),
+    out("StartSyncOut", &SyncOut<kCamming>::StartSyncOut),
+    out("Done", &SyncOut<kCamming>::Done),
+    out("Busy", &SyncOut<kCamming>::Busy),
+    out("CommandAborted", &SyncOut<kCamming>::CommandAborted),
+    out("Error", &SyncOut<kCamming>::Error),
+    out("ErrorID", &SyncOut<kCamming>::ErrorID),
+});
+
+using CamIn = instructions::MC_CamIn<SynchronousAxis>;
+const auto kCamIn = std::to_array<Parameter<CamIn>>({
+    in("Master", &CamIn::Master),
+    in("Cam", &CamIn::Cam),
+    in("Execute", &CamIn::Execute),
+    in("MasterOffset", &CamIn::MasterOffset),
+    in("SlaveOffset", &CamIn::SlaveOffset),
+    in("MasterScaling", &CamIn::MasterScaling),
+    in("SlaveScaling", &CamIn::SlaveScaling),
+    in("MasterSyncPosition", &CamIn::MasterSyncPosition),
+    in("SyncProfileReference", &CamIn::SyncProfileReference),
+    in("MasterStartDistance", &CamIn::MasterStartDistance),
+    in("Velocity", &CamIn::Velocity),
+    in("Acceleration", &CamIn::Acceleration),
+    in("Deceleration", &CamIn::Deceleration),
+    in("Jerk", &CamIn::Jerk),
+    in("ApplicationMode", &CamIn::ApplicationMode),
+    in("SyncDirection", &CamIn::SyncDirection),
+    out<CamIn, bool>("StartSync", &CamIn::StartSync),
+    out<CamIn, bool>("InSync", &CamIn::InSync),
+    out<CamIn, bool>("Busy", &CamIn::Busy),
+    out<CamIn, bool>("CommandAborted", &CamIn::CommandAborted),
+    out<CamIn, bool>("Error", &CamIn::Error),
+    out<CamIn, std::uint16_t>("ErrorID", &CamIn::ErrorID),
+    out("EndOfProfile", &CamIn::EndOfProfile),
 });
 
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
@@ -471,11 +513,11 @@ constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
     "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 16> kSynchronousAxisInstructions{
-    "MC_Power",        "MC_Reset",          "MC_Home",           "MC_Halt",
-    "MC_MoveAbsolute", "MC_MoveRelative",   "MC_MoveVelocity",   "MC_MoveJog",
-    "MC_Stop",         "MC_SetAxisSTW",     "MC_WriteParameter", "MC_GearIn",
-    "MC_GearInPos",    "MC_GearInVelocity", "MC_GearOut",        "MC_TorqueLimiting",
+constexpr std::array<std::string_view, 18> kSynchronousAxisInstructions{
+    "MC_Power",          "MC_Reset",        "MC_Home",           "MC_Halt",           "MC_MoveAbsolute",
+    "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",        "MC_Stop",           "MC_SetAxisSTW",
+    "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos",      "MC_GearInVelocity", "MC_GearOut",
+    "MC_CamIn",          "MC_CamOut",       "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
@@ -483,25 +525,11 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 19> kPlannedInstructions{
-    "MC_CopyCamData",
-    "MC_MoveSuperimposed",
-    "MC_HaltSuperimposed",
-    "MC_TorqueAdditive",
-    "MC_TorqueRange",
-    "MC_CamIn",
-    "MC_CamOut",
-    "MC_PhasingAbsolute",
-    "MC_PhasingRelative",
-    "MC_OffsetAbsolute",
-    "MC_OffsetRelative",
-    "MC_MeasuringInput",
-    "MC_MeasuringInputCyclic",
-    "MC_AbortMeasuringInput",
-    "MC_OutputCam",
-    "MC_CamTrack",
-    "MC_ReadParameter",
-    "MC_MotionInVelocity",
+constexpr std::array<std::string_view, 17> kPlannedInstructions{
+    "MC_CopyCamData",      "MC_MoveSuperimposed", "MC_HaltSuperimposed",     "MC_TorqueAdditive",
+    "MC_TorqueRange",      "MC_PhasingAbsolute",  "MC_PhasingRelative",      "MC_OffsetAbsolute",
+    "MC_OffsetRelative",   "MC_MeasuringInput",   "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput",
+    "MC_OutputCam",        "MC_CamTrack",         "MC_ReadParameter",        "MC_MotionInVelocity",
     "MC_MotionInPosition",
 };
 
@@ -521,6 +549,8 @@ std::string_view to_string(ParameterType type) noexcept {
       return "LREAL";
     case ParameterType::kTechnologyObject:
       return "TO";
+    case ParameterType::kCam:
+      return "TO_Cam";
   }
   return "?";
 }
@@ -593,7 +623,9 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_GearIn") return make(kGearIn);
       if (instruction == "MC_GearInPos") return make(kGearInPos);
       if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
-      if (instruction == "MC_GearOut") return make(kGearOut);
+      if (instruction == "MC_GearOut") return make(kSyncOut<false>);
+      if (instruction == "MC_CamIn") return make(kCamIn);
+      if (instruction == "MC_CamOut") return make(kSyncOut<true>);
       return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -19,8 +19,9 @@
 namespace tomc::scenario::detail {
 
 // The PLC data types of instruction parameters.
-// kTechnologyObject: an input naming a TO (MC_GearIn.Master), given in JSON as its name.
-enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal, kTechnologyObject };
+// kTechnologyObject: an input naming a leading value (MC_GearIn.Master), kCam one naming a cam
+// (MC_CamIn.Cam), both given in JSON as the TO's name.
+enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal, kTechnologyObject, kCam };
 std::string_view to_string(ParameterType type) noexcept;
 
 struct ParameterInfo {
@@ -35,8 +36,9 @@ class Instance {
   virtual std::span<const ParameterInfo> parameters() const noexcept = 0;
   // Index into parameters(); already validated values only (the loader checked type and range).
   virtual void set(std::size_t parameter, double value) noexcept = 0;
-  virtual double get(std::size_t parameter) const noexcept = 0;  // NaN for a kTechnologyObject parameter
-  virtual void set_object(std::size_t parameter, const techobjects::LeadingValueSource* object) noexcept = 0;
+  virtual double get(std::size_t parameter) const noexcept = 0;  // NaN for a TO parameter
+  // A kTechnologyObject or kCam parameter: the object as a leading value or as a cam.
+  virtual void set_object(std::size_t parameter, const MachineObject& object) noexcept = 0;
   // `object` is of the TO type the instance was made for (make_instance).
   virtual void call(techobjects::TechnologyObject& object) noexcept = 0;
 

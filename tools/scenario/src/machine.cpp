@@ -516,7 +516,9 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
           entry.object = entry.external_encoder;
           break;
         case TechnologyObjectKind::kCam:
-          entry.cam = &runtime.emplace<to::Cam>(entry.name, cam_variant);
+          // Its number (StatusSynchronizedMotion.ActualCam): the 1-based place in the file (decision C8).
+          entry.cam = &runtime.emplace<to::Cam>(entry.name, cam_variant,
+                                                static_cast<std::uint16_t>(existing.size() + 1));
           entry.object = entry.cam;
           (void)entry.cam->write("InterpolationSettings.InterpolationMode",
                                  cam_settings->InterpolationSettings.InterpolationMode);

@@ -79,6 +79,7 @@ Format format_of(detail::ParameterType type) {
     case detail::ParameterType::kDint:
     case detail::ParameterType::kWord:
     case detail::ParameterType::kTechnologyObject:
+    case detail::ParameterType::kCam:
       break;
   }
   return Format::kInteger;
@@ -674,15 +675,19 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
       case detail::ParameterType::kLreal:
         number = detail::read_number(value, path, problems);
         break;
-      case detail::ParameterType::kTechnologyObject: {
-        // A TO by name (MC_GearIn.Master): a leading value of the scenario (spec 07 §1.2).
+      case detail::ParameterType::kTechnologyObject:
+      case detail::ParameterType::kCam: {
+        // A TO by name: a leading value of the scenario (MC_GearIn.Master, spec 07 §1.2) or a cam of it
+        // (MC_CamIn.Cam, spec 07 §3.4).
+        const bool cam = info.type == detail::ParameterType::kCam;
         if (auto target = detail::read_string(value, path, problems)) {
           const auto index = find_object(*target);
           if (!index) {
             if (!objects_broken) problems.add(path, "unknown technology object '" + *target + "'");
-          } else if (objects[*index].built && objects[*index].leading_value_source() == nullptr) {
+          } else if (objects[*index].built && (cam ? objects[*index].cam == nullptr
+                                                   : objects[*index].leading_value_source() == nullptr)) {
             problems.add(path, "'" + *target + "' is a " + std::string(objects[*index].type_name()) +
-                                   ", which cannot be a leading value");
+                                   (cam ? ", not a cam" : ", which cannot be a leading value"));
           } else {
             event.object_inputs.emplace_back(*parameter, *index);
           }
@@ -954,7 +959,8 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       return std::nullopt;
     }
     const Instance* fb = entry.fb.get();
-    if (fb->parameters()[*parameter].type == detail::ParameterType::kTechnologyObject) {
+    if (fb->parameters()[*parameter].type == detail::ParameterType::kTechnologyObject ||
+        fb->parameters()[*parameter].type == detail::ParameterType::kCam) {
       problems.add(path, "'" + std::string(rest) + "' names a technology object; it cannot be traced");
       return std::nullopt;
     }
@@ -983,7 +989,7 @@ void Scenario::Impl::apply(const Event& event) noexcept {
       for (const auto& [parameter, value] : event.inputs)
         fb.set(parameter, value);
       for (const auto& [parameter, object] : event.object_inputs)
-        fb.set_object(parameter, objects[object].leading_value_source());
+        fb.set_object(parameter, objects[object]);
       break;
     }
     case Event::Kind::kSet:

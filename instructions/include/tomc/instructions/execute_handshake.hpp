@@ -114,4 +114,25 @@ void show_outputs(Instruction& fb, const HandshakeOutputs& o) noexcept {
   fb.ErrorID = o.ErrorID;
 }
 
+// The outputs of a synchronization instruction without Done (MC_GearInPos, MC_CamIn; spec 07 §2.2, §3.4).
+struct SyncInOutputs {
+  bool StartSync = false;
+  bool InSync = false;
+  bool Busy = false;
+  bool CommandAborted = false;
+  bool Error = false;
+  std::uint16_t ErrorID = 0;
+};
+
+// Sets them from the handshake and the job's synchronous outputs `s`.
+template <typename Instruction, typename SyncOutputs>
+void show_sync_in_outputs(Instruction& fb, const HandshakeOutputs& o, const SyncOutputs& s) noexcept {
+  fb.Busy = o.Busy;
+  fb.CommandAborted = o.CommandAborted;
+  fb.Error = o.Error;
+  fb.ErrorID = o.ErrorID;
+  fb.StartSync = fb.Busy && s.StartSync && !s.InSync;
+  fb.InSync = fb.Busy && s.InSync;
+}
+
 }  // namespace tomc::instructions

@@ -9,7 +9,7 @@
 namespace tomc::instructions {
 
 template <typename Slave>
-struct MC_GearInPos {
+struct MC_GearInPos : SyncInOutputs {  // outputs: StartSync, InSync, Busy, CommandAborted, Error, ErrorID
   const techobjects::LeadingValueSource* Master = nullptr;
   bool Execute = false;
   std::int32_t RatioNumerator = 1;
@@ -23,12 +23,6 @@ struct MC_GearInPos {
   double Deceleration = -1.0;
   double Jerk = -1.0;
   std::int32_t SyncDirection = 3;
-  bool StartSync = false;
-  bool InSync = false;
-  bool Busy = false;
-  bool CommandAborted = false;
-  bool Error = false;
-  std::uint16_t ErrorID = 0;
 
   void operator()(Slave& slave) noexcept {
     handshake_.call(
@@ -40,14 +34,7 @@ struct MC_GearInPos {
                                            Velocity, Acceleration, Deceleration, Jerk, SyncDirection});
         },
         [&](techobjects::JobId id) { return slave.job_status(id); });
-    const auto& o = handshake_.outputs();
-    Busy = o.Busy;
-    CommandAborted = o.CommandAborted;
-    Error = o.Error;
-    ErrorID = o.ErrorID;
-    const auto s = slave.sync_outputs(handshake_.job());
-    StartSync = Busy && s.StartSync && !s.InSync;
-    InSync = Busy && s.InSync;
+    show_sync_in_outputs(*this, handshake_.outputs(), slave.sync_outputs(handshake_.job()));
   }
 
  private:

@@ -1,6 +1,7 @@
 #pragma once
 // MC_GearOut (spec 07 §2.4): desynchronize a gearing: pending until the start condition, StartSyncOut while
-// the follower stops at SlavePosition, Done at standstill there.
+// the follower stops at SlavePosition, Done at standstill there. MC_CamOut (spec 07 §3.5) has the same
+// parameters and behaviour for a camming: both are the one desynchronization instruction below.
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
@@ -8,8 +9,10 @@
 
 namespace tomc::instructions {
 
-template <typename Slave>
-struct MC_GearOut {
+namespace detail {
+
+template <typename Slave, bool kCamming>
+struct SynchronousOut {
   bool Execute = false;
   double SlavePosition = 0.0;
   std::int32_t SyncProfileReference = 1;
@@ -28,8 +31,13 @@ struct MC_GearOut {
     handshake_.call(
         Execute,
         [&] {
-          return slave.gear_out(techobjects::GearOutInputs{
-              SlavePosition, SyncProfileReference, MasterStopDistance, Deceleration, Jerk, SyncOutDirection});
+          const techobjects::GearOutInputs in{
+              SlavePosition, SyncProfileReference, MasterStopDistance, Deceleration, Jerk, SyncOutDirection};
+          if constexpr (kCamming) {
+            return slave.cam_out(in);
+          } else {
+            return slave.gear_out(in);
+          }
         },
         [&](techobjects::JobId id) { return slave.job_status(id); });
     show_outputs(*this, handshake_.outputs());
@@ -39,5 +47,12 @@ struct MC_GearOut {
  private:
   ExecuteHandshake handshake_;
 };
+
+}  // namespace detail
+
+template <typename Slave>
+struct MC_GearOut : detail::SynchronousOut<Slave, false> {};
+template <typename Slave>
+struct MC_CamOut : detail::SynchronousOut<Slave, true> {};
 
 }  // namespace tomc::instructions

@@ -64,6 +64,7 @@ inline constexpr std::uint32_t kAlarmHomingFailed = 560;   // homing could not b
 inline constexpr std::uint32_t kAlarmLeadingAxisDefective = 601;         // spec 07 §1.10 (ALM8)
 inline constexpr std::uint32_t kAlarmLeaderNotPositionControlled = 603;  // spec 07 §1.10
 inline constexpr std::uint32_t kAlarmSynchronizationError = 608;  // leading value reversed, spec 07 §1.10
+inline constexpr std::uint32_t kAlarmCamNotInterpolated = 612;    // camming with such a cam, spec 07 §3.2
 
 struct PendingAlarm {
   std::uint32_t number = 0;

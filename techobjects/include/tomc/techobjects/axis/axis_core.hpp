@@ -45,6 +45,8 @@ enum class AxisJobKind : std::uint8_t {
   kGearInPos,       // MC_GearInPos, once synchronization started
   kGearInVelocity,  // MC_GearInVelocity
   kGearOut,         // MC_GearOut, once desynchronization started
+  kCamIn,           // MC_CamIn
+  kCamOut,          // MC_CamOut, once desynchronization started
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).

@@ -19,7 +19,9 @@ inline constexpr std::uint16_t kLifebeatExpired = 0x8013;     // the panel's lif
 inline constexpr std::uint16_t kInvalidRatioNumerator = 0x8017;    // RatioNumerator = 0
 inline constexpr std::uint16_t kInvalidRatioDenominator = 0x8018;  // RatioDenominator < 1
 inline constexpr std::uint16_t kRecursiveLeadingValue = 0x8019;    // the follower leads its own leader
-// Cams (spec 07 §1.10, §3.2, §3.6; ALM8):
+// Cams and camming (spec 07 §1.10, §3.2–§3.6; ALM8):
+inline constexpr std::uint16_t kInvalidMasterOffset = 0x8021;   // MasterOffset not finite
+inline constexpr std::uint16_t kInvalidSlaveOffset = 0x8022;    // SlaveOffset not finite
 inline constexpr std::uint16_t kInvalidMasterScaling = 0x8023;  // MasterScaling = 0.0 (or not finite)
 inline constexpr std::uint16_t kInvalidSlaveScaling = 0x8024;   // SlaveScaling unusable (inversion: 0.0)
 inline constexpr std::uint16_t kInvalidApproachValue = 0x8062;  // MC_GetCamLeadingValue
@@ -32,11 +34,15 @@ inline constexpr std::uint16_t kCamEmpty = 0x80AA;    // MC_InterpolateCam: no v
 inline constexpr std::uint16_t kCamInUse = 0x80AB;    // MC_InterpolateCam: the cam is used by camming
 inline constexpr std::uint16_t kCamInvalid = 0x80AC;  // MC_InterpolateCam: the elements make no cam
 inline constexpr std::uint16_t kInvalidMasterStartDistance =
-    0x8026;  // MasterStartDistance / MasterStopDistance
+    0x8026;                                                       // MasterStartDistance / MasterStopDistance
+inline constexpr std::uint16_t kInvalidApplicationMode = 0x8027;  // MC_CamIn.ApplicationMode not 0...2
 inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
 inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
-inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;   // MC_GearOut stop position not reachable
-inline constexpr std::uint16_t kNoGearing = 0x8077;              // MC_GearOut without MC_GearIn/GearInPos
+inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;  // MC_GearOut stop position not reachable
+inline constexpr std::uint16_t kNoGearing = 0x8077;             // MC_GearOut without MC_GearIn/GearInPos
+inline constexpr std::uint16_t kNoCamming = 0x8078;             // MC_CamOut without MC_CamIn
+inline constexpr std::uint16_t kNoActiveCamming = 0x808B;       // MC_CamIn profile 5 without active camming
+inline constexpr std::uint16_t kOutsideCam = 0x80AD;  // MC_CamIn sync position / leader outside the cam
 inline constexpr std::uint16_t kHomingDuringGearInPos = 0x80A1;  // MC_Home while MC_GearInPos is active
 // tomc's own (spec 03 §5 [IMPL]):
 inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"

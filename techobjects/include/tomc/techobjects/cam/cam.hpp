@@ -39,7 +39,9 @@ struct CopyCamDataInputs {
 
 class Cam final : public TechnologyObject {
  public:
-  explicit Cam(std::string name, CamVariant variant = CamVariant::kCam);
+  // `number` stands for the cam's DB number, which StatusSynchronizedMotion.ActualCam of a follower shows
+  // (decision C8); machine files give each TO its 1-based place in the file.
+  explicit Cam(std::string name, CamVariant variant = CamVariant::kCam, std::uint16_t number = 1);
   Cam(const Cam&) = delete;  // followers keep a reference; the profile's reserved capacity is not copied
   Cam& operator=(const Cam&) = delete;
 
@@ -49,6 +51,7 @@ class Cam final : public TechnologyObject {
   void interpolate(const CycleClock&) noexcept override {}
 
   CamVariant variant() const noexcept { return variant_; }
+  std::uint16_t number() const noexcept { return number_; }
   const CamData& data() const noexcept { return db_; }
   const CamProfile& profile() const noexcept { return profile_; }
   bool interpolated() const noexcept { return status().test(CamStatusWordBit::kInterpolated); }
@@ -86,6 +89,7 @@ class Cam final : public TechnologyObject {
   JobId next_job() noexcept { return ++last_job_; }
 
   std::string name_;
+  std::uint16_t number_;
   CamVariant variant_;
   CamData db_;
   CamProfile profile_;

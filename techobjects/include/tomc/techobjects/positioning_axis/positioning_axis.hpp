@@ -184,7 +184,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
 
   static constexpr bool synchronous_kind(JobKind k) noexcept {
     return k == JobKind::kGearIn || k == JobKind::kGearInPos || k == JobKind::kGearInVelocity ||
-           k == JobKind::kGearOut;
+           k == JobKind::kGearOut || k == JobKind::kCamIn || k == JobKind::kCamOut;
   }
 
   // ---- the synchronous axis' slot (synchronous_slot.hpp; empty on a positioning axis) ----

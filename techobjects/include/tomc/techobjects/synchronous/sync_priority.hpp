@@ -5,6 +5,8 @@
 // jobs) it decides every job of a synchronous axis.
 
 #include <cstdint>
+#include <span>
+#include <string_view>
 
 #include "tomc/techobjects/axis/job_priority.hpp"
 
@@ -42,6 +44,24 @@ enum class NewSyncRow : std::uint8_t {
   kSyncOutActive,   // MC_GearOut / MC_CamOut active
 };
 inline constexpr std::size_t kNewSyncRowCount = 14;
+
+// The two families of footnote 7: MC_GearOut affects only gearing jobs, MC_CamOut only camming jobs.
+enum class SyncFamily : std::uint8_t { kGearing, kCamming };
+
+// Where each synchronous instruction stands in the matrix, gearing's and camming's side by side (spec 07
+// §5.1): its rows as a new job and its columns as a running job, pending (waiting for its start) and active.
+// MC_GearIn and MC_GearInVelocity are never pending; MC_GearInVelocity has a column of its own.
+struct SyncInstructionPlace {
+  std::string_view instruction;
+  SyncFamily family;
+  NewSyncRow pending_row;
+  NewSyncRow active_row;
+  RunningSyncJob pending_column;
+  RunningSyncJob active_column;
+};
+std::span<const SyncInstructionPlace> sync_instruction_places() noexcept;
+// The place of one instruction ("MC_CamIn"); nullptr for a name that is not in the table.
+const SyncInstructionPlace* find_sync_instruction(std::string_view instruction) noexcept;
 
 // A cell: "-", "A", "N", and the footnoted cells ("-/N" footnote 6: no effect if the follower is
 // position-controlled, else reject; "A6": abort if position-controlled, else reject).

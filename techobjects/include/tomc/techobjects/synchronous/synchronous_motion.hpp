@@ -29,6 +29,11 @@ class LeaderDomainBlend {
   // Start at leader position x_a with leader velocity/acceleration (v_a, a_a) and the follower state.
   void start(double x_a, double length, double x_target, double y_target, double slope,
              const MotionState& follower, double leader_velocity, double leader_acceleration) noexcept;
+  // The same blend onto any target function Y (camming, spec 07 §6.4): given Y, Y', Y'' at x_a, the blend
+  // is only the deviation y − Y(x) (the line is 0); the caller adds the target's own state.
+  void start_deviation(double x_a, double length, double target, double target_slope, double target_curvature,
+                       const MotionState& follower, double leader_velocity,
+                       double leader_acceleration) noexcept;
   // The follower at leader state (x, v_x, a_x). Beyond ξ = 1 the line itself.
   MotionState at(double x, double v_x, double a_x) const noexcept;
   // Fraction of the leading-value distance covered (0 ... 1, clamped).
@@ -36,6 +41,8 @@ class LeaderDomainBlend {
   double line(double x) const noexcept { return y_target_ + slope_ * (x - x_target_); }
 
  private:
+  void deviate(const MotionState& follower, double v_a, double a_a, double y, double dy, double ddy) noexcept;
+
   double x_a_ = 0.0;
   double length_ = 1.0;
   double x_target_ = 0.0;

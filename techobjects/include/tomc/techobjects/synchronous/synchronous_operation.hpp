@@ -2,9 +2,11 @@
 // The synchronous operation of a synchronous axis (spec 07 §1.8, §2, §5, §6): the component that
 // TO_SynchronousAxis adds to its positioning axis (issue 14) through the axis' synchronous slot. It owns the
 // leading-value interconnections, the gearing jobs (MC_GearIn, MC_GearInPos, MC_GearInVelocity, MC_GearOut),
-// the §9.19.2 decisions against them (sync_priority.hpp), the chain "function leading value -> synchronous
-// function -> following value" and <TO>.StatusSynchronizedMotion. It reaches its axis only through the
-// FollowingAxis port. Camming, phasing and offsets join here as further synchronous functions.
+// the camming jobs (MC_CamIn, MC_CamOut; camming.cpp), the §9.19.2 decisions against them
+// (sync_priority.hpp), the chain "function leading value -> synchronous function -> following value" and
+// <TO>.StatusSynchronizedMotion. It reaches its axis only through the FollowingAxis port. Gearing and camming
+// share the pending/active/desynchronizing job states, the leader-domain blend and the desynchronization;
+// only the synchronous function differs (a gear line or a cam). Phasing and offsets join here next.
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -13,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tomc/techobjects/cam/cam.hpp"
+#include "tomc/techobjects/cam/cam_synchronous_function.hpp"
 #include "tomc/techobjects/positioning_axis/synchronous_slot.hpp"
 #include "tomc/techobjects/synchronous/following_axis.hpp"
 #include "tomc/techobjects/synchronous/leading_value.hpp"
@@ -70,21 +74,53 @@ struct GearOutInputs {
   std::int32_t SyncOutDirection = 3;  // 1 only while moving positive, 2 only negative, 3 current direction
 };
 
-// Outputs beyond the handshake (spec 07 §2): InGear/InSync, StartSync, StartSyncOut, ContinuousUpdateActive.
+// MC_CamIn (spec 07 §3.4, V8 parameter list). Negative dynamics = DynamicDefaults (profile 0 only).
+struct CamInInputs {
+  const LeadingValueSource* Master = nullptr;
+  techobjects::Cam* Cam = nullptr;  // interpolated; in use (StatusWord.X0) while the job runs or waits
+  double MasterOffset = 0.0;        // profiles 0, 1, 3, 4
+  double SlaveOffset = 0.0;         // profiles 0, 1, 3, 4, 6
+  double MasterScaling = 1.0;
+  double SlaveScaling = 1.0;
+  double MasterSyncPosition = 0.0;        // leader units from the scaled cam start
+  std::int32_t SyncProfileReference = 1;  // 0…6 (spec 07 §3.4 table)
+  double MasterStartDistance = 0.0;       // profiles 1, 3, 4, 6: > 0
+  double Velocity = -1.0;                 // profile 0
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  std::int32_t ApplicationMode = 0;  // 0 not cyclic, 1 cyclic, 2 cyclic appending
+  std::int32_t SyncDirection = 3;    // modulo follower: 1 positive, 2 negative, 3 shortest
+};
+// MC_CamOut has MC_GearOut's parameters (spec 07 §3.5).
+using CamOutInputs = GearOutInputs;
+
+// Outputs beyond the handshake (spec 07 §2, §3.4): InGear/InSync, StartSync, StartSyncOut,
+// ContinuousUpdateActive, and the cam ends a camming job passed (MC_CamIn.EndOfProfile shows a new count for
+// one call, so that a user program slower than MC_Interpolator sees every end).
 struct SyncJobOutputs {
   bool StartSync = false;
   bool InSync = false;
   bool StartSyncOut = false;
   bool ContinuousUpdateActive = false;
+  std::uint32_t EndOfProfileCount = 0;
 };
 
 // <TO>.StatusSynchronizedMotion (spec 07 §1.9; the struct is not defined in the V10 manual).
 struct StatusSynchronizedMotion {
-  std::int32_t FunctionState = 0;         // 0 none, 1 GearIn, 2 GearInPos, 4 GearOut, 6 GearInVelocity
-  std::int32_t WaitingFunctionState = 0;  // 0 none, 2 GearInPos waiting, 4 GearOut waiting
+  std::int32_t FunctionState =
+      0;  // 0 none, 1 GearIn, 2 GearInPos, 3 CamIn, 4 GearOut, 5 CamOut, 6 GearInVel.
+  std::int32_t WaitingFunctionState = 0;  // 0 none, 2 GearInPos, 3 CamIn, 4 GearOut, 5 CamOut waiting
   double PhaseShift = 0.0;
   std::uint16_t ActualMaster = 0;  // tomc: 1-based index of the interconnection in use; 0 = none
-  double Offset = 0.0;
+  std::uint16_t ActualCam = 0;     // tomc: Cam::number() of the cam in use; 0 = none (decision C8)
+  // The cam in use with its offsets and scalings, automatic offsets of profiles 2, 5, 6 included (spec 07
+  // §1.9).
+  double MasterOffset = 0.0;
+  double MasterScaling = 1.0;
+  double SlaveOffset = 0.0;
+  double SlaveScaling = 1.0;
+  double Offset = 0.0;  // following value offset, the camming's SlaveOffset included
   struct {
     double Position = 0.0;
     double Velocity = 0.0;
@@ -118,6 +154,8 @@ class SynchronousOperation final : public SynchronousSlot {
   Submission gear_in_pos(const GearInPosInputs& in) noexcept;
   Submission gear_in_velocity(const GearInVelocityInputs& in) noexcept;
   Submission gear_out(const GearOutInputs& in) noexcept;
+  Submission cam_in(const CamInInputs& in) noexcept;    // camming.cpp
+  Submission cam_out(const CamOutInputs& in) noexcept;  // camming.cpp
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
 
@@ -136,6 +174,15 @@ class SynchronousOperation final : public SynchronousSlot {
  private:
   using JobKind = AxisJobKind;
   enum class Phase : std::uint8_t { kSynchronizing, kBlend, kSynchronous };
+  // What a camming job adds to a synchronous job: the cam (held in use) and its synchronous function, whose
+  // MasterOffset is in the leader's continuous coordinates.
+  struct CamJob {
+    Cam* cam = nullptr;
+    CamSynchronousFunction function{};
+    double shown_master_offset = 0.0;  // StatusSynchronizedMotion.MasterOffset: a modulo leader's range
+    double master_sync = 0.0;          // MasterSyncPosition as given (profiles 2, 5: placed when starting)
+    std::uint32_t ends = 0;            // cam ends passed (EndOfProfileCount)
+  };
   struct ActiveSync {
     JobId id = 0;
     JobKind kind = JobKind::kNone;
@@ -151,9 +198,11 @@ class SynchronousOperation final : public SynchronousSlot {
     bool continuous_update = false;
     bool start_sync = false;
     bool in_sync = false;
+    CamJob cam{};  // kind kCamIn
   };
-  struct PendingSyncIn {  // MC_GearInPos waiting for its start (WaitingFunctionState 2)
+  struct PendingSyncIn {  // MC_GearInPos / MC_CamIn waiting for its start (WaitingFunctionState 2 / 3)
     JobId id = 0;
+    JobKind kind = JobKind::kGearInPos;
     int source = -1;
     std::int32_t numerator = 1;
     std::int32_t denominator = 1;
@@ -169,9 +218,11 @@ class SynchronousOperation final : public SynchronousSlot {
     MotionState sized_follower{};
     double sized_length = 0.0;
     bool armed = false;  // profile 0: the leader was before the (moving) start position
+    CamJob cam{};        // kind kCamIn
   };
-  struct Desync {  // MC_GearOut
+  struct Desync {  // MC_GearOut / MC_CamOut
     JobId id = 0;
+    JobKind kind = JobKind::kGearOut;
     bool active = false;
     std::int32_t profile = 1;
     double slave_position = 0.0;
@@ -202,7 +253,21 @@ class SynchronousOperation final : public SynchronousSlot {
                            double min_ahead) const noexcept;
   double choose_slave_sync(double slave_sync, std::int32_t direction,
                            double follower_end_estimate) const noexcept;
-  double sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader) const noexcept;
+  double sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader, double y_target,
+                              double slope) const noexcept;
+  bool profile0_start_crossed(PendingSyncIn& p, const LeadingValue& leader, double x_a) noexcept;
+  bool activate_pending(JobKind kind) noexcept;
+  Submission desynchronize(const GearOutInputs& in, JobKind kind) noexcept;
+  double function_slope(const LeadingValue& leader) const noexcept;
+  SyncFamily family_of(JobKind kind) const noexcept {
+    return kind == JobKind::kCamIn || kind == JobKind::kCamOut ? SyncFamily::kCamming : SyncFamily::kGearing;
+  }
+  // ---- camming (camming.cpp) ----
+  bool start_pending_cam(const LeadingValue& leader) noexcept;
+  void step_cam(const LeadingValue& leader) noexcept;
+  void release_cam(CamJob& job) noexcept;
+  MotionState cam_target(CamJob& job, double x, double v, double a) const noexcept;
+  double cam_sync_point(const CamJob& job) const noexcept;
 
   std::vector<LeadingValueInterconnection> interconnections_;
   std::vector<TechnologyObject*> leader_objects_;
@@ -214,6 +279,7 @@ class SynchronousOperation final : public SynchronousSlot {
   MotionState sync_setpoint_{};
   LeadingValue cycle_leader_{};  // the leading value run_synchronous() sampled in this MC_Interpolator
   int cycle_leader_source_ = -1;
+  SyncFamily new_job_family_ = SyncFamily::kGearing;  // of the desynchronization being arbitrated (fn. 7)
   StatusSynchronizedMotion status_{};
 
   FollowingAxis axis_;
