@@ -44,6 +44,7 @@
 #include "tomc/techobjects/position/passive_homing.hpp"
 #include "tomc/techobjects/position/position_control.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
+#include "tomc/techobjects/positioning_axis/synchronous_slot.hpp"
 #include "tomc/techobjects/runtime/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
@@ -121,6 +122,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   const AxisUnitFactors& units() const noexcept { return units_; }
 
  protected:
+  // A synchronous axis fills the slot once, at construction (synchronous_slot.hpp).
+  void attach_synchronous(SynchronousSlot& slot) noexcept { synchronous_ = &slot; }
+
+ private:
+  friend class FollowingAxis;  // the synchronous operation's port (synchronous/following_axis.hpp)
   using JobKind = AxisJobKind;
   // What drives the setpoint this cycle.
   enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
@@ -181,22 +187,25 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
            k == JobKind::kGearOut;
   }
 
-  // ---- hooks of the synchronous axis (no-ops on a positioning axis) ----
-  // The §9.19.2 row of a new job against the running synchronous jobs: 0 = proceed (aborts applied), else the
-  // ErrorID that rejects the new job. Called after the §9.19.1 check passed.
-  virtual std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
-    (void)row;
-    return 0;
+  // ---- the synchronous axis' slot (synchronous_slot.hpp; empty on a positioning axis) ----
+  std::uint16_t arbitrate_synchronous(NewJob row) noexcept {
+    return synchronous_ != nullptr ? synchronous_->arbitrate(row) : 0;
   }
-  // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
-  virtual void abort_synchronous(std::uint16_t error_id) noexcept { (void)error_id; }
-  // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
-  virtual void run_synchronous() noexcept {}
-  // The setpoint of Generator::kSynchronous for this cycle.
-  virtual MotionState synchronous_setpoint() noexcept { return setpoint_; }
-  // A following axis in synchronous operation stops at a software limit with maximum dynamics (spec 02 §4.5).
-  virtual bool following_in_synchronous_operation() const noexcept { return false; }
-  virtual void update_synchronous_status() noexcept {}
+  void abort_synchronous(std::uint16_t error_id) noexcept {
+    if (synchronous_ != nullptr) synchronous_->abort(error_id);
+  }
+  void run_synchronous() noexcept {
+    if (synchronous_ != nullptr) synchronous_->run();
+  }
+  MotionState synchronous_setpoint() const noexcept {
+    return synchronous_ != nullptr ? synchronous_->setpoint() : setpoint_;
+  }
+  bool following_in_synchronous_operation() const noexcept {
+    return synchronous_ != nullptr && synchronous_->following();
+  }
+  void update_synchronous_status() noexcept {
+    if (synchronous_ != nullptr) synchronous_->update_status();
+  }
 
   // a DIR/CAL write re-reads the components; a start value switching the dynamic filter on reserves it
   void written(std::string_view path) noexcept override;
@@ -339,6 +348,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
   bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
   bool drive_has_meldw_ = false;      // ... and MELDW
+
+  SynchronousSlot* synchronous_ = nullptr;
 };
 
 }  // namespace tomc::techobjects

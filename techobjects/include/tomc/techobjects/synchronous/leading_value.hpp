@@ -34,6 +34,9 @@ class LeadingValueSource {
   virtual ~LeadingValueSource() = default;
   virtual LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept = 0;
   virtual ModuloRange leading_value_modulo() const noexcept = 0;
+  // A following axis: the leading value its active synchronous job follows (spec 07 §1.2: a leader that
+  // follows its own follower would close a loop, 16#8019). nullptr for every other source.
+  virtual const LeadingValueSource* followed_leading_value() const noexcept { return nullptr; }
 };
 
 }  // namespace tomc::techobjects

@@ -2,107 +2,25 @@
 // TO_SynchronousAxis (spec 07 §1): everything of TO_PositioningAxis plus gearing to a leading value —
 // MC_GearIn, MC_GearInPos, MC_GearInVelocity, MC_GearOut — over the leading-value interconnections configured
 // at set-up (setpoint or actual-value coupling). The §9.19.2 matrix decides between synchronous and other
-// jobs (sync_priority.hpp); the motion laws are in synchronous_motion.hpp. Camming, phasing and offsets are
-// left for a later issue; the design keeps one "function leading value -> synchronous function -> following
-// value" chain (spec 07 §1.8) where they fit.
+// jobs (sync_priority.hpp); the motion laws are in synchronous_motion.hpp. The jobs live in the synchronous
+// operation component; camming, phasing and offsets join it as further synchronous functions (spec 07 §1.8).
 //
 // Leaders run before followers in every cycle (Runtime orders by leaders()), so a follower reads its leader's
 // values of the same MC_Interpolator cycle (spec 07 §6.1). Positions are continuous on both sides: a modulo
 // leader needs no unwrapping, and user positions in leader coordinates are mapped onto the next occurrence.
 
-#include <cstdint>
-#include <limits>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
-#include "tomc/techobjects/synchronous/leading_value.hpp"
-#include "tomc/techobjects/synchronous/sync_priority.hpp"
-#include "tomc/techobjects/synchronous/synchronous_motion.hpp"
+#include "tomc/techobjects/synchronous/synchronous_operation.hpp"
 
 namespace tomc::techobjects {
 
-// One configured possible leading value of the follower (spec 07 §1.2, "LeadingValueInterconnections").
-struct LeadingValueInterconnection {
-  TechnologyObject* object = nullptr;    // the leading TO (its place in the cycle)
-  LeadingValueSource* source = nullptr;  // the same TO as a leading value
-  LeadingValueCoupling coupling = LeadingValueCoupling::kSetpoint;
-};
-
-// Inputs of the gearing instructions (spec 07 §2, V8 parameter lists). Negative dynamics = DynamicDefaults.
-struct GearInInputs {
-  const LeadingValueSource* Master = nullptr;
-  std::int32_t RatioNumerator = 1;
-  std::int32_t RatioDenominator = 1;
-  double Acceleration = -1.0;
-  double Deceleration = -1.0;
-  double Jerk = -1.0;
-};
-struct GearInPosInputs {
-  const LeadingValueSource* Master = nullptr;
-  std::int32_t RatioNumerator = 1;
-  std::int32_t RatioDenominator = 1;
-  double MasterSyncPosition = 0.0;
-  double SlaveSyncPosition = 0.0;
-  std::int32_t SyncProfileReference = 1;  // 0 dynamic parameters, 1 leading value distance, 3 subsequent
-  double MasterStartDistance = 1.0;
-  double Velocity = -1.0;
-  double Acceleration = -1.0;
-  double Deceleration = -1.0;
-  double Jerk = -1.0;
-  std::int32_t SyncDirection = 3;  // modulo follower: 1 positive, 2 negative, 3 shortest
-};
-struct GearInVelocityInputs {
-  const LeadingValueSource* Master = nullptr;
-  std::int32_t RatioNumerator = 1;
-  std::int32_t RatioDenominator = 1;
-  bool ContinuousUpdate = false;
-  double Acceleration = -1.0;
-  double Deceleration = -1.0;
-  double Jerk = -1.0;
-  bool PositionControlled = false;
-};
-struct GearOutInputs {
-  double SlavePosition = 0.0;
-  std::int32_t SyncProfileReference = 1;  // 0 dynamic parameters, 1 leading value distance, 5 cancel pending
-  double MasterStopDistance = 0.0;
-  double Deceleration = -1.0;
-  double Jerk = -1.0;
-  std::int32_t SyncOutDirection = 3;  // 1 only while moving positive, 2 only negative, 3 current direction
-};
-
-// Outputs beyond the handshake (spec 07 §2): InGear/InSync, StartSync, StartSyncOut, ContinuousUpdateActive.
-struct SyncJobOutputs {
-  bool StartSync = false;
-  bool InSync = false;
-  bool StartSyncOut = false;
-  bool ContinuousUpdateActive = false;
-};
-
-// <TO>.StatusSynchronizedMotion (spec 07 §1.9; the struct is not defined in the V10 manual).
-struct StatusSynchronizedMotion {
-  std::int32_t FunctionState = 0;         // 0 none, 1 GearIn, 2 GearInPos, 4 GearOut, 6 GearInVelocity
-  std::int32_t WaitingFunctionState = 0;  // 0 none, 2 GearInPos waiting, 4 GearOut waiting
-  double PhaseShift = 0.0;
-  std::uint16_t ActualMaster = 0;  // tomc: 1-based index of the interconnection in use; 0 = none
-  double Offset = 0.0;
-  struct {
-    double Position = 0.0;
-    double Velocity = 0.0;
-    double Acceleration = 0.0;
-  } EffectiveLeadingValue;
-  struct {
-    double Position = 0.0;
-  } FunctionLeadingValue;
-  struct {
-    double Position = 0.0;
-    double Velocity = 0.0;
-    double Acceleration = 0.0;
-  } FunctionFollowingValue;
-  std::uint32_t StatusWord = 0;  // StatusSynchronizedMotionBit
-};
-
+// A positioning axis plus its synchronous operation (synchronous_operation.hpp), the component it plugs into
+// the axis' synchronous slot: the positioning axis is not opened up for it (issue 14).
 class SynchronousAxis final : public PositioningAxis {
  public:
   // `leaders`: the possible leading values (spec 07 §1.2). Throws std::invalid_argument for an
@@ -110,112 +28,34 @@ class SynchronousAxis final : public PositioningAxis {
   SynchronousAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
                   std::vector<LeadingValueInterconnection> leaders, const DriveConnectionConfig& drive = {});
 
-  std::span<TechnologyObject* const> leaders() const noexcept override { return leader_objects_; }
-  std::span<const LeadingValueInterconnection> interconnections() const noexcept { return interconnections_; }
+  std::span<TechnologyObject* const> leaders() const noexcept override { return operation_.leaders(); }
+  std::span<const LeadingValueInterconnection> interconnections() const noexcept {
+    return operation_.interconnections();
+  }
+  const LeadingValueSource* followed_leading_value() const noexcept override {
+    return operation_.followed_leading_value();
+  }
 
-  // ---- jobs ----
-  Submission gear_in(const GearInInputs& in) noexcept;
-  Submission gear_in_pos(const GearInPosInputs& in) noexcept;
-  Submission gear_in_velocity(const GearInVelocityInputs& in) noexcept;
-  Submission gear_out(const GearOutInputs& in) noexcept;
+  // ---- jobs (spec 07 §2) ----
+  Submission gear_in(const GearInInputs& in) noexcept { return operation_.gear_in(in); }
+  Submission gear_in_pos(const GearInPosInputs& in) noexcept { return operation_.gear_in_pos(in); }
+  Submission gear_in_velocity(const GearInVelocityInputs& in) noexcept {
+    return operation_.gear_in_velocity(in);
+  }
+  Submission gear_out(const GearOutInputs& in) noexcept { return operation_.gear_out(in); }
   // MC_GearInVelocity.ContinuousUpdate: the ratio of the running job, taken at once (spec 07 §2.3).
-  void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
-  SyncJobOutputs sync_outputs(JobId job) const noexcept;
+  void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept {
+    operation_.update_ratio(job, numerator, denominator);
+  }
+  SyncJobOutputs sync_outputs(JobId job) const noexcept { return operation_.sync_outputs(job); }
 
   // ---- the data block's synchronous part ----
-  const StatusSynchronizedMotion& synchronized_motion() const noexcept { return status_; }
+  const StatusSynchronizedMotion& synchronized_motion() const noexcept { return operation_.status(); }
   // As PositioningAxis::read, plus "StatusSynchronizedMotion.*".
   double read(std::string_view path) const noexcept;
 
- protected:
-  std::uint16_t arbitrate_synchronous(NewJob row) noexcept override;
-  void abort_synchronous(std::uint16_t error_id) noexcept override;
-  void run_synchronous() noexcept override;
-  MotionState synchronous_setpoint() noexcept override { return sync_setpoint_; }
-  bool following_in_synchronous_operation() const noexcept override;
-  void update_synchronous_status() noexcept override;
-
  private:
-  enum class Phase : std::uint8_t { kSynchronizing, kBlend, kSynchronous };
-  struct ActiveSync {
-    JobId id = 0;
-    JobKind kind = JobKind::kNone;
-    int source = -1;
-    std::int32_t numerator = 1;
-    std::int32_t denominator = 1;
-    Phase phase = Phase::kSynchronizing;
-    ProfileLimits limits{};
-    double x_sync = 0.0;  // leader and follower positions of the gear line y = y_sync + r·(x − x_sync)
-    double y_sync = 0.0;
-    LeaderDomainBlend blend{};
-    double direction = 0.0;  // the leader's direction the synchronization relies on (reversal: alarm 608)
-    bool continuous_update = false;
-    bool start_sync = false;
-    bool in_sync = false;
-  };
-  struct PendingSyncIn {  // MC_GearInPos waiting for its start (WaitingFunctionState 2)
-    JobId id = 0;
-    int source = -1;
-    std::int32_t numerator = 1;
-    std::int32_t denominator = 1;
-    double master_sync = 0.0;  // continuous occurrence of MasterSyncPosition
-    double slave_sync = 0.0;   // SlaveSyncPosition as given
-    std::int32_t profile = 1;
-    double length = 1.0;  // MasterStartDistance
-    std::int32_t sync_direction = 3;
-    double direction = 1.0;  // the leader's direction of travel towards the start
-    ProfileLimits limits{};  // profile 0
-    // Profile 0: the last synchronization length and what it was computed from (reused while they stay).
-    double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
-    MotionState sized_follower{};
-    double sized_length = 0.0;
-    bool armed = false;  // profile 0: the leader was before the (moving) start position
-  };
-  struct Desync {  // MC_GearOut
-    JobId id = 0;
-    bool active = false;
-    std::int32_t profile = 1;
-    double slave_position = 0.0;
-    double stop_distance = 0.0;
-    std::int32_t direction = 3;
-    ProfileLimits limits{};
-    double y_stop = 0.0;
-    LeaderDomainBlend blend{};
-    bool start_sync_out = false;
-    int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
-  };
-
-  int find_source(const LeadingValueSource* master) const noexcept;
-  LeadingValue sample(int source) const noexcept;
-  std::optional<std::uint16_t> check_master(const LeadingValueSource* master, int& source) noexcept;
-  double ratio(std::int32_t n, std::int32_t d) const noexcept { return static_cast<double>(n) / d; }
-  Submission start_gearing(JobKind kind, const LeadingValueSource* master, std::int32_t numerator,
-                           std::int32_t denominator, double acceleration, double deceleration,
-                           double jerk) noexcept;
-  double gear_line(const ActiveSync& a, double x) const noexcept;
-  void end_active(JobState state, std::uint16_t error_id) noexcept;
-  void end_pending(JobState state, std::uint16_t error_id) noexcept;
-  void end_desync(JobState state, std::uint16_t error_id) noexcept;
-  bool start_pending_sync(const LeadingValue& leader) noexcept;
-  void step_active(const LeadingValue& leader) noexcept;
-  void step_desync(const LeadingValue& leader) noexcept;
-  double modulo_occurrence(double position, const ModuloRange& range, double reference, double direction,
-                           double min_ahead) const noexcept;
-  double choose_slave_sync(double slave_sync, std::int32_t direction,
-                           double follower_end_estimate) const noexcept;
-  double sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader) const noexcept;
-
-  std::vector<LeadingValueInterconnection> interconnections_;
-  std::vector<TechnologyObject*> leader_objects_;
-  ActiveSync active_{};
-  PendingSyncIn pending_sync_{};
-  Desync desync_{};
-  JobId last_synchronous_job_ = 0;  // for the outputs of a job that ended
-  SyncJobOutputs last_outputs_{};
-  MotionState sync_setpoint_{};
-  LeadingValue cycle_leader_{};  // the leading value run_synchronous() sampled in this MC_Interpolator
-  int cycle_leader_source_ = -1;
-  StatusSynchronizedMotion status_{};
+  SynchronousOperation operation_;
 };
 
 }  // namespace tomc::techobjects
