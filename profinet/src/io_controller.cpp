@@ -179,7 +179,8 @@ std::vector<std::uint8_t> IoController::connect_request() {
   return rpc_request(PnioOperation::kConnect, out.written());
 }
 
-bool IoController::check_response(std::span<const std::uint8_t> payload, RpcPacket& packet) {
+bool IoController::check_response(std::span<const std::uint8_t> payload, RpcPacket& packet,
+                                  bool abort_on_error) {
   WireReader in(payload);
   packet = decode_rpc(in);
   if (!in.ok() || packet.header.packet_type != RpcPacketType::kResponse ||
@@ -189,7 +190,7 @@ bool IoController::check_response(std::span<const std::uint8_t> payload, RpcPack
   waiting_ = false;
   if (!packet.status.ok()) {
     last_error_ = packet.status;
-    abort_ar();
+    if (abort_on_error) abort_ar();
     return false;
   }
   return true;
@@ -273,6 +274,55 @@ bool IoController::on_response(std::span<const std::uint8_t> payload) {
   return true;  // Release: nothing to keep
 }
 
+std::vector<std::uint8_t> IoController::record_write_request(std::uint16_t slot, std::uint16_t subslot,
+                                                             std::uint16_t index,
+                                                             std::span<const std::uint8_t> data) {
+  RecordAccess write;
+  write.header.type = block_type::kIodWriteRequest;
+  write.header.sequence_number = static_cast<std::uint16_t>(sequence_);
+  write.header.ar_uuid = ar_uuid_;
+  write.header.slot = slot;
+  write.header.subslot = subslot;
+  write.header.index = index;
+  write.header.record_data_length = static_cast<std::uint32_t>(data.size());
+  write.data.assign(data.begin(), data.end());
+  std::vector<std::uint8_t> blocks(128 + data.size());
+  WireWriter out(blocks);
+  encode(write, out);
+  return rpc_request(PnioOperation::kWrite, out.written());
+}
+
+std::vector<std::uint8_t> IoController::record_read_request(std::uint16_t slot, std::uint16_t subslot,
+                                                            std::uint16_t index, std::uint32_t max_length) {
+  RecordAccess read;
+  read.header.type = block_type::kIodReadRequest;
+  read.header.sequence_number = static_cast<std::uint16_t>(sequence_);
+  read.header.ar_uuid = ar_uuid_;
+  read.header.slot = slot;
+  read.header.subslot = subslot;
+  read.header.index = index;
+  read.header.record_data_length = max_length;
+  std::vector<std::uint8_t> blocks(128);
+  WireWriter out(blocks);
+  encode(read, out);
+  return rpc_request(PnioOperation::kRead, out.written());
+}
+
+std::optional<std::vector<std::uint8_t>> IoController::on_record_response(
+    std::span<const std::uint8_t> payload) {
+  RpcPacket packet;
+  if (!check_response(payload, packet, false)) return std::nullopt;
+  WireReader in(packet.blocks);
+  RecordAccess answer = decode_record(in);
+  const bool type_ok = answer.header.type == block_type::kIodWriteResponse ||
+                       answer.header.type == block_type::kIodReadResponse;
+  if (!in.ok() || !type_ok || !answer.header.status.ok()) {
+    last_error_ = answer.header.status;
+    return std::nullopt;
+  }
+  return std::move(answer.data);
+}
+
 std::vector<std::uint8_t> IoController::on_application_ready(std::span<const std::uint8_t> payload) {
   WireReader in(payload);
   const RpcPacket packet = decode_rpc(in);
@@ -344,6 +394,12 @@ std::uint8_t IoController::input_iops(std::uint16_t slot, std::uint16_t subslot)
     }
   }
   return kIoxsBad;
+}
+
+void IoController::set_outputs_valid(bool valid) noexcept {
+  const std::size_t count = output_codec_.layout().data_object_count;
+  for (std::size_t i = 0; i < count; ++i)
+    output_codec_.iops(output_image_, i) = valid ? kIoxsGood : kIoxsBad;
 }
 
 std::size_t IoController::next_output_frame(std::span<std::uint8_t> out) noexcept {

@@ -386,6 +386,17 @@ std::span<std::uint8_t> IoDevice::input_data(std::uint16_t slot, std::uint16_t s
   return {};
 }
 
+std::uint8_t IoDevice::output_iops(std::uint16_t slot, std::uint16_t subslot) const noexcept {
+  if (state_ == ArState::kNone) return kIoxsBad;
+  const CyclicLayout& layout = output_codec_.layout();
+  for (std::size_t i = 0; i < layout.data_object_count; ++i) {
+    if (layout.data_objects[i].slot == slot && layout.data_objects[i].subslot == subslot) {
+      return output_codec_.read_iops(output_image_, i);
+    }
+  }
+  return kIoxsBad;
+}
+
 std::span<const std::uint8_t> IoDevice::output_data(std::uint16_t slot, std::uint16_t subslot) const {
   if (state_ == ArState::kNone) return {};
   const CyclicLayout& layout = output_codec_.layout();

@@ -58,33 +58,17 @@ inline std::string gateway_config(int domain, const std::vector<std::pair<std::s
 class GatewayProcess {
  public:
   GatewayProcess(const std::filesystem::path& directory, const std::string& config_text,
-                 std::vector<std::string> extra_arguments = {}) {
-    config_ = directory / "gateway.json";
-    log_ = directory / "gateway.log";
+                 std::vector<std::string> extra_arguments = {})
+      : config_(directory / "gateway.json") {
     std::ofstream(config_) << config_text;
     std::vector<std::string> args = {TOMC_BINARY,      "gateway-sim", "--config",
                                      config_.string(), "--partition", test_partition()};
     args.insert(args.end(), extra_arguments.begin(), extra_arguments.end());
-    std::vector<char*> argv;
-    for (auto& a : args)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const std::string log = log_.string();
-    const pid_t parent = ::getpid();
-    pid_ = ::fork();
-    if (pid_ < 0) throw std::runtime_error("fork failed");
-    if (pid_ == 0) {
-      // Child: only async-signal-safe calls until exec.
-      ::prctl(PR_SET_PDEATHSIG, SIGTERM);
-      if (::getppid() != parent) ::_exit(126);
-      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-      if (fd >= 0) {
-        ::dup2(fd, 1);
-        ::dup2(fd, 2);
-      }
-      ::execv(argv[0], argv.data());
-      ::_exit(127);
-    }
+    start(std::move(args), directory / "gateway.log");
+  }
+  // Any gateway command line (the program is looked up in PATH unless it is a path), output to `log`.
+  GatewayProcess(std::vector<std::string> args, const std::filesystem::path& log) {
+    start(std::move(args), log);
   }
   ~GatewayProcess() { terminate(); }
   GatewayProcess(const GatewayProcess&) = delete;
@@ -106,6 +90,30 @@ class GatewayProcess {
   }
 
  private:
+  void start(std::vector<std::string> args, const std::filesystem::path& log_file) {
+    log_ = log_file;
+    std::vector<char*> argv;
+    for (auto& a : args)
+      argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string log = log_.string();
+    const pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+      // Child: only async-signal-safe calls until exec.
+      ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+      if (::getppid() != parent) ::_exit(126);
+      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+      if (fd >= 0) {
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+      }
+      ::execvp(argv[0], argv.data());
+      ::_exit(127);
+    }
+  }
+
   int stop(int signal) {
     if (pid_ <= 0) return -1;
     ::kill(pid_, signal);

@@ -15,6 +15,7 @@
 #include "tomc/profinet/dcp.hpp"
 #include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/io_device.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 
 namespace pn = tomc::profinet;
 
@@ -170,6 +171,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       pn::WireReader record_in(bytes);
       const pn::RecordAccess record = pn::decode_record(record_in);
       if (record_in.ok()) round_trip(record, [](pn::WireReader& r) { return pn::decode_record(r); });
+      // The same bytes as PROFIdrive parameter access data (record index 0xB02E): what decodes re-encodes to
+      // a value that decodes the same.
+      if (const auto request = pn::decode_parameter_request(bytes)) {
+        if (pn::decode_parameter_request(pn::encode(*request)) != request) std::abort();
+      }
+      if (const auto response = pn::decode_parameter_response(bytes)) {
+        if (pn::decode_parameter_response(pn::encode(*response)) != response) std::abort();
+        (void)pn::integer_value(*response, 0);
+        (void)pn::float_value(*response, 0);
+      }
       break;
     }
   }

@@ -23,6 +23,7 @@
 #include <string>
 #include <thread>
 
+#include "netns_hosts.hpp"
 #include "sample_frames.hpp"
 #include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/io_device.hpp"
@@ -36,82 +37,10 @@ namespace {
 constexpr pn::Ipv4Address kControllerIp{10, 217, 0, 1};
 constexpr pn::Ipv4Address kDeviceIp{10, 217, 0, 2};
 
-int quiet(const std::string& command) {
-  return std::system((command + " >/dev/null 2>&1").c_str());
-}
-
-std::string output_of(const std::string& command) {
-  std::string text;
-  if (FILE* pipe = ::popen(command.c_str(), "r")) {
-    std::array<char, 1024> chunk{};
-    for (std::size_t n; (n = std::fread(chunk.data(), 1, chunk.size(), pipe)) > 0;)
-      text.append(chunk.data(), n);
-    ::pclose(pipe);
-  }
-  return text;
-}
-
-std::uint64_t now_us() {
-  return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::microseconds>(Clock::now().time_since_epoch()).count());
-}
-
-// Moves the calling thread into a named network namespace (sockets opened afterwards live there).
-bool enter(const std::string& ns) {
-  const int fd = ::open(("/var/run/netns/" + ns).c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool ok = ::setns(fd, CLONE_NEWNET) == 0;
-  ::close(fd);
-  return ok;
-}
-
-class Namespaces {
- public:
-  Namespaces()
-      : controller("tomc17c-" + std::to_string(::getpid())),
-        device("tomc17d-" + std::to_string(::getpid())) {}
-  ~Namespaces() {
-    for (const std::string* ns : {&controller, &device})
-      quiet("ip netns del " + *ns);
-  }
-  std::string make() {
-    if (::geteuid() != 0) return "not root: ip netns needs CAP_SYS_ADMIN";
-    if (quiet("ip netns add " + controller) != 0 || quiet("ip netns add " + device) != 0) {
-      return "'ip netns add' failed (no permission or no iproute2)";
-    }
-    // One shell for the rest (`ip -n` instead of `ip netns exec`: fewer processes, the test stays short).
-    const std::string c = "ip -n " + controller + " ";
-    const std::string d = "ip -n " + device + " ";
-    const std::string script =
-        c + "link add pn-c address 02:00:00:00:17:01 type veth peer name pn-d address " +
-        "02:00:00:00:17:02 && " + c + "link set pn-d netns " + device + " && " + c +
-        "addr add 10.217.0.1/24 dev pn-c && " + d + "addr add 10.217.0.2/24 dev pn-d && " + c +
-        "link set lo up && " + d + "link set lo up && " + c + "link set pn-c up && " + d + "link set pn-d up";
-    return quiet("sh -c '" + script + "'") == 0 ? std::string{} : "could not set up the veth pair";
-  }
-  std::set<std::string> interfaces(const std::string& ns) const {
-    std::set<std::string> names;
-    std::istringstream lines(output_of("ip -n " + ns + " -o link show"));
-    for (std::string line; std::getline(lines, line);) {
-      const auto colon = line.find(": ");
-      if (colon == std::string::npos) continue;
-      const std::string name = line.substr(colon + 2, line.find(':', colon + 2) - colon - 2);
-      names.insert(name.substr(0, name.find('@')));
-    }
-    return names;
-  }
-  bool carrier(const std::string& ns, const std::string& interface) const {
-    for (int i = 0; i < 100; ++i) {
-      const std::string state = output_of("ip -n " + ns + " -o link show dev " + interface);
-      if (state.find("LOWER_UP") != std::string::npos && state.find("NO-CARRIER") == std::string::npos)
-        return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return false;
-  }
-  std::string controller;
-  std::string device;
-};
+using pn::testing::enter;
+using pn::testing::now_us;
+using pn::testing::output_of;
+using pn::testing::quiet;
 
 // The device host: IoDevice behind the sockets, echoing its output telegram into its input telegram.
 void run_device(const std::string& ns, std::atomic<bool>& stop, std::atomic<int>& ars, std::string& error) {
@@ -145,14 +74,7 @@ void run_device(const std::string& ns, std::atomic<bool>& stop, std::atomic<int>
         device.on_cyclic(in, now_us());
       }
     }
-    pn::Ipv4Address from{};
-    std::uint16_t port = 0;
-    if (const std::size_t n = udp.receive(frame, 0, from, port); n > 0) {
-      if (const auto answer = device.on_rpc(std::span(frame).first(n)); !answer.empty())
-        udp.send_to(answer, from, port);
-    }
-    if (const auto ready = device.take_application_ready())
-      udp.send_to(*ready, kControllerIp, pn::kPnioUdpPort);
+    pn::testing::serve_device_rpc(device, udp, frame, kControllerIp);
     if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars;
     last = device.state();
     const std::uint64_t now = now_us();
@@ -182,12 +104,16 @@ std::vector<std::uint8_t> call(pn::UdpSocket& udp, std::span<const std::uint8_t>
 }  // namespace
 
 TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
-  Namespaces hosts;
-  if (const std::string why = hosts.make(); !why.empty()) GTEST_SKIP() << why;
+  pn::testing::Namespaces hosts("tomc17c", "tomc17d");
+  if (const std::string why = hosts.make({"pn-c", "02:00:00:00:17:01", "10.217.0.1/24"},
+                                         {"pn-d", "02:00:00:00:17:02", "10.217.0.2/24"});
+      !why.empty()) {
+    GTEST_SKIP() << why;
+  }
   // Nothing is sent unless each namespace sees only lo and its own veth end (never the machine's interfaces).
-  ASSERT_EQ(hosts.interfaces(hosts.controller), (std::set<std::string>{"lo", "pn-c"}));
-  ASSERT_EQ(hosts.interfaces(hosts.device), (std::set<std::string>{"lo", "pn-d"}));
-  ASSERT_TRUE(hosts.carrier(hosts.controller, "pn-c"));
+  ASSERT_EQ(hosts.interfaces(hosts.first), (std::set<std::string>{"lo", "pn-c"}));
+  ASSERT_EQ(hosts.interfaces(hosts.second), (std::set<std::string>{"lo", "pn-d"}));
+  ASSERT_TRUE(hosts.carrier(hosts.first, "pn-c"));
 
   const bool capture = !output_of("command -v tshark").empty();
   const auto pcap =
@@ -197,7 +123,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
     tshark = ::fork();
     if (tshark == 0) {
       // dumpcap (tshark's capture engine, same package) starts much faster than tshark.
-      ::execlp("ip", "ip", "netns", "exec", hosts.controller.c_str(), "dumpcap", "-q", "-i", "pn-c", "-w",
+      ::execlp("ip", "ip", "netns", "exec", hosts.first.c_str(), "dumpcap", "-q", "-i", "pn-c", "-w",
                pcap.c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }
@@ -208,7 +134,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   std::atomic<bool> stop{false};
   std::atomic<int> device_ars{0};
   std::string device_error;
-  std::thread device_host(run_device, hosts.device, std::ref(stop), std::ref(device_ars),
+  std::thread device_host(run_device, hosts.second, std::ref(stop), std::ref(device_ars),
                           std::ref(device_error));
 
   std::string failure;
@@ -217,7 +143,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   std::uint64_t silence_us = 0;  // from the last input frame to the end of the AR
   std::uint32_t ar_count = 0;
   std::thread controller_host([&] {
-    if (!enter(hosts.controller)) return void(failure = "setns into the controller namespace failed");
+    if (!enter(hosts.first)) return void(failure = "setns into the controller namespace failed");
     pn::RawSocket raw;
     pn::UdpSocket udp;
     if (failure = raw.open("pn-c"); !failure.empty()) return;
@@ -305,12 +231,12 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
       cycle(deadline += 1000);
       cycles_valid += controller.input_valid(now_us()) ? 1 : 0;
     }
-    quiet("ip -n " + hosts.controller + " link set pn-c down");  // named: never the host's namespace
+    quiet("ip -n " + hosts.first + " link set pn-c down");  // named: never the host's namespace
     while (controller.state() == pn::ControllerArState::kRunning && cycles_to_loss < 200) {
       cycle(deadline += 1000);
       ++cycles_to_loss;
     }
-    quiet("ip -n " + hosts.controller + " link set pn-c up");
+    quiet("ip -n " + hosts.first + " link set pn-c up");
     bool reconnected = false;
     for (int attempt = 0; attempt < 20 && !reconnected; ++attempt) {
       reconnected = start_up(20 + 2 * static_cast<std::uint32_t>(attempt));

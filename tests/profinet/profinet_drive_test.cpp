@@ -10,6 +10,7 @@
 #include "in_memory_start_up.hpp"
 #include "sample_frames.hpp"
 #include "tomc/drives/profinet_drive.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 
 namespace pn = tomc::profinet;
 namespace dr = tomc::drives;
@@ -123,4 +124,71 @@ TEST(ProfinetDrive, ControllerConfiguredForAnotherTelegramGetsTheDifference) {
   EXPECT_EQ(diff.submodules[0].ident_info, pn::SubmoduleIdentInfo::kWrong);
   link.cycle(0x047E, 0);
   EXPECT_EQ(link.controller.input_iops(dr::kDriveObjectSlot, dr::kTelegramSubslot), pn::kIoxsBad);
+}
+
+// PROFIdrive base-mode parameter access through record index 0xB02E, as `tomc gateway` checks a drive at
+// start-up: the request (write) for p0922 and p2000 of DO 1, then the response (read): Unsigned16 telegram
+// number, FloatingPoint reference speed; the AR runs on.
+TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
+  Link link;
+  ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
+  const pn::ParameterRequest request{
+      7, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}};
+  const auto written = link.emulator.device().on_rpc(link.controller.record_write_request(
+      dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, pn::encode(request)));
+  ASSERT_TRUE(link.controller.on_record_response(written).has_value());
+  const auto read = link.emulator.device().on_rpc(
+      link.controller.record_read_request(dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, 240));
+  const auto data = link.controller.on_record_response(read);
+  ASSERT_TRUE(data.has_value());
+  const auto response = pn::decode_parameter_response(*data);
+  ASSERT_TRUE(response.has_value());
+  EXPECT_EQ(response->reference, 7);  // mirrored
+  EXPECT_EQ(response->id, pn::parameter_response_id::kReadOk);
+  ASSERT_EQ(response->parameters.size(), 2u);
+  EXPECT_EQ(response->parameters[0].format, pn::parameter_format::kUnsigned16);
+  EXPECT_EQ(pn::integer_value(*response, 0), 1);  // the emulated drive runs telegram 1
+  EXPECT_EQ(pn::float_value(*response, 1), 3000.0f);
+  // A read without a pending request and an unknown parameter: refused / error value, and the AR runs on.
+  const auto again = link.emulator.device().on_rpc(
+      link.controller.record_read_request(dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, 240));
+  EXPECT_FALSE(link.controller.on_record_response(again).has_value());
+  EXPECT_EQ(link.controller.last_error().value(), 0xDE80B800u);
+  EXPECT_EQ(link.controller.state(), pn::ControllerArState::kRunning);
+  const pn::ParameterRequest unknown{8, pn::parameter_request_id::kRead, 1, {{0x10, 1, 9999, 0}}};
+  (void)link.controller.on_record_response(link.emulator.device().on_rpc(link.controller.record_write_request(
+      dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, pn::encode(unknown))));
+  const auto error = link.controller.on_record_response(link.emulator.device().on_rpc(
+      link.controller.record_read_request(dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, 240)));
+  ASSERT_TRUE(error.has_value());
+  const auto refused = pn::decode_parameter_response(*error);
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_EQ(refused->id, pn::parameter_response_id::kReadError);
+  EXPECT_EQ(refused->parameters.at(0).format, pn::parameter_format::kError);
+  EXPECT_FALSE(pn::integer_value(*refused, 0).has_value());
+}
+
+// The codec: the bytes of a p0922 read request (as in the tshark test's record) and of its response; round
+// trips; truncated and malformed input refused.
+TEST(ParameterAccess, BytesRoundTripsAndMalformedInput) {
+  const pn::ParameterRequest request{1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}}};
+  const auto bytes = pn::encode(request);
+  EXPECT_EQ(bytes, (std::vector<std::uint8_t>{0x01, 0x01, 0x01, 0x01, 0x10, 0x01, 0x03, 0x9A, 0x00, 0x00}));
+  EXPECT_EQ(bytes, pn::testing::read_p0922_request().data);
+  EXPECT_EQ(pn::decode_parameter_request(bytes), request);
+  const pn::ParameterResponse response{
+      1, pn::parameter_response_id::kReadOk, 1, {{pn::parameter_format::kUnsigned16, {105}}}};
+  const auto answer = pn::encode(response);
+  EXPECT_EQ(answer, (std::vector<std::uint8_t>{0x01, 0x01, 0x01, 0x01, 0x06, 0x01, 0x00, 0x69}));
+  EXPECT_EQ(pn::decode_parameter_response(answer), response);
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    EXPECT_FALSE(pn::decode_parameter_request(std::span(bytes).first(n)).has_value()) << n;
+  for (std::size_t n = 0; n < answer.size(); ++n)
+    EXPECT_FALSE(pn::decode_parameter_response(std::span(answer).first(n)).has_value()) << n;
+  auto unknown_format = answer;
+  unknown_format[4] = 0x99;  // a format whose value length is unknown
+  EXPECT_FALSE(pn::decode_parameter_response(unknown_format).has_value());
+  auto zero_parameters = bytes;
+  zero_parameters[3] = 0;
+  EXPECT_FALSE(pn::decode_parameter_request(zero_parameters).has_value());
 }

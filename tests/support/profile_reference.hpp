@@ -254,4 +254,49 @@ class ProfileReference {
   techobjects::ProfileLimits limits_;
 };
 
+// The exact optimum of the positioning template (start -> peak with a = 0 -> cruise -> stop, each velocity
+// change the time-optimal one of VelocityProfile) by exhaustion over the peak instead of the planner's root
+// selection (decision S18): `grid` peaks evenly over [-limit, limit], every admissible one (cruise ≥ 0) a
+// candidate, and every sign change of the cruise between neighbours bisected to the peak where the cruise
+// vanishes (the usual optimum of a short move). Finds the planner's errors of root bracketing and choice
+// (a root inside the non-monotonic middle interval, a slower root taken); the brute-force ProfileReference
+// above covers what the template itself leaves out.
+inline double shortest_over_peaks(const techobjects::MotionState& start, double target,
+                                  const techobjects::ProfileLimits& l, int grid) {
+  const double distance = target - start.position;
+  techobjects::VelocityProfile first, stop;
+  struct Candidate {
+    double cruise;    // time at the peak, negative when the two changes alone overshoot the target
+    double duration;  // with the cruise (meaningful when cruise >= 0)
+  };
+  auto candidate = [&](double peak) {
+    first.plan(techobjects::MotionState{0.0, start.velocity, start.acceleration}, peak, l);
+    stop.plan(techobjects::MotionState{0.0, peak, 0.0}, 0.0, l);
+    const double covered = first.at(first.duration()).position + stop.at(stop.duration()).position;
+    const double cruise = peak != 0 ? (distance - covered) / peak : (distance == covered ? 0.0 : -1.0);
+    return Candidate{cruise, first.duration() + std::max(0.0, cruise) + stop.duration()};
+  };
+  double shortest = std::numeric_limits<double>::infinity();
+  double previous_peak = 0;
+  Candidate previous{};
+  for (int k = 0; k <= grid; ++k) {
+    const double peak = l.velocity * (2.0 * k / grid - 1.0);
+    const Candidate c = candidate(peak);
+    if (c.cruise >= 0) shortest = std::min(shortest, c.duration);
+    if (k > 0 && (c.cruise >= 0) != (previous.cruise >= 0)) {
+      // The cruise vanishes in between: bisect to the admissible side's limit.
+      double inside = c.cruise >= 0 ? peak : previous_peak;
+      double outside = c.cruise >= 0 ? previous_peak : peak;
+      for (int i = 0; i < 60; ++i) {
+        const double middle = (inside + outside) / 2;
+        (candidate(middle).cruise >= 0 ? inside : outside) = middle;
+      }
+      shortest = std::min(shortest, candidate(inside).duration);
+    }
+    previous_peak = peak;
+    previous = c;
+  }
+  return shortest;
+}
+
 }  // namespace tomc::testing

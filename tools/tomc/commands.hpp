@@ -10,6 +10,7 @@ namespace tomc::cli {
 int telegram_command(std::span<const std::string_view> args, std::ostream& out);
 int sim_command(std::span<const std::string_view> args, std::ostream& out);
 int gateway_sim_command(std::span<const std::string_view> args, std::ostream& out);
+int gateway_command(std::span<const std::string_view> args, std::ostream& out);
 int demo_command(std::span<const std::string_view> args, std::ostream& out);
 
 // examples/demo_machine.json, embedded at build time (the machine of `tomc demo` without --config).

@@ -1,7 +1,5 @@
 // `tomc gateway-sim`: simulated PROFIdrive drives behind the DDS gateway contract, as a separate process
 // (docs/gateway.md "Gateway simulator"), and `--send` to inject a fault into a running one.
-#include <pthread.h>
-#include <signal.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -13,6 +11,7 @@
 
 #include "cli_error.hpp"
 #include "commands.hpp"
+#include "stop_signals.hpp"
 #include "tomc/gateway_sim/commander.hpp"
 #include "tomc/gateway_sim/gateway_simulator.hpp"
 #include "tomc/scenario/gateway_sim_config.hpp"
@@ -167,14 +166,7 @@ int gateway_sim_command(std::span<const std::string_view> args, std::ostream& ou
   if (o.drop_every) config.drop_every = *o.drop_every;
   if (o.delay_us) config.delay_us = *o.delay_us;
 
-  // SIGINT/SIGTERM are taken by sigwait() below, never by a handler: blocked before any DDS thread exists, so
-  // every thread inherits the mask and the participant is deleted cleanly (no /dev/shm or port leftovers).
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  int signal_number = 0;
+  const sigset_t signals = block_stop_signals();  // before any DDS thread exists (stop_signals.hpp)
   {
     gateway_sim::GatewaySimulator simulator(config);
     std::string names;
@@ -184,7 +176,7 @@ int gateway_sim_command(std::span<const std::string_view> args, std::ostream& ou
         << (config.partition.empty() ? "" : " partition '" + config.partition + "'") << " via "
         << (config.network.interface.empty() ? std::string("loopback") : config.network.interface)
         << ", cycle " << config.cycle_time * 1000.0 << " ms, pid " << ::getpid() << std::endl;
-    sigwait(&signals, &signal_number);
+    const int signal_number = wait_for_stop_signal(signals);
     const auto c = simulator.counters();
     out << "gateway-sim: stopped by signal " << signal_number << " after " << c.setpoints_applied
         << " setpoints applied, " << c.answers_published << " answers, " << c.setpoint_gaps

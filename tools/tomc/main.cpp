@@ -18,6 +18,7 @@ constexpr std::string_view kUsage =
     "  sim        run a scenario on simulated drives and write its trace (tomc sim --help)\n"
     "  demo       run a simulated machine with its diagnostics web page (tomc demo --help)\n"
     "  gateway-sim  simulated drives behind the Fast DDS gateway contract (tomc gateway-sim --help)\n"
+    "  gateway    PROFINET IO controller for real drives behind that contract (tomc gateway --help)\n"
     "\n"
     "Bad input prints one line on stderr and exits with status 2.\n";
 
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
     if (command == "sim") return tomc::cli::sim_command(rest, std::cout);
     if (command == "demo") return tomc::cli::demo_command(rest, std::cout);
     if (command == "gateway-sim") return tomc::cli::gateway_sim_command(rest, std::cout);
+    if (command == "gateway") return tomc::cli::gateway_command(rest, std::cout);
     throw tomc::cli::UsageError("unknown command '" + std::string(command) + "' (try: tomc --help)");
   } catch (const tomc::cli::UsageError& e) {
     std::cerr << "tomc: " << e.what() << '\n';

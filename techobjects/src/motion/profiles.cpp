@@ -50,7 +50,12 @@ class Integrator {
   }
   // Constant acceleration; with jerk = 0 it may step (§8.8, replacement without jerk limitation).
   void hold(double duration, double acceleration) noexcept {
-    if (duration > 0) advance(duration, acceleration, 0.0);
+    if (duration > 0) {  // advance() without its jerk terms (x·0 cannot be folded away in IEEE arithmetic)
+      p_ += duration * (v_ + duration * acceleration / 2);
+      v_ += duration * acceleration;
+      a_ = acceleration;
+      t_ += duration;
+    }
   }
 
   // After a velocity change: the closed-form end velocity differs from the target by rounding only; continue
@@ -131,8 +136,8 @@ namespace {
 // ap · hold. The caller guarantees dv at least the gain of the direct ramp a0 → a_end. sign maps the local
 // frame back.
 template <typename Builder>
-void rise(Builder& b, double sign, double a0, double dv, double limit, double jerk,
-          double a_end = 0.0) noexcept {
+[[gnu::always_inline]] inline void rise(Builder& b, double sign, double a0, double dv, double limit,
+                                        double jerk, double a_end = 0.0) noexcept {
   const double end2 = a_end * a_end;
   if (a0 > limit) {
     // The current acceleration is above what the new job allows: bring it back with the new jerk (§8.8),
@@ -161,8 +166,9 @@ void rise(Builder& b, double sign, double a0, double dv, double limit, double je
 // v < 0, acceleration limit after, a_c as high as min(acc, dec) and both halves allow. Each half is then a
 // single-peak change, and a_c = min(..) joins them without a dip.
 template <typename Builder>
-void rise_through_zero(Builder& b, double sign, double a0, double dv0, double dv1, double acc, double dec,
-                       double jerk) noexcept {
+[[gnu::always_inline]] inline void rise_through_zero(Builder& b, double sign, double a0, double dv0,
+                                                     double dv1, double acc, double dec,
+                                                     double jerk) noexcept {
   const double both = std::min(acc, dec);
   // The half before the crossing reaches a_c by at most a ramp from a0 (a_c² ≤ 2j·dv0 + a0²); the half after
   // ramps a_c out at most (a_c² ≤ 2j·dv1).
@@ -245,6 +251,15 @@ ViaPeak via_peak(const MotionState& start, double peak, const Dynamics& dyn) noe
   return ViaPeak{b.position() + stop.distance, b.time() + stop.duration};
 }
 
+// via_peak(start, v_stop) in closed form: a0 ramped out at once (one piece of constant jerk), then the stop.
+ViaPeak ramp_out_and_stop(const MotionState& start, double v_stop, const Dynamics& dyn) noexcept {
+  const double a0 = dyn.jerk > 0 ? start.acceleration : 0.0;
+  const double t = std::abs(a0) / (dyn.jerk > 0 ? dyn.jerk : 1.0);
+  const double jerk = -std::copysign(dyn.jerk, a0);
+  const ViaPeak stop = stop_from(v_stop, dyn);
+  return ViaPeak{t * (start.velocity + t * (a0 / 2 + t * jerk / 6)) + stop.distance, t + stop.duration};
+}
+
 // One bracket [x0, x1] of peak velocities with f(x) − D changing sign (or zero) at its ends.
 struct Bracket {
   double x0, x1, f0, f1;
@@ -258,67 +273,54 @@ struct Root {
 };
 
 // Bracketed root search in u = peak·|peak|: the distance grows roughly with peak² (v²/2a), so in u it is
-// nearly linear and secant steps converge in a few iterations even when the root sits close to one end of a
-// wide bracket. Anderson–Björck regula falsi; a bisection step whenever the last two steps neither halved
-// the bracket nor divided the residual by 4, so the bracket shrinks whatever the shape of f (kinks where a
-// plateau starts to be reached, the non-monotonic middle interval). At most kMaxPositionIterations steps.
+// nearly linear. Chandrupatla's method: inverse quadratic interpolation through the last three points while
+// they show a smooth enough f, else bisection, never a step closer than the resolution to an end, so the
+// bracket shrinks whatever the shape of f (kinks where a plateau starts to be reached, the non-monotonic
+// middle interval). The first step is the secant. At most kMaxPositionIterations steps.
 Root solve_peak(const MotionState& start, const Dynamics& dyn, const Bracket& bracket, double distance,
                 double tolerance) noexcept {
   auto to_u = [](double v) noexcept { return v * std::abs(v); };
   auto to_peak = [](double u) noexcept { return std::copysign(std::sqrt(std::abs(u)), u); };
-  double x0 = to_u(bracket.x0), x1 = to_u(bracket.x1);
-  double g0 = bracket.f0 - distance, g1 = bracket.f1 - distance;
-  double best = std::abs(g0) <= std::abs(g1) ? bracket.x0 : bracket.x1;
-  double best_g = std::min(std::abs(g0), std::abs(g1));
+  // a: the newest point, b: the other end of the bracket, c: the end b replaced (the third point).
+  double a = to_u(bracket.x1), b = to_u(bracket.x0), c = b;
+  double fa = bracket.f1 - distance, fb = bracket.f0 - distance, fc = fb;
+  double best = std::abs(fa) <= std::abs(fb) ? bracket.x1 : bracket.x0;
+  double best_g = std::min(std::abs(fa), std::abs(fb));
   double best_duration = -1;  // not evaluated yet (an end of the bracket)
   const double eps = std::numeric_limits<double>::epsilon();
-  double width_before = INFINITY, width_before2 = INFINITY;  // bracket width 1 and 2 steps ago
-  double best_before = INFINITY, best_before2 = INFINITY;    // residual 1 and 2 steps ago
-  int retained = 0;                                          // which end was kept last time (-1: x0, +1: x1)
+  double t = fa != fb ? fa / (fa - fb) : 0.5;  // first step: the secant
   int iterations = 0;
-  while (best_g > tolerance && std::abs(x1 - x0) > 4 * eps * std::max(std::abs(x0), std::abs(x1)) &&
-         iterations < kMaxPositionIterations) {
+  while (best_g > tolerance && iterations < kMaxPositionIterations) {
+    // No step closer to an end than the resolution of u; stop when the bracket is that narrow.
+    const double limit = 2 * eps * std::max(std::abs(a), std::abs(b)) / std::abs(b - a);
+    if (!(limit < 0.5)) break;
+    t = std::clamp(t, limit, 1 - limit);
+    const double x = a + t * (b - a);
     ++iterations;
-    const double width = std::abs(x1 - x0);
-    double x = 0.5 * (x0 + x1);
-    const bool progressing = width <= 0.5 * width_before2 || best_g <= 0.25 * best_before2;
-    if (progressing && g1 != g0) {
-      // Anchored at the end with the smaller residual: near convergence the step is tiny and would be lost in
-      // rounding if computed from the far end.
-      const double secant =
-          std::abs(g1) < std::abs(g0) ? x1 - g1 * (x1 - x0) / (g1 - g0) : x0 - g0 * (x1 - x0) / (g1 - g0);
-      if (secant > std::min(x0, x1) && secant < std::max(x0, x1)) x = secant;
-    }
-    width_before2 = width_before;
-    width_before = progressing ? width : INFINITY;  // a bisection restarts the progress window
-    best_before2 = best_before;
-    best_before = progressing ? best_g : INFINITY;
-    if (!(x > std::min(x0, x1) && x < std::max(x0, x1))) break;  // bracket exhausted in floating point
-    const double peak_x = to_peak(x);
-    const ViaPeak v = via_peak(start, peak_x, dyn);
+    const ViaPeak v = via_peak(start, to_peak(x), dyn);
     const double g = v.distance - distance;
     if (std::abs(g) < best_g) {
       best_g = std::abs(g);
-      best = peak_x;
+      best = to_peak(x);
       best_duration = v.duration;
     }
-    // Anderson–Björck: scale the retained end's residual by 1 - g/g_replaced (0.5 if that is not positive).
-    if ((g < 0) == (g0 < 0)) {
-      if (retained == 1) {
-        const double m = 1 - g / g0;
-        g1 *= m > 0 ? m : 0.5;
-      }
-      x0 = x;
-      g0 = g;
-      retained = 1;
+    if ((g < 0) == (fa < 0)) {
+      c = a;
+      fc = fa;
     } else {
-      if (retained == -1) {
-        const double m = 1 - g / g1;
-        g0 *= m > 0 ? m : 0.5;
-      }
-      x1 = x;
-      g1 = g;
-      retained = -1;
+      c = b;
+      fc = fb;
+      b = a;
+      fb = fa;
+    }
+    a = x;
+    fa = g;
+    // Inverse quadratic interpolation where the three points allow it (Chandrupatla's criterion), else halve.
+    const double xi = (a - b) / (c - b);
+    const double phi = (fa - fb) / (fc - fb);
+    t = 0.5;
+    if (phi * phi < xi && (1 - phi) * (1 - phi) < 1 - xi) {
+      t = fa / (fb - fa) * fc / (fb - fc) + (c - a) / (b - a) * fa / (fc - fa) * fb / (fc - fb);
     }
   }
   if (best_duration < 0) best_duration = via_peak(start, best, dyn).duration;
@@ -371,28 +373,35 @@ bool PositionProfile::plan(const MotionState& start, double target_position,
   const double v_stop =
       dyn.jerk > 0 ? start.velocity + start.acceleration * std::abs(start.acceleration) / (2 * dyn.jerk)
                    : start.velocity;
-  const ViaPeak top = f(vmax);
-  const ViaPeak bottom = distance >= top.distance ? top : f(-vmax);  // not needed for a cruise at +vmax
+  // Breakpoints -vmax ≤ low ≤ high ≤ vmax, one of low/high is 0. f is continuous and increasing on
+  // [high, vmax] and [-vmax, low], so f(low) and f(high) tell which intervals can hold D: only then are
+  // f(vmax) and f(-vmax) evaluated (each evaluation is most of a plan's cost). f(v_stop) is a closed form.
+  const double low = std::clamp(std::min(v_stop, 0.0), -vmax, vmax);
+  const double high = std::clamp(std::max(v_stop, 0.0), -vmax, vmax);
+  auto f_at = [&](double peak) noexcept {
+    return peak == v_stop ? ramp_out_and_stop(start, v_stop, dyn).distance : f(peak).distance;
+  };
+  const double f_low = f_at(low);
+  const double f_high = high == low ? f_low : f_at(high);
+  const bool needs_top = distance > f_high;
+  const bool needs_bottom = distance < f_low;
+  const double top = needs_top ? (high == vmax ? f_high : f(vmax).distance) : f_high;
+  const double bottom = needs_bottom ? (low == -vmax ? f_low : f(-vmax).distance) : f_low;
   double peak = 0;
   double cruise = 0;
   int iterations = 0;
-  if (distance >= top.distance) {
+  if (needs_top && distance >= top) {
     peak = vmax;
-    cruise = (distance - top.distance) / vmax;
-  } else if (distance <= bottom.distance) {
+    cruise = (distance - top) / vmax;
+  } else if (needs_bottom && distance <= bottom) {
     peak = -vmax;
-    cruise = (bottom.distance - distance) / vmax;
+    cruise = (bottom - distance) / vmax;
   } else {
-    // Breakpoints -vmax ≤ low ≤ high ≤ vmax, one of low/high is 0. f is continuous, f(-vmax) < D < f(vmax):
-    // at least one of the three intervals brackets D; a root in each that does is a candidate (at most 3
-    // root searches), the fastest wins (a reversal against the motion can beat braking to a lower peak).
-    const double low = std::clamp(std::min(v_stop, 0.0), -vmax, vmax);
-    const double high = std::clamp(std::max(v_stop, 0.0), -vmax, vmax);
-    const double f_low = f(low).distance;
-    const double f_high = high == low ? f_low : f(high).distance;
-    const std::array<Bracket, 3> brackets{Bracket{high, vmax, f_high, top.distance},
-                                          Bracket{low, high, f_low, f_high},
-                                          Bracket{-vmax, low, bottom.distance, f_low}};
+    // f(-vmax) < D < f(vmax): at least one of the three intervals brackets D; a root in each that does is a
+    // candidate (at most 3 root searches), the fastest wins (a reversal against the motion can beat braking
+    // to a lower peak).
+    const std::array<Bracket, 3> brackets{Bracket{high, vmax, f_high, top}, Bracket{low, high, f_low, f_high},
+                                          Bracket{-vmax, low, bottom, f_low}};
     // f is evaluated to ~1e-16 of the motion; asking for more only burns iterations (the end error is
     // required below 1e-9 relative).
     const double tolerance = 1e-12 * (std::abs(distance) + std::abs(f_low) + std::abs(f_high)) + 1e-300;

@@ -24,6 +24,7 @@ bool PidRegulator::configure(const PidGains& gains, double servo_cycle_s) noexce
   active_ = gains;
   ts_ = servo_cycle_s;
   has_pending_ = apply_pending_ = false;
+  classify();
   reset();
   return true;
 }
@@ -44,7 +45,7 @@ void PidRegulator::reset() noexcept {
   started_ = false;
 }
 
-PidTerms PidRegulator::update(double control_difference) noexcept {
+PidTerms PidRegulator::update_pid(double control_difference) noexcept {
   if (apply_pending_) {
     // New gains at a cycle boundary; I and the D history stay (a bumpless change of the gains' effect is the
     // user's choice of when to apply). A new DerivativeCycles starts a fresh D sample.
@@ -52,6 +53,7 @@ PidTerms PidRegulator::update(double control_difference) noexcept {
     active_ = pending_;
     has_pending_ = apply_pending_ = false;
     if (active_.IntegralTime == 0.0) integral_ = 0.0;
+    classify();
   }
   const PidGains& g = active_;
   const double e = std::fabs(control_difference) <= g.DeadBand ? 0.0 : control_difference;

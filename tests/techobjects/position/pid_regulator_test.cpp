@@ -139,6 +139,31 @@ TEST(PidRegulator, DoubleBufferedGains) {
   EXPECT_DOUBLE_EQ(r.gains().Kv, 20.0);
 }
 
+// The P controller runs a short path (no option set); switching a D term on later (load + apply, spec 05b
+// C.2) must see the last control difference of that path: a constant error then gives no derivative kick, and
+// a ramp the closed-form D of its first sample.
+TEST(PidRegulator, DerivativeSwitchedOnAfterPOnlyCyclesHasNoKick) {
+  PidGains g;
+  g.Kv = 10.0;
+  auto r = regulator(g);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_DOUBLE_EQ(r.update(2.0).output, 20.0);
+  PidGains with_d = g;
+  with_d.DerivativeTime = 0.05;
+  ASSERT_TRUE(r.load(with_d));
+  r.apply();
+  const auto same = r.update(2.0);  // e unchanged since the last P-only cycle: D = 0
+  EXPECT_DOUBLE_EQ(same.d, 0.0);
+  EXPECT_DOUBLE_EQ(same.output, 20.0);
+  const auto ramp = r.update(2.5);  // D = Kv·Td·Δe/Ts = 10·0.05·0.5/0.01 = 25
+  EXPECT_NEAR(ramp.d, 25.0, 1e-9);
+  EXPECT_NEAR(ramp.output, 25.0 + 25.0, 1e-9);
+  ASSERT_TRUE(r.load(g));  // back to P alone: the short path again, D gone
+  r.apply();
+  EXPECT_DOUBLE_EQ(r.update(1.0).output, 10.0);
+  EXPECT_DOUBLE_EQ(r.update(-1.0).d, 0.0);
+}
+
 // Closed loop on an ideal velocity actuator x(k+1) = x(k) + Ts·u(k) following a ramp v·t without precontrol:
 // P alone leaves the steady-state error v/Kv; with I it goes to zero (a type-2 loop).
 TEST(PidRegulator, RampSteadyStateErrorZeroWithIntegral) {

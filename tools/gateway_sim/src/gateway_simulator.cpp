@@ -3,8 +3,6 @@
 // gateway's own clock thread take it in turn.
 #include "tomc/gateway_sim/gateway_simulator.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,16 +10,13 @@
 #include <condition_variable>
 #include <deque>
 #include <mutex>
-#include <random>
 #include <stdexcept>
 #include <thread>
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
-#include <fastdds/dds/subscriber/DataReader.hpp>
-#include <fastdds/dds/subscriber/DataReaderListener.hpp>
-#include <fastdds/dds/subscriber/SampleInfo.hpp>
 
 #include "tomc/drives/dds/contract.hpp"
+#include "tomc/drives/dds/gateway_side.hpp"
 #include "tomc/drives/dds/participant.hpp"
 #include "tomc/drives/dds/type_support.hpp"
 #include "tomc/drives/simulated_drive.hpp"
@@ -38,14 +33,6 @@ namespace {
 constexpr std::uint64_t kMaxCatchUpSteps = 100;  // a longer gap is a new start, not lost cycles
 constexpr std::uint64_t kDropForever = UINT64_MAX;
 
-std::uint64_t random_id() {
-  std::random_device device;
-  std::uint64_t id = (static_cast<std::uint64_t>(device()) << 32) ^ device();
-  id ^= static_cast<std::uint64_t>(Clock::now().time_since_epoch().count()) * 0x9E3779B97F4A7C15ULL;
-  id ^= static_cast<std::uint64_t>(::getpid()) << 17;
-  return id == 0 ? 1 : id;
-}
-
 struct Device {
   std::string name;
   drives::DeviceConfig config;
@@ -59,24 +46,6 @@ struct Device {
   std::string mismatch;  // what the controller sends differently, "" when it matches
 };
 
-template <typename Sample, typename Handler>
-class Listener final : public fdds::DataReaderListener {
- public:
-  explicit Listener(Handler handler) : handler_(std::move(handler)) {}
-  void on_data_available(fdds::DataReader* reader) override {
-    std::lock_guard<std::mutex> lock(mutex_);
-    fdds::SampleInfo info;
-    while (reader->take_next_sample(&sample_, &info) == ReturnCode_t::RETCODE_OK) {
-      if (info.valid_data) handler_(sample_);
-    }
-  }
-
- private:
-  Handler handler_;
-  std::mutex mutex_;
-  Sample sample_;
-};
-
 }  // namespace
 
 struct GatewaySimulator::Impl {
@@ -88,22 +57,13 @@ struct GatewaySimulator::Impl {
   // Listeners before the participant: members are destroyed in reverse order, entities before listeners.
   std::unique_ptr<fdds::DataReaderListener> setpoint_listener;
   std::unique_ptr<fdds::DataReaderListener> command_listener;
-  std::unique_ptr<dds::Participant> participant;
-  fdds::TypeSupport setpoint_type{new dds::SetpointCycleType()};
-  fdds::TypeSupport actual_type{new dds::ActualCycleType()};
-  fdds::TypeSupport status_type{new dds::GatewayStatusType()};
+  std::unique_ptr<dds::GatewayEndpoints> endpoints;
   fdds::TypeSupport command_type{new dds::GatewayCommandType()};
   fdds::DataWriter* actual_writer = nullptr;
   fdds::DataWriter* status_writer = nullptr;
 
-  mutable std::mutex mutex;  // everything below
-  std::uint64_t incarnation = random_id();
-  std::uint64_t sequence = 0;
-  std::uint64_t owner = 0;  // the controller being served
-  bool have_cycle = false;
-  std::uint64_t last_cycle = 0;
-  bool ever_setpoint = false;
-  Clock::time_point last_setpoint{};
+  mutable std::mutex mutex;                                   // everything below
+  dds::SetpointSession session{std::chrono::nanoseconds(1)};  // G1, G2, G5, G6, G9
   bool stopped = false;
   Clock::time_point silent_until{};
   std::uint64_t drop_remaining = 0;
@@ -127,8 +87,10 @@ struct GatewaySimulator::Impl {
 
   // ---- with `mutex` held ----
   void release_controller() {
-    owner = 0;
-    have_cycle = false;
+    session.release();
+    forget_setpoints();
+  }
+  void forget_setpoints() {
     for (auto& d : devices)
       d.has_setpoint = false;
   }
@@ -141,7 +103,7 @@ struct GatewaySimulator::Impl {
   // One ActualCycle of every connected device. `probe`: the answer to a probe of that controller, with no
   // setpoint applied for it.
   void publish_answer(Clock::time_point now, std::uint64_t probe = 0) {
-    ++sequence;  // also for a dropped answer: the controller sees the gap
+    const std::uint64_t sequence = session.next_sequence();  // also for a dropped answer: the gap shows
     if (drop_remaining > 0) {
       if (drop_remaining != kDropForever) --drop_remaining;
       ++counters.answers_dropped;
@@ -152,11 +114,7 @@ struct GatewaySimulator::Impl {
       ++counters.answers_dropped;
       return;
     }
-    answer.contract_version(dds::kContractVersion);
-    answer.gateway(config.gateway);
-    answer.incarnation(incarnation);
-    answer.sequence_number(sequence);
-    answer.controller(probe != 0 ? probe : owner);
+    session.fill_answer(answer, config.gateway, sequence, probe != 0 ? probe : session.controller());
     std::size_t n = 0;
     for (const auto& d : devices)
       n += d.disconnected ? 0 : 1;
@@ -171,7 +129,7 @@ struct GatewaySimulator::Impl {
       e.setpoint_cycle(d.setpoint_cycle);
       dds::fill(d.config, d.actual, e.slots());
     }
-    ++counters.answers_published;
+    ++session.counters().answers_published;
     if (delay_us != 0) {
       {
         std::lock_guard<std::mutex> lock(delay_mutex);
@@ -184,8 +142,8 @@ struct GatewaySimulator::Impl {
   }
 
   void publish_status(Clock::time_point now, bool force) {
-    std::string signature =
-        std::to_string(incarnation) + "/" + std::to_string(owner) + "/" + std::to_string(command_number);
+    std::string signature = std::to_string(session.incarnation()) + "/" +
+                            std::to_string(session.controller()) + "/" + std::to_string(command_number);
     status.devices().resize(devices.size());
     for (std::size_t i = 0; i < devices.size(); ++i) {
       const Device& d = devices[i];
@@ -218,16 +176,7 @@ struct GatewaySimulator::Impl {
     if (!force && signature == status_signature && now - status_time < std::chrono::seconds(1)) return;
     status_signature = std::move(signature);
     status_time = now;
-    status.contract_version(dds::kContractVersion);
-    status.gateway(config.gateway);
-    status.incarnation(incarnation);
-    status.controller(owner);
-    status.cycle_time_ns(static_cast<std::uint32_t>(cycle.count()));
-    status.setpoints_applied(counters.setpoints_applied);
-    status.setpoint_gaps(counters.setpoint_gaps);
-    status.setpoints_rejected(counters.setpoints_rejected);
-    status.answers_published(counters.answers_published);
-    status.command_number(command_number);
+    session.fill_status(status, config.gateway, static_cast<std::uint32_t>(cycle.count()), command_number);
     status_writer->write(&status);
   }
 
@@ -244,47 +193,13 @@ struct GatewaySimulator::Impl {
     std::lock_guard<std::mutex> lock(mutex);
     const Clock::time_point now = Clock::now();
     if (stopped || now < silent_until) return;  // a hung or restarting gateway hears nothing
-    if (sample.contract_version() != dds::kContractVersion || sample.devices().size() > dds::kMaxDevices ||
-        sample.controller() == 0) {
-      ++counters.setpoints_rejected;
-      return;
-    }
-    if (sample.devices().empty()) {
-      // A probe (docs/gateway.md G9): answered at once if this controller could be served; nothing applied,
-      // no drive stepped, the controller not taken as served.
-      if (owner != 0 && sample.controller() != owner && now - last_setpoint < watchdog) {
-        ++counters.setpoints_rejected;
-        return;
-      }
-      publish_answer(now, sample.controller());
-      return;
-    }
-    if (owner != 0 && sample.controller() != owner) {
-      // One controller at a time: another one is refused until the served one has been silent for the
-      // watchdog time (two controllers must never drive the same axis).
-      if (now - last_setpoint < watchdog) {
-        ++counters.setpoints_rejected;
-        return;
-      }
-      release_controller();
-    }
-    if (owner == 0) owner = sample.controller();
-    if (have_cycle) {
-      if (sample.cycle() <= last_cycle) {
-        ++counters.setpoints_rejected;  // old or duplicated
-        return;
-      }
-      // Lost setpoints: the drives ran those cycles without one (their setpoint timeout counts them).
-      const std::uint64_t gap = sample.cycle() - last_cycle - 1;
-      counters.setpoint_gaps += gap;
-      for (std::uint64_t k = 0; k < std::min(gap, kMaxCatchUpSteps); ++k)
-        step_all();
-    }
-    have_cycle = true;
-    last_cycle = sample.cycle();
-    last_setpoint = now;
-    ever_setpoint = true;
-    ++counters.setpoints_applied;
+    const dds::SetpointSession::Decision decision = session.accept(sample, now);
+    if (decision.released) forget_setpoints();  // the new controller's setpoints are not applied yet
+    if (decision.verdict == dds::SetpointSession::Verdict::kProbe) publish_answer(now, sample.controller());
+    if (decision.verdict != dds::SetpointSession::Verdict::kApply) return;
+    // Lost setpoints: the drives ran those cycles without one (their setpoint timeout counts them).
+    for (std::uint64_t k = 0; k < std::min(decision.gap, kMaxCatchUpSteps); ++k)
+      step_all();
     for (const auto& e : sample.devices()) {
       Device* d = find(e.device().c_str());
       if (d == nullptr || d->disconnected) continue;
@@ -327,10 +242,8 @@ struct GatewaySimulator::Impl {
       case gw::COMMAND_RESTART:
         // A new run of the gateway: new incarnation, sequence from 1, no controller; the drives (separate
         // devices) keep running on the gateway's clock meanwhile.
-        incarnation = random_id();
-        sequence = 0;
+        session.restart();
         release_controller();
-        ever_setpoint = false;
         silent_until = now + std::chrono::milliseconds(std::min<std::uint64_t>(command.value(), 60'000));
         break;
       case gw::COMMAND_DRIVE_FAULT:
@@ -364,8 +277,8 @@ struct GatewaySimulator::Impl {
       next += cycle;
       if (now > next + 10 * cycle) next = now + cycle;  // suspended: no burst of catch-up steps
       std::lock_guard<std::mutex> lock(mutex);
-      if (!ever_setpoint || now - last_setpoint >= watchdog) {
-        if (owner != 0) release_controller();
+      if (session.silent(now)) {
+        if (session.controller() != 0) release_controller();
         step_all();
         ++counters.idle_steps;
         if (!stopped && now >= silent_until) publish_answer(now);
@@ -405,6 +318,7 @@ GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config)
   }
   m.cycle = std::chrono::nanoseconds(static_cast<std::int64_t>(std::llround(config.cycle_time * 1e9)));
   m.watchdog = std::chrono::nanoseconds(static_cast<std::int64_t>(std::llround(config.watchdog * 1e9)));
+  m.session = dds::SetpointSession(m.watchdog);
   m.drop_every = config.drop_every;
   m.delay_us = config.delay_us;
   for (const auto& c : config.devices) {
@@ -420,38 +334,26 @@ GatewaySimulator::GatewaySimulator(const scenario::GatewaySimConfig& config)
     d.actual = drives::make_frames(d.config, telegrams::Direction::kActual);
     m.devices.push_back(std::move(d));
   }
-  m.answer.devices().resize(m.devices.size());
-  for (auto& e : m.answer.devices()) {
-    for (auto& s : e.slots())
-      s.pzd().reserve(telegrams::kMaxFrameBytes);
-  }
+  dds::reserve_answer(m.answer, m.devices.size());
 
   // A gateway need not know its controllers: with no peers it answers those that contact it.
-  const dds::ResolvedNetwork network = dds::resolve_network_or_throw(config.network, false);
-  m.participant = std::make_unique<dds::Participant>(config.domain, "tomc gateway-sim " + config.gateway,
-                                                     config.partition, network);
-  dds::Participant& p = *m.participant;
-  m.actual_writer =
-      p.publisher().create_datawriter(&p.topic(dds::kActualTopic, m.actual_type), dds::cyclic_writer_qos());
-  m.status_writer =
-      p.publisher().create_datawriter(&p.topic(dds::kStatusTopic, m.status_type), dds::status_writer_qos());
-  if (m.actual_writer == nullptr || m.status_writer == nullptr) {
-    throw std::runtime_error("gateway-sim: Fast DDS could not create the writers");
-  }
+  m.endpoints = std::make_unique<dds::GatewayEndpoints>(config.domain, "tomc gateway-sim " + config.gateway,
+                                                        config.partition, config.network, "gateway-sim");
+  m.actual_writer = &m.endpoints->actual_writer();
+  m.status_writer = &m.endpoints->status_writer();
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     m.publish_status(Clock::now(), true);
   }
   auto on_setpoint = [&m](const gw::SetpointCycle& s) { m.on_setpoint(s); };
   auto on_command = [&m](const gw::GatewayCommand& c) { m.on_command(c); };
-  m.setpoint_listener = std::make_unique<Listener<gw::SetpointCycle, decltype(on_setpoint)>>(on_setpoint);
-  m.command_listener = std::make_unique<Listener<gw::GatewayCommand, decltype(on_command)>>(on_command);
-  fdds::DataReader* setpoints = p.subscriber().create_datareader(
-      &p.topic(dds::kSetpointTopic, m.setpoint_type), dds::cyclic_reader_qos(), m.setpoint_listener.get());
-  fdds::DataReader* commands = p.subscriber().create_datareader(
-      &p.topic(dds::kCommandTopic, m.command_type), dds::command_reader_qos(), m.command_listener.get());
-  if (setpoints == nullptr || commands == nullptr) {
-    throw std::runtime_error("gateway-sim: Fast DDS could not create the readers");
+  m.setpoint_listener = dds::make_taking_listener<gw::SetpointCycle>(on_setpoint);
+  m.command_listener = dds::make_taking_listener<gw::GatewayCommand>(on_command);
+  m.endpoints->read_setpoints(m.setpoint_listener.get());
+  dds::Participant& p = m.endpoints->participant();
+  if (p.subscriber().create_datareader(&p.topic(dds::kCommandTopic, m.command_type),
+                                       dds::command_reader_qos(), m.command_listener.get()) == nullptr) {
+    throw std::runtime_error("gateway-sim: Fast DDS could not create the command reader");
   }
   m.clock_thread = std::thread([&m] { m.clock_loop(); });
   m.delay_thread = std::thread([&m] { m.delay_loop(); });
@@ -464,14 +366,19 @@ GatewaySimulator::~GatewaySimulator() {
   m.delay_cv.notify_all();
   if (m.clock_thread.joinable()) m.clock_thread.join();
   if (m.delay_thread.joinable()) m.delay_thread.join();
-  m.participant.reset();  // readers first: no listener runs after this
+  m.endpoints.reset();  // readers first: no listener runs after this
 }
 
 SimulatorCounters GatewaySimulator::counters() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   SimulatorCounters c = impl_->counters;
-  c.incarnation = impl_->incarnation;
-  c.controller = impl_->owner;
+  const dds::SessionCounters& s = impl_->session.counters();
+  c.setpoints_applied = s.setpoints_applied;
+  c.setpoint_gaps = s.setpoint_gaps;
+  c.setpoints_rejected = s.setpoints_rejected;
+  c.answers_published = s.answers_published;
+  c.incarnation = impl_->session.incarnation();
+  c.controller = impl_->session.controller();
   return c;
 }
 

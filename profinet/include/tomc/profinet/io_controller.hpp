@@ -78,10 +78,22 @@ class IoController {
   std::vector<std::uint8_t> on_application_ready(std::span<const std::uint8_t> payload);
   std::vector<std::uint8_t> release_request();
 
+  // --- Record access while the AR runs (e.g. PROFIdrive parameter access at start-up) ---
+  std::vector<std::uint8_t> record_write_request(std::uint16_t slot, std::uint16_t subslot,
+                                                 std::uint16_t index, std::span<const std::uint8_t> data);
+  std::vector<std::uint8_t> record_read_request(std::uint16_t slot, std::uint16_t subslot,
+                                                std::uint16_t index, std::uint32_t max_length);
+  // The answer to one of them: the data read (empty for a write), or nullopt when the device refused
+  // (last_error() says why) or the answer is malformed. The AR goes on either way.
+  std::optional<std::vector<std::uint8_t>> on_record_response(std::span<const std::uint8_t> payload);
+
   // --- Cyclic (noexcept, allocation-free) ---
   std::span<std::uint8_t> output_data(std::uint16_t slot, std::uint16_t subslot) noexcept;
   std::span<const std::uint8_t> input_data(std::uint16_t slot, std::uint16_t subslot) const noexcept;
   std::uint8_t input_iops(std::uint16_t slot, std::uint16_t subslot) const noexcept;
+  // The provider state (IOPS) of every output data object: false = BAD, the device must not use the data
+  // (the gateway's watchdog when its controller went silent, docs/gateway.md G6); true = GOOD (default).
+  void set_outputs_valid(bool valid) noexcept;
   // The output frame of this cycle into out (0 before the Connect response).
   std::size_t next_output_frame(std::span<std::uint8_t> out) noexcept;
   // A received input frame of this AR; false if it is another frame or malformed.
@@ -105,7 +117,8 @@ class IoController {
 
  private:
   std::vector<std::uint8_t> rpc_request(PnioOperation operation, std::span<const std::uint8_t> blocks);
-  bool check_response(std::span<const std::uint8_t> payload, RpcPacket& packet);
+  // An error status ends the AR, except for record access (a refused record is the device's answer).
+  bool check_response(std::span<const std::uint8_t> payload, RpcPacket& packet, bool abort_on_error = true);
   bool build_layouts();
 
   MacAddress own_mac_;

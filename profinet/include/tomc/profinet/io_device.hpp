@@ -85,6 +85,8 @@ class IoDevice {
   // has no such data in this AR.
   std::span<std::uint8_t> input_data(std::uint16_t slot, std::uint16_t subslot);
   std::span<const std::uint8_t> output_data(std::uint16_t slot, std::uint16_t subslot) const;
+  // The controller's provider state of that output data (kIoxsBad if the submodule has none in this AR).
+  std::uint8_t output_iops(std::uint16_t slot, std::uint16_t subslot) const noexcept;
   ApduStatus last_output_status() const noexcept { return output_status_; }
   // The watchdog (IEC 61158-6-10: DataHoldFactor x cycle without a new output frame): ends the AR.
   bool watchdog_expired(std::uint64_t now_us);

@@ -31,7 +31,7 @@
 
 namespace tomc::techobjects {
 
-struct PositioningAxisData {
+struct PositioningAxisData : AxisStatusWords {
   static constexpr TechnologyObjectType kTechnologyObjectType = TechnologyObjectType::kPositioningAxis;
 
   // ---- §2 actual values and setpoints (man. §10.3.1), all RON ----
@@ -334,18 +334,8 @@ struct PositioningAxisData {
     std::uint32_t StatusWord = 0;               // DWORD; bits: StatusMotionInBit
   } StatusMotionIn;
 
-  // ---- §4.9 StatusInterpreterMotion (man. §10.3.37); the Interpreter TO needs S7-1500T ----
-  TO_Struct_StatusInterpreterMotion StatusInterpreterMotion;
-
-  // ---- §5 bit words (man. §10.3.38 ... §10.3.42), RON; bits: StatusWordBit etc. ----
-  std::uint32_t StatusWord = 0;
-  std::uint32_t StatusWord2 = 0;
-  std::uint32_t ErrorWord = 0;
-
-  // ---- §4.10 ErrorDetail (man. §10.3.41), RON ----
-  TO_Struct_ErrorDetail ErrorDetail;
-
-  std::uint32_t WarningWord = 0;
+  // §4.9 StatusInterpreterMotion, §5 bit words and §4.10 ErrorDetail (man. §10.3.37 ... §10.3.42):
+  // AxisStatusWords
 };
 
 }  // namespace tomc::techobjects

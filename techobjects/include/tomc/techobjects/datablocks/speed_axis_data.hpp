@@ -22,7 +22,7 @@
 
 namespace tomc::techobjects {
 
-struct SpeedAxisData {
+struct SpeedAxisData : AxisStatusWords {
   static constexpr TechnologyObjectType kTechnologyObjectType = TechnologyObjectType::kSpeedAxis;
 
   // ---- §2 actual values and setpoints (man. §10.2.1), all RON ----
@@ -96,18 +96,8 @@ struct SpeedAxisData {
     std::int32_t FunctionState = static_cast<std::int32_t>(MotionInFunctionState::kNone);
   } StatusMotionIn;
 
-  // ---- §4.9 StatusInterpreterMotion (man. §10.2.14); the Interpreter TO needs S7-1500T ----
-  TO_Struct_StatusInterpreterMotion StatusInterpreterMotion;
-
-  // ---- §5 bit words (man. §10.2.15 ... §10.2.19), RON; bits: StatusWordBit etc. ----
-  std::uint32_t StatusWord = 0;
-  std::uint32_t StatusWord2 = 0;
-  std::uint32_t ErrorWord = 0;
-
-  // ---- §4.10 ErrorDetail (man. §10.2.18), RON ----
-  TO_Struct_ErrorDetail ErrorDetail;
-
-  std::uint32_t WarningWord = 0;
+  // §4.9 StatusInterpreterMotion, §5 bit words and §4.10 ErrorDetail (man. §10.2.14 ... §10.2.19):
+  // AxisStatusWords
 };
 
 }  // namespace tomc::techobjects

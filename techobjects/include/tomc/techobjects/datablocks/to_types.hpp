@@ -345,6 +345,20 @@ struct TO_Struct_ErrorDetail {
   std::int32_t Reaction = static_cast<std::int32_t>(AlarmReaction::kNone);  // 0 ... 5
 };
 
+// What the data block of every axis ends with (spec 04 §4.9, §4.10, §5; man. §10.2.14 ... §10.2.19 for S,
+// §10.3.37 ... §10.3.42 for P/Y): StatusInterpreterMotion, the bit words (bits: StatusWordBit etc.) and
+// ErrorDetail, all RON. One declaration for the speed and the positioning axis: their data blocks derive from
+// it, so the members stay `data.StatusWord` (not a TIA type of its own; tomc does not reproduce the DB
+// layout).
+struct AxisStatusWords {
+  TO_Struct_StatusInterpreterMotion StatusInterpreterMotion;  // the Interpreter TO needs S7-1500T
+  std::uint32_t StatusWord = 0;
+  std::uint32_t StatusWord2 = 0;
+  std::uint32_t ErrorWord = 0;
+  TO_Struct_ErrorDetail ErrorDetail;
+  std::uint32_t WarningWord = 0;
+};
+
 // ---- parts of Sensor[n] (P/Y), Sensor (E), Actor (S, P/Y) and Simulation (S, P/Y) ----
 
 struct TO_Struct_SensorInterface {

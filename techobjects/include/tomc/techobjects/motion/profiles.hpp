@@ -52,9 +52,9 @@ struct ProfileSegment {
 
 // Worst case: a velocity change through zero (2 × 3 segments) + cruise + braking (3) = 10.
 inline constexpr std::size_t kMaxProfileSegments = 12;
-// Fixed bound of one PositionProfile root search (bracketed Anderson–Björck with bisection fallback); a plan
-// runs at most 3 of them (decision S18), so at most 4 + 3 × 101 evaluations of a closed-form velocity
-// change and stop. The randomized tests and the benchmark see at most ~12 iterations per search.
+// Fixed bound of one PositionProfile root search (bracketed, Chandrupatla's method); a plan runs at most 3
+// of them (decision S18), so at most 4 + 3 × 101 evaluations of a closed-form velocity change and stop.
+// The randomized tests and the benchmark see at most 9 iterations per search.
 inline constexpr int kMaxPositionIterations = 100;
 
 // The segment storage shared by both planners.

@@ -51,15 +51,34 @@ class PidRegulator {
   bool configure(const PidGains& gains, double servo_cycle_s) noexcept;
   // Double buffer: load a set now, make it active with apply() (at the next update()).
   bool load(const PidGains& gains) noexcept;
-  void apply() noexcept { apply_pending_ = has_pending_; }
+  void apply() noexcept {
+    apply_pending_ = has_pending_;
+    proportional_only_ = proportional_only_ && !apply_pending_;
+  }
   const PidGains& gains() const noexcept { return active_; }
   // Forgets I, the D history and the held D: the next update starts from e alone.
   void reset() noexcept;
 
-  PidTerms update(double control_difference) noexcept;  // the terms of this cycle
+  // The terms of this cycle. Without an option set (the S7 P controller, the common case) only P is
+  // computed, inline: the same terms as the full regulator gives for those gains, at a few instructions.
+  PidTerms update(double control_difference) noexcept {
+    if (!proportional_only_) return update_pid(control_difference);
+    started_ = true;
+    e_at_last_sample_ = control_difference;
+    PidTerms t;
+    t.p = active_.Kv * control_difference;
+    t.i = integral_;
+    t.output = t.p + t.i;
+    return t;
+  }
 
  private:
   static bool valid(const PidGains& g) noexcept;
+  PidTerms update_pid(double control_difference) noexcept;
+  void classify() noexcept {
+    proportional_only_ = active_.IntegralTime == 0.0 && active_.DerivativeTime == 0.0 &&
+                         active_.DeadBand == 0.0 && active_.OutputLimit == 0.0 && !apply_pending_;
+  }
 
   PidGains active_{};
   PidGains pending_{};
@@ -71,6 +90,7 @@ class PidRegulator {
   double e_at_last_sample_ = 0.0;  // e'(k − n)
   std::uint32_t cycles_since_sample_ = 0;
   bool started_ = false;
+  bool proportional_only_ = true;  // no I, D, dead band or output limit active, no new set to apply
 };
 
 }  // namespace tomc::techobjects

@@ -1,0 +1,175 @@
+// The start-up of one AR over the sockets (start_up.hpp).
+#include "start_up.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include "tomc/profinet/parameter_access.hpp"
+
+namespace tomc::profinet_gateway::detail {
+
+namespace pn = tomc::profinet;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr auto kDcpWait = std::chrono::milliseconds(500);  // DCP ResponseDelay is at most 400 ms
+constexpr int kRpcWaitUs = 300'000;
+constexpr int kRpcAttempts = 3;
+
+std::string hex(std::uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08X", value);
+  return text;
+}
+
+std::string hex_short(std::uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%X", value);
+  return text;
+}
+
+// The DCP answer with this xid, skipping every other frame (cyclic frames of running ARs arrive too).
+std::vector<std::uint8_t> receive_dcp(pn::RawSocket& raw, std::uint32_t xid) {
+  std::array<std::uint8_t, 1518> frame{};
+  for (const auto end = Clock::now() + kDcpWait; Clock::now() < end;) {
+    const std::size_t n = raw.receive(frame, 10'000);
+    if (n == 0) continue;
+    const auto in_frame = std::span<const std::uint8_t>(frame.data(), n);
+    if (pn::classify_frame_id(pn::peek_frame_id(in_frame)) != pn::FrameKind::kDcp) continue;
+    pn::WireReader in{in_frame};
+    (void)pn::decode_ethernet(in);
+    const pn::DcpMessage message = pn::decode_dcp(in);
+    if (in.ok() && message.xid == xid && message.type == pn::DcpServiceType::kSuccess) {
+      return {in_frame.begin(), in_frame.end()};
+    }
+  }
+  return {};
+}
+
+// One RPC request and its answer from the device's address (repeated on silence: UDP may lose it).
+std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device,
+                               std::span<const std::uint8_t> request) {
+  std::array<std::uint8_t, 4096> buffer{};
+  for (int attempt = 0; attempt < kRpcAttempts; ++attempt) {
+    udp.send_to(request, device, pn::kPnioUdpPort);
+    for (const auto end = Clock::now() + std::chrono::microseconds(kRpcWaitUs); Clock::now() < end;) {
+      pn::Ipv4Address from{};
+      std::uint16_t port = 0;
+      const std::size_t n = udp.receive(buffer, 20'000, from, port);
+      if (n > 0 && from == device) return {buffer.begin(), buffer.begin() + static_cast<long>(n)};
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+namespace {
+
+// p0922 and p2000 of the drive object through base-mode parameter access (write the request, read the
+// answer).
+std::string check_telegram(pn::IoController& controller, pn::UdpSocket& udp, TelegramCheck& check) {
+  const pn::Ipv4Address& ip = controller.device().ip.address;
+  const pn::ParameterRequest request{
+      1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}};
+  const auto status = [&] { return "PNIOStatus " + hex(controller.last_error().value()); };
+  const auto written =
+      call(udp, ip,
+           controller.record_write_request(check.slot, 1, pn::kParameterAccessIndex, pn::encode(request)));
+  if (written.empty()) return "no answer to the parameter request (p0922)";
+  if (!controller.on_record_response(written)) return "parameter request (p0922) refused, " + status();
+  const auto read =
+      call(udp, ip, controller.record_read_request(check.slot, 1, pn::kParameterAccessIndex, 240));
+  if (read.empty()) return "no answer to the parameter read (p0922)";
+  const auto data = controller.on_record_response(read);
+  if (!data) return "parameter read (p0922) refused, " + status();
+  const auto response = pn::decode_parameter_response(*data);
+  const auto telegram = response ? pn::integer_value(*response, 0) : std::nullopt;
+  if (!telegram) return "p0922 unreadable in the drive's parameter response";
+  if (*telegram != check.telegram) {
+    return "p0922 is " + std::to_string(*telegram) + ": the drive sends telegram " +
+           std::to_string(*telegram) + ", the file says " + std::to_string(check.telegram);
+  }
+  check.reference_speed_rpm =
+      response->parameters.size() > 1 ? pn::float_value(*response, 1).value_or(0.0f) : 0.0f;
+  return {};
+}
+
+}  // namespace
+
+std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp, std::uint32_t& xid,
+                     TelegramCheck* check) {
+  const std::string& name = controller.device().name_of_station;
+  const pn::Ipv4Address& ip = controller.device().ip.address;
+  const std::uint32_t identify = ++xid;
+  raw.send(controller.identify_request(identify));
+  const auto found = receive_dcp(raw, identify);
+  if (found.empty()) return "no DCP answer to Identify '" + name + "'";
+  const std::uint32_t set = ++xid;
+  if (const auto set_ip = controller.on_dcp(found, set); !set_ip.empty()) {
+    raw.send(set_ip);
+    if (receive_dcp(raw, set).empty()) return "DCP Set of the IP suite unanswered by '" + name + "'";
+  }
+  if (!controller.device_mac()) return "the DCP answer did not name '" + name + "'";
+  const auto connect = call(udp, ip, controller.connect_request());
+  if (connect.empty()) return "no answer to Connect (UDP 34964)";
+  if (!controller.on_connect_response(connect)) {
+    return "Connect refused, PNIOStatus " + hex(controller.last_error().value());
+  }
+  while (controller.state() == pn::ControllerArState::kParameterizing ||
+         controller.state() == pn::ControllerArState::kPrmEnd) {
+    const auto request = controller.next_request();
+    const auto answer = call(udp, ip, request);
+    if (answer.empty()) {
+      controller.abort_ar();
+      return "no answer to a start-up record or PrmEnd";
+    }
+    if (!controller.on_response(answer)) {
+      controller.abort_ar();
+      return "record write or PrmEnd refused, PNIOStatus " + hex(controller.last_error().value());
+    }
+  }
+  // The device's ApplicationReady request comes to our port 34964.
+  std::array<std::uint8_t, 2048> ready{};
+  for (const auto end = Clock::now() + std::chrono::seconds(1); Clock::now() < end;) {
+    pn::Ipv4Address from{};
+    std::uint16_t port = 0;
+    const std::size_t n = udp.receive(ready, 20'000, from, port);
+    if (n == 0 || from != ip) continue;
+    const auto answer = controller.on_application_ready(std::span(ready).first(n));
+    if (!answer.empty()) udp.send_to(answer, from, port);
+    if (controller.state() != pn::ControllerArState::kRunning) continue;
+    if (check == nullptr) return {};
+    const std::string problem = check_telegram(controller, udp, *check);
+    if (!problem.empty()) {
+      // Not this drive's telegram (or unknown): the AR must not carry setpoints of another layout.
+      udp.send_to(controller.release_request(), ip, pn::kPnioUdpPort);
+      controller.abort_ar();
+    }
+    return problem;
+  }
+  controller.abort_ar();
+  return "no ApplicationReady from '" + name + "'";
+}
+
+std::string describe(const std::vector<pn::ModuleDiff>& diff) {
+  static constexpr const char* kModule[] = {"no module", "wrong module", "proper module", "substitute"};
+  static constexpr const char* kSub[] = {"ok", "substitute", "wrong submodule", "no submodule"};
+  std::string text;
+  for (const pn::ModuleDiff& m : diff) {
+    if (m.state != pn::ModuleState::kProperModule) {
+      text += (text.empty() ? "" : "; ") + std::string("slot ") + std::to_string(m.slot) + ": " +
+              kModule[static_cast<std::size_t>(m.state) & 3] + " (ident " + hex_short(m.ident) + ")";
+    }
+    for (const pn::SubmoduleDiff& s : m.submodules) {
+      if (s.ident_info == pn::SubmoduleIdentInfo::kOk) continue;
+      text += (text.empty() ? "" : "; ") + std::string("slot ") + std::to_string(m.slot) + " subslot " +
+              std::to_string(s.subslot) + ": " + kSub[static_cast<std::size_t>(s.ident_info) & 3] +
+              " (ident " + hex_short(s.ident) + ")";
+    }
+  }
+  return text;
+}
+
+}  // namespace tomc::profinet_gateway::detail

@@ -1,0 +1,76 @@
+#pragma once
+// The configuration file of the PROFINET gateway, `tomc gateway --config FILE` (docs/profinet-gateway.md):
+// the DDS side as in the gateway simulator's file (docs/gateway.md §9, §11), the PROFINET IO controller's
+// interface and send clock, and per device its name on DDS, its PROFINET name of station and IP, its
+// telegram, and the modules and submodules the controller expects (default: the emulated drive's).
+//
+//   { "gateway": "gw1", "domain": 42, "watchdog": 0.05,
+//     "profinet": { "interface": "eth1", "ip": "192.168.0.1", "send_clock_factor": 32 },
+//     "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "192.168.0.10", "telegram": 3 } ] }
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tomc/drives/dds/network.hpp"
+#include "tomc/scenario/config.hpp"
+
+namespace tomc::scenario {
+
+struct ProfinetSubmoduleConfig {
+  std::uint16_t subslot = 1;
+  std::uint32_t ident = 0;
+  std::uint16_t input_length = 0;   // bytes the device sends (0 with output_length 0: no IO data)
+  std::uint16_t output_length = 0;  // bytes the controller sends
+};
+
+struct ProfinetModuleConfig {
+  std::uint16_t slot = 0;
+  std::uint32_t ident = 0;
+  std::vector<ProfinetSubmoduleConfig> submodules;
+};
+
+struct ProfinetDeviceConfig {
+  std::string name;  // the device's name on DDS (the contract's `device`)
+  telegrams::ByteOrder byte_order = telegrams::ByteOrder::kBig;
+  std::string name_of_station;
+  std::array<std::uint8_t, 4> ip{};
+  std::array<std::uint8_t, 4> netmask{255, 255, 255, 0};
+  std::uint16_t telegram = 0;  // the drive telegram (slot "drive" of the contract)
+  // Where the telegram submodule is: its input/output lengths must be the telegram's.
+  std::uint16_t telegram_slot = 1;
+  std::uint16_t telegram_subslot = 2;
+  std::vector<ProfinetModuleConfig> modules;  // DAP first; default: the emulated drive's layout
+  // At start-up, read p0922 (and p2000) through PROFIdrive parameter access and refuse the AR unless p0922 is
+  // `telegram`; false for a device without base-mode parameter access.
+  bool check_telegram = true;
+  drives::DeviceConfig device_config() const;
+};
+
+struct ProfinetGatewayConfig {
+  std::string gateway = "gateway";
+  int domain = 0;
+  std::string partition;
+  drives::dds::NetworkSettings network;  // DDS side: "interface", "peers", "multicast_discovery"
+  double watchdog = 0.05;                // s without setpoints before the outputs go invalid (G6)
+  // PROFINET side ("profinet" object).
+  std::string interface;
+  std::array<std::uint8_t, 4> ip{};      // the controller's IPv4 address on that interface (RPC, UDP 34964)
+  std::uint16_t send_clock_factor = 32;  // × 31.25 µs: 32 = 1 ms (RT_CLASS_1: 32..128)
+  std::uint16_t reduction_ratio = 1;
+  std::uint16_t watchdog_factor = 3;  // the data-hold watchdog, in send clock × reduction ratio
+  int fifo_priority = 0;              // the cyclic thread: 1..99 SCHED_FIFO, 0 normal
+  bool lock_memory = false;
+  std::vector<ProfinetDeviceConfig> devices;
+
+  double cycle_time() const noexcept { return send_clock_factor * reduction_ratio * 31.25e-6; }
+};
+
+// Every problem with its JSON path ("devices[1].ip: '10.0.0' is not an IPv4 address").
+void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems);
+void load_profinet_gateway_config_file(const std::filesystem::path& file, ProfinetGatewayConfig& config,
+                                       Problems& problems);
+
+}  // namespace tomc::scenario

@@ -1,0 +1,202 @@
+// The PROFINET gateway's configuration file (profinet_gateway_config.hpp).
+#include "tomc/scenario/profinet_gateway_config.hpp"
+
+#include <charconv>
+
+#include "gateway_adapter_detail.hpp"
+#include "json_reader.hpp"
+#include "tomc/telegrams/codec.hpp"
+
+namespace tomc::scenario {
+
+using detail::ObjectReader;
+
+namespace {
+
+constexpr std::size_t kMaxStationName = 240;  // IEC 61158-6-10 NameOfStation
+
+std::uint16_t telegram_bytes(std::uint16_t telegram, telegrams::Direction direction) {
+  const auto codec = telegrams::TelegramCodec::create(telegram, direction);
+  return codec ? static_cast<std::uint16_t>(codec->frame_size()) : 0;
+}
+
+// "a.b.c.d" with every part 0..255.
+bool parse_ipv4(std::string_view text, std::array<std::uint8_t, 4>& out) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    unsigned value = 256;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || value > 255 || end == text.data()) return false;
+    out[i] = static_cast<std::uint8_t>(value);
+    text.remove_prefix(static_cast<std::size_t>(end - text.data()));
+    if (i < 3) {
+      if (text.empty() || text.front() != '.') return false;
+      text.remove_prefix(1);
+    }
+  }
+  return text.empty();
+}
+
+void read_ipv4(ObjectReader& r, std::string_view key, std::array<std::uint8_t, 4>& target, bool required,
+               Problems& problems) {
+  if (const Json* v = r.get(key, required)) {
+    if (auto text = detail::read_string(*v, r.path_of(key), problems); text && !parse_ipv4(*text, target)) {
+      problems.add(r.path_of(key), "'" + *text + "' is not an IPv4 address (a.b.c.d)");
+    }
+  }
+}
+
+// A name of station: lower-case labels of letters, digits and '-' separated by '.' (IEC 61158-6-10).
+std::string station_name_problem(const std::string& name) {
+  if (name.empty() || name.size() > kMaxStationName) return "1..240 characters";
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.';
+    if (!ok) return "'" + name + "': only a-z, 0-9, '-' and '.' (DCP names are lower case)";
+  }
+  return {};
+}
+
+void read_modules(const Json& value, const std::string& path, ProfinetDeviceConfig& device,
+                  Problems& problems) {
+  if (!value.is_array() || value.empty() || value.size() > 64) {
+    problems.add(path, "expected an array of 1..64 modules (the DAP in slot 0 first)");
+    return;
+  }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    ObjectReader m(value[i], path + "[" + std::to_string(i) + "]", problems);
+    if (!m.valid()) continue;
+    ProfinetModuleConfig module;
+    m.integer("slot", module.slot, 0, 0x7FFF, false, true);
+    m.integer("ident", module.ident, 0, 0xFFFFFFFF, true, true);
+    if (const Json* subs = m.get("submodules", true)) {
+      if (!subs->is_array() || subs->empty() || subs->size() > 64) {
+        problems.add(m.path_of("submodules"), "expected an array of 1..64 submodules");
+      } else {
+        for (std::size_t k = 0; k < subs->size(); ++k) {
+          ObjectReader s((*subs)[k], m.path_of("submodules") + "[" + std::to_string(k) + "]", problems);
+          if (!s.valid()) continue;
+          ProfinetSubmoduleConfig sub;
+          s.integer("subslot", sub.subslot, 1, 0x9FFF, true, true);
+          s.integer("ident", sub.ident, 0, 0xFFFFFFFF, true, true);
+          s.integer("input_length", sub.input_length, 0, 1440);
+          s.integer("output_length", sub.output_length, 0, 1440);
+          s.finish();
+          module.submodules.push_back(sub);
+        }
+      }
+    }
+    m.finish();
+    device.modules.push_back(std::move(module));
+  }
+  if (device.modules.front().slot != 0)
+    problems.add(path + "[0].slot", "the first module is the DAP in slot 0");
+  if (device.telegram == 0) return;
+  // The telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec 06 §2.15).
+  const std::uint16_t in = telegram_bytes(device.telegram, telegrams::Direction::kActual);
+  const std::uint16_t out = telegram_bytes(device.telegram, telegrams::Direction::kSetpoint);
+  for (std::size_t i = 0; i < device.modules.size(); ++i) {
+    const ProfinetModuleConfig& module = device.modules[i];
+    if (module.slot != device.telegram_slot) continue;
+    for (std::size_t k = 0; k < module.submodules.size(); ++k) {
+      const ProfinetSubmoduleConfig& sub = module.submodules[k];
+      if (sub.subslot != device.telegram_subslot) continue;
+      if (sub.input_length != in || sub.output_length != out) {
+        problems.add(path + "[" + std::to_string(i) + "].submodules[" + std::to_string(k) + "]",
+                     "the telegram submodule has input_length " + std::to_string(sub.input_length) +
+                         " and output_length " + std::to_string(sub.output_length) + "; telegram " +
+                         std::to_string(device.telegram) + " needs " + std::to_string(in) + " and " +
+                         std::to_string(out));
+      }
+      return;
+    }
+  }
+  problems.add(path, "no submodule in slot " + std::to_string(device.telegram_slot) + " subslot " +
+                         std::to_string(device.telegram_subslot) + " (telegram_slot, telegram_subslot)");
+}
+
+}  // namespace
+
+drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
+  drives::DeviceConfig c;
+  c.drive_telegram = telegram;
+  c.codec.byte_order = byte_order;
+  return c;
+}
+
+void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems) {
+  ObjectReader root(document, "", problems);
+  if (!root.valid()) return;
+  detail::read_gateway_side(root, config.gateway, config.domain, config.partition, config.network,
+                            config.watchdog, problems);
+  if (const Json* pn = root.get("profinet", true)) {
+    ObjectReader p(*pn, "profinet", problems);
+    if (p.valid()) {
+      if (const Json* v = p.get("interface", true)) {
+        if (auto name = detail::read_string(*v, p.path_of("interface"), problems)) {
+          if (name->empty() || name->size() > 15) {
+            problems.add(p.path_of("interface"), "an interface name of 1..15 characters (e.g. \"eth1\")");
+          } else {
+            config.interface = *name;
+          }
+        }
+      }
+      read_ipv4(p, "ip", config.ip, true, problems);
+      // RT_CLASS_1 on Linux: send clock 1..4 ms (IEC 61158-6-10 SendClockFactor 32..128 × 31.25 µs).
+      p.integer("send_clock_factor", config.send_clock_factor, 32, 128);
+      p.integer("reduction_ratio", config.reduction_ratio, 1, 512);
+      p.integer("watchdog_factor", config.watchdog_factor, 3, 255);
+      p.integer("fifo_priority", config.fifo_priority, 0, 99);
+      p.boolean("lock_memory", config.lock_memory);
+      p.finish();
+    }
+  }
+  if (const Json* v = root.get("devices", true);
+      v != nullptr && detail::check_gateway_devices(*v, problems)) {
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      ObjectReader r((*v)[i], "devices[" + std::to_string(i) + "]", problems);
+      if (!r.valid()) continue;
+      ProfinetDeviceConfig device;
+      std::vector<std::string> names;
+      for (const auto& other : config.devices)
+        names.push_back(other.name);
+      detail::read_gateway_device(r, names, device.name, device.byte_order, problems);
+      if (const Json* n = r.get("name_of_station", true)) {
+        if (auto name = detail::read_string(*n, r.path_of("name_of_station"), problems)) {
+          if (const std::string why = station_name_problem(*name); !why.empty()) {
+            problems.add(r.path_of("name_of_station"), why);
+          } else {
+            for (const auto& other : config.devices) {
+              if (other.name_of_station == *name)
+                problems.add(r.path_of("name_of_station"), "'" + *name + "' is used twice");
+            }
+            device.name_of_station = *name;
+          }
+        }
+      }
+      read_ipv4(r, "ip", device.ip, true, problems);
+      read_ipv4(r, "netmask", device.netmask, false, problems);
+      if (device.ip == config.ip && device.ip != std::array<std::uint8_t, 4>{})
+        problems.add(r.path_of("ip"), "the same address as profinet.ip (the controller)");
+      r.integer("telegram", device.telegram, 1, 999, false, true);
+      if (device.telegram != 0) {
+        if (const std::string why = drives::validate(device.device_config()); !why.empty())
+          problems.add(r.path_of("telegram"), why);
+      }
+      r.integer("telegram_slot", device.telegram_slot, 0, 0x7FFF);
+      r.boolean("check_telegram", device.check_telegram);
+      r.integer("telegram_subslot", device.telegram_subslot, 1, 0x9FFF, true);
+      if (const Json* m = r.get("modules")) read_modules(*m, r.path_of("modules"), device, problems);
+      r.finish();
+      config.devices.push_back(std::move(device));
+    }
+  }
+  root.finish();
+}
+
+void load_profinet_gateway_config_file(const std::filesystem::path& file, ProfinetGatewayConfig& config,
+                                       Problems& problems) {
+  Json document;
+  if (detail::read_json_file(file, document, problems))
+    load_profinet_gateway_config(document, config, problems);
+}
+
+}  // namespace tomc::scenario
