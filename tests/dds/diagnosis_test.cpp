@@ -174,7 +174,9 @@ DeviceReport run_cycles(GatewayLink& link, DdsGatewayDrive& drive, int cycles, b
     setpoint[tomc::drives::Slot::kDrive].bytes[stw2] =
         static_cast<std::byte>(count ? ((cycle % 15) + 1) << 4 : 0);
     drive.write_setpoint(setpoint);
-    link.wait_for_answers(std::chrono::milliseconds(200));
+    // Lock-step: returns as soon as the answer is in; the bound stays below the gateway's 1 s watchdog. 200
+    // ms was exceeded often enough on a busy machine to miss the 90 answers expected of 100 cycles.
+    link.wait_for_answers(std::chrono::milliseconds(800));
   }
   return link.diagnose().at(0);
 }

@@ -140,6 +140,30 @@ TEST(Snapshots, AlarmHistoryCountsWhatItMissed) {
   EXPECT_EQ(full.history_lost, 0u);
 }
 
+// Issue 22 (the soak's "alarm history bounded", docs/reliability.md §7): the reader keeps the newest
+// DiagnosticsConfig::alarm_history events per object, each with its wall-clock time; what it drops at the
+// front was read, so it is not counted as lost.
+TEST(Snapshots, AlarmHistoryKeepsTheNewestUpToItsBound) {
+  DiagnosticsMachine m(1, diagnostics::DiagnosticsConfig{1, 4096, 50});
+  for (int i = 0; i < 40; ++i) {  // 80 events ("raised", "acknowledged"), polled every cycle
+    ASSERT_TRUE(m.axes[0]->inject_alarm(techobjects::kAlarmDynamicsLimitedVelocity,
+                                        static_cast<std::uint32_t>(i), techobjects::AlarmReaction::kNone));
+    ASSERT_TRUE(m.axes[0]->reset(false).accepted());
+    m.run(1);
+    m.diagnostics.poll();
+  }
+  m.run(1);
+  m.diagnostics.poll();
+  const auto state =
+      m.diagnostics.read([](const diagnostics::Diagnostics::State& s) { return s.objects[0]; });
+  ASSERT_EQ(state.history.size(), 50u);
+  EXPECT_EQ(state.history_unix_s.size(), 50u);
+  EXPECT_EQ(state.history.front().sequence, 31u);
+  EXPECT_EQ(state.history.back().sequence, 80u);
+  EXPECT_EQ(state.history.back().additional_value, 39u);
+  EXPECT_EQ(state.history_lost, 0u);
+}
+
 // Issue 21: every event of the history has its wall-clock time, dated back from the newest snapshot's cycle
 // (the cycle runs in real time): an event 500 cycles of 1 ms before the snapshot happened 0.5 s before the
 // poll; events are in time order.
