@@ -547,3 +547,23 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 }
 
 }  // namespace
+
+// Bug (issue 19): a cam interpolated during set-up, before Runtime::start(), must still count as
+// interpolated afterwards — MC_CamIn used to answer 16#80AC (spec 07 §3.2: interpolate after download).
+TEST(Camming, CamInterpolatedBeforeTheRuntimeStartsIsUsable) {
+  Cam* early = nullptr;
+  GearingMachine m(virtual_rotary_modulo(), virtual_rotary_modulo(), [&](techobjects::Runtime& r) {
+    early = &points_cam(r, "E", 21, {{0.0, 0.0}, {180.0, 100.0}, {360.0, 0.0}});
+    EXPECT_TRUE(early->interpolate_cam().accepted());
+  });
+  EXPECT_EQ(early->read("StatusWord.X5"), 1.0);  // Interpolated
+  EXPECT_EQ(early->read("StatusCam.EndLeadingValue"), 360.0);
+  auto& c = m.cam_in;
+  c.Cam = early;
+  c.SyncProfileReference = 2;
+  c.ApplicationMode = 1;
+  c.Execute = true;
+  m.run(1);
+  EXPECT_FALSE(c.Error) << std::hex << c.ErrorID;
+  EXPECT_TRUE(c.InSync);
+}

@@ -47,6 +47,8 @@ enum class AxisJobKind : std::uint8_t {
   kGearOut,         // MC_GearOut, once desynchronization started
   kCamIn,           // MC_CamIn
   kCamOut,          // MC_CamOut, once desynchronization started
+  kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
+  kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).
