@@ -36,6 +36,7 @@
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
+#include "tomc/instructions/mc_phasing.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"

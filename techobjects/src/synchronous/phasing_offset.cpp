@@ -172,10 +172,10 @@ void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift
   const double x = effective.position;
   if (job.profile == 0) {
     // Phasing with dynamic parameters: independent of the leading value; φ follows the follower's profile.
-    job.elapsed += axis_.ipo_cycle_s();
-    const MotionState z = phasing_profile_.at(job.elapsed);
+    const double t = static_cast<double>(++job.cycles) * axis_.ipo_cycle_s();  // no summed rounding
+    const MotionState z = phasing_profile_.at(t);
     shift = Shift{job.from + z.position / job.ratio, z.velocity / job.ratio, z.acceleration / job.ratio};
-    if (job.elapsed >= phasing_profile_.duration()) {
+    if (t >= phasing_profile_.duration() - 1e-12) {
       shift = Shift{job.from + job.delta, 0.0, 0.0};
       end_shift(job, shift, finished, JobState::kDone, 0);
     }
@@ -194,9 +194,10 @@ void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift
     const double hi = std::max(x - step, x);
     double q = job.start_position;
     if (range.enabled && range.length > 0.0) {
-      q = job.start_position + std::ceil((lo - job.start_position) / range.length) * range.length;
+      q = job.start_position + std::ceil((lo - job.start_position) / range.length - 1e-12) * range.length;
     }
-    if (q > hi) return;  // no occurrence of StartPosition in [lo, hi]
+    // No occurrence of StartPosition in [lo, hi] (up to the rounding of a summed leading value).
+    if (q > hi + 1e-9 * std::max(1.0, std::fabs(hi))) return;
     job.waiting = false;
     job.committed = moved;
     job.x_start = job.x_extreme = q;
@@ -220,7 +221,7 @@ void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift
   shift.velocity = job.delta * s.ds * per_x * effective.velocity;
   shift.acceleration = job.delta * (s.dds * per_x * per_x * effective.velocity * effective.velocity +
                                     s.ds * per_x * effective.acceleration);
-  if (xi >= 1.0) {
+  if (xi >= 1.0 - 1e-12) {  // the summed leading value may end a rounding short of the distance
     shift = Shift{job.from + job.delta, 0.0, 0.0};
     end_shift(job, shift, finished, JobState::kDone, 0);
   }

@@ -20,6 +20,7 @@
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
+#include "tomc/instructions/mc_phasing.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
@@ -461,6 +462,71 @@ const auto kCamIn = std::to_array<Parameter<CamIn>>({
     out("EndOfProfile", &CamIn::EndOfProfile),
 });
 
+// Leading and following value offsets (spec 07 §4.1, §4.2): the members of the shared bases are named with
+// the instruction's type, so that one table row per output holds for Absolute and Relative alike.
+template <typename FB>
+constexpr auto shift_outputs() {
+  return std::to_array<Parameter<FB>>({
+      out<FB, bool>("Done", &FB::Done),
+      out<FB, bool>("Busy", &FB::Busy),
+      out<FB, bool>("CommandAborted", &FB::CommandAborted),
+      out<FB, bool>("Error", &FB::Error),
+      out<FB, std::uint16_t>("ErrorID", &FB::ErrorID),
+  });
+}
+template <typename FB, std::size_t N, std::size_t M>
+constexpr auto join(const std::array<Parameter<FB>, N>& a, const std::array<Parameter<FB>, M>& b) {
+  std::array<Parameter<FB>, N + M> r{};
+  for (std::size_t i = 0; i < N; ++i)
+    r[i] = a[i];
+  for (std::size_t i = 0; i < M; ++i)
+    r[N + i] = b[i];
+  return r;
+}
+template <typename FB>
+constexpr auto phasing_inputs() {
+  return std::to_array<Parameter<FB>>({
+      in<FB, Source>("Master", &FB::Master),
+      in<FB, bool>("Execute", &FB::Execute),
+      in<FB, double>("PhaseShift", &FB::PhaseShift),
+      in<FB, double>("Velocity", &FB::Velocity),
+      in<FB, double>("Acceleration", &FB::Acceleration),
+      in<FB, double>("Deceleration", &FB::Deceleration),
+      in<FB, double>("Jerk", &FB::Jerk),
+      in<FB, std::int32_t>("ProfileReference", &FB::ProfileReference),
+      in<FB, double>("PhasingDistance", &FB::PhasingDistance),
+      in<FB, double>("StartPosition", &FB::StartPosition),
+      in<FB, std::int32_t>("Direction", &FB::Direction),
+      out<FB, bool>("StartPhasing", &FB::StartPhasing),
+  });
+}
+template <typename FB>
+constexpr auto offset_inputs() {
+  return std::to_array<Parameter<FB>>({
+      in<FB, bool>("Execute", &FB::Execute),
+      in<FB, double>("Offset", &FB::Offset),
+      in<FB, std::int32_t>("ProfileReference", &FB::ProfileReference),
+      in<FB, double>("OffsetDistance", &FB::OffsetDistance),
+      in<FB, double>("StartPosition", &FB::StartPosition),
+      in<FB, std::int32_t>("Direction", &FB::Direction),
+      out<FB, bool>("StartOffset", &FB::StartOffset),
+  });
+}
+using PhasingAbsolute = instructions::MC_PhasingAbsolute<SynchronousAxis>;
+using PhasingRelative = instructions::MC_PhasingRelative<SynchronousAxis>;
+using OffsetAbsolute = instructions::MC_OffsetAbsolute<SynchronousAxis>;
+using OffsetRelative = instructions::MC_OffsetRelative<SynchronousAxis>;
+const auto kPhasingAbsolute =
+    join(join(phasing_inputs<PhasingAbsolute>(), shift_outputs<PhasingAbsolute>()),
+         std::to_array({out("AbsolutePhaseShift", &PhasingAbsolute::AbsolutePhaseShift)}));
+const auto kPhasingRelative =
+    join(join(phasing_inputs<PhasingRelative>(), shift_outputs<PhasingRelative>()),
+         std::to_array({out("CoveredPhaseShift", &PhasingRelative::CoveredPhaseShift)}));
+const auto kOffsetAbsolute = join(join(offset_inputs<OffsetAbsolute>(), shift_outputs<OffsetAbsolute>()),
+                                  std::to_array({out("AbsoluteOffset", &OffsetAbsolute::AbsoluteOffset)}));
+const auto kOffsetRelative = join(join(offset_inputs<OffsetRelative>(), shift_outputs<OffsetRelative>()),
+                                  std::to_array({out("CoveredOffset", &OffsetRelative::CoveredOffset)}));
+
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
 // a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
 using InterpolateCam = instructions::MC_InterpolateCam;
@@ -513,11 +579,29 @@ constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
     "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 18> kSynchronousAxisInstructions{
-    "MC_Power",          "MC_Reset",        "MC_Home",           "MC_Halt",           "MC_MoveAbsolute",
-    "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",        "MC_Stop",           "MC_SetAxisSTW",
-    "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos",      "MC_GearInVelocity", "MC_GearOut",
-    "MC_CamIn",          "MC_CamOut",       "MC_TorqueLimiting",
+constexpr std::array<std::string_view, 22> kSynchronousAxisInstructions{
+    "MC_Power",
+    "MC_Reset",
+    "MC_Home",
+    "MC_Halt",
+    "MC_MoveAbsolute",
+    "MC_MoveRelative",
+    "MC_MoveVelocity",
+    "MC_MoveJog",
+    "MC_Stop",
+    "MC_SetAxisSTW",
+    "MC_WriteParameter",
+    "MC_GearIn",
+    "MC_GearInPos",
+    "MC_GearInVelocity",
+    "MC_GearOut",
+    "MC_CamIn",
+    "MC_CamOut",
+    "MC_PhasingAbsolute",
+    "MC_PhasingRelative",
+    "MC_OffsetAbsolute",
+    "MC_OffsetRelative",
+    "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
@@ -525,10 +609,9 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 17> kPlannedInstructions{
+constexpr std::array<std::string_view, 13> kPlannedInstructions{
     "MC_CopyCamData",      "MC_MoveSuperimposed", "MC_HaltSuperimposed",     "MC_TorqueAdditive",
-    "MC_TorqueRange",      "MC_PhasingAbsolute",  "MC_PhasingRelative",      "MC_OffsetAbsolute",
-    "MC_OffsetRelative",   "MC_MeasuringInput",   "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput",
+    "MC_TorqueRange",      "MC_MeasuringInput",   "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput",
     "MC_OutputCam",        "MC_CamTrack",         "MC_ReadParameter",        "MC_MotionInVelocity",
     "MC_MotionInPosition",
 };
@@ -626,6 +709,10 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_GearOut") return make(kSyncOut<false>);
       if (instruction == "MC_CamIn") return make(kCamIn);
       if (instruction == "MC_CamOut") return make(kSyncOut<true>);
+      if (instruction == "MC_PhasingAbsolute") return make(kPhasingAbsolute);
+      if (instruction == "MC_PhasingRelative") return make(kPhasingRelative);
+      if (instruction == "MC_OffsetAbsolute") return make(kOffsetAbsolute);
+      if (instruction == "MC_OffsetRelative") return make(kOffsetRelative);
       return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -270,8 +270,8 @@ class SynchronousOperation final : public SynchronousSlot {
     double length = 0.0;
     double from = 0.0;
     double delta = 0.0;
-    double elapsed = 0.0;  // profile 0
-    double ratio = 1.0;    // profile 0: follower travel per leading value
+    std::uint32_t cycles = 0;  // profile 0: MC_Interpolator cycles since the start
+    double ratio = 1.0;        // profile 0: follower travel per leading value
   };
   struct Shift {  // a shift and its time derivatives in this cycle
     double value = 0.0;
