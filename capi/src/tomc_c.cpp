@@ -32,6 +32,7 @@
 #include "tomc/instructions/mc_gear_out.hpp"
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_home.hpp"
+#include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"

@@ -454,6 +454,23 @@ typedef struct tomc_MC_OffsetRelative {
 TOMC_API void tomc_MC_OffsetRelative_init(tomc_MC_OffsetRelative* fb);
 TOMC_API tomc_status tomc_MC_OffsetRelative_call(tomc_object* axis, tomc_MC_OffsetRelative* fb);
 
+/* MC_LeadingValueAdditive (spec 07 §4.3) on TO_SynchronousAxis. */
+typedef struct tomc_MC_LeadingValueAdditive {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Position;
+  double Velocity;
+  double Acceleration;
+  /* outputs */
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_LeadingValueAdditive;
+TOMC_API void tomc_MC_LeadingValueAdditive_init(tomc_MC_LeadingValueAdditive* fb);
+TOMC_API tomc_status tomc_MC_LeadingValueAdditive_call(tomc_object* axis, tomc_MC_LeadingValueAdditive* fb);
+
 #ifdef __cplusplus
 }
 #endif

@@ -56,7 +56,12 @@ int SynchronousOperation::find_source(const LeadingValueSource* master) const no
 LeadingValue SynchronousOperation::sample(int source) const noexcept {
   if (source < 0) return LeadingValue{};
   const auto& c = interconnections_[static_cast<std::size_t>(source)];
-  return c.source->leading_value(c.coupling);
+  LeadingValue v = c.source->leading_value(c.coupling);
+  // The effective leading value: source + additive (spec 07 §1.8, §4.3); every phase uses it.
+  v.position += additive_.position;
+  v.velocity += additive_.velocity;
+  v.acceleration += additive_.acceleration;
+  return v;
 }
 
 // The leader of a new synchronous job (spec 07 §1.2, §1.3): configured, not the follower itself or led by it,
@@ -839,12 +844,14 @@ void SynchronousOperation::update_status() noexcept {
   s.Offset = (cam != nullptr ? s.SlaveOffset : 0.0) + offset_.value;
   s.PhaseShift = phase_shift_.value;
   s.ActualMaster = static_cast<std::uint16_t>(source >= 0 ? source + 1 : 0);
-  if (source >= 0) {
-    const LeadingValue v = source == cycle_leader_source_ ? cycle_leader_ : sample(source);
+  if (source >= 0) shown_source_ = source;
+  if (shown_source_ >= 0) {
+    // Also after the synchronous operation ended: the leading value it used, with the additive value.
+    const LeadingValue v = shown_source_ == cycle_leader_source_ ? cycle_leader_ : sample(shown_source_);
     s.EffectiveLeadingValue.Position = v.position;
     s.EffectiveLeadingValue.Velocity = v.velocity * axis_.units().velocity;
     s.EffectiveLeadingValue.Acceleration = v.acceleration * axis_.units().acceleration;
-    s.FunctionLeadingValue.Position = v.position + phase_shift_.value;
+    s.FunctionLeadingValue.Position = v.position + (source >= 0 ? phase_shift_.value : 0.0);
   }
   // Before the following value offset (spec 07 §1.9).
   s.FunctionFollowingValue.Position = active_.id != 0 ? sync_setpoint_.position - offset_.value : 0.0;
@@ -866,6 +873,7 @@ void SynchronousOperation::update_status() noexcept {
     assign(w, StatusSynchronizedMotionBit::kMaxDecelerationExceeded,
            a * v < 0.0 && std::fabs(a) > l.MaxDeceleration);
   }
+  assign(w, StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand, additive_.id != 0);
   s.StatusWord = w;
   axis_.set_status(StatusWordBit::kSynchronizing, active_.id != 0 && active_.phase != Phase::kSynchronous);
   axis_.set_status(StatusWordBit::kSynchronous, active_.id != 0 && active_.phase == Phase::kSynchronous);

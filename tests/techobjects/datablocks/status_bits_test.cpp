@@ -183,6 +183,8 @@ TEST(StatusBits, OtherStatusWords) {
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxVelocityExceeded), 0);
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxAccelerationExceeded), 1);
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxDecelerationExceeded), 2);
+  EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kInSimulation), 3);                 // spec 07 §1.9
+  EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand), 4);  // spec 07 §1.9
 }
 
 // The speed-axis diagnostics page (spec 04 §9.1) reads only bits the S columns define.

@@ -548,6 +548,48 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 
 }  // namespace
 
+// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted, the
+// cam free again) and is Done; against an active camming it is Done and the camming goes on.
+TEST(Camming, CamOutProfileFiveCancelsOnlyAPendingCamIn) {
+  CammingMachine m;
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C;
+  c.SyncProfileReference = 1;
+  c.MasterSyncPosition = 180.0;
+  c.MasterStartDistance = 90.0;
+  c.ApplicationMode = 1;
+  c.Execute = true;
+  m.run(2);
+  ASSERT_TRUE(c.Busy);
+  ASSERT_FALSE(c.StartSync);
+  EXPECT_EQ(m.sync().WaitingFunctionState, 3);
+  auto& out = m.cam_out;
+  out.SyncProfileReference = 5;
+  out.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(out.Done);
+  EXPECT_TRUE(c.CommandAborted);
+  m.run(1);
+  EXPECT_EQ(m.sync().WaitingFunctionState, 0);
+  EXPECT_EQ(m.cams.C->read("StatusWord.X0"), 0.0);
+  // Active (direct setting, profile 2): CamOut profile 5 is Done, the camming continues.
+  out.Execute = false;
+  c.Execute = false;
+  m.run(1);
+  c.SyncProfileReference = 2;
+  c.MasterSyncPosition = 0.0;
+  c.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(c.InSync);
+  out.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(out.Done);
+  EXPECT_TRUE(c.InSync);
+  EXPECT_FALSE(c.CommandAborted);
+  m.leader_moves(90.0);
+  EXPECT_NEAR(m.f().Position, 50.0, 1e-9);  // f(90) of C
+}
+
 // Bug (issue 19): a cam interpolated during set-up, before Runtime::start(), must still count as
 // interpolated afterwards — MC_CamIn used to answer 16#80AC (spec 07 §3.2: interpolate after download).
 TEST(Camming, CamInterpolatedBeforeTheRuntimeStartsIsUsable) {

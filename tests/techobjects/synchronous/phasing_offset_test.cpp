@@ -10,6 +10,7 @@
 #include <string>
 
 #include "gearing_fixture.hpp"
+#include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/cam/cam.hpp"
@@ -33,6 +34,7 @@ struct ShiftMachine : GearingMachine {
       phasing_abs(*F);
       offset_rel(*F);
       offset_abs(*F);
+      additive(*F);
       if (extra) extra();
     };
   }
@@ -59,6 +61,7 @@ struct ShiftMachine : GearingMachine {
   instructions::MC_PhasingAbsolute<SynchronousAxis> phasing_abs;
   instructions::MC_OffsetRelative<SynchronousAxis> offset_rel;
   instructions::MC_OffsetAbsolute<SynchronousAxis> offset_abs;
+  instructions::MC_LeadingValueAdditive<SynchronousAxis> additive;
   std::function<void()> extra;
 };
 
@@ -469,6 +472,59 @@ TEST(PhasingOffset, OverrideMatrixColumnS5Phasing) {
     EXPECT_EQ(p.Busy, r.cell != 'A') << r.new_job;
     EXPECT_EQ(r.new_job_error(m), r.cell == 'N') << r.new_job;
   }
+}
+
+// LV-1 (spec 07 §8; §4.3, §1.8): GearIn 1/1 InGear with L at rest at 100. MC_LeadingValueAdditive(Position
+// 0.5): in the next cycle EffectiveLeadingValue = 100.5 and F jumps +0.5 (no ramp), StatusSynchronizedMotion.
+// StatusWord.X4. MC_Halt on F aborts the gearing, the additive job stays Busy; MC_Stop too. Enable = FALSE:
+// X4 FALSE, EffectiveLeadingValue 100. A second instance's start ends the first (§9.19.2 S7 "A").
+TEST(PhasingOffset, LV1AdditiveLeadingValue) {
+  ShiftMachine m;
+  m.move_rel_L.Distance = 100.0;
+  m.move_rel_L.Velocity = 500.0;
+  m.move_rel_L.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move_rel_L.Done; }, 2000), 0);
+  m.geared(1);
+  const double f0 = m.f().Position;
+  m.additive.Position = 0.5;
+  m.additive.Enable = true;
+  m.run(1);
+  EXPECT_TRUE(m.additive.Busy);
+  m.run(1);
+  EXPECT_NEAR(m.sync().EffectiveLeadingValue.Position, 100.5, 1e-12);
+  EXPECT_NEAR(m.f().Position - f0, 0.5, 1e-12);  // at once
+  EXPECT_EQ(m.F->read("StatusSynchronizedMotion.StatusWord.X4"), 1.0);
+  m.halt_F.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.gear.CommandAborted);
+  EXPECT_TRUE(m.additive.Busy);
+  m.stop_F.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.additive.Busy);
+  m.additive.Enable = false;
+  m.run(2);
+  EXPECT_FALSE(m.additive.Busy);
+  EXPECT_EQ(m.F->read("StatusSynchronizedMotion.StatusWord.X4"), 0.0);
+  EXPECT_NEAR(m.sync().EffectiveLeadingValue.Position, 100.0, 1e-12);
+  // Another instance ends the running one; a value that is not finite at the start is refused.
+  instructions::MC_LeadingValueAdditive<SynchronousAxis> second;
+  m.extra = [&] { second(*m.F); };
+  m.additive.Enable = true;
+  m.run(1);
+  ASSERT_TRUE(m.additive.Busy);
+  second.Position = 1.0;
+  second.Enable = true;
+  m.run(2);
+  EXPECT_TRUE(second.Busy);
+  EXPECT_FALSE(m.additive.Busy);
+  EXPECT_NEAR(m.sync().EffectiveLeadingValue.Position, 101.0, 1e-12);
+  second.Enable = false;
+  m.run(1);
+  second.Position = NAN;
+  second.Enable = true;
+  m.run(1);
+  EXPECT_TRUE(second.Error);
+  EXPECT_FALSE(second.Busy);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_interpolate_cam.hpp"
+#include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
@@ -527,6 +528,17 @@ const auto kOffsetAbsolute = join(join(offset_inputs<OffsetAbsolute>(), shift_ou
 const auto kOffsetRelative = join(join(offset_inputs<OffsetRelative>(), shift_outputs<OffsetRelative>()),
                                   std::to_array({out("CoveredOffset", &OffsetRelative::CoveredOffset)}));
 
+using LeadingValueAdditive = instructions::MC_LeadingValueAdditive<SynchronousAxis>;
+const auto kLeadingValueAdditive = std::to_array<Parameter<LeadingValueAdditive>>({
+    in("Enable", &LeadingValueAdditive::Enable),
+    in("Position", &LeadingValueAdditive::Position),
+    in("Velocity", &LeadingValueAdditive::Velocity),
+    in("Acceleration", &LeadingValueAdditive::Acceleration),
+    out("Busy", &LeadingValueAdditive::Busy),
+    out("Error", &LeadingValueAdditive::Error),
+    out("ErrorID", &LeadingValueAdditive::ErrorID),
+});
+
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
 // a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
 using InterpolateCam = instructions::MC_InterpolateCam;
@@ -579,7 +591,7 @@ constexpr std::array<std::string_view, 12> kPositioningAxisInstructions{
     "MC_Power",        "MC_Reset",   "MC_Home", "MC_Halt",       "MC_MoveAbsolute",   "MC_MoveRelative",
     "MC_MoveVelocity", "MC_MoveJog", "MC_Stop", "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 22> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 23> kSynchronousAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -601,6 +613,7 @@ constexpr std::array<std::string_view, 22> kSynchronousAxisInstructions{
     "MC_PhasingRelative",
     "MC_OffsetAbsolute",
     "MC_OffsetRelative",
+    "MC_LeadingValueAdditive",
     "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
@@ -713,6 +726,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_PhasingRelative") return make(kPhasingRelative);
       if (instruction == "MC_OffsetAbsolute") return make(kOffsetAbsolute);
       if (instruction == "MC_OffsetRelative") return make(kOffsetRelative);
+      if (instruction == "MC_LeadingValueAdditive") return make(kLeadingValueAdditive);
       return make_motion<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -145,6 +145,8 @@ enum class StatusSynchronizedMotionBit : std::uint8_t {
   kMaxVelocityExceeded = 0,
   kMaxAccelerationExceeded = 1,
   kMaxDecelerationExceeded = 2,
+  kInSimulation = 3,                 // [T] spec 07 §1.9
+  kLeadingValueAdditiveCommand = 4,  // [T] spec 07 §1.9
 };
 
 // ---- every enumerator once, in bit order (iteration for tables, traces and tests) ----

@@ -55,6 +55,15 @@ class SynchronousAxis final : public PositioningAxis {
     return operation_.offset(in, absolute);
   }
   ShiftJobOutputs shift_outputs(JobId job) const noexcept { return operation_.shift_outputs(job); }
+  // ---- MC_LeadingValueAdditive (spec 07 §4.3) ----
+  Submission additive_start(const LeadingValueAdditiveValues& values) noexcept {
+    return operation_.additive_start(values);
+  }
+  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
+    operation_.additive_update(job, values);
+  }
+  void additive_end(JobId job) noexcept { operation_.additive_end(job); }
+  bool additive_busy(JobId job) const noexcept { return operation_.additive_busy(job); }
   // MC_GearInVelocity.ContinuousUpdate: the ratio of the running job, taken at once (spec 07 §2.3).
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept {
     operation_.update_ratio(job, numerator, denominator);

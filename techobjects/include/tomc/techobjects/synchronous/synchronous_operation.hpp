@@ -118,6 +118,14 @@ struct OffsetInputs {
   double StartPosition = 0.0;
   std::int32_t Direction = 3;
 };
+// MC_LeadingValueAdditive (spec 07 §4.3): added to the leading value (leader units; velocity and acceleration
+// in the follower's velocity and acceleration units, as EffectiveLeadingValue shows them).
+struct LeadingValueAdditiveValues {
+  double Position = 0.0;
+  double Velocity = 0.0;
+  double Acceleration = 0.0;
+};
+
 // StartPhasing / StartOffset, and the shift reached: AbsolutePhaseShift / AbsoluteOffset (Absolute), the
 // part this job covered: CoveredPhaseShift / CoveredOffset (Relative).
 struct ShiftJobOutputs {
@@ -191,6 +199,13 @@ class SynchronousOperation final : public SynchronousSlot {
   Submission phasing(const PhasingInputs& in, bool absolute) noexcept;
   Submission offset(const OffsetInputs& in, bool absolute) noexcept;
   ShiftJobOutputs shift_outputs(JobId job) const noexcept;
+  // MC_LeadingValueAdditive (leading_value_additive.cpp): started on Enable's rising edge (a running one of
+  // another instance ends, §9.19.2 S7 "A"), its values taken on every call while Enable holds, ended by
+  // Enable = FALSE. additive_busy(): the job's values are in the effective leading value.
+  Submission additive_start(const LeadingValueAdditiveValues& values) noexcept;
+  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
+  void additive_end(JobId job) noexcept;
+  bool additive_busy(JobId job) const noexcept { return job != 0 && job == additive_.id; }
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
 
@@ -282,6 +297,12 @@ class SynchronousOperation final : public SynchronousSlot {
     JobId id = 0;
     ShiftJobOutputs outputs{};
   };
+  struct Additive {  // the running MC_LeadingValueAdditive, in internal units
+    JobId id = 0;
+    double position = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+  };
   struct Desync {  // MC_GearOut / MC_CamOut
     JobId id = 0;
     JobKind kind = JobKind::kGearOut;
@@ -362,6 +383,8 @@ class SynchronousOperation final : public SynchronousSlot {
   FinishedShift phasing_finished_{};
   FinishedShift offset_finished_{};
   PositionProfile phasing_profile_{};  // profile 0
+  Additive additive_{};
+  int shown_source_ = -1;  // the leading value EffectiveLeadingValue shows (the last one used)
 
   FollowingAxis axis_;
 };
