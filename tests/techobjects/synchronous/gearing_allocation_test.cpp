@@ -482,11 +482,7 @@ std::vector<Step> script() {
                  m.f1.additive.Enable = true;
                  execute(o, *m.F1);
                },
-               [](M& m, int) { return m.f1.offset.Done; },
-               [](M& m) {
-                 m.f1.offset.Execute = false;
-                 m.f1.additive.Enable = false;
-               }});
+               [](M& m, int) { return m.f1.offset.Done; }, [](M& m) { m.f1.offset.Execute = false; }});
   s.push_back({"phasing over a distance during camming",
                [](M& m) {
                  auto& p = m.f1.phasing;
@@ -496,7 +492,13 @@ std::vector<Step> script() {
                  p.PhasingDistance = 5.0;
                  execute(p, *m.F1);
                },
-               [](M& m, int) { return m.f1.phasing.Done; }, [](M& m) { m.f1.phasing.Execute = false; }});
+               [](M& m, int) { return m.f1.phasing.Done; },
+               [](M& m) {
+                 m.f1.phasing.Execute = false;
+                 // Removed during synchronous travel: the step back of the effective leading value is
+                 // not a reversal there (it would cancel a phasing/offset over a distance, 16#808C).
+                 m.f1.additive.Enable = false;
+               }});
   s.push_back({"cam switch at the end of the cam",
                [](M& m) {
                  auto& c = m.f1.cam_in2;
