@@ -277,6 +277,63 @@ TEST(CApi, InstructionsOfAnotherTechnologyObjectTypeAreRefused) {
   EXPECT_NEAR(read(m.conveyor, "Velocity"), 600.0, 1e-9);
 }
 
+// Synchronous operation through the generated structs: MC_GearIn 2/1 at rest, then MC_PhasingRelative with
+// dynamic parameters (spec 07 §8 PH-1): the follower's extra travel 2·10 = 20 mm, CoveredPhaseShift 10, and
+// an MC_OffsetRelative while it runs is refused with 16#808A.
+TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
+  constexpr const char* kGearing = R"({
+    "cycle_time": 0.001,
+    "technology_objects": [
+      {"name": "L", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1}},
+      {"name": "F", "type": "TO_SynchronousAxis", "config": {"VirtualAxis.Mode": 1, "DynamicLimits.MaxJerk": 0.0},
+       "LeadingValueInterconnections": [{"Leader": "L", "Coupling": "Setpoint"}]}
+    ]
+  })";
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(kGearing, &runtime), TOMC_OK) << last_error();
+  tomc_object* leader = nullptr;
+  tomc_object* follower = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
+  tomc_MC_Power power_l;
+  tomc_MC_Power power_f;
+  tomc_MC_GearIn gear;
+  tomc_MC_PhasingRelative phasing;
+  tomc_MC_OffsetRelative offset;
+  tomc_MC_Power_init(&power_l);
+  tomc_MC_Power_init(&power_f);
+  tomc_MC_GearIn_init(&gear);
+  tomc_MC_PhasingRelative_init(&phasing);
+  tomc_MC_OffsetRelative_init(&offset);
+  power_l.Enable = power_f.Enable = true;
+  gear.Master = phasing.Master = leader;
+  gear.RatioNumerator = 2;
+  phasing.PhaseShift = 10.0;
+  phasing.Velocity = 100.0;
+  phasing.Acceleration = phasing.Deceleration = 1000.0;
+  phasing.Jerk = 0.0;
+  offset.Offset = 1.0;
+  offset.OffsetDistance = 10.0;
+  uint16_t offset_error = 0;
+  for (int cycle = 0; cycle < 600; ++cycle) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(leader, &power_l), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(follower, &power_f), TOMC_OK) << last_error();
+    gear.Execute = power_l.Status && power_f.Status;
+    ASSERT_EQ(tomc_MC_GearIn_call(follower, &gear), TOMC_OK) << last_error();
+    phasing.Execute = gear.InGear;
+    ASSERT_EQ(tomc_MC_PhasingRelative_call(follower, &phasing), TOMC_OK) << last_error();
+    offset.Execute = phasing.StartPhasing;
+    ASSERT_EQ(tomc_MC_OffsetRelative_call(follower, &offset), TOMC_OK) << last_error();
+    if (offset.Error) offset_error = offset.ErrorID;
+  }
+  EXPECT_TRUE(phasing.Done);
+  EXPECT_NEAR(phasing.CoveredPhaseShift, 10.0, 1e-12);
+  EXPECT_NEAR(read(follower, "Position"), 20.0, 1e-9);
+  EXPECT_EQ(offset_error, 0x808A);
+  tomc_runtime_destroy(runtime);
+}
+
 TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   tomc_runtime* r = reinterpret_cast<tomc_runtime*>(&r);
   EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);

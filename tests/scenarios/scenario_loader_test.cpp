@@ -555,11 +555,11 @@ TEST(ScenarioLoader, InstanceCreation) {
               "timeline[1].instruction: MC_MoveAbsolute is not an instruction of TO_SpeedAxis Axis1 (spec 01 "
               "§1.3; its instructions: MC_Power, MC_Reset"),
       std::string::npos);
-  EXPECT_NE(problem_of(
-                with_event(
-                    R"({"cycle": 1, "instance": "m", "instruction": "MC_PhasingRelative", "axis": "Axis1"})"))
-                .find("timeline[1].instruction: MC_PhasingRelative is not yet supported by tomc sim"),
-            std::string::npos);
+  EXPECT_NE(
+      problem_of(
+          with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_MeasuringInput", "axis": "Axis1"})"))
+          .find("timeline[1].instruction: MC_MeasuringInput is not yet supported by tomc sim"),
+      std::string::npos);
   EXPECT_EQ(
       problem_of(with_event(R"({"cycle": 1, "instance": "m", "instruction": "MC_Halt", "axis": "Axis2"})")),
       "timeline[1].axis: unknown technology object 'Axis2' (defined: Axis1)");

@@ -392,6 +392,125 @@ typedef struct tomc_MC_GearOut {
 TOMC_API void tomc_MC_GearOut_init(tomc_MC_GearOut* fb);
 TOMC_API tomc_status tomc_MC_GearOut_call(tomc_object* axis, tomc_MC_GearOut* fb);
 
+/* MC_PhasingAbsolute (spec 07 §4.1) on TO_SynchronousAxis. */
+typedef struct tomc_MC_PhasingAbsolute {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  const tomc_object* Master; /* the leading axis or external encoder */
+  bool Execute;
+  double PhaseShift;
+  double Velocity;
+  double Acceleration;
+  double Deceleration;
+  double Jerk;
+  int32_t ProfileReference;
+  double PhasingDistance;
+  double StartPosition;
+  int32_t Direction;
+  /* outputs */
+  bool StartPhasing;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  double AbsolutePhaseShift;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_PhasingAbsolute;
+TOMC_API void tomc_MC_PhasingAbsolute_init(tomc_MC_PhasingAbsolute* fb);
+TOMC_API tomc_status tomc_MC_PhasingAbsolute_call(tomc_object* axis, tomc_MC_PhasingAbsolute* fb);
+
+/* MC_PhasingRelative (spec 07 §4.1) on TO_SynchronousAxis. */
+typedef struct tomc_MC_PhasingRelative {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  const tomc_object* Master; /* the leading axis or external encoder */
+  bool Execute;
+  double PhaseShift;
+  double Velocity;
+  double Acceleration;
+  double Deceleration;
+  double Jerk;
+  int32_t ProfileReference;
+  double PhasingDistance;
+  double StartPosition;
+  int32_t Direction;
+  /* outputs */
+  bool StartPhasing;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  double CoveredPhaseShift;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_PhasingRelative;
+TOMC_API void tomc_MC_PhasingRelative_init(tomc_MC_PhasingRelative* fb);
+TOMC_API tomc_status tomc_MC_PhasingRelative_call(tomc_object* axis, tomc_MC_PhasingRelative* fb);
+
+/* MC_OffsetAbsolute (spec 07 §4.2) on TO_SynchronousAxis. */
+typedef struct tomc_MC_OffsetAbsolute {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double Offset;
+  int32_t ProfileReference;
+  double OffsetDistance;
+  double StartPosition;
+  int32_t Direction;
+  /* outputs */
+  bool StartOffset;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  double AbsoluteOffset;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_OffsetAbsolute;
+TOMC_API void tomc_MC_OffsetAbsolute_init(tomc_MC_OffsetAbsolute* fb);
+TOMC_API tomc_status tomc_MC_OffsetAbsolute_call(tomc_object* axis, tomc_MC_OffsetAbsolute* fb);
+
+/* MC_OffsetRelative (spec 07 §4.2) on TO_SynchronousAxis. */
+typedef struct tomc_MC_OffsetRelative {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double Offset;
+  int32_t ProfileReference;
+  double OffsetDistance;
+  double StartPosition;
+  int32_t Direction;
+  /* outputs */
+  bool StartOffset;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  double CoveredOffset;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_OffsetRelative;
+TOMC_API void tomc_MC_OffsetRelative_init(tomc_MC_OffsetRelative* fb);
+TOMC_API tomc_status tomc_MC_OffsetRelative_call(tomc_object* axis, tomc_MC_OffsetRelative* fb);
+
+/* MC_LeadingValueAdditive (spec 07 §4.3) on TO_SynchronousAxis. */
+typedef struct tomc_MC_LeadingValueAdditive {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Position;
+  double Velocity;
+  double Acceleration;
+  /* outputs */
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_LeadingValueAdditive;
+TOMC_API void tomc_MC_LeadingValueAdditive_init(tomc_MC_LeadingValueAdditive* fb);
+TOMC_API tomc_status tomc_MC_LeadingValueAdditive_call(tomc_object* axis, tomc_MC_LeadingValueAdditive* fb);
+
 #ifdef __cplusplus
 }
 #endif

@@ -61,6 +61,30 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "no MC_CamIn pending or active";
     case kNoActiveCamming:
       return "MC_CamIn SyncProfileReference 5 without active camming";
+    case kInvalidPhaseShift:
+      return "invalid PhaseShift";
+    case kNoSynchronousOperation:
+      return "no gearing or camming active (with this leading value)";
+    case kVelocityGearingActive:
+      return "not possible while MC_GearInVelocity is active";
+    case kInvalidOffset:
+      return "invalid Offset";
+    case kInvalidOffsetDistance:
+      return "invalid OffsetDistance (> 0 for ProfileReference 1, 2)";
+    case kInvalidPhasingDistance:
+      return "invalid PhasingDistance (> 0 for ProfileReference 1, 2)";
+    case kInvalidProfileReference:
+      return "invalid ProfileReference";
+    case kInvalidStartPosition:
+      return "invalid StartPosition";
+    case kPhasingAndOffsetExclusive:
+      return "a leading value offset and a following value offset cannot run together";
+    case kLeadingValueReversed:
+      return "the leading value reversed during a leading or following value offset";
+    case kPhasingProfileNeedsGearing:
+      return "phasing with dynamic parameters (ProfileReference 0) only during gearing";
+    case kNotSynchronous:
+      return "the synchronous operation is not in status Synchronous";
     case kOutsideCam:
       return "MasterSyncPosition outside the cam, or the leader outside the scaled and shifted cam";
     case kInvalidMasterOffset:

@@ -298,7 +298,11 @@ void SynchronousOperation::step_cam(const LeadingValue& leader) noexcept {
     // shifted in both ranges so that the following value goes on from the old cam's value there: the path
     // y(x) has no position step, and the new cam's phase is that of the end, not of the cycle that saw it
     // (decision C10). The old job ends (CommandAborted, R10).
+    // `leader` is the function leading value; the new job starts without the old one's leading and following
+    // value offsets (reset by the override, spec 07 §1.8): they are folded into its cam offsets instead.
     const double x = leader.position;
+    const double phase = phase_shift_.value;
+    const double offset = offset_.value;
     const CamProfile& old_cam = job.cam->profile();
     const CamScaling& old_k = job.function.scaling();
     const double u = (x - old_k.MasterOffset) / old_k.MasterScaling;
@@ -308,31 +312,33 @@ void SynchronousOperation::step_cam(const LeadingValue& leader) noexcept {
                              : old_cam.start() + period * std::round((u - old_cam.start()) / period);
     const double x_end = old_k.MasterOffset + old_k.MasterScaling * u_end;
     CamSynchronousFunction old_function = job.function;  // a copy: the value at the end, not this cycle's
-    const double y_end = old_function.evaluate(x_end, 0.0, 0.0).position;
+    const double y_end = old_function.evaluate(x_end, 0.0, 0.0).position + offset;
+    const double x_end_source = x_end - phase;  // in the (effective) leading value of the new job
     CamJob next = pending_sync_.cam;
     const CamProfile& cam = next.cam->profile();
     CamScaling k = next.function.scaling();
-    k.MasterOffset = x_end - cam.start() * k.MasterScaling - next.master_sync;
+    k.MasterOffset = x_end_source - cam.start() * k.MasterScaling - next.master_sync;
     k.SlaveOffset = 0.0;
     next.function.start(cam, k, next.function.mode());
-    k.SlaveOffset = y_end - next.function.evaluate(x_end, 0.0, 0.0).position;
+    k.SlaveOffset = y_end - next.function.evaluate(x_end_source, 0.0, 0.0).position;
     next.function.start(cam, k, next.function.mode());
     next.shown_master_offset = shown_master_offset(
-        k.MasterOffset, x_end,
+        k.MasterOffset, x_end_source,
         interconnections_[static_cast<std::size_t>(a.source)].source->leading_value_modulo());
     pending_sync_.cam = next;
     if (!activate_pending(JobKind::kCamIn)) return;
     active_.phase = Phase::kSynchronous;
     active_.in_sync = true;
     active_.start_sync = false;
-    const CamFollowingValue g = active_.cam.function.evaluate(x, leader.velocity, leader.acceleration);
+    const CamFollowingValue g =
+        active_.cam.function.evaluate(x - phase, leader.velocity, leader.acceleration);
     sync_setpoint_ = MotionState{g.position, g.velocity, g.acceleration};
     return;
   }
   if (f.ended) {
     // Not cyclic: the synchronous operation ends at the cam end, the follower holds it (spec 07 §6.2, O-10:
     // Busy and InSync FALSE, EndOfProfile TRUE).
-    sync_setpoint_ = MotionState{f.position, 0.0, 0.0};
+    sync_setpoint_ = MotionState{f.position + offset_.value, 0.0, 0.0};
     axis_.set_setpoint(sync_setpoint_);
     end_active(JobState::kDone, 0);
   }

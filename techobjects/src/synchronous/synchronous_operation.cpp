@@ -56,7 +56,12 @@ int SynchronousOperation::find_source(const LeadingValueSource* master) const no
 LeadingValue SynchronousOperation::sample(int source) const noexcept {
   if (source < 0) return LeadingValue{};
   const auto& c = interconnections_[static_cast<std::size_t>(source)];
-  return c.source->leading_value(c.coupling);
+  LeadingValue v = c.source->leading_value(c.coupling);
+  // The effective leading value: source + additive (spec 07 §1.8, §4.3); every phase uses it.
+  v.position += additive_.position;
+  v.velocity += additive_.velocity;
+  v.acceleration += additive_.acceleration;
+  return v;
 }
 
 // The leader of a new synchronous job (spec 07 §1.2, §1.3): configured, not the follower itself or led by it,
@@ -175,6 +180,7 @@ double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const 
 
 void SynchronousOperation::end_active(JobState state, std::uint16_t error_id) noexcept {
   if (active_.id == 0) return;
+  end_shifts();  // leading and following value offsets end with the synchronous operation (spec 07 §1.8)
   last_synchronous_job_ = active_.id;
   last_outputs_ = SyncJobOutputs{};
   last_outputs_.EndOfProfileCount = active_.cam.ends;
@@ -201,6 +207,8 @@ void SynchronousOperation::end_desync(JobState state, std::uint16_t error_id) no
 
 void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
   const JobState state = error_id == 0 ? JobState::kAborted : JobState::kError;
+  end_shift(phasing_, phase_shift_, phasing_finished_, state, error_id);
+  end_shift(offset_job_, offset_, offset_finished_, state, error_id);
   end_active(state, error_id);
   end_pending(state, error_id);
   end_desync(state, error_id);
@@ -244,12 +252,16 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
     default:
       return 0;  // Mode 9 and the other homing modes: no row (spec 03 §6.1 [AMB-15])
   }
+  return arbitrate_row(r);
+}
+
+std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
   struct Running {
     RunningSyncJob column;
-    int which;  // 0 active, 1 pending sync-in, 2 desync
+    int which;  // 0 active, 1 pending sync-in, 2 desync, 3 phasing, 4 offset
     SyncFamily family;
   };
-  std::array<Running, 3> running{};
+  std::array<Running, 5> running{};
   std::size_t n = 0;
   // The columns of each instruction come from the table beside the matrix (sync_priority.hpp).
   const auto place = [](JobKind kind) noexcept {
@@ -280,6 +292,8 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
     const auto* p = place(desync_.kind);
     running[n++] = Running{desync_.active ? p->active_column : p->pending_column, 2, p->family};
   }
+  if (phasing_.id != 0) running[n++] = Running{RunningSyncJob::kPhasing, 3, SyncFamily::kGearing};
+  if (offset_job_.id != 0) running[n++] = Running{RunningSyncJob::kOffset, 4, SyncFamily::kGearing};
   SyncContext ctx;
   ctx.follower_position_controlled = axis_.position_controlled();
   ctx.virtual_or_simulated_axis = axis_.virtual_axis();
@@ -288,10 +302,13 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
     ctx.same_family = running[i].family == new_job_family_;
     switch (resolve(r, running[i].column, ctx)) {
       case Outcome::kRejectNew:
-        // MC_Home 3/5 while MC_GearInPos/MC_CamIn is active has its own ErrorID (spec 07 §1.10, 16#80A1).
-        return r == NewSyncRow::kActiveHoming && running[i].column == RunningSyncJob::kSyncInActive
-                   ? error_id::kHomingDuringGearInPos
-                   : error_id::kRejectedByRunningJob;
+        // MC_Home 3/5 while MC_GearInPos/MC_CamIn is active has its own ErrorID (spec 07 §1.10, 16#80A1);
+        // so have a leading and a following value offset against each other (16#808A).
+        if (r == NewSyncRow::kActiveHoming && running[i].column == RunningSyncJob::kSyncInActive)
+          return error_id::kHomingDuringGearInPos;
+        if (running[i].which >= 3 && (r == NewSyncRow::kPhasing || r == NewSyncRow::kOffset))
+          return error_id::kPhasingAndOffsetExclusive;
+        return error_id::kRejectedByRunningJob;
       case Outcome::kAbortRunning:
         abort_mask = static_cast<std::uint8_t>(abort_mask | (1u << i));
         break;
@@ -304,6 +321,8 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
     if (running[i].which == 0) end_active(JobState::kAborted, 0);
     if (running[i].which == 1) end_pending(JobState::kAborted, 0);
     if (running[i].which == 2) end_desync(JobState::kAborted, 0);
+    if (running[i].which == 3) end_shift(phasing_, phase_shift_, phasing_finished_, JobState::kAborted, 0);
+    if (running[i].which == 4) end_shift(offset_job_, offset_, offset_finished_, JobState::kAborted, 0);
   }
   return 0;
 }
@@ -767,7 +786,21 @@ void SynchronousOperation::run() noexcept {
     (void)start_pending_sync(sample(pending_sync_.source));
   }
   if (active_.id != 0) {
-    step_active(active_.source == source ? leader : sample(active_.source));
+    // The chain of spec 07 §1.8: effective leading value (+ phase shift) = function leading value -> the
+    // synchronous function -> (+ offset) the follower's setpoint. The offsets act only while Synchronous.
+    LeadingValue function_leader = active_.source == source ? leader : sample(active_.source);
+    if (active_.phase == Phase::kSynchronous) {
+      step_shifts(function_leader);
+      function_leader.position += phase_shift_.value;
+      function_leader.velocity += phase_shift_.velocity;
+      function_leader.acceleration += phase_shift_.acceleration;
+    }
+    step_active(function_leader);
+    if (active_.id != 0 && active_.phase == Phase::kSynchronous) {
+      sync_setpoint_.position += offset_.value;
+      sync_setpoint_.velocity += offset_.velocity;
+      sync_setpoint_.acceleration += offset_.acceleration;
+    }
     if (axis_.strongest_reaction() != AlarmReaction::kNone) {
       axis_.apply_alarm_reactions();
       return;
@@ -806,20 +839,27 @@ void SynchronousOperation::update_status() noexcept {
     s.MasterOffset = s.SlaveOffset = 0.0;
     s.MasterScaling = s.SlaveScaling = 1.0;
   }
-  s.Offset = cam != nullptr ? s.SlaveOffset : 0.0;  // offset jobs add here (spec 07 §1.8, O-4)
+  // The following value offset includes the camming's SlaveOffset; MC_OffsetAbsolute targets the offset jobs'
+  // part (spec 07 §1.8, O-4).
+  s.Offset = (cam != nullptr ? s.SlaveOffset : 0.0) + offset_.value;
+  s.PhaseShift = phase_shift_.value;
   s.ActualMaster = static_cast<std::uint16_t>(source >= 0 ? source + 1 : 0);
-  if (source >= 0) {
-    const LeadingValue v = source == cycle_leader_source_ ? cycle_leader_ : sample(source);
+  if (source >= 0) shown_source_ = source;
+  if (shown_source_ >= 0) {
+    // Also after the synchronous operation ended: the leading value it used, with the additive value.
+    const LeadingValue v = shown_source_ == cycle_leader_source_ ? cycle_leader_ : sample(shown_source_);
     s.EffectiveLeadingValue.Position = v.position;
     s.EffectiveLeadingValue.Velocity = v.velocity * axis_.units().velocity;
     s.EffectiveLeadingValue.Acceleration = v.acceleration * axis_.units().acceleration;
-    s.FunctionLeadingValue.Position = v.position;
+    s.FunctionLeadingValue.Position = v.position + (source >= 0 ? phase_shift_.value : 0.0);
   }
-  s.FunctionFollowingValue.Position = active_.id != 0 ? sync_setpoint_.position : 0.0;
+  // Before the following value offset (spec 07 §1.9).
+  s.FunctionFollowingValue.Position = active_.id != 0 ? sync_setpoint_.position - offset_.value : 0.0;
   s.FunctionFollowingValue.Velocity =
-      active_.id != 0 ? sync_setpoint_.velocity * axis_.units().velocity : 0.0;
+      active_.id != 0 ? (sync_setpoint_.velocity - offset_.velocity) * axis_.units().velocity : 0.0;
   s.FunctionFollowingValue.Acceleration =
-      active_.id != 0 ? sync_setpoint_.acceleration * axis_.units().acceleration : 0.0;
+      active_.id != 0 ? (sync_setpoint_.acceleration - offset_.acceleration) * axis_.units().acceleration
+                      : 0.0;
   // X0..X2: the follower's configured limits exceeded in synchronous operation (indication only, spec 07
   // §6.8).
   std::uint32_t w = 0;
@@ -833,10 +873,15 @@ void SynchronousOperation::update_status() noexcept {
     assign(w, StatusSynchronizedMotionBit::kMaxDecelerationExceeded,
            a * v < 0.0 && std::fabs(a) > l.MaxDeceleration);
   }
+  assign(w, StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand, additive_.id != 0);
   s.StatusWord = w;
   axis_.set_status(StatusWordBit::kSynchronizing, active_.id != 0 && active_.phase != Phase::kSynchronous);
   axis_.set_status(StatusWordBit::kSynchronous, active_.id != 0 && active_.phase == Phase::kSynchronous);
   axis_.set_status(StatusWord2Bit::kDesynchronizingCommand, desync_.active);
+  axis_.set_status(StatusWordBit::kPhasingCommand, phasing_.id != 0 && !phasing_.waiting);
+  axis_.set_status(StatusWord2Bit::kPhasingCommandWaiting, phasing_.id != 0 && phasing_.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommand, offset_job_.id != 0 && !offset_job_.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommandWaiting, offset_job_.id != 0 && offset_job_.waiting);
   cycle_leader_source_ = -1;  // a status update from a job call (user program) samples afresh
 }
 

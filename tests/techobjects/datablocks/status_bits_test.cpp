@@ -61,8 +61,8 @@ void expect_table(const std::vector<Row<Bit>>& rows, const std::array<Bit, N>& a
     EXPECT_EQ(static_cast<int>(all_bits[i]), rows[i].number) << i;
 }
 
-// spec 04 §5.1 (man. §10.2.15, §10.3.38, §10.4.15); bits 19-22 and 24 are reserved on S, P, E; Y uses 21/22
-// (spec 07 §1.9)
+// spec 04 §5.1 (man. §10.2.15, §10.3.38, §10.4.15); bits 19-22 and 24 are reserved on S, P, E; Y uses 21, 22
+// and 24 (spec 07 §1.9)
 TEST(StatusBits, StatusWord) {
   using enum StatusWordBit;
   const std::vector<Row<StatusWordBit>> rows = {
@@ -88,6 +88,7 @@ TEST(StatusBits, StatusWord) {
       {kSynchronizing, 21, "Synchronizing", false, false, false, true},  // spec 07 §1.9
       {kSynchronous, 22, "Synchronous", false, false, false, true},      // spec 07 §1.9
       {kMoveSuperimposedCommand, 23, "MoveSuperimposedCommand", false, true, false},
+      {kPhasingCommand, 24, "PhasingCommand", false, false, false, true},  // spec 07 §1.9
       {kAxisSimulation, 25, "AxisSimulation", true, true, false},
       {kTorqueLimitingCommand, 26, "TorqueLimitingCommand", true, true, false},
       {kInLimitation, 27, "InLimitation", true, true, false},
@@ -106,6 +107,9 @@ TEST(StatusBits, StatusWord2) {
       {kStopCommand, 0, "StopCommand", true, true, false},
       {kDesynchronizingCommand, 1, "DesynchronizingCommand", false, false, false, true},  // spec 07 §1.9
       {kPassingBacklash, 2, "PassingBacklash", false, true, false},
+      {kPhasingCommandWaiting, 3, "PhasingCommandWaiting", false, false, false, true},  // spec 07 §1.9
+      {kOffsetCommand, 4, "OffsetCommand", false, false, false, true},                  // spec 07 §1.9
+      {kOffsetCommandWaiting, 5, "OffsetCommandWaiting", false, false, false, true},    // spec 07 §1.9
       {kMotionInSuperimposedCommand, 6, "MotionInSuperimposedCommand", false, true, false},
       {kHaltSuperimposedCommand, 7, "HaltSuperimposedCommand", false, true, false},
       {kMotionInSuperimposedAxesCommand, 8, "MotionInSuperimposedAxesCommand", false, true, false},
@@ -179,6 +183,8 @@ TEST(StatusBits, OtherStatusWords) {
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxVelocityExceeded), 0);
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxAccelerationExceeded), 1);
   EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kMaxDecelerationExceeded), 2);
+  EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kInSimulation), 3);                 // spec 07 §1.9
+  EXPECT_EQ(static_cast<int>(StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand), 4);  // spec 07 §1.9
 }
 
 // The speed-axis diagnostics page (spec 04 §9.1) reads only bits the S columns define.

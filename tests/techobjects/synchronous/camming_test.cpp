@@ -547,3 +547,65 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 }
 
 }  // namespace
+
+// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted, the
+// cam free again) and is Done; against an active camming it is Done and the camming goes on.
+TEST(Camming, CamOutProfileFiveCancelsOnlyAPendingCamIn) {
+  CammingMachine m;
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C;
+  c.SyncProfileReference = 1;
+  c.MasterSyncPosition = 180.0;
+  c.MasterStartDistance = 90.0;
+  c.ApplicationMode = 1;
+  c.Execute = true;
+  m.run(2);
+  ASSERT_TRUE(c.Busy);
+  ASSERT_FALSE(c.StartSync);
+  EXPECT_EQ(m.sync().WaitingFunctionState, 3);
+  auto& out = m.cam_out;
+  out.SyncProfileReference = 5;
+  out.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(out.Done);
+  EXPECT_TRUE(c.CommandAborted);
+  m.run(1);
+  EXPECT_EQ(m.sync().WaitingFunctionState, 0);
+  EXPECT_EQ(m.cams.C->read("StatusWord.X0"), 0.0);
+  // Active (direct setting, profile 2): CamOut profile 5 is Done, the camming continues.
+  out.Execute = false;
+  c.Execute = false;
+  m.run(1);
+  c.SyncProfileReference = 2;
+  c.MasterSyncPosition = 0.0;
+  c.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(c.InSync);
+  out.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(out.Done);
+  EXPECT_TRUE(c.InSync);
+  EXPECT_FALSE(c.CommandAborted);
+  m.leader_moves(90.0);
+  EXPECT_NEAR(m.f().Position, 50.0, 1e-9);  // f(90) of C
+}
+
+// Bug (issue 19): a cam interpolated during set-up, before Runtime::start(), must still count as
+// interpolated afterwards — MC_CamIn used to answer 16#80AC (spec 07 §3.2: interpolate after download).
+TEST(Camming, CamInterpolatedBeforeTheRuntimeStartsIsUsable) {
+  Cam* early = nullptr;
+  GearingMachine m(virtual_rotary_modulo(), virtual_rotary_modulo(), [&](techobjects::Runtime& r) {
+    early = &points_cam(r, "E", 21, {{0.0, 0.0}, {180.0, 100.0}, {360.0, 0.0}});
+    EXPECT_TRUE(early->interpolate_cam().accepted());
+  });
+  EXPECT_EQ(early->read("StatusWord.X5"), 1.0);  // Interpolated
+  EXPECT_EQ(early->read("StatusCam.EndLeadingValue"), 360.0);
+  auto& c = m.cam_in;
+  c.Cam = early;
+  c.SyncProfileReference = 2;
+  c.ApplicationMode = 1;
+  c.Execute = true;
+  m.run(1);
+  EXPECT_FALSE(c.Error) << std::hex << c.ErrorID;
+  EXPECT_TRUE(c.InSync);
+}

@@ -11,8 +11,10 @@
 // profiles 0, 1 and 5 (cancelling a pending MC_GearInPos), MC_Halt and MC_Stop ending a gearing, rejected
 // jobs (illegal ratio, a GearOut without gearing), a leading value reversing during synchronization (alarm
 // 608) and MC_Reset; then camming (issue 19): MC_CamIn direct and cyclic, the switch to another cam at the
-// end of the cam (profile 5, cyclic appending), MC_CamOut profiles 0 and 1, MC_CamIn profile 1. The test also
-// checks that the script reached every job kind.
+// end of the cam (profile 5, cyclic appending), MC_CamOut profiles 0 and 1, MC_CamIn profile 1; during the
+// camming MC_OffsetRelative and MC_PhasingRelative over a distance and MC_LeadingValueAdditive, and during a
+// gearing MC_PhasingRelative with dynamic parameters. The test also checks that the script reached every job
+// kind.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -27,6 +29,8 @@
 #include "counting_allocator.hpp"
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/instructions/mc_leading_value_additive.hpp"
+#include "tomc/instructions/mc_phasing.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/cam/cam.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
@@ -60,6 +64,9 @@ struct FollowerProgram {
   instructions::MC_CamIn<Axis> cam_in;
   instructions::MC_CamIn<Axis> cam_in2;
   instructions::MC_CamOut<Axis> cam_out;
+  instructions::MC_PhasingRelative<Axis> phasing;
+  instructions::MC_OffsetRelative<Axis> offset;
+  instructions::MC_LeadingValueAdditive<Axis> additive;
   void call(Axis& a) {
     power(a);
     reset(a);
@@ -74,6 +81,9 @@ struct FollowerProgram {
     cam_out(a);
     cam_in(a);
     cam_in2(a);
+    phasing(a);
+    offset(a);
+    additive(a);
   }
 };
 
@@ -98,6 +108,9 @@ enum Reached {
   kCamSwitched,
   kCamProfile1,
   kCamOutDone,
+  kOffsetDone,
+  kPhasingDone,
+  kAdditiveBusy,
   kReachedCount
 };
 constexpr const char* kReachedNames[kReachedCount] = {"MC_GearIn InGear",
@@ -118,7 +131,10 @@ constexpr const char* kReachedNames[kReachedCount] = {"MC_GearIn InGear",
                                                       "MC_CamIn profile 2 InSync",
                                                       "MC_CamIn profile 5 switched at the cam end",
                                                       "MC_CamIn profile 1 InSync",
-                                                      "MC_CamOut Done"};
+                                                      "MC_CamOut Done",
+                                                      "MC_OffsetRelative Done",
+                                                      "MC_PhasingRelative Done",
+                                                      "MC_LeadingValueAdditive Busy"};
 
 struct Machine {
   Machine() : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
@@ -341,6 +357,17 @@ std::vector<Step> script() {
                  execute(m.f1.gear, *m.F1);
                },
                [](M& m, int k) { return k > 50 && m.f1.gear.InGear; }, nothing});
+  s.push_back({"phasing with dynamic parameters during gearing",
+               [](M& m) {
+                 auto& p = m.f1.phasing;
+                 p.Master = m.L;
+                 p.PhaseShift = 1.0;
+                 p.ProfileReference = 0;
+                 p.Velocity = 100.0;
+                 p.Acceleration = p.Deceleration = 1000.0;
+                 execute(p, *m.F1);
+               },
+               [](M& m, int) { return m.f1.phasing.Done; }, [](M& m) { m.f1.phasing.Execute = false; }});
   s.push_back({"gear out profile 1",
                [](M& m) {
                  auto& o = m.f1.gear_out;
@@ -446,6 +473,32 @@ std::vector<Step> script() {
                  execute(c, *m.F1);
                },
                [](M& m, int k) { return k > 100 && m.f1.cam_in.InSync; }, nothing});
+  s.push_back({"offset and additive during camming",
+               [](M& m) {
+                 auto& o = m.f1.offset;
+                 o.Offset = 2.0;
+                 o.OffsetDistance = 5.0;
+                 m.f1.additive.Position = 0.5;
+                 m.f1.additive.Enable = true;
+                 execute(o, *m.F1);
+               },
+               [](M& m, int) { return m.f1.offset.Done; }, [](M& m) { m.f1.offset.Execute = false; }});
+  s.push_back({"phasing over a distance during camming",
+               [](M& m) {
+                 auto& p = m.f1.phasing;
+                 p.Master = m.L;
+                 p.PhaseShift = 3.0;
+                 p.ProfileReference = 1;
+                 p.PhasingDistance = 5.0;
+                 execute(p, *m.F1);
+               },
+               [](M& m, int) { return m.f1.phasing.Done; },
+               [](M& m) {
+                 m.f1.phasing.Execute = false;
+                 // Removed during synchronous travel: the step back of the effective leading value is
+                 // not a reversal there (it would cancel a phasing/offset over a distance, 16#808C).
+                 m.f1.additive.Enable = false;
+               }});
   s.push_back({"cam switch at the end of the cam",
                [](M& m) {
                  auto& c = m.f1.cam_in2;
@@ -563,6 +616,9 @@ TEST(GearingAllocation, EveryGearingJobKindRunsWithoutAllocating) {
     see(kCamSwitched, f1.cam_in2.InSync && f1.cam_in2.SyncProfileReference == 5);
     see(kCamProfile1, f1.cam_in.InSync && f1.cam_in.SyncProfileReference == 1);
     see(kCamOutDone, f1.cam_out.Done);
+    see(kOffsetDone, f1.offset.Done);
+    see(kPhasingDone, f1.phasing.Done);
+    see(kAdditiveBusy, f1.additive.Busy);
   }
   const auto allocated = tomc::testing::allocation_count() - before;
   EXPECT_EQ(allocated, 0u) << "allocations in " << kCycles << " cycles";

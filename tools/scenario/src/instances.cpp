@@ -17,11 +17,13 @@
 #include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_interpolate_cam.hpp"
+#include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
+#include "tomc/instructions/mc_phasing.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
@@ -495,6 +497,82 @@ const auto kCamIn = std::to_array<Parameter<CamIn>>({
     out("EndOfProfile", &CamIn::EndOfProfile),
 });
 
+// Leading and following value offsets (spec 07 §4.1, §4.2): the members of the shared bases are named with
+// the instruction's type, so that one table row per output holds for Absolute and Relative alike.
+template <typename FB>
+constexpr auto shift_outputs() {
+  return std::to_array<Parameter<FB>>({
+      out<FB, bool>("Done", &FB::Done),
+      out<FB, bool>("Busy", &FB::Busy),
+      out<FB, bool>("CommandAborted", &FB::CommandAborted),
+      out<FB, bool>("Error", &FB::Error),
+      out<FB, std::uint16_t>("ErrorID", &FB::ErrorID),
+  });
+}
+template <typename FB, std::size_t N, std::size_t M>
+constexpr auto join(const std::array<Parameter<FB>, N>& a, const std::array<Parameter<FB>, M>& b) {
+  std::array<Parameter<FB>, N + M> r{};
+  for (std::size_t i = 0; i < N; ++i)
+    r[i] = a[i];
+  for (std::size_t i = 0; i < M; ++i)
+    r[N + i] = b[i];
+  return r;
+}
+template <typename FB>
+constexpr auto phasing_inputs() {
+  return std::to_array<Parameter<FB>>({
+      in<FB, Source>("Master", &FB::Master),
+      in<FB, bool>("Execute", &FB::Execute),
+      in<FB, double>("PhaseShift", &FB::PhaseShift),
+      in<FB, double>("Velocity", &FB::Velocity),
+      in<FB, double>("Acceleration", &FB::Acceleration),
+      in<FB, double>("Deceleration", &FB::Deceleration),
+      in<FB, double>("Jerk", &FB::Jerk),
+      in<FB, std::int32_t>("ProfileReference", &FB::ProfileReference),
+      in<FB, double>("PhasingDistance", &FB::PhasingDistance),
+      in<FB, double>("StartPosition", &FB::StartPosition),
+      in<FB, std::int32_t>("Direction", &FB::Direction),
+      out<FB, bool>("StartPhasing", &FB::StartPhasing),
+  });
+}
+template <typename FB>
+constexpr auto offset_inputs() {
+  return std::to_array<Parameter<FB>>({
+      in<FB, bool>("Execute", &FB::Execute),
+      in<FB, double>("Offset", &FB::Offset),
+      in<FB, std::int32_t>("ProfileReference", &FB::ProfileReference),
+      in<FB, double>("OffsetDistance", &FB::OffsetDistance),
+      in<FB, double>("StartPosition", &FB::StartPosition),
+      in<FB, std::int32_t>("Direction", &FB::Direction),
+      out<FB, bool>("StartOffset", &FB::StartOffset),
+  });
+}
+using PhasingAbsolute = instructions::MC_PhasingAbsolute<SynchronousAxis>;
+using PhasingRelative = instructions::MC_PhasingRelative<SynchronousAxis>;
+using OffsetAbsolute = instructions::MC_OffsetAbsolute<SynchronousAxis>;
+using OffsetRelative = instructions::MC_OffsetRelative<SynchronousAxis>;
+const auto kPhasingAbsolute =
+    join(join(phasing_inputs<PhasingAbsolute>(), shift_outputs<PhasingAbsolute>()),
+         std::to_array({out("AbsolutePhaseShift", &PhasingAbsolute::AbsolutePhaseShift)}));
+const auto kPhasingRelative =
+    join(join(phasing_inputs<PhasingRelative>(), shift_outputs<PhasingRelative>()),
+         std::to_array({out("CoveredPhaseShift", &PhasingRelative::CoveredPhaseShift)}));
+const auto kOffsetAbsolute = join(join(offset_inputs<OffsetAbsolute>(), shift_outputs<OffsetAbsolute>()),
+                                  std::to_array({out("AbsoluteOffset", &OffsetAbsolute::AbsoluteOffset)}));
+const auto kOffsetRelative = join(join(offset_inputs<OffsetRelative>(), shift_outputs<OffsetRelative>()),
+                                  std::to_array({out("CoveredOffset", &OffsetRelative::CoveredOffset)}));
+
+using LeadingValueAdditive = instructions::MC_LeadingValueAdditive<SynchronousAxis>;
+const auto kLeadingValueAdditive = std::to_array<Parameter<LeadingValueAdditive>>({
+    in("Enable", &LeadingValueAdditive::Enable),
+    in("Position", &LeadingValueAdditive::Position),
+    in("Velocity", &LeadingValueAdditive::Velocity),
+    in("Acceleration", &LeadingValueAdditive::Acceleration),
+    out("Busy", &LeadingValueAdditive::Busy),
+    out("Error", &LeadingValueAdditive::Error),
+    out("ErrorID", &LeadingValueAdditive::ErrorID),
+});
+
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
 // a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
 using InterpolateCam = instructions::MC_InterpolateCam;
@@ -559,7 +637,7 @@ constexpr std::array<std::string_view, 14> kPositioningAxisInstructions{
     "MC_WriteParameter",
     "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 20> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 25> kSynchronousAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -579,6 +657,11 @@ constexpr std::array<std::string_view, 20> kSynchronousAxisInstructions{
     "MC_GearOut",
     "MC_CamIn",
     "MC_CamOut",
+    "MC_PhasingAbsolute",
+    "MC_PhasingRelative",
+    "MC_OffsetAbsolute",
+    "MC_OffsetRelative",
+    "MC_LeadingValueAdditive",
     "MC_TorqueLimiting",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
@@ -587,9 +670,8 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 15> kPlannedInstructions{
-    "MC_CopyCamData",          "MC_TorqueAdditive",      "MC_TorqueRange",      "MC_PhasingAbsolute",
-    "MC_PhasingRelative",      "MC_OffsetAbsolute",      "MC_OffsetRelative",   "MC_MeasuringInput",
+constexpr std::array<std::string_view, 11> kPlannedInstructions{
+    "MC_CopyCamData",          "MC_TorqueAdditive",      "MC_TorqueRange",      "MC_MeasuringInput",
     "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput", "MC_OutputCam",        "MC_CamTrack",
     "MC_ReadParameter",        "MC_MotionInVelocity",    "MC_MotionInPosition",
 };
@@ -692,6 +774,11 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_GearOut") return make(kSyncOut<false>);
       if (instruction == "MC_CamIn") return make(kCamIn);
       if (instruction == "MC_CamOut") return make(kSyncOut<true>);
+      if (instruction == "MC_PhasingAbsolute") return make(kPhasingAbsolute);
+      if (instruction == "MC_PhasingRelative") return make(kPhasingRelative);
+      if (instruction == "MC_OffsetAbsolute") return make(kOffsetAbsolute);
+      if (instruction == "MC_OffsetRelative") return make(kOffsetRelative);
+      if (instruction == "MC_LeadingValueAdditive") return make(kLeadingValueAdditive);
       return make_positioning<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

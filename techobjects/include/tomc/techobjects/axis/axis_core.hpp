@@ -49,6 +49,9 @@ enum class AxisJobKind : std::uint8_t {
   kCamOut,            // MC_CamOut, once desynchronization started
   kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
   kHaltSuperimposed,  // MC_HaltSuperimposed
+  kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
+  kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
+  kLeadingValueAdditive,  // MC_LeadingValueAdditive
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).

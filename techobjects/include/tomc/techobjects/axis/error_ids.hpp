@@ -38,11 +38,23 @@ inline constexpr std::uint16_t kInvalidMasterStartDistance =
 inline constexpr std::uint16_t kInvalidApplicationMode = 0x8027;  // MC_CamIn.ApplicationMode not 0...2
 inline constexpr std::uint16_t kInvalidMasterSyncPosition = 0x8034;
 inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
-inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;  // MC_GearOut stop position not reachable
-inline constexpr std::uint16_t kNoGearing = 0x8077;             // MC_GearOut without MC_GearIn/GearInPos
-inline constexpr std::uint16_t kNoCamming = 0x8078;             // MC_CamOut without MC_CamIn
-inline constexpr std::uint16_t kNoActiveCamming = 0x808B;       // MC_CamIn profile 5 without active camming
-inline constexpr std::uint16_t kOutsideCam = 0x80AD;  // MC_CamIn sync position / leader outside the cam
+inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;    // MC_GearOut stop position not reachable
+inline constexpr std::uint16_t kInvalidPhaseShift = 0x8070;       // PhaseShift not finite
+inline constexpr std::uint16_t kNoSynchronousOperation = 0x8075;  // phasing/offset: no gearing or camming
+inline constexpr std::uint16_t kNoGearing = 0x8077;               // MC_GearOut without MC_GearIn/GearInPos
+inline constexpr std::uint16_t kNoCamming = 0x8078;               // MC_CamOut without MC_CamIn
+inline constexpr std::uint16_t kNoActiveCamming = 0x808B;         // MC_CamIn profile 5 without active camming
+inline constexpr std::uint16_t kVelocityGearingActive = 0x8079;   // phasing/offset during MC_GearInVelocity
+inline constexpr std::uint16_t kInvalidOffset = 0x8080;           // Offset not finite
+inline constexpr std::uint16_t kInvalidOffsetDistance = 0x8081;   // OffsetDistance <= 0 (profiles 1, 2)
+inline constexpr std::uint16_t kInvalidPhasingDistance = 0x8082;  // PhasingDistance <= 0 (profiles 1, 2)
+inline constexpr std::uint16_t kInvalidProfileReference = 0x8083;    // phasing/offset ProfileReference
+inline constexpr std::uint16_t kInvalidStartPosition = 0x8084;       // StartPosition not finite
+inline constexpr std::uint16_t kPhasingAndOffsetExclusive = 0x808A;  // a leading and a following value offset
+inline constexpr std::uint16_t kLeadingValueReversed = 0x808C;  // reversal during a leading/following offset
+inline constexpr std::uint16_t kPhasingProfileNeedsGearing = 0x80A8;  // phasing profile 0 during camming
+inline constexpr std::uint16_t kNotSynchronous = 0x80A9;  // phasing/offset outside status "Synchronous"
+inline constexpr std::uint16_t kOutsideCam = 0x80AD;      // MC_CamIn sync position / leader outside the cam
 inline constexpr std::uint16_t kHomingDuringGearInPos = 0x80A1;  // MC_Home while MC_GearInPos is active
 // tomc's own (spec 03 §5 [IMPL]):
 inline constexpr std::uint16_t kRejectedByRunningJob = 0x8101;  // §9.19 matrix cell "N"

@@ -53,6 +53,7 @@ enum class StatusWordBit : std::uint8_t {
   kSynchronizing = 21,            // Y (spec 07 §1.9; reserved on P)
   kSynchronous = 22,              // Y (spec 07 §1.9; reserved on P)
   kMoveSuperimposedCommand = 23,  // P/Y
+  kPhasingCommand = 24,           // Y (spec 07 §1.9, [T]; reserved on P)
   kAxisSimulation = 25,           // S, P/Y
   kTorqueLimitingCommand = 26,    // S, P/Y
   kInLimitation = 27,             // S, P/Y (correct only with SIEMENS telegram 10x, spec 04 §5.1 note 1)
@@ -67,6 +68,9 @@ enum class StatusWord2Bit : std::uint8_t {
   kStopCommand = 0,                      // S, P/Y
   kDesynchronizingCommand = 1,           // Y (spec 07 §1.9, [T]; reserved on P)
   kPassingBacklash = 2,                  // P/Y
+  kPhasingCommandWaiting = 3,            // Y (spec 07 §1.9, [T]; reserved on P)
+  kOffsetCommand = 4,                    // Y (spec 07 §1.9, [T]; reserved on P)
+  kOffsetCommandWaiting = 5,             // Y (spec 07 §1.9, [T]; reserved on P)
   kMotionInSuperimposedCommand = 6,      // P/Y (T)
   kHaltSuperimposedCommand = 7,          // P/Y
   kMotionInSuperimposedAxesCommand = 8,  // P/Y (T)
@@ -141,6 +145,8 @@ enum class StatusSynchronizedMotionBit : std::uint8_t {
   kMaxVelocityExceeded = 0,
   kMaxAccelerationExceeded = 1,
   kMaxDecelerationExceeded = 2,
+  kInSimulation = 3,                 // [T] spec 07 §1.9
+  kLeadingValueAdditiveCommand = 4,  // [T] spec 07 §1.9
 };
 
 // ---- every enumerator once, in bit order (iteration for tables, traces and tests) ----
@@ -168,6 +174,7 @@ inline constexpr std::array kStatusWordBits{
     StatusWordBit::kSynchronizing,
     StatusWordBit::kSynchronous,
     StatusWordBit::kMoveSuperimposedCommand,
+    StatusWordBit::kPhasingCommand,
     StatusWordBit::kAxisSimulation,
     StatusWordBit::kTorqueLimitingCommand,
     StatusWordBit::kInLimitation,
@@ -180,6 +187,9 @@ inline constexpr std::array kStatusWord2Bits{
     StatusWord2Bit::kStopCommand,
     StatusWord2Bit::kDesynchronizingCommand,
     StatusWord2Bit::kPassingBacklash,
+    StatusWord2Bit::kPhasingCommandWaiting,
+    StatusWord2Bit::kOffsetCommand,
+    StatusWord2Bit::kOffsetCommandWaiting,
     StatusWord2Bit::kMotionInSuperimposedCommand,
     StatusWord2Bit::kHaltSuperimposedCommand,
     StatusWord2Bit::kMotionInSuperimposedAxesCommand,
@@ -279,6 +289,8 @@ constexpr std::string_view name(StatusWordBit bit) noexcept {
       return "Synchronizing";
     case StatusWordBit::kSynchronous:
       return "Synchronous";
+    case StatusWordBit::kPhasingCommand:
+      return "PhasingCommand";
   }
   return {};
 }
@@ -301,6 +313,12 @@ constexpr std::string_view name(StatusWord2Bit bit) noexcept {
       return "PositionProfileCommand";
     case StatusWord2Bit::kOnProfile:
       return "OnProfile";
+    case StatusWord2Bit::kPhasingCommandWaiting:
+      return "PhasingCommandWaiting";
+    case StatusWord2Bit::kOffsetCommand:
+      return "OffsetCommand";
+    case StatusWord2Bit::kOffsetCommandWaiting:
+      return "OffsetCommandWaiting";
   }
   return {};
 }
@@ -455,7 +473,7 @@ constexpr std::uint32_t status_word_mask(TechnologyObjectType type) noexcept {
                        kAxisSimulation, kTorqueLimitingCommand, kInLimitation});
     case TechnologyObjectType::kSynchronousAxis:  // P/Y plus the synchronous bits of spec 07 §1.9
       return status_word_mask(TechnologyObjectType::kPositioningAxis) |
-             bit_mask({kSynchronizing, kSynchronous});
+             bit_mask({kSynchronizing, kSynchronous, kPhasingCommand});
     case TechnologyObjectType::kPositioningAxis:  // spec 04 §5.1 column P/Y (man. §10.3.38)
       return bit_mask({kEnable,
                        kError,
@@ -499,7 +517,9 @@ constexpr std::uint32_t status_word2_mask(TechnologyObjectType type) noexcept {
     case TechnologyObjectType::kSpeedAxis:  // spec 04 §5.2 column S: bit 0 only
       return bit_mask(kStopCommand);
     case TechnologyObjectType::kSynchronousAxis:
-      return status_word2_mask(TechnologyObjectType::kPositioningAxis) | bit_mask(kDesynchronizingCommand);
+      return status_word2_mask(TechnologyObjectType::kPositioningAxis) |
+             bit_mask(
+                 {kDesynchronizingCommand, kPhasingCommandWaiting, kOffsetCommand, kOffsetCommandWaiting});
     case TechnologyObjectType::kPositioningAxis:
       return bit_mask({kStopCommand, kPassingBacklash, kMotionInSuperimposedCommand, kHaltSuperimposedCommand,
                        kMotionInSuperimposedAxesCommand, kPositionProfileCommand, kOnProfile});

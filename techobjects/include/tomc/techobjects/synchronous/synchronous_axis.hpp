@@ -1,10 +1,10 @@
 #pragma once
 // TO_SynchronousAxis (spec 07 §1): everything of TO_PositioningAxis plus gearing and camming to a leading
 // value — MC_GearIn, MC_GearInPos, MC_GearInVelocity, MC_GearOut, MC_CamIn, MC_CamOut — over the
-// leading-value interconnections configured
-// at set-up (setpoint or actual-value coupling). The §9.19.2 matrix decides between synchronous and other
-// jobs (sync_priority.hpp); the motion laws are in synchronous_motion.hpp. The jobs live in the synchronous
-// operation component; phasing and offsets join it as further synchronous functions (spec 07 §1.8).
+// leading-value interconnections configured at set-up (setpoint or actual-value coupling), with leading and
+// following value offsets (MC_Phasing*, MC_Offset*). The §9.19.2 matrix decides between synchronous and
+// other jobs (sync_priority.hpp); the motion laws are in synchronous_motion.hpp. The jobs live in the
+// synchronous operation component (spec 07 §1.8).
 //
 // Leaders run before followers in every cycle (Runtime orders by leaders()), so a follower reads its leader's
 // values of the same MC_Interpolator cycle (spec 07 §6.1). Positions are continuous on both sides: a modulo
@@ -47,6 +47,23 @@ class SynchronousAxis final : public PositioningAxis {
   // ---- camming (spec 07 §3.4–§3.5) ----
   Submission cam_in(const CamInInputs& in) noexcept { return operation_.cam_in(in); }
   Submission cam_out(const CamOutInputs& in) noexcept { return operation_.cam_out(in); }
+  // ---- leading and following value offsets (spec 07 §4.1–§4.2) ----
+  Submission phasing(const PhasingInputs& in, bool absolute) noexcept {
+    return operation_.phasing(in, absolute);
+  }
+  Submission offset(const OffsetInputs& in, bool absolute) noexcept {
+    return operation_.offset(in, absolute);
+  }
+  ShiftJobOutputs shift_outputs(JobId job) const noexcept { return operation_.shift_outputs(job); }
+  // ---- MC_LeadingValueAdditive (spec 07 §4.3) ----
+  Submission additive_start(const LeadingValueAdditiveValues& values) noexcept {
+    return operation_.additive_start(values);
+  }
+  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
+    operation_.additive_update(job, values);
+  }
+  void additive_end(JobId job) noexcept { operation_.additive_end(job); }
+  bool additive_busy(JobId job) const noexcept { return operation_.additive_busy(job); }
   // MC_GearInVelocity.ContinuousUpdate: the ratio of the running job, taken at once (spec 07 §2.3).
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept {
     operation_.update_ratio(job, numerator, denominator);

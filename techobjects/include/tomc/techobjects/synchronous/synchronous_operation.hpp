@@ -6,7 +6,8 @@
 // (sync_priority.hpp), the chain "function leading value -> synchronous function -> following value" and
 // <TO>.StatusSynchronizedMotion. It reaches its axis only through the FollowingAxis port. Gearing and camming
 // share the pending/active/desynchronizing job states, the leader-domain blend and the desynchronization;
-// only the synchronous function differs (a gear line or a cam). Phasing and offsets join here next.
+// only the synchronous function differs (a gear line or a cam). Phasing and offsets (phasing_offset.cpp)
+// shift the function leading value and the following value around it.
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -95,6 +96,44 @@ struct CamInInputs {
 // MC_CamOut has MC_GearOut's parameters (spec 07 §3.5).
 using CamOutInputs = GearOutInputs;
 
+// MC_PhasingAbsolute / MC_PhasingRelative (spec 07 §4.1, V8 parameter list): a leading value offset.
+// Negative dynamics = DynamicDefaults (profile 0 only; the velocity is not limited to MaxVelocity).
+struct PhasingInputs {
+  const LeadingValueSource* Master = nullptr;  // the leading value the synchronous operation follows
+  double PhaseShift = 0.0;                     // absolute target or relative increment
+  double Velocity = -1.0;
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  std::int32_t ProfileReference = 0;  // 0 dynamics (gearing), 1 distance, 2 from StartPosition, 5 cancel
+  double PhasingDistance = 0.0;
+  double StartPosition = 0.0;
+  std::int32_t Direction = 3;  // 1 only while the leading value moves positive, 2 negative, 3 current
+};
+// MC_OffsetAbsolute / MC_OffsetRelative (spec 07 §4.2): a following value offset, over a distance only.
+struct OffsetInputs {
+  double Offset = 0.0;
+  std::int32_t ProfileReference = 1;  // 1 distance, 2 from StartPosition, 5 cancel a waiting job
+  double OffsetDistance = 0.0;
+  double StartPosition = 0.0;
+  std::int32_t Direction = 3;
+};
+// MC_LeadingValueAdditive (spec 07 §4.3): added to the leading value (leader units; velocity and acceleration
+// in the follower's velocity and acceleration units, as EffectiveLeadingValue shows them).
+struct LeadingValueAdditiveValues {
+  double Position = 0.0;
+  double Velocity = 0.0;
+  double Acceleration = 0.0;
+};
+
+// StartPhasing / StartOffset, and the shift reached: AbsolutePhaseShift / AbsoluteOffset (Absolute), the
+// part this job covered: CoveredPhaseShift / CoveredOffset (Relative).
+struct ShiftJobOutputs {
+  bool Start = false;
+  double Absolute = 0.0;
+  double Covered = 0.0;
+};
+
 // Outputs beyond the handshake (spec 07 §2, §3.4): InGear/InSync, StartSync, StartSyncOut,
 // ContinuousUpdateActive, and the cam ends a camming job passed (MC_CamIn.EndOfProfile shows a new count for
 // one call, so that a user program slower than MC_Interpolator sees every end).
@@ -156,6 +195,17 @@ class SynchronousOperation final : public SynchronousSlot {
   Submission gear_out(const GearOutInputs& in) noexcept;
   Submission cam_in(const CamInInputs& in) noexcept;    // camming.cpp
   Submission cam_out(const CamOutInputs& in) noexcept;  // camming.cpp
+  // Leading and following value offsets (phasing_offset.cpp).
+  Submission phasing(const PhasingInputs& in, bool absolute) noexcept;
+  Submission offset(const OffsetInputs& in, bool absolute) noexcept;
+  ShiftJobOutputs shift_outputs(JobId job) const noexcept;
+  // MC_LeadingValueAdditive (leading_value_additive.cpp): started on Enable's rising edge (a running one of
+  // another instance ends, §9.19.2 S7 "A"), its values taken on every call while Enable holds, ended by
+  // Enable = FALSE. additive_busy(): the job's values are in the effective leading value.
+  Submission additive_start(const LeadingValueAdditiveValues& values) noexcept;
+  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
+  void additive_end(JobId job) noexcept;
+  bool additive_busy(JobId job) const noexcept { return job != 0 && job == additive_.id; }
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
 
@@ -220,6 +270,39 @@ class SynchronousOperation final : public SynchronousSlot {
     bool armed = false;  // profile 0: the leader was before the (moving) start position
     CamJob cam{};        // kind kCamIn
   };
+  // A leading value offset (MC_Phasing*) or a following value offset (MC_Offset*) job (spec 07 §4.1, §4.2,
+  // §6.6): the shift goes from `from` to `from + delta` over `length` of effective leading value from
+  // `x_start` (profiles 1, 2), or, phasing profile 0, along a time-based profile of the follower.
+  struct ShiftJob {
+    JobId id = 0;
+    std::int32_t profile = 1;
+    bool waiting = false;    // profile 2 before StartPosition (StatusWord2.X3 / X5)
+    double committed = 0.0;  // the leading value's direction the job relies on (0: not moving yet)
+    double start_position = 0.0;
+    double x_start = 0.0;
+    double x_extreme = 0.0;  // farthest effective leading value reached in `committed` direction
+    double last_x = 0.0;     // profile 2: the crossing test
+    double length = 0.0;
+    double from = 0.0;
+    double delta = 0.0;
+    std::uint32_t cycles = 0;  // profile 0: MC_Interpolator cycles since the start
+    double ratio = 1.0;        // profile 0: follower travel per leading value
+  };
+  struct Shift {  // a shift and its time derivatives in this cycle
+    double value = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+  };
+  struct FinishedShift {  // the outputs of the last job of each kind after it ended
+    JobId id = 0;
+    ShiftJobOutputs outputs{};
+  };
+  struct Additive {  // the running MC_LeadingValueAdditive, in internal units
+    JobId id = 0;
+    double position = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+  };
   struct Desync {  // MC_GearOut / MC_CamOut
     JobId id = 0;
     JobKind kind = JobKind::kGearOut;
@@ -262,6 +345,18 @@ class SynchronousOperation final : public SynchronousSlot {
   SyncFamily family_of(JobKind kind) const noexcept {
     return kind == JobKind::kCamIn || kind == JobKind::kCamOut ? SyncFamily::kCamming : SyncFamily::kGearing;
   }
+  std::uint16_t arbitrate_row(NewSyncRow row) noexcept;
+  // ---- leading and following value offsets (phasing_offset.cpp) ----
+  std::optional<std::uint16_t> shift_requirements(bool phasing) const noexcept;
+  Submission start_shift(ShiftJob& job, Shift& shift, AxisJobKind kind, std::int32_t profile, double target,
+                         bool absolute, double length, double start_position,
+                         std::int32_t direction) noexcept;
+  void step_shifts(const LeadingValue& effective) noexcept;
+  void step_shift(ShiftJob& job, Shift& shift, FinishedShift& finished,
+                  const LeadingValue& effective) noexcept;
+  void end_shift(ShiftJob& job, const Shift& shift, FinishedShift& finished, JobState state,
+                 std::uint16_t error_id) noexcept;
+  void end_shifts() noexcept;  // the synchronous operation ended: both jobs end, both shifts are 0 again
   // ---- camming (camming.cpp) ----
   bool start_pending_cam(const LeadingValue& leader) noexcept;
   void step_cam(const LeadingValue& leader) noexcept;
@@ -281,6 +376,15 @@ class SynchronousOperation final : public SynchronousSlot {
   int cycle_leader_source_ = -1;
   SyncFamily new_job_family_ = SyncFamily::kGearing;  // of the desynchronization being arbitrated (fn. 7)
   StatusSynchronizedMotion status_{};
+  ShiftJob phasing_{};
+  ShiftJob offset_job_{};
+  Shift phase_shift_{};
+  Shift offset_{};
+  FinishedShift phasing_finished_{};
+  FinishedShift offset_finished_{};
+  PositionProfile phasing_profile_{};  // profile 0
+  Additive additive_{};
+  int shown_source_ = -1;  // the leading value EffectiveLeadingValue shows (the last one used)
 
   FollowingAxis axis_;
 };
