@@ -61,7 +61,7 @@ std::vector<pn::ExpectedModule> expected_modules(const scenario::ProfinetDeviceC
   if (c.modules.empty()) return drives::profidrive_modules(c.telegram);
   std::vector<pn::ExpectedModule> modules;
   for (const auto& m : c.modules) {
-    pn::ExpectedModule module{0, m.slot, m.ident, {}};
+    pn::ExpectedModule module{m.api, m.slot, m.ident, {}};
     for (const auto& s : m.submodules) {
       const auto direction = s.input_length != 0 && s.output_length != 0
                                  ? pn::SubmoduleDirection::kInputOutput
