@@ -36,7 +36,9 @@
 
 #include "../dds/gateway_process.hpp"
 #include "netns_hosts.hpp"
+#include "tomc/drives/dds/gateway_link.hpp"
 #include "tomc/drives/profinet_drive.hpp"
+#include "tomc/profinet/alarm.hpp"
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 #include "tomc/scenario/scenario.hpp"
@@ -156,20 +158,32 @@ using pn::testing::quiet;
 
 // The drive's parameters exactly as the scenario gives the embedded simulated drive (defaults of a telegram-3
 // drive at the scenario's cycle time), so that the two runs can be compared.
-sc::DriveSettings drive_settings() {
+sc::DriveSettings drive_settings(int telegram) {
   sc::DriveSettings settings;
   sc::Problems problems;
-  sc::load_drive(sc::Json::parse(R"({ "telegram": 3 })"), "drive", 0.001, settings, problems);
+  sc::load_drive(sc::Json::parse(R"({ "telegram": )" + std::to_string(telegram) + " }"), "drive", 0.001,
+                 settings, problems);
   return settings;
 }
+
+// What the emulated device is: its drive telegram (the module it has) and the p0922 it answers (0: the
+// telegram, a drive as configured; another number: a drive reconfigured without changing its module).
+struct DeviceOptions {
+  int telegram = 3;
+  std::uint16_t p0922 = 0;
+};
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
 // drive application follows the controller's STW2 sign-of-life (isochronous: one drive cycle per servo cycle
 // of tomc) and sends its input frame right after each drive cycle; without drive cycles for 5 ms the input
 // frame goes out every 1 ms (the controller's watchdog must see frames).
+//
+// On request (any thread) the drive raises a fault (SINAMICS F07900 with OFF2: ZSW1 bit 3) and the device
+// sends an alarm notification (diagnosis or process alarm of the telegram submodule); it counts the AlarmAcks
+// the controller returns.
 class DeviceHost {
  public:
-  explicit DeviceHost(const std::string& ns) {
+  explicit DeviceHost(const std::string& ns, DeviceOptions options = {}) : options_(options) {
     thread_ = std::thread([this, ns] { run(ns); });
   }
   ~DeviceHost() {
@@ -181,8 +195,40 @@ class DeviceHost {
     return error_;
   }
   int ars() const { return ars_.load(); }
+  void inject_fault() { fault_requested_ = true; }
+  void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
+  int alarm_acks() const { return alarm_acks_.load(); }
 
  private:
+  // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
+  // diagnosis alarm with a ChannelDiagnosis (USI 0x8000, channel 0x8000, error 9), or a process alarm with a
+  // manufacturer-specific USI 0x0001 and two bytes; low priority (FrameID 0xFE01).
+  std::size_t alarm_frame(const pn::IoDevice& device, const pn::MacAddress& own, std::uint16_t type,
+                          std::span<std::uint8_t> out) {
+    pn::RtaFrame alarm;
+    alarm.frame_id = pn::kFrameIdAlarmLow;
+    alarm.destination_endpoint = device.connection().alarm_cr.local_alarm_reference;
+    alarm.source_endpoint = 3;
+    alarm.send_sequence = alarm_sequence_;
+    alarm.ack_sequence = 0xFFFE;
+    alarm.has_block = true;
+    alarm.block.alarm_type = type;
+    alarm.block.slot = tomc::drives::kDriveObjectSlot;
+    alarm.block.subslot = tomc::drives::kTelegramSubslot;
+    alarm.block.module_ident = tomc::drives::kDriveObjectIdent;
+    alarm.block.submodule_ident =
+        tomc::drives::telegram_submodule_ident(static_cast<std::uint16_t>(options_.telegram));
+    alarm.block.specifier = static_cast<std::uint16_t>(0x2000 | (alarm_sequence_ & 0x07FF));
+    const std::array<std::uint8_t, 6> channel{0x80, 0x00, 0x08, 0x00, 0x00, 0x09};
+    alarm.block.user_structure_identifier = type == pn::alarm_type::kDiagnosis ? 0x8000 : 0x0001;
+    alarm.block.payload_length = type == pn::alarm_type::kDiagnosis ? 6 : 2;
+    std::copy_n(channel.begin(), alarm.block.payload_length, alarm.block.payload.begin());
+    ++alarm_sequence_;
+    std::size_t written = 0;
+    const pn::EthernetHeader header{device.connection().ar.initiator_mac, own, pn::VlanTag{5, 0}};
+    return pn::encode(header, alarm, out, written) == pn::ProfinetError::kNone ? written : 0;
+  }
+
   void fail(const std::string& why) {
     std::lock_guard<std::mutex> lock(mutex_);
     error_ = why;
@@ -200,8 +246,9 @@ class DeviceHost {
     identity.vendor_id = 0x002A;
     identity.device_id = 0x0C01;
     identity.vendor = "tomc emulated drive";
-    const sc::DriveSettings settings = drive_settings();
+    const sc::DriveSettings settings = drive_settings(options_.telegram);
     tomc::drives::ProfinetDrive host(identity, settings.device_config(), settings.parameters);
+    if (options_.p0922 != 0) host.set_p0922(options_.p0922);
     pn::IoDevice& device = host.device();
     std::array<std::uint8_t, 1518> frame{};
     std::uint64_t next_send = now_us();
@@ -213,8 +260,15 @@ class DeviceHost {
     while (!stop_) {
       if (const std::size_t n = raw.receive(frame, 200); n > 0) {
         const auto in = std::span(frame).first(n);
-        if (pn::classify_frame_id(pn::peek_frame_id(in)) == pn::FrameKind::kDcp) {
+        const pn::FrameKind kind = pn::classify_frame_id(pn::peek_frame_id(in));
+        if (kind == pn::FrameKind::kDcp) {
           if (const auto answer = device.on_dcp(in); !answer.empty()) raw.send(answer);
+        } else if (kind == pn::FrameKind::kAlarm) {
+          pn::RtaFrame rta;
+          if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kData &&
+              rta.has_block && rta.block.is_ack) {
+            ++alarm_acks_;
+          }
         } else if (device.on_cyclic(in, now_us()) && host.follow_controller()) {
           last_step = now_us();
           send_input();
@@ -222,6 +276,14 @@ class DeviceHost {
       }
       pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
       if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
+      if (fault_requested_.exchange(false))
+        host.drive().inject_fault(7900, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff2);
+      if (const std::uint16_t type = alarm_requested_.exchange(0);
+          type != 0 && device.state() == pn::ArState::kRunning) {
+        std::array<std::uint8_t, 256> alarm{};
+        if (const std::size_t n = alarm_frame(device, raw.mac(), type, alarm); n > 0)
+          raw.send(std::span(alarm).first(n));
+      }
       last = device.state();
       const std::uint64_t now = now_us();
       if (now >= next_send) {
@@ -236,9 +298,14 @@ class DeviceHost {
     }
   }
 
+  DeviceOptions options_;
   std::thread thread_;
   std::atomic<bool> stop_{false};
   std::atomic<int> ars_{0};
+  std::atomic<bool> fault_requested_{false};
+  std::atomic<std::uint16_t> alarm_requested_{0};
+  std::atomic<int> alarm_acks_{0};
+  std::uint16_t alarm_sequence_ = 0;  // device thread only
   mutable std::mutex mutex_;
   std::string error_;
 };
@@ -366,33 +433,204 @@ std::vector<std::vector<double>> run(const Json& doc, const std::string& ns,
   return buffer.rows;
 }
 
+// The two hosts joined by the veth pair; "" or why the test must skip. Nothing is sent unless each namespace
+// sees only lo and its own veth end (never the machine's interfaces): the caller asserts own_interfaces_only.
+std::string make_hosts(pn::testing::Namespaces& hosts) {
+  return hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
+}
+bool own_interfaces_only(const pn::testing::Namespaces& hosts) {
+  return hosts.interfaces(hosts.first) == std::set<std::string>{"lo", "pn-g"} &&
+         hosts.interfaces(hosts.second) == std::set<std::string>{"lo", "pn-e"} &&
+         hosts.carrier(hosts.first, "pn-g");
+}
+
+// `tomc gateway` in the gateway namespace with device "axis1" (drive-1 at 10.218.0.2, telegram 3) and the
+// given module keys; stopped (SIGTERM) by its PID, it dies with the test. Watchdog factor 20 (20 ms at 1 ms):
+// the gateway's cyclic thread is not SCHED_FIFO here and shares two cores with builds (decision I7); the
+// gateway's G6 watchdog 0.5 s: longer than any lock-step wait.
+class GatewayHost {
+ public:
+  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& module_keys)
+      : dir_(std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(dir_);
+    std::ofstream(dir_ / "gateway.json")
+        << R"({ "gateway": "gw-pn", "domain": )" << kDomain << R"(, "partition": "tomc-test-)" << ::getpid()
+        << R"(", "watchdog": 0.5,
+      "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": 20 },
+      "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3)"
+        << module_keys << " } ] }";
+    process_ = std::make_unique<tomc::testing::GatewayProcess>(
+        std::vector<std::string>{"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway", "--config",
+                                 (dir_ / "gateway.json").string()},
+        dir_ / "gateway.log");
+  }
+  ~GatewayHost() {
+    process_.reset();
+    std::filesystem::remove_all(dir_);
+  }
+  std::string log() const { return process_->log(); }
+  int terminate() { return process_->terminate(); }
+
+ private:
+  std::filesystem::path dir_;
+  std::unique_ptr<tomc::testing::GatewayProcess> process_;
+};
+
+// The emulated drive's GSDML file with its drive object and the telegram-3 submodule (decision I18).
+const std::string kGsdmlModules =
+    R"(, "gsdml": ")" TOMC_GSDML_DIR R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml",
+    "modules": [ { "slot": 1, "module": "DO_DRIVE", "submodules": [ { "subslot": 2, "submodule": "TEL3" } ] } ])";
+
+// What tomc learns over DDS about device "axis1": the gateway's GatewayStatus entry and the link's diagnosis,
+// from a controller-side GatewayLink made in the gateway namespace (its sockets live there) that sends no
+// setpoints; it stays for the test, so that its discovery is done before it is asked.
+struct SeenOverDds {
+  tomc::drives::dds::GatewayLink::GatewayDevice device;
+  std::string diagnosis;
+};
+class DdsObserver {
+ public:
+  explicit DdsObserver(const std::string& ns) {
+    std::thread([&] {
+      if (!enter(ns)) return;
+      tomc::drives::dds::GatewayLinkConfig config;
+      config.domain = kDomain;
+      config.partition = "tomc-test-" + std::to_string(::getpid());
+      link_ = tomc::drives::dds::GatewayLink::create(config);
+      tomc::drives::DeviceConfig device;
+      device.drive_telegram = 3;
+      drive_ = link_->make_drive("axis1", device);
+      link_->start();
+    }).join();
+  }
+  // Polled until `done` or 5 s; the last seen otherwise.
+  SeenOverDds until(const std::function<bool(const SeenOverDds&)>& done) const {
+    SeenOverDds seen;
+    for (const auto end = Clock::now() + std::chrono::seconds(5); link_ && Clock::now() < end;) {
+      for (const auto& g : link_->gateways()) {
+        for (const auto& d : g.devices) {
+          if (d.name == "axis1") seen.device = d;
+        }
+      }
+      const auto reports = link_->diagnose();
+      seen.diagnosis = reports.empty() ? "" : reports[0].text;
+      if (done(seen)) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return seen;
+  }
+
+ private:
+  std::shared_ptr<tomc::drives::dds::GatewayLink> link_;
+  std::unique_ptr<tomc::drives::dds::DdsGatewayDrive> drive_;
+};
+
 }  // namespace
+
+// seed/issue 17: "a device with the wrong module (reported)" and the start-up check of p0922 (decision I16),
+// through `tomc gateway` configured from the emulated drive's GSDML file, as tomc sees them over DDS.
+TEST(GatewayNetns, AWrongModuleAndAWrongP0922AreReportedOverDds) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  GatewayHost gateway(hosts, kGsdmlModules);
+  const DdsObserver observer(hosts.first);
+  const auto detail_has = [](const std::string& text) {
+    return [text](const SeenOverDds& s) { return s.device.detail.find(text) != std::string::npos; };
+  };
+  {
+    // A drive on telegram 2: its telegram submodule is 0x10002, the gateway expects 0x10003 (TEL3). The
+    // device accepts the Connect with that submodule bad (IEC 61158-6-10 ModuleDiffBlock), its p0922 says 2:
+    // the AR is released and the status names the difference first.
+    DeviceHost device(hosts.second, {2, 0});
+    const SeenOverDds seen = observer.until(detail_has("wrong submodule"));
+    EXPECT_EQ(seen.device.state, "disconnected") << gateway.log();
+    EXPECT_EQ(
+        seen.device.detail,
+        "module difference: slot 1 subslot 2: wrong submodule (ident 0x10002); p0922 is 2: the drive sends "
+        "telegram 2, the file says 3");
+    EXPECT_EQ(device.error(), "");
+  }
+  {
+    // A drive with the right module (telegram 3) whose p0922 says 105: refused after the parameter access,
+    // the AR released, retried every 200 ms; tomc's diagnosis names the configured-telegram error.
+    DeviceHost device(hosts.second, {3, 105});
+    const SeenOverDds seen = observer.until(detail_has("p0922 is 105"));
+    EXPECT_EQ(seen.device.state, "disconnected") << gateway.log();
+    EXPECT_EQ(seen.device.detail, "p0922 is 105: the drive sends telegram 105, the file says 3");
+    EXPECT_EQ(
+        seen.diagnosis,
+        "gateway 'gw-pn' has no cyclic exchange with 'axis1': p0922 is 105: the drive sends telegram 105, "
+        "the file says 3");
+    EXPECT_GE(device.ars(), 1);  // the AR was built (ApplicationReady) before the check refused it
+    EXPECT_EQ(device.error(), "");
+  }
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// seed/issue 17: "a drive fault (ZSW1.3 → tomc's drive alarm), and an alarm acknowledged": tomc sim through
+// the gateway; the emulated drive sends a diagnosis alarm at cycle 100, raises F07900 (OFF2, ZSW1 bit 3) and
+// sends a process alarm at cycle 200. The axis gets alarm 401 (drive fault, docs/errors.md); both alarms are
+// acknowledged (AlarmAck back at the device) and the last one is in the gateway's status over DDS.
+TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  GatewayHost gateway(hosts, kGsdmlModules);
+  DeviceHost device(hosts.second);
+  const DdsObserver observer(hosts.first);
+  constexpr int kCycles = 300;
+  std::string failure;
+  const auto start = Clock::now();
+  const auto ms = [&] {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+  };
+  const auto rows = run(
+      scenario(true, kCycles, 0), hosts.first,
+      [&](int cycle, const std::vector<double>&) {
+        if (cycle == 100) device.send_alarm(pn::alarm_type::kDiagnosis);
+        if (cycle == 200) {
+          device.inject_fault();
+          device.send_alarm(pn::alarm_type::kProcess);
+        }
+      },
+      failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kAlarm = 6;
+  constexpr std::size_t kCommunication = 7;
+  EXPECT_EQ(rows[199][kAlarm], 0.0);
+  int alarm = -1;
+  for (int c = 200; c < kCycles && alarm < 0; ++c)
+    alarm = rows[static_cast<std::size_t>(c)][kAlarm] == 401.0 ? c : -1;
+  EXPECT_GT(alarm, 200) << "no alarm 401 after the drive fault\n" << gateway.log();
+  EXPECT_LE(alarm, 210);  // the fault's ZSW1 reaches tomc within a few cycles (lock-step, one cycle delay)
+  // The drive fault stays the axis' alarm to the end: no link loss (405) follows, the exchange runs on
+  // (StatusDrive.CommunicationOK is FALSE with a drive fault, seed L11468).
+  EXPECT_EQ(rows.back()[kAlarm], 401.0);
+  EXPECT_EQ(rows.back()[kCommunication], 0.0);
+  const auto scenario_ms = ms();
+  for (int i = 0; i < 100 && device.alarm_acks() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(device.alarm_acks(), 2);
+  const SeenOverDds seen = observer.until(
+      [](const SeenOverDds& s) { return s.device.detail.find("alarm 2") != std::string::npos; });
+  std::printf("gateway: scenario done after %lld ms, status over DDS after %lld ms\n",
+              static_cast<long long>(scenario_ms), static_cast<long long>(ms()));
+  EXPECT_EQ(seen.device.state, "faulted") << gateway.log();
+  EXPECT_EQ(
+      seen.device.detail,
+      "ZSW1 bit 3: the drive reports a fault; alarm 2 acknowledged: process, slot 1 subslot 2, USI 0x0001");
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
 
 TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACableCut) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
-  if (const std::string why = hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
-      !why.empty()) {
-    GTEST_SKIP() << why;
-  }
-  // Nothing is sent unless each namespace sees only lo and its own veth end (never the machine's interfaces).
-  ASSERT_EQ(hosts.interfaces(hosts.first), (std::set<std::string>{"lo", "pn-g"}));
-  ASSERT_EQ(hosts.interfaces(hosts.second), (std::set<std::string>{"lo", "pn-e"}));
-  ASSERT_TRUE(hosts.carrier(hosts.first, "pn-g"));
-
-  const auto dir = std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  // Watchdog factor 20 (20 ms at 1 ms): the gateway's cyclic thread is not SCHED_FIFO here and shares two
-  // cores with builds (decision I7); the gateway's G6 watchdog 0.5 s: longer than any lock-step wait.
-  std::ofstream(dir / "gateway.json")
-      << R"({ "gateway": "gw-pn", "domain": )" << kDomain << R"(, "partition": "tomc-test-)" << ::getpid()
-      << R"(", "watchdog": 0.5,
-    "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": 20 },
-    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3 } ] })";
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
   DeviceHost device(hosts.second);
-  // `tomc gateway` in the gateway namespace, stopped (SIGTERM) by its PID; it dies with the test.
-  tomc::testing::GatewayProcess gateway({"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway",
-                                         "--config", (dir / "gateway.json").string()},
-                                        dir / "gateway.log");
+  GatewayHost gateway(hosts, "");
   const auto log = [&] { return gateway.log(); };
 
   // 1. A positioning move: the trace equals the embedded drive's within one cycle of transport delay.
@@ -474,5 +712,4 @@ TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACabl
   std::printf("gateway: cut after cycle 300, alarm 405 in cycle %d, enabled again in cycle %d\n", alarm,
               recovered);
   EXPECT_EQ(gateway.terminate(), 0) << log();
-  std::filesystem::remove_all(dir);
 }

@@ -26,6 +26,7 @@ struct GatewayDeviceStatus {
   std::uint32_t alarms = 0;       // alarms received and acknowledged
   float reference_speed_rpm = 0;  // p2000 read at start-up (0: not checked)
   std::string detail;             // the last start-up problem or module difference; "" when none
+  std::string last_alarm;         // "alarm 2 acknowledged: diagnosis, slot 1 subslot 2, USI 0x8000"; "" none
 };
 
 struct GatewayCounters {
