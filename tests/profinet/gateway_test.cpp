@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../dds/gateway_process.hpp"
+#include "gateway_hosts.hpp"
 #include "netns_hosts.hpp"
 #include "tomc/drives/dds/gateway_link.hpp"
 #include "tomc/drives/profinet_drive.hpp"
@@ -51,6 +52,7 @@ namespace pn = tomc::profinet;
 namespace sc = tomc::scenario;
 using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
+using namespace tomc::profinet::gateway_hosts;  // the hosts of these tests (gateway_hosts.hpp)
 
 namespace {
 
@@ -68,13 +70,6 @@ bool has_line(const std::vector<std::string>& lines, const std::string& start) {
     if (l.rfind(start, 0) == 0) return true;
   }
   return false;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& l : lines)
-    text += l + "\n";
-  return text;
 }
 
 }  // namespace
@@ -147,318 +142,26 @@ TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
 
 namespace {
 
-constexpr int kDomain = 175;  // DDS tests use 140-174 (decision G13)
-constexpr pn::Ipv4Address kGatewayIp{10, 218, 0, 1};
-constexpr pn::Ipv4Address kDeviceIp{10, 218, 0, 2};
-constexpr double kTarget = 10.0;  // mm
-
-using pn::testing::enter;
-using pn::testing::now_us;
-using pn::testing::quiet;
-
-// The drive's parameters exactly as the scenario gives the embedded simulated drive (defaults of a telegram-3
-// drive at the scenario's cycle time), so that the two runs can be compared.
-sc::DriveSettings drive_settings(int telegram) {
-  sc::DriveSettings settings;
-  sc::Problems problems;
-  sc::load_drive(sc::Json::parse(R"({ "telegram": )" + std::to_string(telegram) + " }"), "drive", 0.001,
-                 settings, problems);
-  return settings;
+// Device "axis1" (drive-1 at 10.218.0.2, telegram 3) with the given module keys, for GatewayHost.
+std::string one_device(const std::string& module_keys) {
+  return R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3)" +
+         module_keys + " } ]";
 }
 
-// What the emulated device is: its drive telegram (the module it has) and the p0922 it answers (0: the
-// telegram, a drive as configured; another number: a drive reconfigured without changing its module).
-struct DeviceOptions {
-  int telegram = 3;
-  std::uint16_t p0922 = 0;
-};
-
-// The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
-// drive application follows the controller's STW2 sign-of-life (isochronous: one drive cycle per servo cycle
-// of tomc) and sends its input frame right after each drive cycle; without drive cycles for 5 ms the input
-// frame goes out every 1 ms (the controller's watchdog must see frames).
-//
-// On request (any thread) the drive raises a fault (SINAMICS F07900 with OFF2: ZSW1 bit 3) and the device
-// sends an alarm notification (diagnosis or process alarm of the telegram submodule); it counts the AlarmAcks
-// the controller returns.
-class DeviceHost {
- public:
-  explicit DeviceHost(const std::string& ns, DeviceOptions options = {}) : options_(options) {
-    thread_ = std::thread([this, ns] { run(ns); });
-  }
-  ~DeviceHost() {
-    stop_ = true;
-    thread_.join();
-  }
-  std::string error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-  }
-  int ars() const { return ars_.load(); }
-  void inject_fault() { fault_requested_ = true; }
-  void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
-  int alarm_acks() const { return alarm_acks_.load(); }
-
- private:
-  // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
-  // diagnosis alarm with a ChannelDiagnosis (USI 0x8000, channel 0x8000, error 9), or a process alarm with a
-  // manufacturer-specific USI 0x0001 and two bytes; low priority (FrameID 0xFE01).
-  std::size_t alarm_frame(const pn::IoDevice& device, const pn::MacAddress& own, std::uint16_t type,
-                          std::span<std::uint8_t> out) {
-    pn::RtaFrame alarm;
-    alarm.frame_id = pn::kFrameIdAlarmLow;
-    alarm.destination_endpoint = device.connection().alarm_cr.local_alarm_reference;
-    alarm.source_endpoint = 3;
-    alarm.send_sequence = alarm_sequence_;
-    alarm.ack_sequence = 0xFFFE;
-    alarm.has_block = true;
-    alarm.block.alarm_type = type;
-    alarm.block.slot = tomc::drives::kDriveObjectSlot;
-    alarm.block.subslot = tomc::drives::kTelegramSubslot;
-    alarm.block.module_ident = tomc::drives::kDriveObjectIdent;
-    alarm.block.submodule_ident =
-        tomc::drives::telegram_submodule_ident(static_cast<std::uint16_t>(options_.telegram));
-    alarm.block.specifier = static_cast<std::uint16_t>(0x2000 | (alarm_sequence_ & 0x07FF));
-    const std::array<std::uint8_t, 6> channel{0x80, 0x00, 0x08, 0x00, 0x00, 0x09};
-    alarm.block.user_structure_identifier = type == pn::alarm_type::kDiagnosis ? 0x8000 : 0x0001;
-    alarm.block.payload_length = type == pn::alarm_type::kDiagnosis ? 6 : 2;
-    std::copy_n(channel.begin(), alarm.block.payload_length, alarm.block.payload.begin());
-    ++alarm_sequence_;
-    std::size_t written = 0;
-    const pn::EthernetHeader header{device.connection().ar.initiator_mac, own, pn::VlanTag{5, 0}};
-    return pn::encode(header, alarm, out, written) == pn::ProfinetError::kNone ? written : 0;
-  }
-
-  void fail(const std::string& why) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    error_ = why;
-  }
-  void run(const std::string& ns) {
-    if (!enter(ns)) return fail("setns into the device namespace failed");
-    pn::RawSocket raw;
-    pn::UdpSocket udp;
-    if (std::string e = raw.open("pn-e"); !e.empty()) return fail(e);
-    if (std::string e = udp.open(kDeviceIp, pn::kPnioUdpPort); !e.empty()) return fail(e);
-    pn::DeviceIdentity identity;
-    identity.name_of_station = "drive-1";
-    identity.mac = raw.mac();
-    identity.ip = {kDeviceIp, {255, 255, 255, 0}, {}};
-    identity.vendor_id = 0x002A;
-    identity.device_id = 0x0C01;
-    identity.vendor = "tomc emulated drive";
-    const sc::DriveSettings settings = drive_settings(options_.telegram);
-    tomc::drives::ProfinetDrive host(identity, settings.device_config(), settings.parameters);
-    if (options_.p0922 != 0) host.set_p0922(options_.p0922);
-    pn::IoDevice& device = host.device();
-    std::array<std::uint8_t, 1518> frame{};
-    std::uint64_t next_send = now_us();
-    std::uint64_t last_step = now_us();
-    pn::ArState last = pn::ArState::kNone;
-    const auto send_input = [&] {
-      if (const std::size_t n = device.next_input_frame(frame); n > 0) raw.send(std::span(frame).first(n));
-    };
-    while (!stop_) {
-      if (const std::size_t n = raw.receive(frame, 200); n > 0) {
-        const auto in = std::span(frame).first(n);
-        const pn::FrameKind kind = pn::classify_frame_id(pn::peek_frame_id(in));
-        if (kind == pn::FrameKind::kDcp) {
-          if (const auto answer = device.on_dcp(in); !answer.empty()) raw.send(answer);
-        } else if (kind == pn::FrameKind::kAlarm) {
-          pn::RtaFrame rta;
-          if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kData &&
-              rta.has_block && rta.block.is_ack) {
-            ++alarm_acks_;
-          }
-        } else if (device.on_cyclic(in, now_us()) && host.follow_controller()) {
-          last_step = now_us();
-          send_input();
-        }
-      }
-      pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
-      if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
-      if (fault_requested_.exchange(false))
-        host.drive().inject_fault(7900, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff2);
-      if (const std::uint16_t type = alarm_requested_.exchange(0);
-          type != 0 && device.state() == pn::ArState::kRunning) {
-        std::array<std::uint8_t, 256> alarm{};
-        if (const std::size_t n = alarm_frame(device, raw.mac(), type, alarm); n > 0)
-          raw.send(std::span(alarm).first(n));
-      }
-      last = device.state();
-      const std::uint64_t now = now_us();
-      if (now >= next_send) {
-        next_send = now + 1000;
-        // Without the controller's clock (no AR, or no setpoints for 50 ms) the drive runs on its own.
-        if (now - last_step > 50'000) host.cycle();
-        // While following the controller, every input frame answers a drive cycle; after 5 ms without one
-        // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
-        if (device.state() != pn::ArState::kNone && now - last_step > 5'000) send_input();
-        device.watchdog_expired(now);
-      }
-    }
-  }
-
-  DeviceOptions options_;
-  std::thread thread_;
-  std::atomic<bool> stop_{false};
-  std::atomic<int> ars_{0};
-  std::atomic<bool> fault_requested_{false};
-  std::atomic<std::uint16_t> alarm_requested_{0};
-  std::atomic<int> alarm_acks_{0};
-  std::uint16_t alarm_sequence_ = 0;  // device thread only
-  mutable std::mutex mutex_;
-  std::string error_;
-};
-
-// A positioning axis on telegram 3: enable, home (mode 0 at 0), MC_MoveAbsolute to kTarget; with
-// `reset_every`, an MC_Reset edge and a new MC_MoveVelocity edge every that many cycles instead of the move.
-Json scenario(bool through_gateway, int cycles, int reset_every) {
-  Json drive = {{"telegram", 3}};
-  if (through_gateway) {
-    drive["adapter"] = {{"type", "dds_gateway"},
-                        {"domain", kDomain},
-                        {"partition", "tomc-test-" + std::to_string(::getpid())},
-                        {"device", "axis1"},
-                        {"connect_timeout_s", 10.0},
-                        {"answer_timeout_s", 0.02}};
-  }
-  Json doc;
-  doc["cycle_time"] = 0.001;
-  doc["cycles"] = cycles;
-  doc["technology_objects"] = Json::array({Json{{"name", "Slide"},
-                                                {"type", "TO_PositioningAxis"},
-                                                {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
-                                                {"drive", drive}}});
-  Json timeline = Json::array();
-  timeline.push_back({{"cycle", 0},
-                      {"instance", "power"},
-                      {"instruction", "MC_Power"},
-                      {"axis", "Slide"},
-                      {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
-  timeline.push_back({{"cycle", 5},
-                      {"instance", "home"},
-                      {"instruction", "MC_Home"},
-                      {"axis", "Slide"},
-                      {"inputs", {{"Execute", true}, {"Mode", 0}, {"Position", 0.0}}}});
-  if (reset_every == 0) {
-    timeline.push_back({{"cycle", 20},
-                        {"instance", "move"},
-                        {"instruction", "MC_MoveAbsolute"},
-                        {"axis", "Slide"},
-                        {"inputs", {{"Execute", true}, {"Position", kTarget}, {"Velocity", 100.0}}}});
-  } else {
-    for (int c = 20; c < cycles; c += reset_every) {
-      timeline.push_back({{"cycle", c},
-                          {"instance", "reset"},
-                          {"instruction", "MC_Reset"},
-                          {"axis", "Slide"},
-                          {"inputs", {{"Execute", true}}}});
-      timeline.push_back({{"cycle", c + 5}, {"instance", "reset"}, {"inputs", {{"Execute", false}}}});
-      timeline.push_back({{"cycle", c + 10},
-                          {"instance", "move"},
-                          {"instruction", "MC_MoveVelocity"},
-                          {"axis", "Slide"},
-                          {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
-      timeline.push_back({{"cycle", c + 15}, {"instance", "move"}, {"inputs", {{"Execute", false}}}});
-    }
-  }
-  doc["timeline"] = timeline;
-  doc["trace"] = {"Slide.ActualPosition",
-                  "Slide.ActualVelocity",
-                  "power.Status",
-                  reset_every == 0 ? "move.Done" : "move.InVelocity",
-                  "Slide.ErrorDetail.Number",
-                  "Slide.StatusDrive.CommunicationOK"};
-  return doc;
-}
-
-// A trace sink that hands each finished row to `on_row` (cycle, values) as the scenario writes it.
-class RowBuffer : public std::stringbuf {
- public:
-  explicit RowBuffer(std::function<void(int, const std::vector<double>&)> on_row)
-      : on_row_(std::move(on_row)) {}
-  std::vector<std::vector<double>> rows;
-
- protected:
-  int sync() override { return 0; }
-  std::streamsize xsputn(const char* s, std::streamsize n) override {
-    for (std::streamsize i = 0; i < n; ++i)
-      put(s[i]);
-    return n;
-  }
-  int_type overflow(int_type c) override {
-    if (c != traits_type::eof()) put(static_cast<char>(c));
-    return c;
-  }
-
- private:
-  void put(char c) {
-    if (c != '\n') {
-      line_ += c;
-      return;
-    }
-    if (!header_seen_) {
-      header_seen_ = true;
-    } else {
-      std::vector<double> values;
-      std::istringstream cells(line_);
-      for (std::string cell; std::getline(cells, cell, ',');)
-        values.push_back(cell == "true" ? 1.0 : cell == "false" ? 0.0 : std::strtod(cell.c_str(), nullptr));
-      rows.push_back(values);
-      on_row_(static_cast<int>(values.empty() ? -1 : values[0]), values);
-    }
-    line_.clear();
-  }
-  std::function<void(int, const std::vector<double>&)> on_row_;
-  std::string line_;
-  bool header_seen_ = false;
-};
-
-// Runs the scenario; through the gateway it runs on a thread in the gateway namespace (its DDS participant
-// and sockets live there). Columns: 0 cycle, 1 time, then the trace in scenario() order.
-std::vector<std::vector<double>> run(const Json& doc, const std::string& ns,
-                                     std::function<void(int, const std::vector<double>&)> on_row,
-                                     std::string& failure) {
-  RowBuffer buffer(std::move(on_row));
-  std::thread runner([&] {
-    if (!ns.empty() && !enter(ns)) return void(failure = "setns into the gateway namespace failed");
-    auto loaded = sc::Scenario::load(sc::Json::parse(doc.dump()));
-    if (!loaded.scenario) return void(failure = "scenario: " + joined(loaded.problems));
-    std::ostream out(&buffer);
-    const sc::RunResult result = loaded.scenario->run(&out);
-    if (!result.runtime_errors.empty()) failure = joined(result.runtime_errors);
-    if (!result.warnings.empty()) failure += "warnings: " + joined(result.warnings);
-  });
-  runner.join();
-  return buffer.rows;
-}
-
-// The two hosts joined by the veth pair; "" or why the test must skip. Nothing is sent unless each namespace
-// sees only lo and its own veth end (never the machine's interfaces): the caller asserts own_interfaces_only.
-std::string make_hosts(pn::testing::Namespaces& hosts) {
-  return hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
-}
-bool own_interfaces_only(const pn::testing::Namespaces& hosts) {
-  return hosts.interfaces(hosts.first) == std::set<std::string>{"lo", "pn-g"} &&
-         hosts.interfaces(hosts.second) == std::set<std::string>{"lo", "pn-e"} &&
-         hosts.carrier(hosts.first, "pn-g");
-}
-
-// `tomc gateway` in the gateway namespace with device "axis1" (drive-1 at 10.218.0.2, telegram 3) and the
-// given module keys; stopped (SIGTERM) by its PID, it dies with the test. Watchdog factor 20 (20 ms at 1 ms):
-// the gateway's cyclic thread is not SCHED_FIFO here and shares two cores with builds (decision I7); the
-// gateway's G6 watchdog 0.5 s: longer than any lock-step wait.
+// `tomc gateway` in the gateway namespace on pn-g with the given "devices"; stopped (SIGTERM) by its PID, it
+// dies with the test. Watchdog factor 20 (20 ms at 1 ms): the gateway's cyclic thread is not SCHED_FIFO here
+// and shares two cores with builds (decision I7); the gateway's G6 watchdog 0.5 s: longer than any lock-step
+// wait.
 class GatewayHost {
  public:
-  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& module_keys)
+  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& devices)
       : dir_(std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()))) {
     std::filesystem::create_directories(dir_);
-    std::ofstream(dir_ / "gateway.json")
-        << R"({ "gateway": "gw-pn", "domain": )" << kDomain << R"(, "partition": "tomc-test-)" << ::getpid()
-        << R"(", "watchdog": 0.5,
+    std::ofstream(dir_ / "gateway.json") << R"({ "gateway": "gw-pn", "domain": )" << kDomain
+                                         << R"(, "partition": "tomc-test-)" << ::getpid()
+                                         << R"(", "watchdog": 0.5,
       "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": 20 },
-      "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3)"
-        << module_keys << " } ] }";
+      "devices": )" << devices << " }";
     process_ = std::make_unique<tomc::testing::GatewayProcess>(
         std::vector<std::string>{"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway", "--config",
                                  (dir_ / "gateway.json").string()},
@@ -533,7 +236,7 @@ TEST(GatewayNetns, AWrongModuleAndAWrongP0922AreReportedOverDds) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
   if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
   ASSERT_TRUE(own_interfaces_only(hosts));
-  GatewayHost gateway(hosts, kGsdmlModules);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
   const DdsObserver observer(hosts.first);
   const auto detail_has = [](const std::string& text) {
     return [text](const SeenOverDds& s) { return s.device.detail.find(text) != std::string::npos; };
@@ -576,7 +279,7 @@ TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
   if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
   ASSERT_TRUE(own_interfaces_only(hosts));
-  GatewayHost gateway(hosts, kGsdmlModules);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
   DeviceHost device(hosts.second);
   const DdsObserver observer(hosts.first);
   constexpr int kCycles = 300;
@@ -630,7 +333,7 @@ TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACabl
   if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
   ASSERT_TRUE(own_interfaces_only(hosts));
   DeviceHost device(hosts.second);
-  GatewayHost gateway(hosts, "");
+  GatewayHost gateway(hosts, one_device(""));
   const auto log = [&] { return gateway.log(); };
 
   // 1. A positioning move: the trace equals the embedded drive's within one cycle of transport delay.
@@ -712,4 +415,103 @@ TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACabl
   std::printf("gateway: cut after cycle 300, alarm 405 in cycle %d, enabled again in cycle %d\n", alarm,
               recovered);
   EXPECT_EQ(gateway.terminate(), 0) << log();
+}
+
+// seed/issue 17: "cyclic exchange of 1 ms for 4 drives": one `tomc gateway` (send clock 1 ms) with four
+// emulated drives, each on its own veth pair whose gateway ends are ports of a bridge (pn-g, the gateway's
+// interface) in the gateway namespace; `tomc sim` runs four positioning axes, one per drive, through DDS:
+// MC_Power, MC_MoveVelocity 20 mm/s, 500 cycles. Every axis ends at 20 mm/s, enabled, without an alarm.
+TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
+  constexpr int kDrives = 4;
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (::geteuid() != 0) GTEST_SKIP() << "not root: ip netns needs CAP_SYS_ADMIN";
+  if (quiet("ip netns add " + hosts.first) != 0 || quiet("ip netns add " + hosts.second) != 0)
+    GTEST_SKIP() << "'ip netns add' failed (no permission or no iproute2)";
+  const std::string g = "ip -n " + hosts.first + " ";
+  const std::string d = "ip -n " + hosts.second + " ";
+  std::string script = g + "link add pn-g type bridge && " + g + "addr add 10.218.0.1/24 dev pn-g && " + g +
+                       "link set lo up && " + d + "link set lo up";
+  std::set<std::string> gateway_side{"lo", "pn-g"};
+  std::set<std::string> device_side{"lo"};
+  for (int k = 0; k < kDrives; ++k) {
+    const std::string n = std::to_string(k);
+    script += " && " + g + "link add pn-g" + n + " type veth peer name pn-e" + n + " && " + g +
+              "link set pn-e" + n + " netns " + hosts.second + " && " + g + "link set pn-g" + n +
+              " master pn-g && " + g + "link set pn-g" + n + " up && " + d + "addr add 10.218.0." +
+              std::to_string(10 + k) + "/24 dev pn-e" + n + " && " + d + "link set pn-e" + n + " up";
+    gateway_side.insert("pn-g" + n);
+    device_side.insert("pn-e" + n);
+  }
+  script += " && " + g + "link set pn-g up";
+  ASSERT_EQ(quiet("sh -c '" + script + "'"), 0) << script;
+  ASSERT_EQ(hosts.interfaces(hosts.first), gateway_side);
+  ASSERT_EQ(hosts.interfaces(hosts.second), device_side);
+  ASSERT_TRUE(hosts.carrier(hosts.first, "pn-g"));
+
+  std::string devices = "[";
+  std::vector<std::unique_ptr<DeviceHost>> drives;
+  for (int k = 0; k < kDrives; ++k) {
+    const std::string n = std::to_string(k + 1);
+    devices += std::string(k == 0 ? "" : ", ") + R"({ "name": "axis)" + n +
+               R"(", "name_of_station": "drive-)" + n + R"(", "ip": "10.218.0.)" + std::to_string(10 + k) +
+               R"(", "telegram": 3 })";
+    DeviceOptions options;
+    options.interface = "pn-e" + std::to_string(k);
+    options.name_of_station = "drive-" + n;
+    options.ip = {10, 218, 0, static_cast<std::uint8_t>(10 + k)};
+    drives.push_back(std::make_unique<DeviceHost>(hosts.second, options));
+  }
+  GatewayHost gateway(hosts, devices + "]");
+
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  constexpr int kCycles = 500;
+  doc["cycles"] = kCycles;
+  doc["technology_objects"] = Json::array();
+  doc["timeline"] = Json::array();
+  doc["trace"] = Json::array();
+  Json moves = Json::array();  // after every MC_Power: the timeline is in time order
+  for (int k = 1; k <= kDrives; ++k) {
+    const std::string axis = "Axis" + std::to_string(k);
+    doc["technology_objects"].push_back({{"name", axis},
+                                         {"type", "TO_PositioningAxis"},
+                                         {"drive",
+                                          {{"telegram", 3},
+                                           {"adapter",
+                                            {{"type", "dds_gateway"},
+                                             {"domain", kDomain},
+                                             {"partition", "tomc-test-" + std::to_string(::getpid())},
+                                             {"device", "axis" + std::to_string(k)},
+                                             {"connect_timeout_s", 10.0},
+                                             {"answer_timeout_s", 0.02}}}}}});
+    doc["timeline"].push_back({{"cycle", 0},
+                               {"instance", "power" + std::to_string(k)},
+                               {"instruction", "MC_Power"},
+                               {"axis", axis},
+                               {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
+    moves.push_back({{"cycle", 20},
+                     {"instance", "move" + std::to_string(k)},
+                     {"instruction", "MC_MoveVelocity"},
+                     {"axis", axis},
+                     {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
+    for (const char* variable : {".ActualVelocity", ".ErrorDetail.Number", ".StatusDrive.CommunicationOK"})
+      doc["trace"].push_back(axis + variable);
+  }
+  for (const auto& move : moves)
+    doc["timeline"].push_back(move);
+  std::string failure;
+  const auto rows = run(
+      doc, hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  for (int k = 0; k < kDrives; ++k) {
+    SCOPED_TRACE("axis" + std::to_string(k + 1));
+    const std::size_t column = 2 + 3 * static_cast<std::size_t>(k);
+    EXPECT_NEAR(rows.back()[column], 20.0, 0.5);  // mm/s
+    EXPECT_EQ(rows.back()[column + 1], 0.0);      // no alarm
+    EXPECT_EQ(rows.back()[column + 2], 1.0);      // CommunicationOK
+    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->error(), "");
+    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->ars(), 1);  // one AR, never lost
+  }
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }

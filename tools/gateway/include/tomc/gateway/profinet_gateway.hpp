@@ -19,6 +19,9 @@
 
 namespace tomc::profinet_gateway {
 
+// The name of the gateway's cyclic thread (pthread_setname_np, at most 15 characters).
+inline constexpr const char* kCyclicThreadName = "tomc-pn-cyclic";
+
 struct GatewayDeviceStatus {
   std::string name;
   bool exchanging = false;        // the AR runs and the cyclic thread exchanges with the device
