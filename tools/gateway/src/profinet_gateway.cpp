@@ -478,7 +478,9 @@ struct ProfinetGateway::Impl {
         if (problem.empty()) {
           if (const std::string diff = detail::describe(d.controller->module_diff()); !diff.empty())
             text = "module difference: " + diff;
-          d.has_setpoint = false;
+          // has_setpoint is the cyclic thread's (false for every device it does not exchange with: it clears
+          // it before handing a device back and sets it only for exchanging ones); writing it here was a data
+          // race with publish_answer(), found by the TSan stage.
           d.controller->set_outputs_valid(false);  // until a controller's setpoint is applied (G6)
           d.ars.fetch_add(1, std::memory_order_relaxed);
           d.reference_speed_rpm.store(check.reference_speed_rpm, std::memory_order_relaxed);
