@@ -452,6 +452,8 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
   RtaFrame received;
   if (!device_mac_ || decode_rta(frame, received) != ProfinetError::kNone) return 0;
   if (received.pdu_type != RtaPduType::kData || !received.has_block || received.block.is_ack) return 0;
+  // Only this AR's device: with several devices on one interface, each alarm is its sender's.
+  if (frame.size() < 12 || !std::equal(device_mac_->begin(), device_mac_->end(), frame.begin() + 6)) return 0;
   const EthernetHeader header{
       *device_mac_, own_mac_,
       VlanTag{received.block.high_priority ? kPriorityAlarmHigh : kPriorityAlarmLow, 0}};

@@ -35,8 +35,11 @@
 #include <nlohmann/json.hpp>
 
 #include "../dds/gateway_process.hpp"
+#include "gateway_hosts.hpp"
 #include "netns_hosts.hpp"
+#include "tomc/drives/dds/gateway_link.hpp"
 #include "tomc/drives/profinet_drive.hpp"
+#include "tomc/profinet/alarm.hpp"
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 #include "tomc/scenario/scenario.hpp"
@@ -49,6 +52,7 @@ namespace pn = tomc::profinet;
 namespace sc = tomc::scenario;
 using Clock = std::chrono::steady_clock;
 using Json = nlohmann::ordered_json;
+using namespace tomc::profinet::gateway_hosts;  // the hosts of these tests (gateway_hosts.hpp)
 
 namespace {
 
@@ -66,13 +70,6 @@ bool has_line(const std::vector<std::string>& lines, const std::string& start) {
     if (l.rfind(start, 0) == 0) return true;
   }
   return false;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string text;
-  for (const auto& l : lines)
-    text += l + "\n";
-  return text;
 }
 
 }  // namespace
@@ -145,254 +142,198 @@ TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
 
 namespace {
 
-constexpr int kDomain = 175;  // DDS tests use 140-174 (decision G13)
-constexpr pn::Ipv4Address kGatewayIp{10, 218, 0, 1};
-constexpr pn::Ipv4Address kDeviceIp{10, 218, 0, 2};
-constexpr double kTarget = 10.0;  // mm
-
-using pn::testing::enter;
-using pn::testing::now_us;
-using pn::testing::quiet;
-
-// The drive's parameters exactly as the scenario gives the embedded simulated drive (defaults of a telegram-3
-// drive at the scenario's cycle time), so that the two runs can be compared.
-sc::DriveSettings drive_settings() {
-  sc::DriveSettings settings;
-  sc::Problems problems;
-  sc::load_drive(sc::Json::parse(R"({ "telegram": 3 })"), "drive", 0.001, settings, problems);
-  return settings;
+// Device "axis1" (drive-1 at 10.218.0.2, telegram 3) with the given module keys, for GatewayHost.
+std::string one_device(const std::string& module_keys) {
+  return R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3)" +
+         module_keys + " } ]";
 }
 
-// The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
-// drive application follows the controller's STW2 sign-of-life (isochronous: one drive cycle per servo cycle
-// of tomc) and sends its input frame right after each drive cycle; without drive cycles for 5 ms the input
-// frame goes out every 1 ms (the controller's watchdog must see frames).
-class DeviceHost {
+// `tomc gateway` in the gateway namespace on pn-g with the given "devices"; stopped (SIGTERM) by its PID, it
+// dies with the test. Watchdog factor 20 (20 ms at 1 ms): the gateway's cyclic thread is not SCHED_FIFO here
+// and shares two cores with builds (decision I7); the gateway's G6 watchdog 0.5 s: longer than any lock-step
+// wait.
+class GatewayHost {
  public:
-  explicit DeviceHost(const std::string& ns) {
-    thread_ = std::thread([this, ns] { run(ns); });
+  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& devices)
+      : dir_(std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(dir_);
+    std::ofstream(dir_ / "gateway.json") << R"({ "gateway": "gw-pn", "domain": )" << kDomain
+                                         << R"(, "partition": "tomc-test-)" << ::getpid()
+                                         << R"(", "watchdog": 0.5,
+      "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": 20 },
+      "devices": )" << devices << " }";
+    process_ = std::make_unique<tomc::testing::GatewayProcess>(
+        std::vector<std::string>{"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway", "--config",
+                                 (dir_ / "gateway.json").string()},
+        dir_ / "gateway.log");
   }
-  ~DeviceHost() {
-    stop_ = true;
-    thread_.join();
+  ~GatewayHost() {
+    process_.reset();
+    std::filesystem::remove_all(dir_);
   }
-  std::string error() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return error_;
-  }
-  int ars() const { return ars_.load(); }
+  std::string log() const { return process_->log(); }
+  int terminate() { return process_->terminate(); }
 
  private:
-  void fail(const std::string& why) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    error_ = why;
+  std::filesystem::path dir_;
+  std::unique_ptr<tomc::testing::GatewayProcess> process_;
+};
+
+// The emulated drive's GSDML file with its drive object and the telegram-3 submodule (decision I18).
+const std::string kGsdmlModules =
+    R"(, "gsdml": ")" TOMC_GSDML_DIR R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml",
+    "modules": [ { "slot": 1, "module": "DO_DRIVE", "submodules": [ { "subslot": 2, "submodule": "TEL3" } ] } ])";
+
+// What tomc learns over DDS about device "axis1": the gateway's GatewayStatus entry and the link's diagnosis,
+// from a controller-side GatewayLink made in the gateway namespace (its sockets live there) that sends no
+// setpoints; it stays for the test, so that its discovery is done before it is asked.
+struct SeenOverDds {
+  tomc::drives::dds::GatewayLink::GatewayDevice device;
+  std::string diagnosis;
+};
+class DdsObserver {
+ public:
+  explicit DdsObserver(const std::string& ns) {
+    std::thread([&] {
+      if (!enter(ns)) return;
+      tomc::drives::dds::GatewayLinkConfig config;
+      config.domain = kDomain;
+      config.partition = "tomc-test-" + std::to_string(::getpid());
+      link_ = tomc::drives::dds::GatewayLink::create(config);
+      tomc::drives::DeviceConfig device;
+      device.drive_telegram = 3;
+      drive_ = link_->make_drive("axis1", device);
+      link_->start();
+    }).join();
   }
-  void run(const std::string& ns) {
-    if (!enter(ns)) return fail("setns into the device namespace failed");
-    pn::RawSocket raw;
-    pn::UdpSocket udp;
-    if (std::string e = raw.open("pn-e"); !e.empty()) return fail(e);
-    if (std::string e = udp.open(kDeviceIp, pn::kPnioUdpPort); !e.empty()) return fail(e);
-    pn::DeviceIdentity identity;
-    identity.name_of_station = "drive-1";
-    identity.mac = raw.mac();
-    identity.ip = {kDeviceIp, {255, 255, 255, 0}, {}};
-    identity.vendor_id = 0x002A;
-    identity.device_id = 0x0C01;
-    identity.vendor = "tomc emulated drive";
-    const sc::DriveSettings settings = drive_settings();
-    tomc::drives::ProfinetDrive host(identity, settings.device_config(), settings.parameters);
-    pn::IoDevice& device = host.device();
-    std::array<std::uint8_t, 1518> frame{};
-    std::uint64_t next_send = now_us();
-    std::uint64_t last_step = now_us();
-    pn::ArState last = pn::ArState::kNone;
-    const auto send_input = [&] {
-      if (const std::size_t n = device.next_input_frame(frame); n > 0) raw.send(std::span(frame).first(n));
-    };
-    while (!stop_) {
-      if (const std::size_t n = raw.receive(frame, 200); n > 0) {
-        const auto in = std::span(frame).first(n);
-        if (pn::classify_frame_id(pn::peek_frame_id(in)) == pn::FrameKind::kDcp) {
-          if (const auto answer = device.on_dcp(in); !answer.empty()) raw.send(answer);
-        } else if (device.on_cyclic(in, now_us()) && host.follow_controller()) {
-          last_step = now_us();
-          send_input();
+  // Polled until `done` or 5 s; the last seen otherwise.
+  SeenOverDds until(const std::function<bool(const SeenOverDds&)>& done) const {
+    SeenOverDds seen;
+    for (const auto end = Clock::now() + std::chrono::seconds(5); link_ && Clock::now() < end;) {
+      for (const auto& g : link_->gateways()) {
+        for (const auto& d : g.devices) {
+          if (d.name == "axis1") seen.device = d;
         }
       }
-      pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
-      if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
-      last = device.state();
-      const std::uint64_t now = now_us();
-      if (now >= next_send) {
-        next_send = now + 1000;
-        // Without the controller's clock (no AR, or no setpoints for 50 ms) the drive runs on its own.
-        if (now - last_step > 50'000) host.cycle();
-        // While following the controller, every input frame answers a drive cycle; after 5 ms without one
-        // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
-        if (device.state() != pn::ArState::kNone && now - last_step > 5'000) send_input();
-        device.watchdog_expired(now);
-      }
+      const auto reports = link_->diagnose();
+      seen.diagnosis = reports.empty() ? "" : reports[0].text;
+      if (done(seen)) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-  }
-
-  std::thread thread_;
-  std::atomic<bool> stop_{false};
-  std::atomic<int> ars_{0};
-  mutable std::mutex mutex_;
-  std::string error_;
-};
-
-// A positioning axis on telegram 3: enable, home (mode 0 at 0), MC_MoveAbsolute to kTarget; with
-// `reset_every`, an MC_Reset edge and a new MC_MoveVelocity edge every that many cycles instead of the move.
-Json scenario(bool through_gateway, int cycles, int reset_every) {
-  Json drive = {{"telegram", 3}};
-  if (through_gateway) {
-    drive["adapter"] = {{"type", "dds_gateway"},
-                        {"domain", kDomain},
-                        {"partition", "tomc-test-" + std::to_string(::getpid())},
-                        {"device", "axis1"},
-                        {"connect_timeout_s", 10.0},
-                        {"answer_timeout_s", 0.02}};
-  }
-  Json doc;
-  doc["cycle_time"] = 0.001;
-  doc["cycles"] = cycles;
-  doc["technology_objects"] = Json::array({Json{{"name", "Slide"},
-                                                {"type", "TO_PositioningAxis"},
-                                                {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
-                                                {"drive", drive}}});
-  Json timeline = Json::array();
-  timeline.push_back({{"cycle", 0},
-                      {"instance", "power"},
-                      {"instruction", "MC_Power"},
-                      {"axis", "Slide"},
-                      {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
-  timeline.push_back({{"cycle", 5},
-                      {"instance", "home"},
-                      {"instruction", "MC_Home"},
-                      {"axis", "Slide"},
-                      {"inputs", {{"Execute", true}, {"Mode", 0}, {"Position", 0.0}}}});
-  if (reset_every == 0) {
-    timeline.push_back({{"cycle", 20},
-                        {"instance", "move"},
-                        {"instruction", "MC_MoveAbsolute"},
-                        {"axis", "Slide"},
-                        {"inputs", {{"Execute", true}, {"Position", kTarget}, {"Velocity", 100.0}}}});
-  } else {
-    for (int c = 20; c < cycles; c += reset_every) {
-      timeline.push_back({{"cycle", c},
-                          {"instance", "reset"},
-                          {"instruction", "MC_Reset"},
-                          {"axis", "Slide"},
-                          {"inputs", {{"Execute", true}}}});
-      timeline.push_back({{"cycle", c + 5}, {"instance", "reset"}, {"inputs", {{"Execute", false}}}});
-      timeline.push_back({{"cycle", c + 10},
-                          {"instance", "move"},
-                          {"instruction", "MC_MoveVelocity"},
-                          {"axis", "Slide"},
-                          {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
-      timeline.push_back({{"cycle", c + 15}, {"instance", "move"}, {"inputs", {{"Execute", false}}}});
-    }
-  }
-  doc["timeline"] = timeline;
-  doc["trace"] = {"Slide.ActualPosition",
-                  "Slide.ActualVelocity",
-                  "power.Status",
-                  reset_every == 0 ? "move.Done" : "move.InVelocity",
-                  "Slide.ErrorDetail.Number",
-                  "Slide.StatusDrive.CommunicationOK"};
-  return doc;
-}
-
-// A trace sink that hands each finished row to `on_row` (cycle, values) as the scenario writes it.
-class RowBuffer : public std::stringbuf {
- public:
-  explicit RowBuffer(std::function<void(int, const std::vector<double>&)> on_row)
-      : on_row_(std::move(on_row)) {}
-  std::vector<std::vector<double>> rows;
-
- protected:
-  int sync() override { return 0; }
-  std::streamsize xsputn(const char* s, std::streamsize n) override {
-    for (std::streamsize i = 0; i < n; ++i)
-      put(s[i]);
-    return n;
-  }
-  int_type overflow(int_type c) override {
-    if (c != traits_type::eof()) put(static_cast<char>(c));
-    return c;
+    return seen;
   }
 
  private:
-  void put(char c) {
-    if (c != '\n') {
-      line_ += c;
-      return;
-    }
-    if (!header_seen_) {
-      header_seen_ = true;
-    } else {
-      std::vector<double> values;
-      std::istringstream cells(line_);
-      for (std::string cell; std::getline(cells, cell, ',');)
-        values.push_back(cell == "true" ? 1.0 : cell == "false" ? 0.0 : std::strtod(cell.c_str(), nullptr));
-      rows.push_back(values);
-      on_row_(static_cast<int>(values.empty() ? -1 : values[0]), values);
-    }
-    line_.clear();
-  }
-  std::function<void(int, const std::vector<double>&)> on_row_;
-  std::string line_;
-  bool header_seen_ = false;
+  std::shared_ptr<tomc::drives::dds::GatewayLink> link_;
+  std::unique_ptr<tomc::drives::dds::DdsGatewayDrive> drive_;
 };
-
-// Runs the scenario; through the gateway it runs on a thread in the gateway namespace (its DDS participant
-// and sockets live there). Columns: 0 cycle, 1 time, then the trace in scenario() order.
-std::vector<std::vector<double>> run(const Json& doc, const std::string& ns,
-                                     std::function<void(int, const std::vector<double>&)> on_row,
-                                     std::string& failure) {
-  RowBuffer buffer(std::move(on_row));
-  std::thread runner([&] {
-    if (!ns.empty() && !enter(ns)) return void(failure = "setns into the gateway namespace failed");
-    auto loaded = sc::Scenario::load(sc::Json::parse(doc.dump()));
-    if (!loaded.scenario) return void(failure = "scenario: " + joined(loaded.problems));
-    std::ostream out(&buffer);
-    const sc::RunResult result = loaded.scenario->run(&out);
-    if (!result.runtime_errors.empty()) failure = joined(result.runtime_errors);
-    if (!result.warnings.empty()) failure += "warnings: " + joined(result.warnings);
-  });
-  runner.join();
-  return buffer.rows;
-}
 
 }  // namespace
 
+// seed/issue 17: "a device with the wrong module (reported)" and the start-up check of p0922 (decision I16),
+// through `tomc gateway` configured from the emulated drive's GSDML file, as tomc sees them over DDS.
+TEST(GatewayNetns, AWrongModuleAndAWrongP0922AreReportedOverDds) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  const DdsObserver observer(hosts.first);
+  const auto detail_has = [](const std::string& text) {
+    return [text](const SeenOverDds& s) { return s.device.detail.find(text) != std::string::npos; };
+  };
+  {
+    // A drive on telegram 2: its telegram submodule is 0x10002, the gateway expects 0x10003 (TEL3). The
+    // device accepts the Connect with that submodule bad (IEC 61158-6-10 ModuleDiffBlock), its p0922 says 2:
+    // the AR is released and the status names the difference first.
+    DeviceHost device(hosts.second, {2, 0});
+    const SeenOverDds seen = observer.until(detail_has("wrong submodule"));
+    EXPECT_EQ(seen.device.state, "disconnected") << gateway.log();
+    EXPECT_EQ(
+        seen.device.detail,
+        "module difference: slot 1 subslot 2: wrong submodule (ident 0x10002); p0922 is 2: the drive sends "
+        "telegram 2, the file says 3");
+    EXPECT_EQ(device.error(), "");
+  }
+  {
+    // A drive with the right module (telegram 3) whose p0922 says 105: refused after the parameter access,
+    // the AR released, retried every 200 ms; tomc's diagnosis names the configured-telegram error.
+    DeviceHost device(hosts.second, {3, 105});
+    const SeenOverDds seen = observer.until(detail_has("p0922 is 105"));
+    EXPECT_EQ(seen.device.state, "disconnected") << gateway.log();
+    EXPECT_EQ(seen.device.detail, "p0922 is 105: the drive sends telegram 105, the file says 3");
+    EXPECT_EQ(
+        seen.diagnosis,
+        "gateway 'gw-pn' has no cyclic exchange with 'axis1': p0922 is 105: the drive sends telegram 105, "
+        "the file says 3");
+    EXPECT_GE(device.ars(), 1);  // the AR was built (ApplicationReady) before the check refused it
+    EXPECT_EQ(device.error(), "");
+  }
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// seed/issue 17: "a drive fault (ZSW1.3 → tomc's drive alarm), and an alarm acknowledged": tomc sim through
+// the gateway; the emulated drive sends a diagnosis alarm at cycle 100, raises F07900 (OFF2, ZSW1 bit 3) and
+// sends a process alarm at cycle 200. The axis gets alarm 401 (drive fault, docs/errors.md); both alarms are
+// acknowledged (AlarmAck back at the device) and the last one is in the gateway's status over DDS.
+TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  DeviceHost device(hosts.second);
+  const DdsObserver observer(hosts.first);
+  constexpr int kCycles = 300;
+  std::string failure;
+  const auto start = Clock::now();
+  const auto ms = [&] {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+  };
+  const auto rows = run(
+      scenario(true, kCycles, 0), hosts.first,
+      [&](int cycle, const std::vector<double>&) {
+        if (cycle == 100) device.send_alarm(pn::alarm_type::kDiagnosis);
+        if (cycle == 200) {
+          device.inject_fault();
+          device.send_alarm(pn::alarm_type::kProcess);
+        }
+      },
+      failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kAlarm = 6;
+  constexpr std::size_t kCommunication = 7;
+  EXPECT_EQ(rows[199][kAlarm], 0.0);
+  int alarm = -1;
+  for (int c = 200; c < kCycles && alarm < 0; ++c)
+    alarm = rows[static_cast<std::size_t>(c)][kAlarm] == 401.0 ? c : -1;
+  EXPECT_GT(alarm, 200) << "no alarm 401 after the drive fault\n" << gateway.log();
+  EXPECT_LE(alarm, 210);  // the fault's ZSW1 reaches tomc within a few cycles (lock-step, one cycle delay)
+  // The drive fault stays the axis' alarm to the end: no link loss (405) follows, the exchange runs on
+  // (StatusDrive.CommunicationOK is FALSE with a drive fault, seed L11468).
+  EXPECT_EQ(rows.back()[kAlarm], 401.0);
+  EXPECT_EQ(rows.back()[kCommunication], 0.0);
+  const auto scenario_ms = ms();
+  for (int i = 0; i < 100 && device.alarm_acks() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(device.alarm_acks(), 2);
+  const SeenOverDds seen = observer.until(
+      [](const SeenOverDds& s) { return s.device.detail.find("alarm 2") != std::string::npos; });
+  std::printf("gateway: scenario done after %lld ms, status over DDS after %lld ms\n",
+              static_cast<long long>(scenario_ms), static_cast<long long>(ms()));
+  EXPECT_EQ(seen.device.state, "faulted") << gateway.log();
+  EXPECT_EQ(
+      seen.device.detail,
+      "ZSW1 bit 3: the drive reports a fault; alarm 2 acknowledged: process, slot 1 subslot 2, USI 0x0001");
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
 TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACableCut) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
-  if (const std::string why = hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
-      !why.empty()) {
-    GTEST_SKIP() << why;
-  }
-  // Nothing is sent unless each namespace sees only lo and its own veth end (never the machine's interfaces).
-  ASSERT_EQ(hosts.interfaces(hosts.first), (std::set<std::string>{"lo", "pn-g"}));
-  ASSERT_EQ(hosts.interfaces(hosts.second), (std::set<std::string>{"lo", "pn-e"}));
-  ASSERT_TRUE(hosts.carrier(hosts.first, "pn-g"));
-
-  const auto dir = std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  // Watchdog factor 20 (20 ms at 1 ms): the gateway's cyclic thread is not SCHED_FIFO here and shares two
-  // cores with builds (decision I7); the gateway's G6 watchdog 0.5 s: longer than any lock-step wait.
-  std::ofstream(dir / "gateway.json")
-      << R"({ "gateway": "gw-pn", "domain": )" << kDomain << R"(, "partition": "tomc-test-)" << ::getpid()
-      << R"(", "watchdog": 0.5,
-    "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": 20 },
-    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 3 } ] })";
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
   DeviceHost device(hosts.second);
-  // `tomc gateway` in the gateway namespace, stopped (SIGTERM) by its PID; it dies with the test.
-  tomc::testing::GatewayProcess gateway({"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway",
-                                         "--config", (dir / "gateway.json").string()},
-                                        dir / "gateway.log");
+  GatewayHost gateway(hosts, one_device(""));
   const auto log = [&] { return gateway.log(); };
 
   // 1. A positioning move: the trace equals the embedded drive's within one cycle of transport delay.
@@ -474,5 +415,103 @@ TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACabl
   std::printf("gateway: cut after cycle 300, alarm 405 in cycle %d, enabled again in cycle %d\n", alarm,
               recovered);
   EXPECT_EQ(gateway.terminate(), 0) << log();
-  std::filesystem::remove_all(dir);
+}
+
+// seed/issue 17: "cyclic exchange of 1 ms for 4 drives": one `tomc gateway` (send clock 1 ms) with four
+// emulated drives, each on its own veth pair whose gateway ends are ports of a bridge (pn-g, the gateway's
+// interface) in the gateway namespace; `tomc sim` runs four positioning axes, one per drive, through DDS:
+// MC_Power, MC_MoveVelocity 20 mm/s, 500 cycles. Every axis ends at 20 mm/s, enabled, without an alarm.
+TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
+  constexpr int kDrives = 4;
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (::geteuid() != 0) GTEST_SKIP() << "not root: ip netns needs CAP_SYS_ADMIN";
+  if (quiet("ip netns add " + hosts.first) != 0 || quiet("ip netns add " + hosts.second) != 0)
+    GTEST_SKIP() << "'ip netns add' failed (no permission or no iproute2)";
+  const std::string g = "ip -n " + hosts.first + " ";
+  const std::string d = "ip -n " + hosts.second + " ";
+  std::string script = g + "link add pn-g type bridge && " + g + "addr add 10.218.0.1/24 dev pn-g && " + g +
+                       "link set lo up && " + d + "link set lo up";
+  std::set<std::string> gateway_side{"lo", "pn-g"};
+  std::set<std::string> device_side{"lo"};
+  for (int k = 0; k < kDrives; ++k) {
+    const std::string n = std::to_string(k);
+    script += " && " + g + "link add pn-g" + n + " type veth peer name pn-e" + n + " && " + g +
+              "link set pn-e" + n + " netns " + hosts.second + " && " + g + "link set pn-g" + n +
+              " master pn-g && " + g + "link set pn-g" + n + " up && " + d + "addr add 10.218.0." +
+              std::to_string(10 + k) + "/24 dev pn-e" + n + " && " + d + "link set pn-e" + n + " up";
+    gateway_side.insert("pn-g" + n);
+    device_side.insert("pn-e" + n);
+  }
+  script += " && " + g + "link set pn-g up";
+  ASSERT_EQ(quiet("sh -c '" + script + "'"), 0) << script;
+  ASSERT_EQ(hosts.interfaces(hosts.first), gateway_side);
+  ASSERT_EQ(hosts.interfaces(hosts.second), device_side);
+  ASSERT_TRUE(hosts.carrier(hosts.first, "pn-g"));
+
+  std::string devices = "[";
+  std::vector<std::unique_ptr<DeviceHost>> drives;
+  for (int k = 0; k < kDrives; ++k) {
+    const std::string n = std::to_string(k + 1);
+    devices += std::string(k == 0 ? "" : ", ") + R"({ "name": "axis)" + n +
+               R"(", "name_of_station": "drive-)" + n + R"(", "ip": "10.218.0.)" + std::to_string(10 + k) +
+               R"(", "telegram": 3 })";
+    DeviceOptions options;
+    options.interface = "pn-e" + std::to_string(k);
+    options.name_of_station = "drive-" + n;
+    options.ip = {10, 218, 0, static_cast<std::uint8_t>(10 + k)};
+    drives.push_back(std::make_unique<DeviceHost>(hosts.second, options));
+  }
+  GatewayHost gateway(hosts, devices + "]");
+
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  constexpr int kCycles = 500;
+  doc["cycles"] = kCycles;
+  doc["technology_objects"] = Json::array();
+  doc["timeline"] = Json::array();
+  doc["trace"] = Json::array();
+  Json moves = Json::array();  // after every MC_Power: the timeline is in time order
+  for (int k = 1; k <= kDrives; ++k) {
+    const std::string axis = "Axis" + std::to_string(k);
+    doc["technology_objects"].push_back({{"name", axis},
+                                         {"type", "TO_PositioningAxis"},
+                                         {"drive",
+                                          {{"telegram", 3},
+                                           {"adapter",
+                                            {{"type", "dds_gateway"},
+                                             {"domain", kDomain},
+                                             {"partition", "tomc-test-" + std::to_string(::getpid())},
+                                             {"device", "axis" + std::to_string(k)},
+                                             {"connect_timeout_s", 10.0},
+                                             {"answer_timeout_s", 0.02}}}}}});
+    doc["timeline"].push_back({{"cycle", 0},
+                               {"instance", "power" + std::to_string(k)},
+                               {"instruction", "MC_Power"},
+                               {"axis", axis},
+                               {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
+    moves.push_back({{"cycle", 20},
+                     {"instance", "move" + std::to_string(k)},
+                     {"instruction", "MC_MoveVelocity"},
+                     {"axis", axis},
+                     {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
+    for (const char* variable : {".ActualVelocity", ".ErrorDetail.Number", ".StatusDrive.CommunicationOK"})
+      doc["trace"].push_back(axis + variable);
+  }
+  for (const auto& move : moves)
+    doc["timeline"].push_back(move);
+  std::string failure;
+  const auto rows = run(
+      doc, hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  for (int k = 0; k < kDrives; ++k) {
+    SCOPED_TRACE("axis" + std::to_string(k + 1));
+    const std::size_t column = 2 + 3 * static_cast<std::size_t>(k);
+    EXPECT_NEAR(rows.back()[column], 20.0, 0.5);  // mm/s
+    EXPECT_EQ(rows.back()[column + 1], 0.0);      // no alarm
+    EXPECT_EQ(rows.back()[column + 2], 1.0);      // CommunicationOK
+    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->error(), "");
+    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->ars(), 1);  // one AR, never lost
+  }
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }

@@ -48,8 +48,14 @@ std::vector<std::uint8_t> receive_dcp(pn::RawSocket& raw, std::uint32_t xid) {
 }
 
 // One RPC request and its answer from the device's address (repeated on silence: UDP may lose it).
+// The device's answer to `request`: the RPC response (or fault) with the request's activity UUID and sequence
+// number. Anything else from the device is skipped: a late answer to an earlier attempt or to a Release sent
+// without waiting would otherwise be taken for this answer, and every later call would read the answer of the
+// call before it.
 std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device,
                                std::span<const std::uint8_t> request) {
+  pn::WireReader request_in(request);
+  const pn::RpcHeader asked = pn::decode_rpc(request_in).header;
   std::array<std::uint8_t, 4096> buffer{};
   for (int attempt = 0; attempt < kRpcAttempts; ++attempt) {
     udp.send_to(request, device, pn::kPnioUdpPort);
@@ -57,7 +63,13 @@ std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device
       pn::Ipv4Address from{};
       std::uint16_t port = 0;
       const std::size_t n = udp.receive(buffer, 20'000, from, port);
-      if (n > 0 && from == device) return {buffer.begin(), buffer.begin() + static_cast<long>(n)};
+      if (n == 0 || from != device) continue;
+      pn::WireReader in(std::span<const std::uint8_t>(buffer.data(), n));
+      const pn::RpcHeader answer = pn::decode_rpc(in).header;
+      if (in.ok() && answer.packet_type != pn::RpcPacketType::kRequest && answer.activity == asked.activity &&
+          answer.sequence_number == asked.sequence_number) {
+        return {buffer.begin(), buffer.begin() + static_cast<long>(n)};
+      }
     }
   }
   return {};
@@ -141,10 +153,13 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     if (!answer.empty()) udp.send_to(answer, from, port);
     if (controller.state() != pn::ControllerArState::kRunning) continue;
     if (check == nullptr) return {};
-    const std::string problem = check_telegram(controller, udp, *check);
+    std::string problem = check_telegram(controller, udp, *check);
     if (!problem.empty()) {
-      // Not this drive's telegram (or unknown): the AR must not carry setpoints of another layout.
-      udp.send_to(controller.release_request(), ip, pn::kPnioUdpPort);
+      // Not this drive's telegram (or unknown): the AR must not carry setpoints of another layout. A module
+      // difference of this Connect is named first: a wrong telegram submodule is usually why.
+      if (const std::string diff = describe(controller.module_diff()); !diff.empty())
+        problem = "module difference: " + diff + "; " + problem;
+      (void)call(udp, ip, controller.release_request());
       controller.abort_ar();
     }
     return problem;

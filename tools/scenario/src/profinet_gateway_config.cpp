@@ -2,9 +2,11 @@
 #include "tomc/scenario/profinet_gateway_config.hpp"
 
 #include <charconv>
+#include <map>
 
 #include "gateway_adapter_detail.hpp"
 #include "json_reader.hpp"
+#include "tomc/profinet/gsdml.hpp"
 #include "tomc/telegrams/codec.hpp"
 
 namespace tomc::scenario {
@@ -12,6 +14,12 @@ namespace tomc::scenario {
 using detail::ObjectReader;
 
 namespace {
+
+struct GsdmlFile {
+  profinet::gsdml::Device device;
+  std::string error;  // why the file cannot be used
+};
+using GsdmlFiles = std::map<std::filesystem::path, GsdmlFile>;
 
 constexpr std::size_t kMaxStationName = 240;  // IEC 61158-6-10 NameOfStation
 
@@ -89,8 +97,14 @@ void read_modules(const Json& value, const std::string& path, ProfinetDeviceConf
   }
   if (device.modules.front().slot != 0)
     problems.add(path + "[0].slot", "the first module is the DAP in slot 0");
-  if (device.telegram == 0) return;
-  // The telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec 06 §2.15).
+}
+
+// The telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec 06 §2.15).
+// `by_hand`: the modules are the file's "modules" array (the path names the entry); otherwise they come from
+// the GSDML file and the message names the slot and subslot.
+void check_telegram_submodule(const ProfinetDeviceConfig& device, const std::string& path, bool by_hand,
+                              Problems& problems) {
+  if (device.telegram == 0 || device.modules.empty()) return;
   const std::uint16_t in = telegram_bytes(device.telegram, telegrams::Direction::kActual);
   const std::uint16_t out = telegram_bytes(device.telegram, telegrams::Direction::kSetpoint);
   for (std::size_t i = 0; i < device.modules.size(); ++i) {
@@ -100,17 +114,96 @@ void read_modules(const Json& value, const std::string& path, ProfinetDeviceConf
       const ProfinetSubmoduleConfig& sub = module.submodules[k];
       if (sub.subslot != device.telegram_subslot) continue;
       if (sub.input_length != in || sub.output_length != out) {
-        problems.add(path + "[" + std::to_string(i) + "].submodules[" + std::to_string(k) + "]",
-                     "the telegram submodule has input_length " + std::to_string(sub.input_length) +
-                         " and output_length " + std::to_string(sub.output_length) + "; telegram " +
-                         std::to_string(device.telegram) + " needs " + std::to_string(in) + " and " +
-                         std::to_string(out));
+        problems.add(
+            by_hand ? path + "[" + std::to_string(i) + "].submodules[" + std::to_string(k) + "]" : path,
+            std::string(by_hand ? ""
+                                : "slot " + std::to_string(module.slot) + " subslot " +
+                                      std::to_string(sub.subslot) + ": ") +
+                "the telegram submodule has input_length " + std::to_string(sub.input_length) +
+                " and output_length " + std::to_string(sub.output_length) + "; telegram " +
+                std::to_string(device.telegram) + " needs " + std::to_string(in) + " and " +
+                std::to_string(out));
       }
       return;
     }
   }
   problems.add(path, "no submodule in slot " + std::to_string(device.telegram_slot) + " subslot " +
                          std::to_string(device.telegram_subslot) + " (telegram_slot, telegram_subslot)");
+}
+
+// "gsdml": the device's GSDML file (relative to the configuration file), "dap" (its ID; optional when the
+// file has one) and "modules" chosen by their GSDML IDs:
+//   "modules": [ { "slot": 1, "module": "DO_DRIVE", "submodules": [ { "subslot": 2, "submodule": "TEL3" } ] }
+//   ]
+// The idents and IO lengths come from the file. Files read once per configuration (several drives share one).
+void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, GsdmlFiles& files,
+                        ProfinetDeviceConfig& device, Problems& problems) {
+  namespace gsdml = profinet::gsdml;
+  const auto file = detail::read_string(*r.get("gsdml"), r.path_of("gsdml"), problems);
+  gsdml::Selection selection;
+  if (const Json* v = r.get("dap")) {
+    if (auto id = detail::read_string(*v, r.path_of("dap"), problems)) selection.access_point = *id;
+  }
+  const Json* list = r.get("modules");
+  const std::string list_path = r.path_of("modules");
+  if (list != nullptr && (!list->is_array() || list->size() > 64)) {
+    problems.add(list_path, "expected an array of up to 64 modules chosen from the GSDML file");
+    list = nullptr;
+  }
+  for (std::size_t i = 0; list != nullptr && i < list->size(); ++i) {
+    ObjectReader m((*list)[i], list_path + "[" + std::to_string(i) + "]", problems);
+    if (!m.valid()) continue;
+    gsdml::ModuleChoice module;
+    m.integer("slot", module.slot, 1, 0x7FFF, false, true);
+    if (const Json* id = m.get("module", true)) {
+      if (auto text = detail::read_string(*id, m.path_of("module"), problems)) module.id = *text;
+    }
+    if (const Json* subs = m.get("submodules")) {
+      if (!subs->is_array() || subs->size() > 64) {
+        problems.add(m.path_of("submodules"), "expected an array of up to 64 submodules");
+      } else {
+        for (std::size_t k = 0; k < subs->size(); ++k) {
+          ObjectReader s((*subs)[k], m.path_of("submodules") + "[" + std::to_string(k) + "]", problems);
+          if (!s.valid()) continue;
+          gsdml::SubmoduleChoice sub;
+          s.integer("subslot", sub.subslot, 1, 0x9FFF, true, true);
+          if (const Json* id = s.get("submodule", true)) {
+            if (auto text = detail::read_string(*id, s.path_of("submodule"), problems)) sub.id = *text;
+          }
+          s.finish();
+          module.submodules.push_back(std::move(sub));
+        }
+      }
+    }
+    m.finish();
+    selection.modules.push_back(std::move(module));
+  }
+  if (!file) return;
+  const std::filesystem::path resolved = base / *file;
+  auto cached = files.find(resolved);
+  if (cached == files.end()) {
+    GsdmlFile parsed;
+    try {
+      parsed.device = gsdml::parse_file(resolved);
+    } catch (const gsdml::GsdmlError& e) {
+      parsed.error = e.what();
+    }
+    cached = files.emplace(resolved, std::move(parsed)).first;
+  }
+  if (!cached->second.error.empty()) {
+    problems.add(r.path_of("gsdml"), cached->second.error);
+    return;
+  }
+  try {
+    for (const profinet::ExpectedModule& m : gsdml::expected_modules(cached->second.device, selection)) {
+      ProfinetModuleConfig module{m.api, m.slot, m.ident, {}};
+      for (const profinet::ExpectedSubmodule& s : m.submodules)
+        module.submodules.push_back({s.subslot, s.ident, s.input_length, s.output_length});
+      device.modules.push_back(std::move(module));
+    }
+  } catch (const gsdml::GsdmlError& e) {
+    problems.add(list != nullptr ? list_path : r.path_of("gsdml"), e.what());
+  }
 }
 
 }  // namespace
@@ -122,7 +215,9 @@ drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
   return c;
 }
 
-void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems) {
+void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems,
+                                  const std::filesystem::path& base_directory) {
+  GsdmlFiles gsdml_files;
   ObjectReader root(document, "", problems);
   if (!root.valid()) return;
   detail::read_gateway_side(root, config.gateway, config.domain, config.partition, config.network,
@@ -184,7 +279,12 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       r.integer("telegram_slot", device.telegram_slot, 0, 0x7FFF);
       r.boolean("check_telegram", device.check_telegram);
       r.integer("telegram_subslot", device.telegram_subslot, 1, 0x9FFF, true);
-      if (const Json* m = r.get("modules")) read_modules(*m, r.path_of("modules"), device, problems);
+      if (r.has("gsdml")) {
+        read_gsdml_modules(r, base_directory, gsdml_files, device, problems);
+      } else if (const Json* m = r.get("modules")) {
+        read_modules(*m, r.path_of("modules"), device, problems);
+      }
+      check_telegram_submodule(device, r.path_of("modules"), !r.has("gsdml"), problems);
       r.finish();
       config.devices.push_back(std::move(device));
     }
@@ -196,7 +296,7 @@ void load_profinet_gateway_config_file(const std::filesystem::path& file, Profin
                                        Problems& problems) {
   Json document;
   if (detail::read_json_file(file, document, problems))
-    load_profinet_gateway_config(document, config, problems);
+    load_profinet_gateway_config(document, config, problems, file.parent_path());
 }
 
 }  // namespace tomc::scenario

@@ -36,6 +36,9 @@ class ProfinetDrive {
   ProfinetDrive& operator=(const ProfinetDrive&) = delete;
 
   profinet::IoDevice& device() noexcept { return device_; }
+  // p0922 as the drive answers it (default: its telegram). A drive reconfigured to another telegram without
+  // changing its GSDML module answers the new number, which the gateway's start-up check must refuse.
+  void set_p0922(std::uint16_t telegram) noexcept { telegram_ = telegram; }
   SimulatedDrive& drive() noexcept { return drive_; }
 
   // One drive cycle: while the AR runs and the controller's provider state (IOPS) is GOOD, the received

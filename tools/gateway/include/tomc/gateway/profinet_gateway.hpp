@@ -19,6 +19,9 @@
 
 namespace tomc::profinet_gateway {
 
+// The name of the gateway's cyclic thread (pthread_setname_np, at most 15 characters).
+inline constexpr const char* kCyclicThreadName = "tomc-pn-cyclic";
+
 struct GatewayDeviceStatus {
   std::string name;
   bool exchanging = false;        // the AR runs and the cyclic thread exchanges with the device
@@ -26,6 +29,7 @@ struct GatewayDeviceStatus {
   std::uint32_t alarms = 0;       // alarms received and acknowledged
   float reference_speed_rpm = 0;  // p2000 read at start-up (0: not checked)
   std::string detail;             // the last start-up problem or module difference; "" when none
+  std::string last_alarm;         // "alarm 2 acknowledged: diagnosis, slot 1 subslot 2, USI 0x8000"; "" none
 };
 
 struct GatewayCounters {

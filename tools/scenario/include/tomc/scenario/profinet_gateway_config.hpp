@@ -27,6 +27,7 @@ struct ProfinetSubmoduleConfig {
 };
 
 struct ProfinetModuleConfig {
+  std::uint32_t api = 0;  // 0, or e.g. 0x3A00 (PROFIdrive) for a GSDML submodule with that API
   std::uint16_t slot = 0;
   std::uint32_t ident = 0;
   std::vector<ProfinetSubmoduleConfig> submodules;
@@ -42,7 +43,9 @@ struct ProfinetDeviceConfig {
   // Where the telegram submodule is: its input/output lengths must be the telegram's.
   std::uint16_t telegram_slot = 1;
   std::uint16_t telegram_subslot = 2;
-  std::vector<ProfinetModuleConfig> modules;  // DAP first; default: the emulated drive's layout
+  // DAP first; by hand ("modules" with idents) or from the drive's GSDML ("gsdml", "dap", "modules" by ID);
+  // default: the emulated drive's layout.
+  std::vector<ProfinetModuleConfig> modules;
   // At start-up, read p0922 (and p2000) through PROFIdrive parameter access and refuse the AR unless p0922 is
   // `telegram`; false for a device without base-mode parameter access.
   bool check_telegram = true;
@@ -68,8 +71,10 @@ struct ProfinetGatewayConfig {
   double cycle_time() const noexcept { return send_clock_factor * reduction_ratio * 31.25e-6; }
 };
 
-// Every problem with its JSON path ("devices[1].ip: '10.0.0' is not an IPv4 address").
-void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems);
+// Every problem with its JSON path ("devices[1].ip: '10.0.0' is not an IPv4 address"). A device's "gsdml"
+// file is found relative to base_directory (the configuration file's folder).
+void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems,
+                                  const std::filesystem::path& base_directory = {});
 void load_profinet_gateway_config_file(const std::filesystem::path& file, ProfinetGatewayConfig& config,
                                        Problems& problems);
 

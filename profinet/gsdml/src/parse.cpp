@@ -1,0 +1,348 @@
+// Reading a GSDML file (gsdml.hpp) with tinyxml2: the elements of GSDML V2.x an IO controller needs.
+#include <tinyxml2.h>
+
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "tomc/profinet/gsdml.hpp"
+
+namespace tomc::profinet::gsdml {
+
+namespace {
+
+namespace xml = tinyxml2;
+using Texts = std::map<std::string, std::string, std::less<>>;
+
+constexpr std::size_t kMaxIoDataLength = 1440;  // C_SDU of one IOCR (IEC 61158-6-10)
+
+// GSDML's namespace is the default one, but a file may prefix it ("gsdml:Name"): compare local names.
+std::string_view local_name(const xml::XMLElement& e) {
+  const std::string_view name = e.Name();
+  const auto colon = name.find(':');
+  return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+// "<SubmoduleItem ID="TEL3">" for messages.
+std::string describe(const xml::XMLElement& e) {
+  std::string text = "<" + std::string(local_name(e));
+  if (const char* id = e.Attribute("ID")) text += " ID=\"" + std::string(id) + "\"";
+  return text + ">";
+}
+
+[[noreturn]] void fail(const xml::XMLElement& e, const std::string& what) {
+  throw GsdmlError("GSDML line " + std::to_string(e.GetLineNum()) + ": " + describe(e) + ": " + what);
+}
+
+const xml::XMLElement* child(const xml::XMLElement& parent, std::string_view name) {
+  for (const xml::XMLElement* c = parent.FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
+    if (local_name(*c) == name) return c;
+  }
+  return nullptr;
+}
+
+const xml::XMLElement& required_child(const xml::XMLElement& parent, std::string_view name) {
+  const xml::XMLElement* c = child(parent, name);
+  if (c == nullptr) fail(parent, "no <" + std::string(name) + "> element");
+  return *c;
+}
+
+template <typename Visit>
+void for_each_child(const xml::XMLElement& parent, std::string_view name, Visit visit) {
+  for (const xml::XMLElement* c = parent.FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
+    if (local_name(*c) == name) visit(*c);
+  }
+}
+
+// GSDML writes numbers as "0x0000002A" or in decimal.
+std::uint64_t number(const xml::XMLElement& e, const char* attribute, std::string_view text,
+                     std::uint64_t maximum) {
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+    text.remove_prefix(2);
+    base = 16;
+  }
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+  if (error != std::errc() || end != text.data() + text.size() || value > maximum) {
+    fail(e, std::string(attribute) + " \"" + std::string(e.Attribute(attribute)) +
+                "\" is not a number in 0.." + std::to_string(maximum));
+  }
+  return value;
+}
+
+std::uint64_t number_attribute(const xml::XMLElement& e, const char* attribute, std::uint64_t maximum,
+                               std::optional<std::uint64_t> fallback = std::nullopt) {
+  const char* text = e.Attribute(attribute);
+  if (text == nullptr) {
+    if (fallback) return *fallback;
+    fail(e, std::string("no ") + attribute);
+  }
+  return number(e, attribute, text, maximum);
+}
+
+std::string string_attribute(const xml::XMLElement& e, const char* attribute) {
+  const char* text = e.Attribute(attribute);
+  if (text == nullptr || *text == '\0') fail(e, std::string("no ") + attribute);
+  return text;
+}
+
+// A ValueList: numbers and ranges "a..b" separated by spaces, each within 0..maximum.
+ValueList value_list(const xml::XMLElement& e, const char* attribute, std::uint16_t maximum) {
+  ValueList list;
+  const char* text = e.Attribute(attribute);
+  if (text == nullptr) return list;
+  std::istringstream words{std::string(text)};
+  for (std::string word; words >> word;) {
+    const auto dots = word.find("..");
+    const std::string first = word.substr(0, dots);
+    const std::string last = dots == std::string::npos ? first : word.substr(dots + 2);
+    const auto low = static_cast<std::uint16_t>(number(e, attribute, first, maximum));
+    const auto high = static_cast<std::uint16_t>(number(e, attribute, last, maximum));
+    if (low > high) fail(e, std::string(attribute) + " \"" + text + "\": the range " + word + " is empty");
+    list.ranges.emplace_back(low, high);
+  }
+  if (list.empty()) fail(e, std::string(attribute) + " is empty");
+  return list;
+}
+
+std::string name_of(const xml::XMLElement& item, const Texts& texts) {
+  const xml::XMLElement* info = child(item, "ModuleInfo");
+  const xml::XMLElement* name = info ? child(*info, "Name") : nullptr;
+  const char* id = name ? name->Attribute("TextId") : nullptr;
+  if (id == nullptr) return {};
+  const auto found = texts.find(id);
+  return found == texts.end() ? std::string{} : found->second;
+}
+
+// Bytes of one DataItem (GSDML V2.x data types; strings and octet strings take their Length).
+std::size_t data_item_length(const xml::XMLElement& item) {
+  static const std::map<std::string, std::size_t, std::less<>> kSizes = {
+      {"Integer8", 1},
+      {"Unsigned8", 1},
+      {"Unsigned8_S", 1},
+      {"Integer16", 2},
+      {"Unsigned16", 2},
+      {"Integer16_S", 2},
+      {"Unsigned16_S", 2},
+      {"N2", 2},
+      {"V2", 2},
+      {"L2", 2},
+      {"R2", 2},
+      {"T2", 2},
+      {"D2", 2},
+      {"E2", 2},
+      {"X2", 2},
+      {"Unipolar2.16", 2},
+      {"Unsigned8+Unsigned8", 2},
+      {"Integer32", 4},
+      {"Unsigned32", 4},
+      {"Float32", 4},
+      {"N4", 4},
+      {"T4", 4},
+      {"C4", 4},
+      {"X4", 4},
+      {"TimeOfDay without date indication", 4},
+      {"TimeDifference without date indication", 4},
+      {"F_MessageTrailer4Byte", 4},
+      {"Float32+Unsigned8", 5},
+      {"Float32+Status8", 5},
+      {"F_MessageTrailer5Byte", 5},
+      {"TimeOfDay with date indication", 6},
+      {"TimeDifference with date indication", 6},
+      {"Date", 7},
+      {"Integer64", 8},
+      {"Unsigned64", 8},
+      {"Float64", 8},
+      {"NetworkTime", 8},
+      {"NetworkTimeDifference", 8},
+  };
+  static const std::map<std::string, int, std::less<>> kWithLength = {
+      {"OctetString", 0},    {"OctetString_S", 0}, {"VisibleString", 0},
+      {"UnicodeString8", 0}, {"61131_STRING", 0},  {"61131_WSTRING", 0}};
+  const std::string type = string_attribute(item, "DataType");
+  if (const auto found = kSizes.find(type); found != kSizes.end()) return found->second;
+  if (kWithLength.contains(type)) return number_attribute(item, "Length", kMaxIoDataLength);
+  fail(item, "DataType \"" + type + "\" is not a GSDML data type of IO data");
+}
+
+std::uint16_t io_data_length(const xml::XMLElement& io_data, std::string_view direction) {
+  const xml::XMLElement* list = child(io_data, direction);
+  if (list == nullptr) return 0;
+  std::size_t total = 0;
+  for_each_child(*list, "DataItem", [&](const xml::XMLElement& item) { total += data_item_length(item); });
+  if (total > kMaxIoDataLength) {
+    fail(*list, std::to_string(total) + " bytes of IO data; one IOCR carries at most " +
+                    std::to_string(kMaxIoDataLength));
+  }
+  return static_cast<std::uint16_t>(total);
+}
+
+// A SubmoduleItem, VirtualSubmoduleItem, InterfaceSubmoduleItem or PortSubmoduleItem.
+Submodule read_submodule(const xml::XMLElement& e, const Texts& texts) {
+  Submodule s;
+  s.line = e.GetLineNum();
+  if (const char* id = e.Attribute("ID")) s.id = id;
+  s.name = name_of(e, texts);
+  s.api = static_cast<std::uint32_t>(number_attribute(e, "API", 0xFFFFFFFF, 0));
+  s.ident = static_cast<std::uint32_t>(number_attribute(e, "SubmoduleIdentNumber", 0xFFFFFFFF));
+  if (const xml::XMLElement* io = child(e, "IOData")) {
+    s.input_length = io_data_length(*io, "Input");
+    s.output_length = io_data_length(*io, "Output");
+  }
+  return s;
+}
+
+std::vector<ItemRef> read_refs(const xml::XMLElement* list, std::string_view element, const char* target,
+                               const char* allowed, const char* fixed, std::uint16_t maximum) {
+  std::vector<ItemRef> refs;
+  if (list == nullptr) return refs;
+  for_each_child(*list, element, [&](const xml::XMLElement& e) {
+    ItemRef ref;
+    ref.line = e.GetLineNum();
+    ref.target = string_attribute(e, target);
+    ref.fixed = value_list(e, fixed, maximum);
+    ref.allowed = value_list(e, allowed, maximum);
+    if (ref.allowed.empty()) ref.allowed = ref.fixed;
+    if (ref.allowed.empty()) fail(e, std::string("neither ") + allowed + " nor " + fixed);
+    refs.push_back(std::move(ref));
+  });
+  return refs;
+}
+
+// The virtual submodules a module (or DAP) carries itself; FixedInSubslots defaults to 1.
+void read_own_submodules(const xml::XMLElement& e, const Texts& texts, Module& module) {
+  if (const xml::XMLElement* list = child(e, "VirtualSubmoduleList")) {
+    for_each_child(*list, "VirtualSubmoduleItem", [&](const xml::XMLElement& item) {
+      Submodule s = read_submodule(item, texts);
+      s.fixed_in_subslots = value_list(item, "FixedInSubslots", 0x7FFF);
+      if (s.fixed_in_subslots.empty()) s.fixed_in_subslots.ranges.emplace_back(1, 1);
+      module.submodules.push_back(std::move(s));
+    });
+  }
+}
+
+// What a ModuleItem and a DeviceAccessPointItem share: ID, name, ident and their own submodules.
+Module read_module_item(const xml::XMLElement& e, const Texts& texts) {
+  Module m;
+  m.line = e.GetLineNum();
+  m.id = string_attribute(e, "ID");
+  m.name = name_of(e, texts);
+  m.ident = static_cast<std::uint32_t>(number_attribute(e, "ModuleIdentNumber", 0xFFFFFFFF));
+  read_own_submodules(e, texts, m);
+  return m;
+}
+
+Module read_module(const xml::XMLElement& e, const Texts& texts) {
+  Module m = read_module_item(e, texts);
+  m.useable = read_refs(child(e, "UseableSubmodules"), "SubmoduleItemRef", "SubmoduleItemTarget",
+                        "AllowedInSubslots", "FixedInSubslots", 0x7FFF);
+  return m;
+}
+
+Module read_access_point(const xml::XMLElement& e, const Texts& texts) {
+  Module dap = read_module_item(e, texts);
+  const ValueList slots = value_list(e, "FixedInSlots", 0x7FFF);
+  dap.slot = slots.empty() ? 0 : slots.ranges.front().first;
+  // The interface (0x8000 + 0x100 × interface) and its ports: submodules without IO data at fixed subslots.
+  if (const xml::XMLElement* system = child(e, "SystemDefinedSubmoduleList")) {
+    for (const char* kind : {"InterfaceSubmoduleItem", "PortSubmoduleItem"}) {
+      for_each_child(*system, kind, [&](const xml::XMLElement& item) {
+        Submodule s = read_submodule(item, texts);
+        const auto subslot = static_cast<std::uint16_t>(number_attribute(item, "SubslotNumber", 0x9FFF));
+        s.fixed_in_subslots.ranges.emplace_back(subslot, subslot);
+        dap.submodules.push_back(std::move(s));
+      });
+    }
+  }
+  dap.useable = read_refs(child(e, "UseableModules"), "ModuleItemRef", "ModuleItemTarget", "AllowedInSlots",
+                          "FixedInSlots", 0x7FFF);
+  return dap;
+}
+
+Texts read_texts(const xml::XMLElement& application) {
+  Texts texts;
+  const xml::XMLElement* list = child(application, "ExternalTextList");
+  const xml::XMLElement* primary = list ? child(*list, "PrimaryLanguage") : nullptr;
+  if (primary == nullptr) return texts;
+  for_each_child(*primary, "Text", [&](const xml::XMLElement& t) {
+    const char* id = t.Attribute("TextId");
+    const char* value = t.Attribute("Value");
+    if (id != nullptr && value != nullptr) texts.emplace(id, value);
+  });
+  return texts;
+}
+
+}  // namespace
+
+Device parse(std::string_view text) {
+  xml::XMLDocument document;
+  if (document.Parse(text.data(), text.size()) != xml::XML_SUCCESS) {
+    throw GsdmlError("GSDML line " + std::to_string(document.ErrorLineNum()) + ": not well-formed XML (" +
+                     document.ErrorName() + ")");
+  }
+  const xml::XMLElement* root = document.RootElement();
+  if (root == nullptr || local_name(*root) != "ISO15745Profile") {
+    throw GsdmlError("GSDML: the root element is not <ISO15745Profile> (is this a GSDML file?)");
+  }
+  const xml::XMLElement& body = required_child(*root, "ProfileBody");
+  Device device;
+  const xml::XMLElement& identity = required_child(body, "DeviceIdentity");
+  device.vendor_id = static_cast<std::uint16_t>(number_attribute(identity, "VendorID", 0xFFFF));
+  device.device_id = static_cast<std::uint16_t>(number_attribute(identity, "DeviceID", 0xFFFF));
+  if (const xml::XMLElement* vendor = child(identity, "VendorName")) {
+    if (const char* value = vendor->Attribute("Value")) device.vendor_name = value;
+  }
+  const xml::XMLElement& application = required_child(body, "ApplicationProcess");
+  const Texts texts = read_texts(application);
+  const xml::XMLElement& daps = required_child(application, "DeviceAccessPointList");
+  for_each_child(daps, "DeviceAccessPointItem", [&](const xml::XMLElement& e) {
+    device.access_points.push_back(read_access_point(e, texts));
+  });
+  if (device.access_points.empty()) fail(daps, "no <DeviceAccessPointItem> element");
+  if (const xml::XMLElement* modules = child(application, "ModuleList")) {
+    for_each_child(*modules, "ModuleItem",
+                   [&](const xml::XMLElement& e) { device.modules.push_back(read_module(e, texts)); });
+  }
+  if (const xml::XMLElement* submodules = child(application, "SubmoduleList")) {
+    for_each_child(*submodules, "SubmoduleItem", [&](const xml::XMLElement& e) {
+      Submodule s = read_submodule(e, texts);
+      if (s.id.empty()) fail(e, "no ID");
+      device.submodules.push_back(std::move(s));
+    });
+  }
+  return device;
+}
+
+Device parse_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw GsdmlError(file.string() + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return parse(text.str());
+  } catch (const GsdmlError& e) {
+    throw GsdmlError(file.string() + ": " + e.what());
+  }
+}
+
+bool ValueList::contains(std::uint32_t value) const noexcept {
+  for (const auto& [low, high] : ranges) {
+    if (value >= low && value <= high) return true;
+  }
+  return false;
+}
+
+std::string ValueList::text() const {
+  std::string out;
+  for (const auto& [low, high] : ranges) {
+    if (!out.empty()) out += ' ';
+    out += std::to_string(low);
+    if (high != low) out += ".." + std::to_string(high);
+  }
+  return out;
+}
+
+}  // namespace tomc::profinet::gsdml

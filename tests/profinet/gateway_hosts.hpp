@@ -1,0 +1,342 @@
+#pragma once
+// The hosts of the PROFINET gateway's namespace tests (gateway_test.cpp, gateway_allocation_test.cpp): the
+// emulated IO device hosting the simulated PROFIdrive drive on its own thread in the device namespace, the
+// scenario of a positioning axis run through the DDS gateway adapter, and the two namespaces joined by a veth
+// pair. Header-only; each test executable includes it once.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "netns_hosts.hpp"
+#include "tomc/drives/profinet_drive.hpp"
+#include "tomc/profinet/alarm.hpp"
+#include "tomc/profinet/sockets.hpp"
+#include "tomc/scenario/config.hpp"
+#include "tomc/scenario/scenario.hpp"
+
+namespace tomc::profinet::gateway_hosts {
+
+namespace pn = tomc::profinet;
+namespace sc = tomc::scenario;
+using Json = nlohmann::ordered_json;
+
+inline std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const auto& l : lines)
+    text += l + "\n";
+  return text;
+}
+
+inline constexpr int kDomain = 175;  // DDS tests use 140-174 (decision G13)
+inline constexpr pn::Ipv4Address kGatewayIp{10, 218, 0, 1};
+inline constexpr pn::Ipv4Address kDeviceIp{10, 218, 0, 2};
+inline constexpr double kTarget = 10.0;  // mm
+
+using pn::testing::enter;
+using pn::testing::now_us;
+using pn::testing::quiet;
+
+// The drive's parameters exactly as the scenario gives the embedded simulated drive (defaults of a telegram-3
+// drive at the scenario's cycle time), so that the two runs can be compared.
+inline sc::DriveSettings drive_settings(int telegram) {
+  sc::DriveSettings settings;
+  sc::Problems problems;
+  sc::load_drive(sc::Json::parse(R"({ "telegram": )" + std::to_string(telegram) + " }"), "drive", 0.001,
+                 settings, problems);
+  return settings;
+}
+
+// What the emulated device is: its drive telegram (the module it has) and the p0922 it answers (0: the
+// telegram, a drive as configured; another number: a drive reconfigured without changing its module).
+struct DeviceOptions {
+  int telegram = 3;
+  std::uint16_t p0922 = 0;
+  std::string interface = "pn-e";
+  std::string name_of_station = "drive-1";
+  pn::Ipv4Address ip = kDeviceIp;
+};
+
+// The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
+// drive application follows the controller's STW2 sign-of-life (isochronous: one drive cycle per servo cycle
+// of tomc) and sends its input frame right after each drive cycle; without drive cycles for 5 ms the input
+// frame goes out every 1 ms (the controller's watchdog must see frames).
+//
+// On request (any thread) the drive raises a fault (SINAMICS F07900 with OFF2: ZSW1 bit 3) and the device
+// sends an alarm notification (diagnosis or process alarm of the telegram submodule); it counts the AlarmAcks
+// the controller returns.
+class DeviceHost {
+ public:
+  explicit DeviceHost(const std::string& ns, DeviceOptions options = {}) : options_(options) {
+    thread_ = std::thread([this, ns] { run(ns); });
+  }
+  ~DeviceHost() {
+    stop_ = true;
+    thread_.join();
+  }
+  std::string error() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+  }
+  int ars() const { return ars_.load(); }
+  void inject_fault() { fault_requested_ = true; }
+  void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
+  int alarm_acks() const { return alarm_acks_.load(); }
+
+ private:
+  // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
+  // diagnosis alarm with a ChannelDiagnosis (USI 0x8000, channel 0x8000, error 9), or a process alarm with a
+  // manufacturer-specific USI 0x0001 and two bytes; low priority (FrameID 0xFE01).
+  std::size_t alarm_frame(const pn::IoDevice& device, const pn::MacAddress& own, std::uint16_t type,
+                          std::span<std::uint8_t> out) {
+    pn::RtaFrame alarm;
+    alarm.frame_id = pn::kFrameIdAlarmLow;
+    alarm.destination_endpoint = device.connection().alarm_cr.local_alarm_reference;
+    alarm.source_endpoint = 3;
+    alarm.send_sequence = alarm_sequence_;
+    alarm.ack_sequence = 0xFFFE;
+    alarm.has_block = true;
+    alarm.block.alarm_type = type;
+    alarm.block.slot = tomc::drives::kDriveObjectSlot;
+    alarm.block.subslot = tomc::drives::kTelegramSubslot;
+    alarm.block.module_ident = tomc::drives::kDriveObjectIdent;
+    alarm.block.submodule_ident =
+        tomc::drives::telegram_submodule_ident(static_cast<std::uint16_t>(options_.telegram));
+    alarm.block.specifier = static_cast<std::uint16_t>(0x2000 | (alarm_sequence_ & 0x07FF));
+    const std::array<std::uint8_t, 6> channel{0x80, 0x00, 0x08, 0x00, 0x00, 0x09};
+    alarm.block.user_structure_identifier = type == pn::alarm_type::kDiagnosis ? 0x8000 : 0x0001;
+    alarm.block.payload_length = type == pn::alarm_type::kDiagnosis ? 6 : 2;
+    std::copy_n(channel.begin(), alarm.block.payload_length, alarm.block.payload.begin());
+    ++alarm_sequence_;
+    std::size_t written = 0;
+    const pn::EthernetHeader header{device.connection().ar.initiator_mac, own, pn::VlanTag{5, 0}};
+    return pn::encode(header, alarm, out, written) == pn::ProfinetError::kNone ? written : 0;
+  }
+
+  void fail(const std::string& why) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    error_ = why;
+  }
+  void run(const std::string& ns) {
+    if (!enter(ns)) return fail("setns into the device namespace failed");
+    pn::RawSocket raw;
+    pn::UdpSocket udp;
+    if (std::string e = raw.open(options_.interface); !e.empty()) return fail(e);
+    if (std::string e = udp.open(options_.ip, pn::kPnioUdpPort); !e.empty()) return fail(e);
+    pn::DeviceIdentity identity;
+    identity.name_of_station = options_.name_of_station;
+    identity.mac = raw.mac();
+    identity.ip = {options_.ip, {255, 255, 255, 0}, {}};
+    identity.vendor_id = 0x002A;
+    identity.device_id = 0x0C01;
+    identity.vendor = "tomc emulated drive";
+    const sc::DriveSettings settings = drive_settings(options_.telegram);
+    tomc::drives::ProfinetDrive host(identity, settings.device_config(), settings.parameters);
+    if (options_.p0922 != 0) host.set_p0922(options_.p0922);
+    pn::IoDevice& device = host.device();
+    std::array<std::uint8_t, 1518> frame{};
+    std::uint64_t next_send = now_us();
+    std::uint64_t last_step = now_us();
+    pn::ArState last = pn::ArState::kNone;
+    const auto send_input = [&] {
+      if (const std::size_t n = device.next_input_frame(frame); n > 0) raw.send(std::span(frame).first(n));
+    };
+    while (!stop_) {
+      if (const std::size_t n = raw.receive(frame, 200); n > 0) {
+        const auto in = std::span(frame).first(n);
+        const pn::FrameKind kind = pn::classify_frame_id(pn::peek_frame_id(in));
+        if (kind == pn::FrameKind::kDcp) {
+          if (const auto answer = device.on_dcp(in); !answer.empty()) raw.send(answer);
+        } else if (kind == pn::FrameKind::kAlarm) {
+          pn::RtaFrame rta;
+          if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kData &&
+              rta.has_block && rta.block.is_ack) {
+            ++alarm_acks_;
+          }
+        } else if (device.on_cyclic(in, now_us()) && host.follow_controller()) {
+          last_step = now_us();
+          send_input();
+        }
+      }
+      pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
+      if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
+      if (fault_requested_.exchange(false))
+        host.drive().inject_fault(7900, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff2);
+      if (const std::uint16_t type = alarm_requested_.exchange(0);
+          type != 0 && device.state() == pn::ArState::kRunning) {
+        std::array<std::uint8_t, 256> alarm{};
+        if (const std::size_t n = alarm_frame(device, raw.mac(), type, alarm); n > 0)
+          raw.send(std::span(alarm).first(n));
+      }
+      last = device.state();
+      const std::uint64_t now = now_us();
+      if (now >= next_send) {
+        next_send = now + 1000;
+        // Without the controller's clock (no AR, or no setpoints for 50 ms) the drive runs on its own.
+        if (now - last_step > 50'000) host.cycle();
+        // While following the controller, every input frame answers a drive cycle; after 5 ms without one
+        // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
+        if (device.state() != pn::ArState::kNone && now - last_step > 5'000) send_input();
+        device.watchdog_expired(now);
+      }
+    }
+  }
+
+  DeviceOptions options_;
+  std::thread thread_;
+  std::atomic<bool> stop_{false};
+  std::atomic<int> ars_{0};
+  std::atomic<bool> fault_requested_{false};
+  std::atomic<std::uint16_t> alarm_requested_{0};
+  std::atomic<int> alarm_acks_{0};
+  std::uint16_t alarm_sequence_ = 0;  // device thread only
+  mutable std::mutex mutex_;
+  std::string error_;
+};
+
+// A positioning axis on telegram 3: enable, home (mode 0 at 0), MC_MoveAbsolute to kTarget; with
+// `reset_every`, an MC_Reset edge and a new MC_MoveVelocity edge every that many cycles instead of the move.
+inline Json scenario(bool through_gateway, int cycles, int reset_every) {
+  Json drive = {{"telegram", 3}};
+  if (through_gateway) {
+    drive["adapter"] = {{"type", "dds_gateway"},
+                        {"domain", kDomain},
+                        {"partition", "tomc-test-" + std::to_string(::getpid())},
+                        {"device", "axis1"},
+                        {"connect_timeout_s", 10.0},
+                        {"answer_timeout_s", 0.02}};
+  }
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] = Json::array({Json{{"name", "Slide"},
+                                                {"type", "TO_PositioningAxis"},
+                                                {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
+                                                {"drive", drive}}});
+  Json timeline = Json::array();
+  timeline.push_back({{"cycle", 0},
+                      {"instance", "power"},
+                      {"instruction", "MC_Power"},
+                      {"axis", "Slide"},
+                      {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
+  timeline.push_back({{"cycle", 5},
+                      {"instance", "home"},
+                      {"instruction", "MC_Home"},
+                      {"axis", "Slide"},
+                      {"inputs", {{"Execute", true}, {"Mode", 0}, {"Position", 0.0}}}});
+  if (reset_every == 0) {
+    timeline.push_back({{"cycle", 20},
+                        {"instance", "move"},
+                        {"instruction", "MC_MoveAbsolute"},
+                        {"axis", "Slide"},
+                        {"inputs", {{"Execute", true}, {"Position", kTarget}, {"Velocity", 100.0}}}});
+  } else {
+    for (int c = 20; c < cycles; c += reset_every) {
+      timeline.push_back({{"cycle", c},
+                          {"instance", "reset"},
+                          {"instruction", "MC_Reset"},
+                          {"axis", "Slide"},
+                          {"inputs", {{"Execute", true}}}});
+      timeline.push_back({{"cycle", c + 5}, {"instance", "reset"}, {"inputs", {{"Execute", false}}}});
+      timeline.push_back({{"cycle", c + 10},
+                          {"instance", "move"},
+                          {"instruction", "MC_MoveVelocity"},
+                          {"axis", "Slide"},
+                          {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
+      timeline.push_back({{"cycle", c + 15}, {"instance", "move"}, {"inputs", {{"Execute", false}}}});
+    }
+  }
+  doc["timeline"] = timeline;
+  doc["trace"] = {"Slide.ActualPosition",
+                  "Slide.ActualVelocity",
+                  "power.Status",
+                  reset_every == 0 ? "move.Done" : "move.InVelocity",
+                  "Slide.ErrorDetail.Number",
+                  "Slide.StatusDrive.CommunicationOK"};
+  return doc;
+}
+
+// A trace sink that hands each finished row to `on_row` (cycle, values) as the scenario writes it.
+class RowBuffer : public std::stringbuf {
+ public:
+  explicit RowBuffer(std::function<void(int, const std::vector<double>&)> on_row)
+      : on_row_(std::move(on_row)) {}
+  std::vector<std::vector<double>> rows;
+
+ protected:
+  int sync() override { return 0; }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i)
+      put(s[i]);
+    return n;
+  }
+  int_type overflow(int_type c) override {
+    if (c != traits_type::eof()) put(static_cast<char>(c));
+    return c;
+  }
+
+ private:
+  void put(char c) {
+    if (c != '\n') {
+      line_ += c;
+      return;
+    }
+    if (!header_seen_) {
+      header_seen_ = true;
+    } else {
+      std::vector<double> values;
+      std::istringstream cells(line_);
+      for (std::string cell; std::getline(cells, cell, ',');)
+        values.push_back(cell == "true" ? 1.0 : cell == "false" ? 0.0 : std::strtod(cell.c_str(), nullptr));
+      rows.push_back(values);
+      on_row_(static_cast<int>(values.empty() ? -1 : values[0]), values);
+    }
+    line_.clear();
+  }
+  std::function<void(int, const std::vector<double>&)> on_row_;
+  std::string line_;
+  bool header_seen_ = false;
+};
+
+// Runs the scenario; through the gateway it runs on a thread in the gateway namespace (its DDS participant
+// and sockets live there). Columns: 0 cycle, 1 time, then the trace in scenario() order.
+inline std::vector<std::vector<double>> run(const Json& doc, const std::string& ns,
+                                            std::function<void(int, const std::vector<double>&)> on_row,
+                                            std::string& failure) {
+  RowBuffer buffer(std::move(on_row));
+  std::thread runner([&] {
+    if (!ns.empty() && !enter(ns)) return void(failure = "setns into the gateway namespace failed");
+    auto loaded = sc::Scenario::load(sc::Json::parse(doc.dump()));
+    if (!loaded.scenario) return void(failure = "scenario: " + joined(loaded.problems));
+    std::ostream out(&buffer);
+    const sc::RunResult result = loaded.scenario->run(&out);
+    if (!result.runtime_errors.empty()) failure = joined(result.runtime_errors);
+    if (!result.warnings.empty()) failure += "warnings: " + joined(result.warnings);
+  });
+  runner.join();
+  return buffer.rows;
+}
+
+// The two hosts joined by the veth pair; "" or why the test must skip. Nothing is sent unless each namespace
+// sees only lo and its own veth end (never the machine's interfaces): the caller asserts own_interfaces_only.
+inline std::string make_hosts(pn::testing::Namespaces& hosts) {
+  return hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
+}
+inline bool own_interfaces_only(const pn::testing::Namespaces& hosts) {
+  return hosts.interfaces(hosts.first) == std::set<std::string>{"lo", "pn-g"} &&
+         hosts.interfaces(hosts.second) == std::set<std::string>{"lo", "pn-e"} &&
+         hosts.carrier(hosts.first, "pn-g");
+}
+
+}  // namespace tomc::profinet::gateway_hosts
