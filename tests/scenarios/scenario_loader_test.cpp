@@ -152,7 +152,29 @@ TEST(ScenarioDrive, AnalogAdapter) {
                   .empty());
   EXPECT_EQ(
       problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")),
-      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3)");
+      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3, "
+      "or 2 with an encoder_telegram 81/83)");
+  // A separate 81/83 encoder (spec 01 §3.3 "1 + 81/83"): the actor is then a telegram-2 drive.
+  EXPECT_TRUE(
+      problems_of(with_drive(R"({"adapter": "analog", "telegram": 2, "encoder_telegram": 83})")).empty());
+  EXPECT_TRUE(
+      problems_of(with_drive(R"({"adapter": "analog", "telegram": 2, "encoder_telegram": 81})")).empty());
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "encoder_telegram": 81})")),
+            "technology_objects[0].drive.telegram: 3: with a separate encoder (encoder_telegram) the analog "
+            "actor is a telegram-2 drive (write 2; telegram 3 carries the counter as its encoder)");
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "supplementary_telegram": 750})")),
+            "technology_objects[0].drive.supplementary_telegram: the analog actor has no telegram 750");
+  {
+    Json e = base();
+    e["timeline"].push_back(
+        Json::parse(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "encoder_signal_lost"}})"));
+    EXPECT_EQ(
+        problem_of(e),
+        "timeline[1].inject.target: Axis1 has no analog drive with an encoder on its counter (a separate "
+        "81/83 encoder fails with encoder_error)");
+    e["technology_objects"][0]["drive"] = Json::parse(R"({"adapter": "analog", "telegram": 3})");
+    EXPECT_TRUE(problems_of(e).empty());
+  }
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "analog": {}})")),
             "technology_objects[0].drive.analog: only with \"adapter\": \"analog\"");
   EXPECT_EQ(
@@ -652,7 +674,7 @@ TEST(ScenarioLoader, FaultEvents) {
             "timeline[1].inject.fault: missing");
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
             "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
-            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault");
+            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault, encoder_signal_lost");
   EXPECT_EQ(problem_of(with_event(
                 R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
             "timeline[1].inject.code: 0 out of range 1..4294967295");
