@@ -41,7 +41,7 @@ SeparateEncoder::SeparateEncoder(const SeparateEncoderParameters& parameters,
                                  const SimulatedDriveParameters& mechanics)
     : servo_cycle_s_(mechanics.servo_cycle_s),
       device_(encoder_device(parameters.telegram), encoder_on(mechanics, parameters.encoder)) {
-  if (auto c = tg::TelegramCodec::create(parameters.telegram, tg::Direction::kActual)) codec_ = c.value();
+  if (auto c = tg::TelegramCodec::shared(parameters.telegram, tg::Direction::kActual)) codec_ = c.value();
   frames_ = make_frames(device_.config(), tg::Direction::kActual);
 }
 
@@ -51,7 +51,7 @@ void SeparateEncoder::exchange(double load_position, Telegram3Actor& actor, Devi
   device_.set_external_speed((load_position - device_.load_position()) / servo_cycle_s_);
   if (device_.read_actual(frames_)) actual[Slot::kEncoder1] = frames_[Slot::kEncoder1];
   tg::ActualSignals a;
-  (void)codec_.decode(actual[Slot::kEncoder1].view(), a);
+  (void)codec_->decode(actual[Slot::kEncoder1].view(), a);
   actor.separate_encoder_count(a.G1_XIST1, !a.G1_ZSW.test(tg::EncoderStatusBit::kEncoderError));
 }
 

@@ -39,7 +39,7 @@ class SeparateEncoder {
  private:
   double servo_cycle_s_;
   SimulatedDrive device_;
-  telegrams::TelegramCodec codec_{};
+  const telegrams::TelegramCodec* codec_ = &telegrams::TelegramCodec::empty();
   DeviceFrames frames_{};
 };
 // Throws std::invalid_argument when the actor's feedback and the presence of a separate encoder disagree.
