@@ -35,6 +35,22 @@ struct AnalogHarness {
   BasicHarness<AnalogDrive> h;
 };
 
+// An amplifier drifting by `drift_volts` (no Coulomb friction), for TarOffs.
+AnalogRig drifting_rig(double drift_volts) {
+  AnalogRig rig;
+  rig.amplifier_parameters.input_offset_volts = drift_volts;
+  rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
+  return rig;
+}
+
+// The TO's position loop, reduced to a P controller on the counter, holding the axis at count 0.
+void hold_position(BasicHarness<AnalogDrive>& h, int cycles) {
+  for (int i = 0; i < cycles; ++i) {
+    h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
+    h.cycle();
+  }
+}
+
 // spec 01 §3.12 test 18: reference speed 3000 1/min, 100 % = 10 V; 3300 1/min -> 11 V (110 %, within ±117 %).
 TEST(AnalogDrive, OverdriveAndClampSpec01Test18) {
   AnalogHarness rig;
@@ -157,17 +173,9 @@ TEST(AnalogDrive, OffsetAutoCalibrationTarOffs) {
     std::int32_t value_codes;
   };
   for (const Row row : {Row{0.02, 0, -55}, Row{-0.05, 0, 138}, Row{0.2, kErrorOffsetExcessive, 0}}) {
-    AnalogRig rig;
-    rig.amplifier_parameters.input_offset_volts = row.drift_volts;
-    rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
-    AnalogHarness a(rig);
+    AnalogHarness a(drifting_rig(row.drift_volts));
     auto& h = a.h;
-    auto hold = [&](int cycles) {
-      for (int i = 0; i < cycles; ++i) {
-        h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
-        h.cycle();
-      }
-    };
+    auto hold = [&](int cycles) { hold_position(h, cycles); };
     h.power_up_to_s4();
     h.drive.offset_calibration(true, false);  // En while not yet at standstill: EndTr waits
     hold(300);
@@ -403,17 +411,9 @@ TEST(AnalogDrive, TarOffsWithoutEncoderEndsAtOnceWithError90) {
 // The encoder fails while TarOffs measures (0.1 s settle, then 0.5 s of averaging): it ends in the cycle the
 // failure is seen, error 90, and what was averaged is not applied.
 TEST(AnalogDrive, TarOffsEncoderFailingDuringMeasurementEndsWithError90) {
-  AnalogRig rig;
-  rig.amplifier_parameters.input_offset_volts = 0.02;
-  rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
-  AnalogHarness a(rig);
+  AnalogHarness a(drifting_rig(0.02));
   auto& h = a.h;
-  auto hold = [&](int cycles) {
-    for (int i = 0; i < cycles; ++i) {
-      h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
-      h.cycle();
-    }
-  };
+  auto hold = [&](int cycles) { hold_position(h, cycles); };
   h.power_up_to_s4();
   hold(600);                                // standstill under the loop
   h.drive.offset_calibration(true, false);  // settle 100 cycles, then measuring

@@ -12,6 +12,7 @@
 
 #include "cam_elements.hpp"
 #include "json_reader.hpp"
+#include "legacy_parameters.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/telegrams/encoder.hpp"
@@ -326,7 +327,24 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
                                                     Problems& problems, std::string_view tool,
                                                     GatewayLinks* gateways,
                                                     const std::filesystem::path& directory) {
-  ObjectReader r(value, path, problems);
+  // A "legacy" parameter set (JOINT, H3) becomes config and drive keys first (legacy_parameters.hpp).
+  bool legacy_ok = true;
+  Json expanded;
+  const Json* source = &value;
+  if (value.is_object() && value.contains("legacy")) {
+    if (auto x = detail::with_legacy_expanded(value, path, cycle_time_s, problems)) {
+      expanded = std::move(*x);
+    } else {
+      expanded = value;
+      expanded.erase("legacy");
+      // The legacy set would have given the drive: a placeholder keeps "drive: missing" from following the
+      // legacy problems (the TO is not built).
+      if (!expanded.contains("drive")) expanded["drive"] = Json{{"adapter", "analog"}, {"telegram", 3}};
+      legacy_ok = false;
+    }
+    source = &expanded;
+  }
+  ObjectReader r(*source, path, problems);
   if (!r.valid()) return std::nullopt;
   MachineObject entry;
   if (const Json* v = r.get("name", true)) {
@@ -449,7 +467,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
     problems.add(r.path_of("LeadingValueInterconnections"), "only a TO_SynchronousAxis has leading values");
   }
   r.finish();
-  if (!entry.name.empty() && kind && problems.size() == before) {
+  if (!entry.name.empty() && kind && problems.size() == before && legacy_ok) {
     drives::SimulatedDrive* drive_ptr = nullptr;
     to::DeviceIo* io = nullptr;
     if (has_drive && drive.gateway) {
