@@ -15,7 +15,6 @@
 
 namespace {
 
-using tomc::instructions::MC_HaltSuperimposed;
 using tomc::instructions::MC_MoveSuperimposed;
 using tomc::techobjects::PositioningAxis;
 using tomc::techobjects::StatusWord2Bit;
@@ -33,15 +32,10 @@ struct SuperimposedMachine : tomc::testing::PositioningAxisMachine {
   SuperimposedMachine() : SuperimposedMachine(tomc::testing::linear_axis_data()) {}
   explicit SuperimposedMachine(const tomc::techobjects::PositioningAxisData& data)
       : PositioningAxisMachine(data) {
-    user = [this] {
-      move_superimposed(*axis);
-      move_superimposed2(*axis);
-      halt_superimposed(*axis);
-    };
+    user = [this] { move_superimposed2(*axis); };
   }
-  MC_MoveSuperimposed<PositioningAxis> move_superimposed;
-  MC_MoveSuperimposed<PositioningAxis> move_superimposed2;
-  MC_HaltSuperimposed<PositioningAxis> halt_superimposed;
+  MC_MoveSuperimposed<PositioningAxis>
+      move_superimposed2;  // the fixture has move_superimposed, halt_superimposed
 };
 
 // Base MoveRelative of 50 mm at 50 mm/s (trapezoid, 500 mm/s²) from a homed axis at 0.
