@@ -27,13 +27,20 @@ void AnalogDrive::offset_calibration(bool enable, bool reset) noexcept {
   calibration_.EndTr = false;
   if (reset) {  // "Reset Offset": Reset TRUE, then En
     p_.offset_volts = 0.0;
-    calibration_.ValOf = 0;
-    calibration_.EndTr = true;
-    calibration_state_ = Calibration::kFinished;
+    finish_calibration(0);
     return;
   }
   calibration_state_ = Calibration::kWaitingForStandstill;
   calibration_cycles_ = 0;
+  // "If the encoder is not connected or does not work the calibration ends at once" (seed 000 TarOffs).
+  if (encoder_fault()) finish_calibration(kErrorCalibrationNoEncoder);
+}
+
+void AnalogDrive::finish_calibration(std::uint32_t error) noexcept {
+  calibration_.Error = error;
+  calibration_.ValOf = io::dac_code(p_.offset_volts, p_.dac);
+  calibration_.EndTr = true;
+  calibration_state_ = Calibration::kFinished;
 }
 
 // TarOffs [derived, spec 05a §3.1: "integrated standstill command = offset, stored as a DAC bias"]: while the
@@ -42,6 +49,11 @@ void AnalogDrive::offset_calibration(bool enable, bool reset) noexcept {
 void AnalogDrive::calibrate(bool enabled, double speed) noexcept {
   if (calibration_state_ != Calibration::kWaitingForStandstill &&
       calibration_state_ != Calibration::kMeasuring) {
+    return;
+  }
+  // The encoder failed while waiting or measuring: what was measured is not a standstill command.
+  if (encoder_fault()) {
+    finish_calibration(kErrorCalibrationNoEncoder);
     return;
   }
   const bool standstill = enabled && state() == telegrams::DriveState::kS4Operation &&
@@ -64,14 +76,9 @@ void AnalogDrive::calibrate(bool enabled, double speed) noexcept {
   if (static_cast<double>(calibration_cycles_) * p_.servo_cycle_s < p_.calibration_measure_s) return;
   const double offset = p_.offset_volts + calibration_sum_volts_ / static_cast<double>(calibration_cycles_);
   // Error 11 (seed 000): more than 1 % of the DAC's maximum value; the offset in use stays.
-  if (std::fabs(offset) > 0.01 * p_.dac.full_scale_volts) {
-    calibration_.Error = kErrorOffsetExcessive;
-  } else {
-    p_.offset_volts = offset;
-  }
-  calibration_.ValOf = io::dac_code(p_.offset_volts, p_.dac);
-  calibration_.EndTr = true;
-  calibration_state_ = Calibration::kFinished;
+  const bool excessive = std::fabs(offset) > 0.01 * p_.dac.full_scale_volts;
+  if (!excessive) p_.offset_volts = offset;
+  finish_calibration(excessive ? kErrorOffsetExcessive : 0);
 }
 
 void AnalogDrive::set_speed_output(bool enabled, double speed) noexcept {

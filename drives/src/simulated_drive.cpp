@@ -543,7 +543,10 @@ void SimulatedDrive::power_cycle() noexcept {
 
 void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
   const bool fault = fault_code_ != 0;
-  const double speed_rpm = mechanics_.motor_speed_rpm();
+  // An encoder-only device's shaft is moved from outside (move_externally): its motor speed is the load's.
+  const double speed_rpm = config_.drive_telegram == 0
+                               ? external_speed_ / p_.load_units_per_revolution * 60.0 * r_.ratio
+                               : mechanics_.motor_speed_rpm();
   const double torque_nm = mechanics_.motor_torque_nm();
   for (std::size_t i = 0; i < kSlotCount; ++i) {
     const auto& codec = *codecs_.actual[i];

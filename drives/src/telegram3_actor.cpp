@@ -17,7 +17,11 @@ namespace tg = tomc::telegrams;
 
 namespace {
 
-constexpr std::uint16_t kTelegram = 3;
+// Telegram 3 with the counter as G1; telegram 2 (the same words without an encoder) when the position comes
+// from a separately connected 81/83 encoder.
+std::uint16_t telegram_of(PositionFeedback feedback) noexcept {
+  return feedback == PositionFeedback::kCounter ? 3 : 2;
+}
 
 bool enabled_state(tg::DriveState s) noexcept {
   return s == tg::DriveState::kS4Operation || s == tg::DriveState::kS5aRampStop ||
@@ -31,10 +35,10 @@ bool switched_on(tg::DriveState s) noexcept {
 
 Telegram3Actor::Telegram3Actor(io::HardwareIo& hardware, const ActorParameters& parameters)
     : hw_(&hardware), base_(parameters), extension_(parameters.counter_width_bits) {
-  config_.drive_telegram = kTelegram;
-  if (auto c = tg::TelegramCodec::shared(kTelegram, tg::Direction::kSetpoint, config_.codec))
+  config_.drive_telegram = telegram_of(parameters.feedback);
+  if (auto c = tg::TelegramCodec::shared(config_.drive_telegram, tg::Direction::kSetpoint, config_.codec))
     setpoint_codec_ = c.value();
-  if (auto c = tg::TelegramCodec::shared(kTelegram, tg::Direction::kActual, config_.codec))
+  if (auto c = tg::TelegramCodec::shared(config_.drive_telegram, tg::Direction::kActual, config_.codec))
     actual_codec_ = c.value();
   setpoint_frames_ = make_frames(config_, tg::Direction::kSetpoint);
   sign_of_life_.reset(1);
@@ -44,21 +48,41 @@ Telegram3Actor::Telegram3Actor(io::HardwareIo& hardware, const ActorParameters& 
 // Start of MC_Servo
 
 bool Telegram3Actor::read_actual(DeviceFrames& actual) noexcept {
+  sample();
+  return answer(actual);
+}
+
+void Telegram3Actor::sample() noexcept {
   const io::IoStatus status = hw_->sample_inputs();
   io_ok_ = status == io::IoStatus::kOk;
   if (!io_ok_ && fault_ == 0) fault_ = kFaultIo;
   ready_ = base_.ready_input ? hw_->digital_input(*base_.ready_input) : true;
+  if (base_.feedback != PositionFeedback::kCounter) return;
   const io::CounterSample sample = hw_->counter(base_.counter);
-  const std::int64_t count = extension_.update(sample.count);
-  if (health_.exchanges == 0) previous_count_ = count;
-  speed_rpm_ =
-      static_cast<double>(count - previous_count_) / base_.counts_per_revolution / base_.servo_cycle_s * 60.0;
-  previous_count_ = count;
+  encoder_fault_ = sample.signal_lost;
+  update_position(sample.count);
   if ((encoder_status_ & 0x0001u) != 0 && sample.latched && (encoder_status_ & 0x0010u) == 0) {
     latched_ = extension_.extend(sample.latched_count);
     encoder_status_ |= 0x0010u;  // value 1 available
   }
+}
 
+void Telegram3Actor::separate_encoder_count(std::uint32_t xist1, bool encoder_ok) noexcept {
+  if (base_.feedback != PositionFeedback::kSeparateEncoder) return;
+  encoder_fault_ = !encoder_ok;
+  update_position(xist1);
+}
+
+void Telegram3Actor::update_position(std::uint32_t raw) noexcept {
+  const std::int64_t count = extension_.update(raw);
+  if (!position_valid_) previous_count_ = count;
+  position_valid_ = true;
+  speed_rpm_ =
+      static_cast<double>(count - previous_count_) / base_.counts_per_revolution / base_.servo_cycle_s * 60.0;
+  previous_count_ = count;
+}
+
+bool Telegram3Actor::answer(DeviceFrames& actual) noexcept {
   // Ready-input rule 2 (spec 01 §3.12): ready lost on a switched-on axis disables it with an error, at once.
   if (base_.ready_input && !ready_ && switched_on(state_) && fault_ == 0) fault_ = kFaultDriveReadyLost;
   if (fault_ != 0 && state_ != tg::DriveState::kS1SwitchingOnInhibited) {
@@ -80,8 +104,10 @@ bool Telegram3Actor::read_actual(DeviceFrames& actual) noexcept {
   a.NIST_B = tg::speed_to_n4(speed_rpm_, base_.reference_speed_rpm);
   a.ZSW2.set(tg::Zsw2Bit::kPulsesEnabled, enable_);
   a.ZSW2.set_field(tg::kSignOfLifeField, slave_counter_);
-  update_encoder(sp_.G1_STW.value(), a);
-  a.G1_XIST1 = static_cast<std::uint32_t>(static_cast<std::uint64_t>(count));
+  if (base_.feedback == PositionFeedback::kCounter) {
+    update_encoder(sp_.G1_STW.value(), a);
+    a.G1_XIST1 = static_cast<std::uint32_t>(static_cast<std::uint64_t>(extension_.value()));
+  }
   (void)actual_codec_->encode(a, actual[Slot::kDrive].view());
   return true;
 }
@@ -112,10 +138,13 @@ void Telegram3Actor::update_encoder(std::uint16_t control, tg::ActualSignals& a)
   // An error stays shown until acknowledged with Gx_STW.15 once its cause is gone (spec 06 §6.3).
   const bool latched_error =
       (encoder_status_ & 0x8000u) != 0 && !stw.test(tg::EncoderControlBit::kAcknowledgeEncoderError);
+  // A lost encoder signal is the sensor-group error (spec 06 §6.3): the TO raises its encoder alarm.
+  if (error == 0 && encoder_fault_) error = tg::kEncoderErrorSensorGroup;
+  if (error != 0) reported_error_ = error;
   std::uint32_t xist2 = 0;
   if (error != 0 || latched_error) {
     status |= 0x8000u;
-    xist2 = tg::kEncoderErrorCommandNotSupported;
+    xist2 = reported_error_;
   } else if (command == 2 && (status & 0x0010u) != 0) {
     xist2 = static_cast<std::uint32_t>(static_cast<std::uint64_t>(latched_));
   }

@@ -9,6 +9,7 @@
 #include "drive_harness.hpp"
 #include "tomc/drives/analog_drive.hpp"
 #include "tomc/drives/io/simulated_servo_amplifier.hpp"
+#include "tomc/drives/simulated_actor_drive.hpp"
 
 namespace tomc::drives::test {
 namespace {
@@ -33,6 +34,22 @@ struct AnalogHarness {
   io::SimulatedServoAmplifier amplifier;
   BasicHarness<AnalogDrive> h;
 };
+
+// An amplifier drifting by `drift_volts` (no Coulomb friction), for TarOffs.
+AnalogRig drifting_rig(double drift_volts) {
+  AnalogRig rig;
+  rig.amplifier_parameters.input_offset_volts = drift_volts;
+  rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
+  return rig;
+}
+
+// The TO's position loop, reduced to a P controller on the counter, holding the axis at count 0.
+void hold_position(BasicHarness<AnalogDrive>& h, int cycles) {
+  for (int i = 0; i < cycles; ++i) {
+    h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
+    h.cycle();
+  }
+}
 
 // spec 01 §3.12 test 18: reference speed 3000 1/min, 100 % = 10 V; 3300 1/min -> 11 V (110 %, within ±117 %).
 TEST(AnalogDrive, OverdriveAndClampSpec01Test18) {
@@ -156,17 +173,9 @@ TEST(AnalogDrive, OffsetAutoCalibrationTarOffs) {
     std::int32_t value_codes;
   };
   for (const Row row : {Row{0.02, 0, -55}, Row{-0.05, 0, 138}, Row{0.2, kErrorOffsetExcessive, 0}}) {
-    AnalogRig rig;
-    rig.amplifier_parameters.input_offset_volts = row.drift_volts;
-    rig.amplifier_parameters.mechanics.coulomb_friction_nm = 0.0;
-    AnalogHarness a(rig);
+    AnalogHarness a(drifting_rig(row.drift_volts));
     auto& h = a.h;
-    auto hold = [&](int cycles) {
-      for (int i = 0; i < cycles; ++i) {
-        h.speed_rpm(-0.5 * static_cast<double>(h.drive.counter_value()));
-        h.cycle();
-      }
-    };
+    auto hold = [&](int cycles) { hold_position(h, cycles); };
     h.power_up_to_s4();
     h.drive.offset_calibration(true, false);  // En while not yet at standstill: EndTr waits
     hold(300);
@@ -358,6 +367,141 @@ TEST(AnalogDrive, IoFailureIsADriveFault) {
   h.stw1(0x04FE);
   h.cycle();
   EXPECT_EQ(h.drive.active_fault(), 0u);
+}
+
+// TarOffs without a working encoder (seed 000 TarOffs: "if the encoder is not connected or does not work the
+// calibration ends at once", spec 05a §3.1): EndTr at once with error 90 (decision A16), the offset
+// unchanged. The encoder on the counter unplugged: the card's signal supervision, G1_ZSW.15 with the
+// sensor-group error 0x0001 in G1_XIST2 (spec 06 §6.3: the TO raises its encoder alarm), held until
+// acknowledged.
+TEST(AnalogDrive, TarOffsWithoutEncoderEndsAtOnceWithError90) {
+  AnalogRig rig;
+  rig.actor_parameters.offset_volts = 0.01;
+  AnalogHarness a(rig);
+  auto& h = a.h;
+  h.power_up_to_s4();
+  a.amplifier.set_encoder_connected(false);
+  h.cycle();
+  EXPECT_TRUE(h.drive.encoder_fault());
+  EXPECT_NE(h.actual.G1_ZSW.value() & 0x8000u, 0u);
+  EXPECT_EQ(h.actual.G1_XIST2, tg::kEncoderErrorSensorGroup);
+  h.drive.offset_calibration(true, false);
+  const auto& status = h.drive.offset_calibration_status();
+  EXPECT_TRUE(status.EndTr);
+  EXPECT_EQ(status.Error, kErrorCalibrationNoEncoder);
+  EXPECT_EQ(status.ValOf, io::dac_code(0.01, rig.actor_parameters.dac));
+  EXPECT_EQ(h.drive.parameters().offset_volts, 0.01);
+  // The encoder back: the error stays shown until G1_STW.15 acknowledges it.
+  a.amplifier.set_encoder_connected(true);
+  h.cycle();
+  EXPECT_FALSE(h.drive.encoder_fault());
+  EXPECT_NE(h.actual.G1_ZSW.value() & 0x8000u, 0u);
+  h.drive_sp.G1_STW = tg::EncoderControlWord{0x8000};
+  h.cycle();
+  h.drive_sp.G1_STW = tg::EncoderControlWord{0x0000};
+  h.cycle();
+  EXPECT_EQ(h.actual.G1_ZSW.value() & 0x8000u, 0u);
+  // En FALSE, then a new calibration with a working encoder waits for standstill as usual (EndTr FALSE).
+  h.drive.offset_calibration(false, false);
+  h.drive.offset_calibration(true, false);
+  EXPECT_FALSE(h.drive.offset_calibration_status().EndTr);
+  EXPECT_EQ(h.drive.offset_calibration_status().Error, 0u);
+}
+
+// The encoder fails while TarOffs measures (0.1 s settle, then 0.5 s of averaging): it ends in the cycle the
+// failure is seen, error 90, and what was averaged is not applied.
+TEST(AnalogDrive, TarOffsEncoderFailingDuringMeasurementEndsWithError90) {
+  AnalogHarness a(drifting_rig(0.02));
+  auto& h = a.h;
+  auto hold = [&](int cycles) { hold_position(h, cycles); };
+  h.power_up_to_s4();
+  hold(600);                                // standstill under the loop
+  h.drive.offset_calibration(true, false);  // settle 100 cycles, then measuring
+  hold(300);
+  EXPECT_FALSE(h.drive.offset_calibration_status().EndTr);
+  a.amplifier.set_encoder_connected(false);
+  hold(1);  // the harness reads last: this read sees the lost signal ...
+  EXPECT_FALSE(h.drive.offset_calibration_status().EndTr);
+  hold(1);  // ... and the next write (the same MC_Servo of the TO) ends the calibration
+  EXPECT_TRUE(h.drive.offset_calibration_status().EndTr);
+  EXPECT_EQ(h.drive.offset_calibration_status().Error, kErrorCalibrationNoEncoder);
+  EXPECT_EQ(h.drive.parameters().offset_volts, 0.0);
+  EXPECT_EQ(h.drive.offset_calibration_status().ValOf, 0);
+}
+
+// The analog actor with a separately connected encoder on telegram 81/83 (spec 01 §3.3, §3.12): the device is
+// telegram 2 + 81 (or 83) and the TO reads G1 of the encoder telegram. The test plays the TO on both.
+class AnalogWithEncoder final : public DriveAdapter {
+ public:
+  AnalogWithEncoder(const AnalogRig& rig, const SeparateEncoderParameters& encoder)
+      : drive_(rig.amplifier_parameters, separate(rig.actor_parameters), encoder) {}
+  const DeviceConfig& config() const noexcept override { return drive_.config(); }
+  bool read_actual(DeviceFrames& actual) noexcept override { return drive_.read_actual(actual); }
+  void write_setpoint(const DeviceFrames& setpoint) noexcept override { drive_.write_setpoint(setpoint); }
+  LinkHealth link_health() const noexcept override { return drive_.link_health(); }
+  tg::DriveState state() const noexcept { return drive_.actor().state(); }
+  const AnalogDriveParameters& parameters() const noexcept { return drive_.actor().parameters(); }
+  SimulatedAnalogDrive& drive() { return drive_; }
+
+ private:
+  static AnalogDriveParameters separate(AnalogDriveParameters p) {
+    p.feedback = PositionFeedback::kSeparateEncoder;
+    p.counts_per_revolution = 2048.0 * 2048.0;  // the encoder's XIST1: 2048 steps × 2^11
+    return p;
+  }
+  SimulatedAnalogDrive drive_;
+};
+
+SeparateEncoderParameters encoder_83() {
+  SeparateEncoderParameters e;
+  e.telegram = 83;
+  e.encoder.determinable_revolutions = 0;  // incremental
+  e.encoder.reference_mark_offset_revolutions = 0.25;
+  return e;
+}
+
+TEST(AnalogDrive, SeparateEncoderTelegram83IsTheActualValue) {
+  const AnalogRig rig;
+  const SeparateEncoderParameters e = encoder_83();
+  BasicHarness<AnalogWithEncoder> h(drive_config(2, 0, {83, 0}), rig, e);
+  EXPECT_EQ(h.drive.config().drive_telegram, 2);
+  EXPECT_EQ(h.drive.config().encoder_telegrams[0], 83);
+  h.run_at_speed(600.0, 300);  // 10 rev/s on the motor shaft
+  const auto& mechanics = h.drive.drive().hardware().mechanics();
+  const double counts = 2048.0 * 2048.0;
+  // G1_XIST1 of telegram 83 = the motor shaft in counts (the encoder sits on the machine the amplifier
+  // turns).
+  EXPECT_NEAR(static_cast<double>(h.encoder_actual[0].G1_XIST1),
+              std::floor(std::fmod(mechanics.motor_revolutions() * counts, 4294967296.0)), 1.0);
+  EXPECT_NEAR(h.nist_rpm(), 600.0, 0.5);  // the actor's NIST_B from the encoder's counts
+  EXPECT_NEAR(tg::n4_to_speed(h.encoder_actual[0].NIST_B, 3000.0), 600.0, 0.5);  // telegram 83's own NIST_B
+  EXPECT_EQ(h.drive.drive().actor().counter_value() & 0xFFFFFFFF, h.encoder_actual[0].G1_XIST1);
+  // The reference mark of the 81/83 encoder (its G1_STW function 1), not the card's counter.
+  h.encoder[0].G1_STW = tg::EncoderControlWord{0x0011};
+  const int cycles = h.run_until([&] { return (h.encoder_actual[0].G1_ZSW.value() & 0x0010u) != 0; }, 200);
+  EXPECT_LE(cycles, 101);  // a mark per revolution, 10 rev/s
+  h.encoder[0].G1_STW = tg::EncoderControlWord{0x0021};
+  h.cycle();
+  EXPECT_EQ(h.encoder_actual[0].G1_XIST2 % static_cast<std::uint32_t>(counts), 1048576u);  // 0.25 rev
+  // An encoder error of the 81/83 device: its G1_ZSW.15; the actor sees its position feedback failed.
+  h.drive.drive().separate_encoder()->inject_encoder_error(1, tg::kEncoderErrorSensorGroup);
+  h.cycle();
+  EXPECT_NE(h.encoder_actual[0].G1_ZSW.value() & 0x8000u, 0u);
+  EXPECT_TRUE(h.drive.drive().actor().encoder_fault());
+  h.drive.drive().actor().offset_calibration(true, false);
+  EXPECT_EQ(h.drive.drive().actor().offset_calibration_status().Error, kErrorCalibrationNoEncoder);
+}
+
+TEST(AnalogDrive, SeparateEncoderMustMatchTheActorsFeedback) {
+  const AnalogRig rig;
+  EXPECT_THROW(SimulatedAnalogDrive(rig.amplifier_parameters, rig.actor_parameters, encoder_83()),
+               std::invalid_argument);
+  AnalogDriveParameters separate = rig.actor_parameters;
+  separate.feedback = PositionFeedback::kSeparateEncoder;
+  EXPECT_THROW(SimulatedAnalogDrive(rig.amplifier_parameters, separate), std::invalid_argument);
+  SeparateEncoderParameters wrong = encoder_83();
+  wrong.telegram = 82;
+  EXPECT_THROW(SimulatedAnalogDrive(rig.amplifier_parameters, separate, wrong), std::invalid_argument);
 }
 
 }  // namespace

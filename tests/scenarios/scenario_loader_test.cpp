@@ -152,7 +152,29 @@ TEST(ScenarioDrive, AnalogAdapter) {
                   .empty());
   EXPECT_EQ(
       problem_of(with_drive(R"({"adapter": "analog", "telegram": 2})")),
-      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3)");
+      "technology_objects[0].drive.telegram: 2: the analog actor is a telegram-3 drive to the TO (write 3, "
+      "or 2 with an encoder_telegram 81/83)");
+  // A separate 81/83 encoder (spec 01 §3.3 "1 + 81/83"): the actor is then a telegram-2 drive.
+  EXPECT_TRUE(
+      problems_of(with_drive(R"({"adapter": "analog", "telegram": 2, "encoder_telegram": 83})")).empty());
+  EXPECT_TRUE(
+      problems_of(with_drive(R"({"adapter": "analog", "telegram": 2, "encoder_telegram": 81})")).empty());
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "encoder_telegram": 81})")),
+            "technology_objects[0].drive.telegram: 3: with a separate encoder (encoder_telegram) the analog "
+            "actor is a telegram-2 drive (write 2; telegram 3 carries the counter as its encoder)");
+  EXPECT_EQ(problem_of(with_drive(R"({"adapter": "analog", "telegram": 3, "supplementary_telegram": 750})")),
+            "technology_objects[0].drive.supplementary_telegram: the analog actor has no telegram 750");
+  {
+    Json e = base();
+    e["timeline"].push_back(
+        Json::parse(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "encoder_signal_lost"}})"));
+    EXPECT_EQ(
+        problem_of(e),
+        "timeline[1].inject.target: Axis1 has no analog drive with an encoder on its counter (a separate "
+        "81/83 encoder fails with encoder_error)");
+    e["technology_objects"][0]["drive"] = Json::parse(R"({"adapter": "analog", "telegram": 3})");
+    EXPECT_TRUE(problems_of(e).empty());
+  }
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "analog": {}})")),
             "technology_objects[0].drive.analog: only with \"adapter\": \"analog\"");
   EXPECT_EQ(
@@ -652,7 +674,7 @@ TEST(ScenarioLoader, FaultEvents) {
             "timeline[1].inject.fault: missing");
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
             "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
-            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault");
+            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault, encoder_signal_lost");
   EXPECT_EQ(problem_of(with_event(
                 R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
             "timeline[1].inject.code: 0 out of range 1..4294967295");
@@ -879,6 +901,110 @@ TEST(ScenarioLoader, TechnologyAlarmInjection) {
   const auto out_of_range = problem_of(with_event(
       R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "technology_alarm", "alarm": 533, "reaction": 6}})"));
   EXPECT_NE(out_of_range.find("timeline[1].inject.reaction"), std::string::npos) << out_of_range;
+}
+
+}  // namespace
+
+namespace {
+
+// A technology object with a legacy parameter set (docs/analog-drives.md, spec 05b Part C) in place of
+// its config and drive.
+Json with_legacy(const char* legacy, double cycle_time = 0.001) {
+  Json d = base();
+  d["cycle_time"] = cycle_time;
+  d["technology_objects"][0] = Json::parse(R"({"name": "Axis1", "type": "TO_PositioningAxis"})");
+  d["technology_objects"][0]["legacy"] = Json::parse(legacy);
+  return d;
+}
+
+constexpr const char* kH3Example = R"({"system": "H3", "unit_mm": 0.1, "velocity_at_10V": 1000, "MCFac": 100,
+    "MCW": "16#41B", "PosEr": 2000, "KProp": 150, "KInt": 50, "KDer": 50, "IntL": 500, "SampI": 15,
+    "Veloc": 500, "Accel": 100})";
+
+Json h3_with(const char* key, const Json& value) {
+  Json d = with_legacy(kH3Example);
+  d["technology_objects"][0]["legacy"][key] = value;
+  return d;
+}
+
+// spec 05b Part D 33: out-of-range H3 values are errors naming the register (FLdVA with Veloc -100, FLdRP
+// with KProp 40000 or SampI 256, MCW 61BH with two stop bits); SampI 2 is accepted.
+TEST(LegacyParameters, H3RangeErrorsPartD33) {
+  EXPECT_TRUE(problems_of(with_legacy(kH3Example)).empty());
+  EXPECT_TRUE(problems_of(h3_with("SampI", 2)).empty());
+  EXPECT_EQ(problem_of(h3_with("Veloc", -100)),
+            "technology_objects[0].legacy.Veloc: -100 out of range 0..1073741823");
+  EXPECT_EQ(problem_of(h3_with("KProp", 40000)),
+            "technology_objects[0].legacy.KProp: 40000 out of range 0..32767");
+  EXPECT_EQ(problem_of(h3_with("SampI", 256)), "technology_objects[0].legacy.SampI: 256 out of range 0..255");
+  EXPECT_EQ(
+      problem_of(h3_with("MCW", "16#61B")),
+      "technology_objects[0].legacy.MCW: bits 8, 9, 10 (stop type): exactly one must be set, 2 are (spec "
+      "05b B.9)");
+  EXPECT_EQ(
+      problem_of(h3_with("MCW", "16#41C")),
+      "technology_objects[0].legacy.MCW: low byte 16#1C is not a position-error reaction (16#1A flag and "
+      "motor off, 16#1B flag only; spec 05b B.9)");
+  EXPECT_EQ(problem_of(h3_with("KProp", 0)),
+            "technology_objects[0].legacy.KProp: must be > 0 (I and D are expressed relative to the P gain)");
+  EXPECT_EQ(
+      problem_of(h3_with("MCFac", 0.0001)),
+      "technology_objects[0].legacy.MCFac: 1e-4 counts per 0.1 mm is no whole number of ×4 counts over 1 "
+      "... 1000 mm");
+  EXPECT_EQ(problem_of(h3_with("Veloc", 2000)),
+            "technology_objects[0].legacy.Veloc: 2000 exceeds velocity_at_10V 1000");
+  Json d = with_legacy(kH3Example);
+  d["technology_objects"][0]["type"] = "TO_SpeedAxis";
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].legacy: only a TO_PositioningAxis or TO_SynchronousAxis takes a legacy "
+            "parameter set (a JOINT or H3 axis is a positioning axis)");
+}
+
+constexpr const char* kJointAxis = R"({"system": "JOINT", "TCamp": 10, "measure": 1, "pulse": 100,
+    "maxvel": 100, "unitvel": 1, "decpt": 0, "pgain": 1000})";
+
+Json joint_with(const char* key, const Json& value) {
+  Json d = with_legacy(kJointAxis, 0.01);
+  d["technology_objects"][0]["legacy"][key] = value;
+  return d;
+}
+
+// spec 05b A.8 ranges and Part D 2 (measure/pulse within 0.00935 ... 1), TCamp = the MC_Servo cycle.
+TEST(LegacyParameters, JointRangeErrors) {
+  EXPECT_TRUE(problems_of(with_legacy(kJointAxis, 0.01)).empty());
+  EXPECT_TRUE(problems_of(joint_with("measure", 1000)).size() == 1);  // 1000/100 = 10 Um per pulse
+  Json d = joint_with("measure", 1);
+  d["technology_objects"][0]["legacy"]["pulse"] = 200;  // 0.005
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].legacy.measure: measure/pulse = 0.005 is outside 0.00935 ... 1 Um per pulse "
+      "(spec 05b A.3)");
+  d = joint_with("measure", 2);
+  d["technology_objects"][0]["legacy"]["pulse"] = 1;  // 2
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].legacy.measure: measure/pulse = 2 is outside 0.00935 ... 1 Um per pulse "
+            "(spec 05b A.3)");
+  EXPECT_EQ(
+      problem_of(with_legacy(kJointAxis, 0.001)),
+      "technology_objects[0].legacy.TCamp: 10 ms differs from cycle_time 0.001 s (the regulator runs in "
+      "the MC_Servo cycle, spec 05b C.1)");
+  EXPECT_EQ(problem_of(joint_with("TCamp", 256)),
+            "technology_objects[0].legacy.TCamp: 256 out of range 1..255");
+  EXPECT_EQ(problem_of(joint_with("pgain", 40000)),
+            "technology_objects[0].legacy.pgain: 40000 out of range 0..32767");
+  EXPECT_EQ(problem_of(joint_with("offset", -40000)),
+            "technology_objects[0].legacy.offset: -40000 out of range -32768..32767");
+  EXPECT_EQ(problem_of(joint_with("ramptype", 1)),
+            "technology_objects[0].legacy.ramptype: 1: epicycloidal ramps are not mapped (spec 05b C.3: an "
+            "extension); only 0 (trapezoidal)");
+  EXPECT_EQ(problem_of(joint_with("setvel", 150)),
+            "technology_objects[0].legacy.setvel: 150 exceeds maxvel 100");
+  EXPECT_EQ(problem_of(joint_with("maxpos", 50)),
+            "technology_objects[0].legacy.minpos: missing: give both software limits or neither");
+  EXPECT_NE(problem_of(joint_with("prsmode", 1)).find("technology_objects[0].legacy.prsmode"),
+            std::string::npos);
+  EXPECT_EQ(problem_of(joint_with("system", "EANPOS")),
+            "technology_objects[0].legacy.system: 'EANPOS' is not one of JOINT, H3");
 }
 
 }  // namespace

@@ -26,6 +26,11 @@ std::uint32_t QuadratureCounter::wrap(double counts) const noexcept {
   return static_cast<std::uint32_t>(static_cast<std::uint64_t>(whole) & mask_of(parameters_.width_bits));
 }
 
+void QuadratureCounter::set_connected(bool connected) noexcept {
+  connected_ = connected;
+  sample_.signal_lost = !connected;
+}
+
 void QuadratureCounter::arm_zero_mark() noexcept {
   armed_ = true;
   sample_.latched = false;
@@ -34,6 +39,10 @@ void QuadratureCounter::arm_zero_mark() noexcept {
 void QuadratureCounter::update(double shaft_revolutions) noexcept {
   const double previous = shaft_;
   shaft_ = shaft_revolutions;
+  if (!connected_) {  // no edges reach the decoder: the count stays, the zero mark is not seen
+    origin_revolutions_ += shaft_ - previous;
+    return;
+  }
   if (armed_) {
     // A zero mark lies between the two positions: the mark k sits at offset + k revolutions.
     const double offset = parameters_.zero_mark_offset_revolutions;

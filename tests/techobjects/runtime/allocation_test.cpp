@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <optional>
 
 #include "counting_allocator.hpp"
 #include "speed_command_object.hpp"
@@ -68,11 +69,11 @@ TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
 
 // The analog actor on its simulated servo amplifier and the stepper actor on its simulated PTO/stepper motor
 // (issue 20): the hardware I/O layer, the counter extension, the DAC quantisation, the pulse train, the
-// lost-step model and the ready-input supervision allocate nothing either.
+// lost-step model, the ready-input supervision and a separate 81/83 encoder allocate nothing either.
 TEST(Allocation, AnalogAndStepperDrivesRunWithoutAllocating) {
   Runtime rt(RuntimeConfig{0.001, 1, 1});
   std::vector<tomc::testing::SpeedCommandObject*> objects;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 6; ++i) {
     tomc::drives::io::SimulatedServoAmplifierParameters amplifier;
     tomc::drives::AnalogDriveParameters actor;
     actor.counts_per_revolution = 4.0 * amplifier.encoder.lines_per_revolution;
@@ -81,7 +82,16 @@ TEST(Allocation, AnalogAndStepperDrivesRunWithoutAllocating) {
       actor.enable_output = amplifier.enable_input;
       actor.ready_input = amplifier.ready_output;
     }
-    auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedAnalogDrive>(amplifier, actor));
+    // 4 and 5: the position from a separate encoder on telegram 81 / 83 (telegram 2 + 81/83).
+    std::optional<tomc::drives::SeparateEncoderParameters> encoder;
+    if (i >= 4) {
+      actor.feedback = tomc::drives::PositionFeedback::kSeparateEncoder;
+      actor.counter_width_bits = 32;
+      encoder.emplace();
+      encoder->telegram = i == 4 ? 81 : 83;
+      actor.counts_per_revolution = 2048.0 * 2048.0;
+    }
+    auto& io = rt.add_device(std::make_unique<tomc::drives::SimulatedAnalogDrive>(amplifier, actor, encoder));
     objects.push_back(
         &rt.emplace<tomc::testing::SpeedCommandObject>(io, DriveConnectionConfig{}, 1000.0, 0.5));
   }

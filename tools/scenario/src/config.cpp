@@ -429,15 +429,27 @@ void load_drive(const Json& drive, std::string_view path, double cycle_time_s, D
     }
   }
   // The analog and the stepper actor are telegram-3 drives to the TO (spec 01 §3.11, §3.12: the S7 puts them
-  // behind the same interface), with the position on the card's counter.
+  // behind the same interface), with the position on the card's counter; the analog actor may instead have a
+  // separately connected 81/83 encoder, and then it is a telegram-2 drive (spec 01 §3.3 "1 + 81/83").
   if (settings.analog || settings.stepper) {
     const std::string actor = settings.analog ? "the analog actor" : "the stepper actor";
-    if (settings.telegram != 0 && settings.telegram != 3) {
-      problems.add(r.path_of("telegram"), std::to_string(settings.telegram) + ": " + actor +
-                                              " is a telegram-3 drive to the TO (write 3)");
+    const bool separate = settings.analog && settings.encoder_telegram != 0;
+    if (separate && settings.telegram != 2) {
+      problems.add(r.path_of("telegram"),
+                   std::to_string(settings.telegram) +
+                       ": with a separate encoder (encoder_telegram) the analog actor is a telegram-2 drive "
+                       "(write 2; telegram 3 carries the counter as its encoder)");
+    } else if (!separate && settings.telegram != 0 && settings.telegram != 3) {
+      problems.add(r.path_of("telegram"),
+                   std::to_string(settings.telegram) + ": " + actor +
+                       " is a telegram-3 drive to the TO (write 3" +
+                       (settings.analog ? ", or 2 with an encoder_telegram 81/83)" : ")"));
     }
-    if (settings.supplementary_telegram != 0 || settings.encoder_telegram != 0) {
-      problems.add(r.path(), actor + " has no telegram 750 and reads its position from the counter");
+    if (settings.supplementary_telegram != 0) {
+      problems.add(r.path_of("supplementary_telegram"), actor + " has no telegram 750");
+    }
+    if (settings.stepper && settings.encoder_telegram != 0) {
+      problems.add(r.path_of("encoder_telegram"), actor + " reads its position from the counter");
     }
   }
   r.finish();

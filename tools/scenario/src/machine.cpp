@@ -12,6 +12,7 @@
 
 #include "cam_elements.hpp"
 #include "json_reader.hpp"
+#include "legacy_parameters.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/telegrams/encoder.hpp"
@@ -106,11 +107,18 @@ void actor_base(const DriveSettings& drive, bool enable_output, bool ready_input
   if (ready_input) actor.ready_input = wiring.ready_output;
   actor.counter = wiring.counter;
   actor.counter_width_bits = p.encoder1.xist1_width_bits;
-  // NIST_B is the motor speed: a load-side encoder turns 1/ratio revolutions per motor revolution.
+  // NIST_B is the motor speed: a load-side encoder turns 1/ratio revolutions per motor revolution (a linear
+  // scale counts 2^FineResolutionXist1 per Resolution of load travel).
   const double ratio = p.gear_motor_revolutions / p.gear_load_revolutions;
-  actor.counts_per_revolution =
-      telegrams::counts_per_revolution(p.encoder1.steps_per_revolution, p.encoder1.fine_resolution_xist1) /
-      (p.encoder1.shaft == drives::SimulatedEncoderParameters::Shaft::kLoad ? ratio : 1.0);
+  const auto& e = p.encoder1;
+  if (e.linear) {
+    actor.counts_per_revolution =
+        p.load_units_per_revolution / e.resolution * std::ldexp(1.0, e.fine_resolution_xist1) / ratio;
+  } else {
+    actor.counts_per_revolution =
+        telegrams::counts_per_revolution(e.steps_per_revolution, e.fine_resolution_xist1) /
+        (e.shaft == drives::SimulatedEncoderParameters::Shaft::kLoad ? ratio : 1.0);
+  }
   actor.standstill_threshold_rpm = p.standstill_threshold_rpm;
 }
 
@@ -118,6 +126,8 @@ drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enab
   const auto& a = *drive.analog;
   drives::AnalogDriveParameters actor;
   actor_base(drive, enable_output, ready_input, actor);
+  // With an encoder_telegram the position comes from that 81/83 encoder (the drive's encoder1), not the card.
+  if (drive.encoder_telegram != 0) actor.feedback = drives::PositionFeedback::kSeparateEncoder;
   actor.volts_at_reference = a.volts_at_reference;
   actor.overdrive_percent = a.overdrive_percent;
   actor.offset_volts = a.offset_volts;
@@ -317,7 +327,24 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
                                                     Problems& problems, std::string_view tool,
                                                     GatewayLinks* gateways,
                                                     const std::filesystem::path& directory) {
-  ObjectReader r(value, path, problems);
+  // A "legacy" parameter set (JOINT, H3) becomes config and drive keys first (legacy_parameters.hpp).
+  bool legacy_ok = true;
+  Json expanded;
+  const Json* source = &value;
+  if (value.is_object() && value.contains("legacy")) {
+    if (auto x = detail::with_legacy_expanded(value, path, cycle_time_s, problems)) {
+      expanded = std::move(*x);
+    } else {
+      expanded = value;
+      expanded.erase("legacy");
+      // The legacy set would have given the drive: a placeholder keeps "drive: missing" from following the
+      // legacy problems (the TO is not built).
+      if (!expanded.contains("drive")) expanded["drive"] = Json{{"adapter", "analog"}, {"telegram", 3}};
+      legacy_ok = false;
+    }
+    source = &expanded;
+  }
+  ObjectReader r(*source, path, problems);
   if (!r.valid()) return std::nullopt;
   MachineObject entry;
   if (const Json* v = r.get("name", true)) {
@@ -440,7 +467,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
     problems.add(r.path_of("LeadingValueInterconnections"), "only a TO_SynchronousAxis has leading values");
   }
   r.finish();
-  if (!entry.name.empty() && kind && problems.size() == before) {
+  if (!entry.name.empty() && kind && problems.size() == before && legacy_ok) {
     drives::SimulatedDrive* drive_ptr = nullptr;
     to::DeviceIo* io = nullptr;
     if (has_drive && drive.gateway) {
@@ -461,11 +488,15 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       // The S7 shows the analog setpoint interface in Actor.Type (RON, set by the configuration).
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
+      std::optional<drives::SeparateEncoderParameters> encoder;
+      if (drive.encoder_telegram != 0) encoder = {drive.encoder_telegram, drive.parameters.encoder1};
       auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
           analog_amplifier(drive, itf.EnableDriveOutput),
-          analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput));
+          analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput), encoder);
       entry.mechanics = &owned->hardware().mechanics();
       entry.analog_drive = owned.get();
+      // The separate 81/83 encoder is a simulated PROFIdrive encoder device: encoder_error goes there.
+      drive_ptr = owned->separate_encoder();
       io = &runtime.add_device(std::move(owned));
     } else if (has_drive && drive.stepper) {
       // A PTO module is a telegram-3 drive to the S7 (spec 01 §3.11): Actor.Type stays 1.

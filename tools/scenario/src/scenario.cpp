@@ -242,11 +242,13 @@ enum class FaultKind : std::uint8_t {
   kLinkLoss,
   kTechnologyAlarm,
   kFixedStopBreak,
-  kAmplifierFault,  // analog/stepper drive: the servo amplifier or stepper driver faults, its ready drops
+  kAmplifierFault,     // analog/stepper drive: the servo amplifier or stepper driver faults, its ready drops
+  kEncoderSignalLost,  // analog drive: the encoder on the card's counter is unplugged (count stands, signal
+                       // lost)
 };
-constexpr std::array<std::string_view, 7> kFaultNames{
+constexpr std::array<std::string_view, 8> kFaultNames{
     "drive_fault",      "encoder_error",    "sign_of_life_freeze", "link_loss",
-    "technology_alarm", "fixed_stop_break", "amplifier_fault"};
+    "technology_alarm", "fixed_stop_break", "amplifier_fault",     "encoder_signal_lost"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -772,10 +774,18 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
     // Every fault but a technology alarm is one of the simulated drive's; amplifier_fault is the analog or
     // stepper drive's.
     const bool analog_fault = event.fault == FaultKind::kAmplifierFault;
-    if (target_found && event.fault != FaultKind::kTechnologyAlarm && objects[event.target].built &&
-        (analog_fault
-             ? objects[event.target].analog_drive == nullptr && objects[event.target].stepper_drive == nullptr
-             : objects[event.target].drive == nullptr)) {
+    if (target_found && event.fault == FaultKind::kEncoderSignalLost && objects[event.target].built &&
+        (objects[event.target].analog_drive == nullptr ||
+         objects[event.target].analog_drive->separate_encoder() != nullptr)) {
+      problems.add(fr.path_of("target"),
+                   objects[event.target].name +
+                       " has no analog drive with an encoder on its counter (a separate "
+                       "81/83 encoder fails with encoder_error)");
+    } else if (target_found && event.fault != FaultKind::kTechnologyAlarm &&
+               event.fault != FaultKind::kEncoderSignalLost && objects[event.target].built &&
+               (analog_fault ? objects[event.target].analog_drive == nullptr &&
+                                   objects[event.target].stepper_drive == nullptr
+                             : objects[event.target].drive == nullptr)) {
       problems.add(
           fr.path_of("target"),
           objects[event.target].name +
@@ -809,6 +819,7 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
       case FaultKind::kLinkLoss:
       case FaultKind::kFixedStopBreak:
       case FaultKind::kAmplifierFault:
+      case FaultKind::kEncoderSignalLost:
         break;
       case FaultKind::kTechnologyAlarm: {
         // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
@@ -1031,6 +1042,11 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         if (auto* stepper = objects[event.target].stepper_drive) stepper->hardware().set_fault(on);
         break;
       }
+      if (event.fault == FaultKind::kEncoderSignalLost) {
+        objects[event.target].analog_drive->hardware().set_encoder_connected(event.kind !=
+                                                                             Event::Kind::kInject);
+        break;
+      }
       drives::SimulatedDrive& d = *objects[event.target].drive;
       const bool on = event.kind == Event::Kind::kInject;
       switch (event.fault) {
@@ -1059,6 +1075,7 @@ void Scenario::Impl::apply(const Event& event) noexcept {
           break;
         case FaultKind::kTechnologyAlarm:
         case FaultKind::kAmplifierFault:
+        case FaultKind::kEncoderSignalLost:
           break;  // handled above
       }
       break;

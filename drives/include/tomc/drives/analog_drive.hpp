@@ -26,9 +26,12 @@ struct AnalogDriveParameters : ActorParameters {
 struct OffsetCalibration {
   bool EndTr = false;       // the calibration finished (with En still TRUE)
   std::int32_t ValOf = 0;   // the offset in use, in DAC codes (0 = none)
-  std::uint32_t Error = 0;  // 11: the offset found exceeds 1 % of the DAC's full scale (not applied)
+  std::uint32_t Error = 0;  // 11 or 90 (below); the offset in use stays
 };
-inline constexpr std::uint32_t kErrorOffsetExcessive = 11;  // seed 000 appendix 1, error 11
+inline constexpr std::uint32_t kErrorOffsetExcessive = 11;  // seed 000 appendix 1: offset > 1 % of the DAC
+// No encoder connected, or it failed during the calibration: seed 000 "ends at once" (spec 05a §3.1); the
+// seed gives no number, 90 is tomc's (outside the seed's 1…84, decision A16).
+inline constexpr std::uint32_t kErrorCalibrationNoEncoder = 90;
 
 class AnalogDrive final : public Telegram3Actor {
  public:
@@ -52,6 +55,7 @@ class AnalogDrive final : public Telegram3Actor {
   void set_speed_output(bool enabled, double speed) noexcept override;
 
   void calibrate(bool enabled, double speed) noexcept;
+  void finish_calibration(std::uint32_t error) noexcept;
 
   AnalogDriveParameters p_;
   double output_volts_ = 0.0;

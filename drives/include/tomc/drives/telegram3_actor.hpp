@@ -2,7 +2,8 @@
 // What the analog actor (analog_drive.hpp) and the stepper actor (stepper_drive.hpp) share: towards the
 // technology object a drive on telegram 3 (spec 01 §3.11, §3.12: the S7 connects both through telegram 3),
 // towards the hardware I/O layer an optional enable output, an optional ready input with the three rules of
-// spec 01 §3.12, and the position from a counter (×4 encoder or the pulse count of a PTO module). The output
+// spec 01 §3.12, and the position from a counter (×4 encoder or the pulse count of a PTO module) or, on
+// telegram 2, from a separately connected 81/83 encoder (PositionFeedback::kSeparateEncoder). The output
 // stage that turns the speed setpoint into a signal (volts, pulse frequency) is the derived class's.
 // docs/analog-drives.md describes every rule.
 
@@ -18,14 +19,26 @@
 
 namespace tomc::drives {
 
+// Where the actor's position (and so its measured speed) comes from.
+enum class PositionFeedback : std::uint8_t {
+  // The card's counter (×4 encoder or a PTO's pulse count), shown to the TO as G1 of telegram 3.
+  kCounter,
+  // A separately connected encoder on telegram 81/83 (spec 01 §3.3 "drive and encoder in separate telegrams",
+  // §3.12 "or an 81/83 encoder"): the actor faces the TO as telegram 2 (no encoder words) and its owner
+  // passes the encoder's G1_XIST1 each cycle (separate_encoder_count()).
+  kSeparateEncoder,
+};
+
 struct ActorParameters {
+  PositionFeedback feedback = PositionFeedback::kCounter;
   double servo_cycle_s = 0.001;
   double reference_speed_rpm = 3000.0;       // <TO>.Actor.DriveParameter.ReferenceSpeed: 100 % output
   std::optional<io::Channel> enable_output;  // <TO>.Actor.Interface.EnableDriveOutput (optional)
   std::optional<io::Channel> ready_input;    // <TO>.Actor.Interface.DriveReadyInput (optional)
   io::Channel counter{4, 0};
   std::uint8_t counter_width_bits = 32;
-  double counts_per_revolution = 10000.0;  // counts per motor revolution (NIST_B); ×4 of the lines
+  // counts per motor revolution (NIST_B): ×4 of the lines, or the separate encoder's XIST1 counts
+  double counts_per_revolution = 10000.0;
   double standstill_threshold_rpm = 20.0;  // stop reactions end (enable off) below this measured speed
 };
 
@@ -36,7 +49,16 @@ inline constexpr std::uint32_t kFaultIo = 20002;              // the I/O card fa
 class Telegram3Actor : public DriveAdapter {
  public:
   const DeviceConfig& config() const noexcept override { return config_; }
+  // = sample() + answer(): with a counter the actor is a complete drive adapter.
   bool read_actual(DeviceFrames& actual) noexcept override;
+  // The two halves of read_actual() for an owner that moves a separate encoder in between: sample() runs
+  // the card's inputs (the simulated hardware's cycle), answer() encodes the drive's actual frame.
+  void sample() noexcept;
+  bool answer(DeviceFrames& actual) noexcept;
+  // PositionFeedback::kSeparateEncoder: this cycle's G1_XIST1 of the separate encoder and whether it works
+  // (G1_ZSW.15 clear), between sample() and answer() (the actor's measured speed for NIST_B, the stop
+  // reactions and TarOffs).
+  void separate_encoder_count(std::uint32_t xist1, bool encoder_ok) noexcept;
   void write_setpoint(const DeviceFrames& setpoint) noexcept override;
   LinkHealth link_health() const noexcept override { return health_; }
 
@@ -47,6 +69,9 @@ class Telegram3Actor : public DriveAdapter {
   bool ready_input() const noexcept { return ready_; }
   std::int64_t counter_value() const noexcept { return extension_.value(); }
   double measured_speed_rpm() const noexcept { return speed_rpm_; }
+  // The position feedback is missing or failed this cycle (the counter's signal supervision, or the separate
+  // encoder's error bit): the measured speed means nothing.
+  bool encoder_fault() const noexcept { return encoder_fault_; }
 
  protected:
   // `hardware` must outlive the actor. The derived constructor calls drive_outputs() once its own members
@@ -67,6 +92,7 @@ class Telegram3Actor : public DriveAdapter {
 
  private:
   void update_state(std::uint16_t stw1) noexcept;
+  void update_position(std::uint32_t raw) noexcept;
   void update_encoder(std::uint16_t control, telegrams::ActualSignals& a) noexcept;
 
   io::HardwareIo* hw_;
@@ -87,8 +113,11 @@ class Telegram3Actor : public DriveAdapter {
 
   io::CounterExtension extension_;
   std::int64_t previous_count_ = 0;
+  bool position_valid_ = false;
+  bool encoder_fault_ = false;  // the first sample sets previous_count_ (no speed step at start)
   double speed_rpm_ = 0.0;
   std::uint16_t encoder_status_ = 0;
+  std::uint16_t reported_error_ = 0;  // shown in XIST2 while G1_ZSW.15 is set
   std::int64_t latched_ = 0;
 
   telegrams::SignOfLifeGenerator sign_of_life_{};

@@ -37,6 +37,9 @@ struct CounterSample {
   std::uint32_t count = 0;
   std::uint32_t latched_count = 0;
   bool latched = false;
+  // The card's encoder-signal supervision (wire break, missing line-driver signals, as a TM PosInput's
+  // "encoder signal fault"): no encoder connected, or one that stopped working; the count does not follow.
+  bool signal_lost = false;
 };
 
 enum class IoStatus : std::uint8_t { kOk, kReadFailed, kWriteFailed, kDeviceLost };

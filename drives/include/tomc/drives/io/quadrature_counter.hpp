@@ -25,6 +25,9 @@ class QuadratureCounter {
   // The shaft moved to `shaft_revolutions` (from where the last update left it).
   void update(double shaft_revolutions) noexcept;
   void arm_zero_mark() noexcept;
+  // A broken or unplugged encoder: while disconnected the count stands whatever the shaft does (counts are
+  // lost) and the card's signal supervision reports it (CounterSample::signal_lost).
+  void set_connected(bool connected) noexcept;
   CounterSample sample() const noexcept { return sample_; }
   double counts_per_revolution() const noexcept { return 4.0 * parameters_.lines_per_revolution; }
 
@@ -35,6 +38,7 @@ class QuadratureCounter {
   double origin_revolutions_ = 0.0;  // shaft position where the counter started at count_at_power_on
   double shaft_ = 0.0;
   bool armed_ = false;
+  bool connected_ = true;
   CounterSample sample_{};
 };
 

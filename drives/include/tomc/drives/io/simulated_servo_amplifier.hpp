@@ -37,6 +37,11 @@ class SimulatedServoAmplifier final : public SimulatedDriverCard {
   void set_analog_output(Channel channel, std::int32_t code) noexcept override;
   void set_pulse_frequency(Channel, double) noexcept override {}  // no pulse input on a servo amplifier
 
+  // ---- simulation control ----
+  // Unplug (false) or plug in the encoder on the counter: the count stands while unplugged and the card
+  // reports the lost signal (CounterSample::signal_lost).
+  void set_encoder_connected(bool connected) noexcept { counter_.set_connected(connected); }
+
   // ---- observation ----
   double input_volts() const noexcept { return applied_volts_; }
   const MotorLoad& mechanics() const noexcept { return mechanics_; }
