@@ -20,6 +20,7 @@
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
 #include "tomc/techobjects/axis/job_table.hpp"
+#include "tomc/techobjects/axis/torque_data.hpp"
 #include "tomc/techobjects/axis/torque_limiting.hpp"
 #include "tomc/techobjects/datablocks/to_types.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
@@ -202,6 +203,16 @@ class AxisCore {
                     std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
                     bool simulation) const noexcept;
 
+  // The start conditions of MC_TorqueAdditive / MC_TorqueRange this core knows (the TO adds its drive's).
+  TorqueDataConditions torque_data_conditions() const noexcept {
+    TorqueDataConditions c;
+    c.enabled = phase == PowerPhase::kEnabled;
+    c.stop_locks = stop_locks();
+    c.panel = control.program_job_rejection();
+    c.torque_limiting = torque.active;
+    return c;
+  }
+
   // ---- state: read by the TO's own steps ----
   AlarmList alarms;
   JobTable<AxisJobKind> jobs;
@@ -215,6 +226,7 @@ class AxisCore {
   CommunicationTimes communication_times{};        // in force
   CommunicationTimes communication_times_start{};  // written by MC_WriteParameter, taken at restart
   TorqueLimitingRequest torque{};                  // MC_TorqueLimiting
+  TorqueDataJobs torque_data{};                    // MC_TorqueAdditive, MC_TorqueRange (telegram 750)
   bool in_limitation = false;                      // MELDW.1 while limiting
   std::uint64_t cycle = 0;                         // interpolator cycles + 1 (0 = never)
   double ipo_cycle_s = 0.001;

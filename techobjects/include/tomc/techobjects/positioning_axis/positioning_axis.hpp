@@ -91,6 +91,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // 9.18.3 MC_TorqueLimiting, called on every user-program cycle: Mode 0 limits the drive's torque/force
   // through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
+  // 9.18.1 MC_TorqueAdditive / 9.18.2 MC_TorqueRange: telegram 750 (torque_data.hpp), on every call.
+  TorqueJobState torque_additive(const TorqueAdditiveInputs& in) noexcept;
+  TorqueJobState torque_range(const TorqueRangeInputs& in) noexcept;
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
@@ -252,8 +255,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
   void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
   void apply_clamping() noexcept;         // MC_Interpolator: the jobs a clamping ends
+  // MC_Servo: telegram 750 — M_ADD1 (MC_TorqueAdditive + torque precontrol), the limits of MC_TorqueRange,
+  // StatusTorqueData from M_ACT (spec 01 §8.12/§8.13, spec 02 §7.5).
+  void servo_torque_data() noexcept;
+  double torque_precontrol() const noexcept;  // spec 02 §7.5, technology units (0 when not in force)
+  TorqueDataConditions torque_data_conditions() const noexcept;
   // TorqueLimiting.PositionBasedMonitorings = 0: following-error and positioning monitoring are off while
-  // limiting is active (spec 01 §8.10).
+  // MC_TorqueLimiting or MC_TorqueRange limits (spec 01 §8.10, §8.13; decision Q4).
   bool position_monitorings_suspended() const noexcept;
   // servo
   void read_actual_values() noexcept;
