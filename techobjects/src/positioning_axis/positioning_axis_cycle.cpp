@@ -235,8 +235,11 @@ void PositioningAxis::servo_monitoring() noexcept {
     reversal_cam_seen_ = r.reversal_cam;
   }
 
-  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
-  if (modulo() && std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
+  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15):
+  // alarm 412, the axis is disabled. A possible leading value is limited to half of it instead (spec 01
+  // §8.6).
+  if (modulo() && !possible_leading_value_ &&
+      std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
     raise(kAlarmModuloTooFast);
 
   db_.ActualAcceleration = (actual_velocity_ - last_actual_velocity_) / servo_cycle_s_ * units_.acceleration;

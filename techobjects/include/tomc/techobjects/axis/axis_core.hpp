@@ -161,7 +161,9 @@ class AxisCore {
   bool held_off() const noexcept {
     return acknowledged_at_ != 0 && cycle < acknowledged_at_ + kReRaiseHoldOffCycles;
   }
-  // MC_Servo: drive alarms 401/402/405/406, once per appearance and again after MC_Reset's hold-off.
+  // MC_Servo: drive alarms 401/402/405/406, once per appearance and again after MC_Reset's hold-off; the
+  // drive-autonomous stops of Safety Integrated (spec 01 §4, seed §6.3.1): 421 when the drive coasts (OFF2,
+  // STO) and 550 when it brakes on its OFF3 ramp (SS1/SS2) while the TO asks for operation.
   void supervise_drive(const DriveConnection& drive) noexcept;
   // What the drive is asked to do: remove enable -> Actor.RemoveEnableReaction (OFF1/OFF2/OFF3), enabling
   // and enabled -> operate, disabling and disabled per StopMode.
@@ -233,11 +235,13 @@ class AxisCore {
   double enable_timeout_s = 2.0;
 
  private:
+  bool safe_stop(const DriveConnection& drive) noexcept;  // 421/550; TRUE while a safe stop is seen
   // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
   static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;
   std::uint64_t acknowledged_at_ = 0;
   bool drive_fault_seen_ = false;
+  std::uint8_t safe_stop_seen_ = 0;  // drive-autonomous stops seen (kSafeTorqueOff, kSafeStopRamp bits)
   bool reset_pending_ = false;
   bool restart_requested_ = false;
   JobId reset_job_ = 0;

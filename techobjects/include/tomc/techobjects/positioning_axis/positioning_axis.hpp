@@ -112,6 +112,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // ---- as a leading value (spec 07 §1.3, §1.4) ----
   LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
   ModuloRange leading_value_modulo() const noexcept override;
+  // A synchronous axis has this axis among its possible leading values: a modulo axis is then limited to
+  // half a modulo length per servo cycle with warning 501 instead of alarm 412 at a whole one (spec 01 §8.6).
+  void set_possible_leading_value() noexcept override { possible_leading_value_ = true; }
 
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
@@ -236,8 +239,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void plan_positioning(double v) noexcept;
   double override_factor() const noexcept { return core_.override_factor(db_.Override); }
   double velocity_limit() const noexcept {  // position units / s
-    return AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units());
+    return std::min(AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units()),
+                    modulo_leader_velocity_limit());
   }
+  // Modulo.Length / (2·T_servo) on a modulo axis that is a possible leading value (spec 01 §8.6), else ∞.
+  double modulo_leader_velocity_limit() const noexcept;
   DynamicUnits dynamic_units() const noexcept { return {units_.velocity, units_.acceleration}; }
   double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept { core_.raise(number, additional); }
@@ -353,9 +359,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
 
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
   ClampingMonitor clamping_{};
-  bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
-  bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
-  bool drive_has_meldw_ = false;      // ... and MELDW
+  bool clamp_abort_pending_ = false;     // MC_Servo detected the stop; MC_Interpolator ends the jobs
+  bool drive_has_momred_ = false;        // the drive telegram carries MOMRED (resolved at construction)
+  bool drive_has_meldw_ = false;         // ... and MELDW
+  bool possible_leading_value_ = false;  // interconnected as a leading value of a synchronous axis
 
   SynchronousSlot* synchronous_ = nullptr;
 };
