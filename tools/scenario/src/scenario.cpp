@@ -243,10 +243,12 @@ enum class FaultKind : std::uint8_t {
   kTechnologyAlarm,
   kFixedStopBreak,
   kAmplifierFault,  // analog/stepper drive: the servo amplifier or stepper driver faults, its ready drops
+  kSafeTorqueOff,   // Safety Integrated STO selected in the drive (alarm 421)
+  kSafeStop1,       // Safety Integrated SS1 selected in the drive (alarm 550, then 421)
 };
-constexpr std::array<std::string_view, 7> kFaultNames{
-    "drive_fault",      "encoder_error",    "sign_of_life_freeze", "link_loss",
-    "technology_alarm", "fixed_stop_break", "amplifier_fault"};
+constexpr std::array<std::string_view, 9> kFaultNames{
+    "drive_fault",      "encoder_error",   "sign_of_life_freeze", "link_loss",  "technology_alarm",
+    "fixed_stop_break", "amplifier_fault", "safe_torque_off",     "safe_stop_1"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -809,6 +811,8 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
       case FaultKind::kLinkLoss:
       case FaultKind::kFixedStopBreak:
       case FaultKind::kAmplifierFault:
+      case FaultKind::kSafeTorqueOff:
+      case FaultKind::kSafeStop1:
         break;
       case FaultKind::kTechnologyAlarm: {
         // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
@@ -1057,6 +1061,13 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         case FaultKind::kFixedStopBreak:
           d.break_fixed_stops(on);
           break;
+        case FaultKind::kSafeTorqueOff:
+        case FaultKind::kSafeStop1: {
+          using Safety = drives::SimulatedDrive::SafetyFunction;
+          const Safety selected = event.fault == FaultKind::kSafeTorqueOff ? Safety::kSto : Safety::kSs1;
+          d.select_safety_function(on ? selected : Safety::kNone);
+          break;
+        }
         case FaultKind::kTechnologyAlarm:
         case FaultKind::kAmplifierFault:
           break;  // handled above
