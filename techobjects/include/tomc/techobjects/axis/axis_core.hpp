@@ -42,12 +42,14 @@ enum class AxisJobKind : std::uint8_t {
   kStop,
   kSetAxisStw,
   kWriteParameter,
-  kGearIn,          // synchronous axis: MC_GearIn
-  kGearInPos,       // MC_GearInPos, once synchronization started
-  kGearInVelocity,  // MC_GearInVelocity
-  kGearOut,         // MC_GearOut, once desynchronization started
-  kCamIn,           // MC_CamIn
-  kCamOut,          // MC_CamOut, once desynchronization started
+  kGearIn,            // synchronous axis: MC_GearIn
+  kGearInPos,         // MC_GearInPos, once synchronization started
+  kGearInVelocity,    // MC_GearInVelocity
+  kGearOut,           // MC_GearOut, once desynchronization started
+  kCamIn,             // MC_CamIn
+  kCamOut,            // MC_CamOut, once desynchronization started
+  kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
+  kHaltSuperimposed,  // MC_HaltSuperimposed
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).
