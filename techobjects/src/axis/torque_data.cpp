@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "tomc/techobjects/axis/enable_level_job.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/telegrams/normalisation.hpp"
 
@@ -16,24 +17,6 @@ constexpr double kMaxTorqueValue = 1.0e12;  // the range of Value, UpperLimit, L
 
 bool valid_value(double v) noexcept {
   return std::isfinite(v) && std::fabs(v) <= kMaxTorqueValue;
-}
-
-// One call of an Enable-level torque instruction: Enable FALSE ends the job and clears its error; with Enable
-// TRUE the inputs are checked on every call, the start conditions only while the job is not yet active, and
-// an error stays until Enable goes FALSE (decision F7, as MC_TorqueLimiting).
-template <typename Check, typename Take>
-TorqueJobState enable_call(bool enable, bool& active, std::uint16_t& error, Check check, Take take) noexcept {
-  if (!enable) {
-    active = false;
-    error = 0;
-    return TorqueJobState{};
-  }
-  if (error == 0) {
-    error = check(active);
-    active = error == 0;
-    if (active) take();
-  }
-  return TorqueJobState{active, error != 0, error};
 }
 
 // The start conditions both jobs share (spec 01 §8.12/§8.13, §12 scenario 36): the panel's master control,
@@ -50,25 +33,26 @@ std::uint16_t start_rejection(const TorqueDataConditions& c) noexcept {
 
 TorqueJobState TorqueDataJobs::additive(const TorqueAdditiveInputs& in,
                                         const TorqueDataConditions& c) noexcept {
-  return enable_call(
+  enable_level_call(
       in.Enable, additive_active_, additive_error_,
-      [&](bool active) -> std::uint16_t {
+      [&]() -> std::uint16_t {
         if (!valid_value(in.Value)) return error_id::kInvalidTorqueValue;
-        if (active) return 0;
+        if (additive_active_) return 0;  // the start conditions only when it starts (decision Q1)
         if (const auto e = start_rejection(c)) return e;
         if (!c.enabled) return error_id::kAxisNotEnabled;  // spec 03 §4.18.1 prerequisites
         return 0;
       },
       [&] { value_ = static_cast<float>(in.Value); });
+  return TorqueJobState{additive_active_, additive_error_ != 0, additive_error_};
 }
 
 TorqueJobState TorqueDataJobs::range(const TorqueRangeInputs& in, const TorqueDataConditions& c) noexcept {
-  return enable_call(
+  enable_level_call(
       in.Enable, range_active_, range_error_,
-      [&](bool active) -> std::uint16_t {
+      [&]() -> std::uint16_t {
         if (!valid_value(in.UpperLimit) || !valid_value(in.LowerLimit) || in.UpperLimit <= in.LowerLimit)
           return error_id::kInvalidTorqueRange;
-        if (active) return 0;
+        if (range_active_) return 0;
         if (const auto e = start_rejection(c)) return e;
         // Mutual exclusion (spec 03 §4.18.2 priority, seed L10730): neither replaces the other.
         if (c.torque_limiting) return error_id::kTorqueLimitingExclusion;
@@ -79,6 +63,7 @@ TorqueJobState TorqueDataJobs::range(const TorqueRangeInputs& in, const TorqueDa
         limit_pos_ = tg::torque_to_n2(c.inverse ? -in.LowerLimit : in.UpperLimit, c.reference);
         limit_neg_ = tg::torque_to_n2(c.inverse ? -in.UpperLimit : in.LowerLimit, c.reference);
       });
+  return TorqueJobState{range_active_, range_error_ != 0, range_error_};
 }
 
 void TorqueDataJobs::write(DriveConnection& drive, double total, double reference,

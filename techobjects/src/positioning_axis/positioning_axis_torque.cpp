@@ -56,14 +56,11 @@ bool PositioningAxis::position_monitorings_suspended() const noexcept {
 }
 
 TorqueDataConditions PositioningAxis::torque_data_conditions() const noexcept {
-  TorqueDataConditions c = core_.torque_data_conditions();
-  c.drive = device_ != nullptr;
-  c.telegram_750 = c.drive && drive_.device_config().supplementary_telegram == 750;
   const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
-  c.reference = linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
-                             : db_.Actor.DriveParameter.ReferenceTorque;
-  c.inverse = db_.Actor.InverseDirection;
-  return c;
+  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+                                      linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
+                                                   : db_.Actor.DriveParameter.ReferenceTorque,
+                                      db_.Actor.InverseDirection);
 }
 
 TorqueJobState PositioningAxis::torque_additive(const TorqueAdditiveInputs& in) noexcept {

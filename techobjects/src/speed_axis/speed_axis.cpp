@@ -237,12 +237,8 @@ TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) n
 }
 
 TorqueDataConditions SpeedAxis::torque_data_conditions() const noexcept {
-  TorqueDataConditions c = core_.torque_data_conditions();
-  c.drive = device_ != nullptr;
-  c.telegram_750 = c.drive && drive_.device_config().supplementary_telegram == 750;
-  c.reference = db_.Actor.DriveParameter.ReferenceTorque;
-  c.inverse = db_.Actor.InverseDirection;
-  return c;
+  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+                                      db_.Actor.DriveParameter.ReferenceTorque, db_.Actor.InverseDirection);
 }
 
 TorqueJobState SpeedAxis::torque_additive(const TorqueAdditiveInputs& in) noexcept {

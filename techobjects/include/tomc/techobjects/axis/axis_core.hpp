@@ -207,13 +207,19 @@ class AxisCore {
                     std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
                     bool simulation) const noexcept;
 
-  // The start conditions of MC_TorqueAdditive / MC_TorqueRange this core knows (the TO adds its drive's).
-  TorqueDataConditions torque_data_conditions() const noexcept {
+  // The start conditions of MC_TorqueAdditive / MC_TorqueRange (torque_data.hpp): `drive` nullptr on a
+  // virtual or simulated axis; `reference` and `inverse` give the wire format of the limits.
+  TorqueDataConditions torque_data_conditions(const DriveConnection* drive, double reference,
+                                              bool inverse) const noexcept {
     TorqueDataConditions c;
+    c.drive = drive != nullptr;
+    c.telegram_750 = drive != nullptr && drive->device_config().supplementary_telegram == 750;
     c.enabled = phase == PowerPhase::kEnabled;
     c.stop_locks = stop_locks();
     c.panel = control.program_job_rejection();
     c.torque_limiting = torque.active;
+    c.reference = reference;
+    c.inverse = inverse;
     return c;
   }
 
