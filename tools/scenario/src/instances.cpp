@@ -14,11 +14,13 @@
 #include "tomc/instructions/mc_gear_out.hpp"
 #include "tomc/instructions/mc_get_cam_value.hpp"
 #include "tomc/instructions/mc_halt.hpp"
+#include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_interpolate_cam.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
+#include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
@@ -365,6 +367,38 @@ const auto kMoveRelative = std::to_array<Parameter<MoveRelative<Axis>>>({
 });
 
 template <typename Axis>
+using MoveSuperimposed = instructions::MC_MoveSuperimposed<Axis>;
+template <typename Axis>
+const auto kMoveSuperimposed = std::to_array<Parameter<MoveSuperimposed<Axis>>>({
+    in("Execute", &MoveSuperimposed<Axis>::Execute),
+    in("Distance", &MoveSuperimposed<Axis>::Distance),
+    in("VelocityDiff", &MoveSuperimposed<Axis>::VelocityDiff),
+    in("Acceleration", &MoveSuperimposed<Axis>::Acceleration),
+    in("Deceleration", &MoveSuperimposed<Axis>::Deceleration),
+    in("Jerk", &MoveSuperimposed<Axis>::Jerk),
+    out("Done", &MoveSuperimposed<Axis>::Done),
+    out("Busy", &MoveSuperimposed<Axis>::Busy),
+    out("CommandAborted", &MoveSuperimposed<Axis>::CommandAborted),
+    out("Error", &MoveSuperimposed<Axis>::Error),
+    out("ErrorID", &MoveSuperimposed<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using HaltSuperimposed = instructions::MC_HaltSuperimposed<Axis>;
+template <typename Axis>
+const auto kHaltSuperimposed = std::to_array<Parameter<HaltSuperimposed<Axis>>>({
+    in("Execute", &HaltSuperimposed<Axis>::Execute),
+    in("Deceleration", &HaltSuperimposed<Axis>::Deceleration),
+    in("Jerk", &HaltSuperimposed<Axis>::Jerk),
+    in("AbortAcceleration", &HaltSuperimposed<Axis>::AbortAcceleration),
+    out("Done", &HaltSuperimposed<Axis>::Done),
+    out("Busy", &HaltSuperimposed<Axis>::Busy),
+    out("CommandAborted", &HaltSuperimposed<Axis>::CommandAborted),
+    out("Error", &HaltSuperimposed<Axis>::Error),
+    out("ErrorID", &HaltSuperimposed<Axis>::ErrorID),
+});
+
+template <typename Axis>
 using Home = instructions::MC_Home<Axis>;
 template <typename Axis>
 const auto kHome = std::to_array<Parameter<Home<Axis>>>({
@@ -535,16 +569,47 @@ constexpr std::array<std::string_view, 11> kSpeedAxisInstructions{
     "MC_Halt",           "MC_Stop",           "MC_SetAxisSTW",   "MC_WriteParameter",
     "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 14> kPositioningAxisInstructions{
-    "MC_Power",          "MC_Reset",          "MC_Home",           "MC_Halt",        "MC_MoveAbsolute",
-    "MC_MoveRelative",   "MC_MoveVelocity",   "MC_MoveJog",        "MC_Stop",        "MC_SetAxisSTW",
-    "MC_WriteParameter", "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
+constexpr std::array<std::string_view, 16> kPositioningAxisInstructions{
+    "MC_Power",
+    "MC_Reset",
+    "MC_Home",
+    "MC_Halt",
+    "MC_MoveAbsolute",
+    "MC_MoveRelative",
+    "MC_MoveVelocity",
+    "MC_MoveJog",
+    "MC_MoveSuperimposed",
+    "MC_HaltSuperimposed",
+    "MC_Stop",
+    "MC_SetAxisSTW",
+    "MC_WriteParameter",
+    "MC_TorqueLimiting",
+    "MC_TorqueAdditive",
+    "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 20> kSynchronousAxisInstructions{
-    "MC_Power",          "MC_Reset",        "MC_Home",           "MC_Halt",           "MC_MoveAbsolute",
-    "MC_MoveRelative",   "MC_MoveVelocity", "MC_MoveJog",        "MC_Stop",           "MC_SetAxisSTW",
-    "MC_WriteParameter", "MC_GearIn",       "MC_GearInPos",      "MC_GearInVelocity", "MC_GearOut",
-    "MC_CamIn",          "MC_CamOut",       "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
+constexpr std::array<std::string_view, 22> kSynchronousAxisInstructions{
+    "MC_Power",
+    "MC_Reset",
+    "MC_Home",
+    "MC_Halt",
+    "MC_MoveAbsolute",
+    "MC_MoveRelative",
+    "MC_MoveVelocity",
+    "MC_MoveJog",
+    "MC_MoveSuperimposed",
+    "MC_HaltSuperimposed",
+    "MC_Stop",
+    "MC_SetAxisSTW",
+    "MC_WriteParameter",
+    "MC_GearIn",
+    "MC_GearInPos",
+    "MC_GearInVelocity",
+    "MC_GearOut",
+    "MC_CamIn",
+    "MC_CamOut",
+    "MC_TorqueLimiting",
+    "MC_TorqueAdditive",
+    "MC_TorqueRange",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
@@ -552,11 +617,11 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 15> kPlannedInstructions{
-    "MC_CopyCamData",          "MC_MoveSuperimposed",    "MC_HaltSuperimposed", "MC_PhasingAbsolute",
-    "MC_PhasingRelative",      "MC_OffsetAbsolute",      "MC_OffsetRelative",   "MC_MeasuringInput",
-    "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput", "MC_OutputCam",        "MC_CamTrack",
-    "MC_ReadParameter",        "MC_MotionInVelocity",    "MC_MotionInPosition",
+constexpr std::array<std::string_view, 13> kPlannedInstructions{
+    "MC_CopyCamData",      "MC_PhasingAbsolute", "MC_PhasingRelative",      "MC_OffsetAbsolute",
+    "MC_OffsetRelative",   "MC_MeasuringInput",  "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput",
+    "MC_OutputCam",        "MC_CamTrack",        "MC_ReadParameter",        "MC_MotionInVelocity",
+    "MC_MotionInPosition",
 };
 
 }  // namespace
@@ -633,6 +698,17 @@ std::unique_ptr<Instance> make_motion(std::string_view instruction) {
   return nullptr;
 }
 
+// The instructions of a positioning axis beyond a speed axis' (also those of a synchronous axis).
+template <typename Axis>
+std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
+  if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<Axis>);
+  if (instruction == "MC_MoveRelative") return make(kMoveRelative<Axis>);
+  if (instruction == "MC_MoveSuperimposed") return make(kMoveSuperimposed<Axis>);
+  if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
+  if (instruction == "MC_Home") return make(kHome<Axis>);
+  return make_motion<Axis>(instruction);
+}
+
 }  // namespace
 
 std::unique_ptr<Instance> make_instance(std::string_view instruction, TechnologyObjectKind kind) {
@@ -640,21 +716,15 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
     case TechnologyObjectKind::kSpeedAxis:
       return make_motion<SpeedAxis>(instruction);
     case TechnologyObjectKind::kPositioningAxis:
-      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<PositioningAxis>);
-      if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
-      if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
-      return make_motion<PositioningAxis>(instruction);
+      return make_positioning<PositioningAxis>(instruction);
     case TechnologyObjectKind::kSynchronousAxis:
-      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<SynchronousAxis>);
-      if (instruction == "MC_MoveRelative") return make(kMoveRelative<SynchronousAxis>);
-      if (instruction == "MC_Home") return make(kHome<SynchronousAxis>);
       if (instruction == "MC_GearIn") return make(kGearIn);
       if (instruction == "MC_GearInPos") return make(kGearInPos);
       if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
       if (instruction == "MC_GearOut") return make(kSyncOut<false>);
       if (instruction == "MC_CamIn") return make(kCamIn);
       if (instruction == "MC_CamOut") return make(kSyncOut<true>);
-      return make_motion<SynchronousAxis>(instruction);
+      return make_positioning<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);
       return make_common<ExternalEncoder>(instruction);
