@@ -133,389 +133,389 @@ TEST(CApi, SuperimposedMoveThroughTheGeneratedStructs) {
   EXPECT_FALSE(halt.Busy);
   // A speed axis has no superimposed motion (spec 01 §1.3 table).
   EXPECT_EQ(tomc_MC_HaltSuperimposed_call(m.conveyor, &halt), TOMC_ERROR_WRONG_OBJECT_TYPE);
+}
 
-  // MC_TorqueAdditive and MC_TorqueRange through the C structs (spec 03 §4.18.1/§4.18.2) on a drive with
-  // supplementary telegram 750: StatusTorqueData shows them; the speed axis without 750 rejects with 16#8144.
-  TEST(CApi, TorqueJobsOnTelegram750) {
-    tomc_runtime* runtime = nullptr;
-    ASSERT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
+// MC_TorqueAdditive and MC_TorqueRange through the C structs (spec 03 §4.18.1/§4.18.2) on a drive with
+// supplementary telegram 750: StatusTorqueData shows them; the speed axis without 750 rejects with 16#8144.
+TEST(CApi, TorqueJobsOnTelegram750) {
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
       {"name": "Winder", "type": "TO_PositioningAxis",
        "drive": {"adapter": "simulated", "telegram": 3, "supplementary_telegram": 750}},
       {"name": "Conveyor", "type": "TO_SpeedAxis", "drive": {"adapter": "simulated", "telegram": 1}}]})",
-                                  &runtime),
-              TOMC_OK)
-        << last_error();
-    tomc_object* winder = nullptr;
-    tomc_object* conveyor = nullptr;
-    ASSERT_EQ(tomc_runtime_find_object(runtime, "Winder", &winder), TOMC_OK);
-    ASSERT_EQ(tomc_runtime_find_object(runtime, "Conveyor", &conveyor), TOMC_OK);
-    tomc_MC_Power power;
-    tomc_MC_TorqueAdditive additive;
-    tomc_MC_TorqueRange range;
-    tomc_MC_TorqueRange conveyor_range;
-    tomc_MC_Power_init(&power);
-    tomc_MC_TorqueAdditive_init(&additive);
-    tomc_MC_TorqueRange_init(&range);
-    tomc_MC_TorqueRange_init(&conveyor_range);
-    EXPECT_EQ(range.UpperLimit, 1.0e12);  // the manual's defaults
-    EXPECT_EQ(range.LowerLimit, -1.0e12);
-    power.Enable = true;
-    additive.Value = 0.75;
-    range.UpperLimit = 2.0;
-    range.LowerLimit = -1.0;
-    conveyor_range.Enable = true;
-    for (int k = 0; k < 200; ++k) {
-      ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
-      additive.Enable = power.Status;
-      range.Enable = power.Status;
-      ASSERT_EQ(tomc_MC_Power_call(winder, &power), TOMC_OK) << last_error();
-      ASSERT_EQ(tomc_MC_TorqueAdditive_call(winder, &additive), TOMC_OK) << last_error();
-      ASSERT_EQ(tomc_MC_TorqueRange_call(winder, &range), TOMC_OK) << last_error();
-      ASSERT_EQ(tomc_MC_TorqueRange_call(conveyor, &conveyor_range), TOMC_OK) << last_error();
-    }
-    EXPECT_TRUE(additive.Busy);
-    EXPECT_TRUE(range.Busy);
-    EXPECT_EQ(read(winder, "StatusTorqueData.TotalTorqueAdditive"), 0.75);
-    int64_t active = 0;
-    EXPECT_EQ(tomc_read_int(winder, "StatusTorqueData.CommandTorqueRangeActive", &active), TOMC_OK);
-    EXPECT_EQ(active, 1);
-    EXPECT_TRUE(conveyor_range.Error);
-    EXPECT_EQ(conveyor_range.ErrorID, 0x8144);
-    tomc_runtime_destroy(runtime);
+                                &runtime),
+            TOMC_OK)
+      << last_error();
+  tomc_object* winder = nullptr;
+  tomc_object* conveyor = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Winder", &winder), TOMC_OK);
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Conveyor", &conveyor), TOMC_OK);
+  tomc_MC_Power power;
+  tomc_MC_TorqueAdditive additive;
+  tomc_MC_TorqueRange range;
+  tomc_MC_TorqueRange conveyor_range;
+  tomc_MC_Power_init(&power);
+  tomc_MC_TorqueAdditive_init(&additive);
+  tomc_MC_TorqueRange_init(&range);
+  tomc_MC_TorqueRange_init(&conveyor_range);
+  EXPECT_EQ(range.UpperLimit, 1.0e12);  // the manual's defaults
+  EXPECT_EQ(range.LowerLimit, -1.0e12);
+  power.Enable = true;
+  additive.Value = 0.75;
+  range.UpperLimit = 2.0;
+  range.LowerLimit = -1.0;
+  conveyor_range.Enable = true;
+  for (int k = 0; k < 200; ++k) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
+    additive.Enable = power.Status;
+    range.Enable = power.Status;
+    ASSERT_EQ(tomc_MC_Power_call(winder, &power), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueAdditive_call(winder, &additive), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueRange_call(winder, &range), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueRange_call(conveyor, &conveyor_range), TOMC_OK) << last_error();
   }
+  EXPECT_TRUE(additive.Busy);
+  EXPECT_TRUE(range.Busy);
+  EXPECT_EQ(read(winder, "StatusTorqueData.TotalTorqueAdditive"), 0.75);
+  int64_t active = 0;
+  EXPECT_EQ(tomc_read_int(winder, "StatusTorqueData.CommandTorqueRangeActive", &active), TOMC_OK);
+  EXPECT_EQ(active, 1);
+  EXPECT_TRUE(conveyor_range.Error);
+  EXPECT_EQ(conveyor_range.ErrorID, 0x8144);
+  tomc_runtime_destroy(runtime);
+}
 
-  TEST(CApi, WritesFollowTheManualsAccessRules) {
-    Machine m;
-    // DIR: written by the user program, effective at the next MC_Servo.
-    EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", 50.0), TOMC_OK) << last_error();
-    EXPECT_EQ(read(m.slide, "Override.Velocity"), 50.0);
-    // Out of the manual's range 0 .. 200 %: refused, the value unchanged.
-    EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", 250.0), TOMC_ERROR_OUT_OF_RANGE);
-    EXPECT_NE(last_error().find("Slide.Override.Velocity"), std::string::npos) << last_error();
-    EXPECT_NE(last_error().find("200"), std::string::npos) << last_error();
-    EXPECT_EQ(read(m.slide, "Override.Velocity"), 50.0);
-    EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", std::nan("")), TOMC_ERROR_OUT_OF_RANGE);
-    // A status variable (RON), a restart-relevant one (RES) and a status-word bit.
-    EXPECT_EQ(tomc_write_lreal(m.slide, "Position", 1.0), TOMC_ERROR_ACCESS);
-    EXPECT_NE(last_error().find("Slide.Position"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_write_lreal(m.slide, "Mechanics.LeadScrew", 10.0), TOMC_ERROR_ACCESS);
-    EXPECT_EQ(read(m.slide, "Mechanics.LeadScrew"), 5.0);
-    EXPECT_EQ(tomc_write_bool(m.slide, "StatusWord.X0", true), TOMC_ERROR_ACCESS);
-    // BOOL and integers.
-    EXPECT_EQ(tomc_write_bool(m.slide, "PositionLimits_SW.Active", false), TOMC_OK) << last_error();
-    bool active = true;
-    EXPECT_EQ(tomc_read_bool(m.slide, "PositionLimits_SW.Active", &active), TOMC_OK) << last_error();
-    EXPECT_FALSE(active);
+TEST(CApi, WritesFollowTheManualsAccessRules) {
+  Machine m;
+  // DIR: written by the user program, effective at the next MC_Servo.
+  EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", 50.0), TOMC_OK) << last_error();
+  EXPECT_EQ(read(m.slide, "Override.Velocity"), 50.0);
+  // Out of the manual's range 0 .. 200 %: refused, the value unchanged.
+  EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", 250.0), TOMC_ERROR_OUT_OF_RANGE);
+  EXPECT_NE(last_error().find("Slide.Override.Velocity"), std::string::npos) << last_error();
+  EXPECT_NE(last_error().find("200"), std::string::npos) << last_error();
+  EXPECT_EQ(read(m.slide, "Override.Velocity"), 50.0);
+  EXPECT_EQ(tomc_write_lreal(m.slide, "Override.Velocity", std::nan("")), TOMC_ERROR_OUT_OF_RANGE);
+  // A status variable (RON), a restart-relevant one (RES) and a status-word bit.
+  EXPECT_EQ(tomc_write_lreal(m.slide, "Position", 1.0), TOMC_ERROR_ACCESS);
+  EXPECT_NE(last_error().find("Slide.Position"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_write_lreal(m.slide, "Mechanics.LeadScrew", 10.0), TOMC_ERROR_ACCESS);
+  EXPECT_EQ(read(m.slide, "Mechanics.LeadScrew"), 5.0);
+  EXPECT_EQ(tomc_write_bool(m.slide, "StatusWord.X0", true), TOMC_ERROR_ACCESS);
+  // BOOL and integers.
+  EXPECT_EQ(tomc_write_bool(m.slide, "PositionLimits_SW.Active", false), TOMC_OK) << last_error();
+  bool active = true;
+  EXPECT_EQ(tomc_read_bool(m.slide, "PositionLimits_SW.Active", &active), TOMC_OK) << last_error();
+  EXPECT_FALSE(active);
+}
+
+TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
+  Machine m;
+  bool b = false;
+  double x = 0.0;
+  int64_t i = 0;
+  EXPECT_EQ(tomc_read_bool(m.slide, "Position", &b), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_NE(last_error().find("Slide.Position is LREAL, not BOOL"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_read_lreal(m.slide, "StatusWord", &x), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_NE(last_error().find("DWORD"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_read_int(m.slide, "Position", &i), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_EQ(tomc_write_int(m.slide, "Override.Velocity", 5), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_EQ(tomc_write_lreal(m.slide, "PositionLimits_SW.Active", 1.0), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_EQ(tomc_read_lreal(m.slide, "Dynamic.Nothing", &x), TOMC_ERROR_UNKNOWN_PATH);
+  EXPECT_NE(last_error().find("Slide.Dynamic.Nothing: no such variable of TO_PositioningAxis"),
+            std::string::npos)
+      << last_error();
+  EXPECT_EQ(tomc_read_bool(m.slide, "StatusWord.X40", &b), TOMC_ERROR_UNKNOWN_PATH);
+  EXPECT_EQ(tomc_write_lreal(m.slide, "", 1.0), TOMC_ERROR_UNKNOWN_PATH);
+  // A speed axis has no position.
+  EXPECT_EQ(tomc_read_lreal(m.conveyor, "Position", &x), TOMC_ERROR_UNKNOWN_PATH);
+  EXPECT_NE(last_error().find("TO_SpeedAxis"), std::string::npos) << last_error();
+  tomc_object* none = reinterpret_cast<tomc_object*>(&x);
+  EXPECT_EQ(tomc_runtime_find_object(m.runtime, "Table", &none), TOMC_ERROR_UNKNOWN_OBJECT);
+  EXPECT_EQ(none, nullptr);
+  EXPECT_NE(last_error().find("'Table' (have: Slide, Conveyor)"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_runtime_object_at(m.runtime, 2, &none), TOMC_ERROR_UNKNOWN_OBJECT);
+}
+
+TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
+  Machine m;
+  double x = 0.0;
+  bool b = false;
+  int64_t i = 0;
+  size_t n = 0;
+  tomc_object* o = nullptr;
+  tomc_runtime* r = nullptr;
+  const auto refused = [](tomc_status s, const char* function) {
+    EXPECT_EQ(s, TOMC_ERROR_NULL_ARGUMENT) << function;
+    EXPECT_NE(last_error().find(function), std::string::npos) << last_error();
+    EXPECT_NE(last_error().find("is NULL"), std::string::npos) << last_error();
+  };
+  refused(tomc_runtime_create(nullptr, &r), "tomc_runtime_create");
+  refused(tomc_runtime_create(kSlide, nullptr), "tomc_runtime_create");
+  refused(tomc_runtime_create_from_file(nullptr, &r), "tomc_runtime_create_from_file");
+  refused(tomc_runtime_step(nullptr, 1), "tomc_runtime_step");
+  refused(tomc_runtime_start(nullptr), "tomc_runtime_start");
+  refused(tomc_runtime_set_user_program(nullptr, nullptr, nullptr), "tomc_runtime_set_user_program");
+  refused(tomc_runtime_run_realtime(m.runtime, nullptr), "tomc_runtime_run_realtime");
+  refused(tomc_runtime_stop_realtime(nullptr), "tomc_runtime_stop_realtime");
+  refused(tomc_runtime_runner_statistics(m.runtime, nullptr), "tomc_runtime_runner_statistics");
+  refused(tomc_runtime_object_count(nullptr, &n), "tomc_runtime_object_count");
+  refused(tomc_runtime_find_object(m.runtime, nullptr, &o), "tomc_runtime_find_object");
+  refused(tomc_runtime_find_object(nullptr, "Slide", &o), "tomc_runtime_find_object");
+  refused(tomc_read_lreal(nullptr, "Position", &x), "tomc_read_lreal");
+  refused(tomc_read_lreal(m.slide, nullptr, &x), "tomc_read_lreal");
+  refused(tomc_read_lreal(m.slide, "Position", nullptr), "tomc_read_lreal");
+  refused(tomc_read_bool(m.slide, "StatusWord.X0", nullptr), "tomc_read_bool");
+  refused(tomc_read_int(nullptr, "StatusWord", &i), "tomc_read_int");
+  refused(tomc_write_lreal(nullptr, "Override.Velocity", 1.0), "tomc_write_lreal");
+  refused(tomc_write_bool(m.slide, nullptr, b), "tomc_write_bool");
+  refused(tomc_object_alarm_count(nullptr, &n), "tomc_object_alarm_count");
+  refused(tomc_object_alarm(m.slide, 0, nullptr), "tomc_object_alarm");
+  refused(tomc_object_name(nullptr, nullptr), "tomc_object_name");
+  tomc_MC_Power power;
+  tomc_MC_Power_init(&power);
+  refused(tomc_MC_Power_call(nullptr, &power), "MC_Power");
+  refused(tomc_MC_Power_call(m.slide, nullptr), "MC_Power");
+  tomc_MC_Power_init(nullptr);  // does nothing
+  tomc_runtime_destroy(nullptr);
+}
+
+TEST(CApi, StructsOfAnotherLayoutAreRefused) {
+  Machine m;
+  tomc_MC_MoveAbsolute move;
+  std::memset(&move, 0, sizeof move);  // never initialised
+  move.Execute = true;
+  EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.slide, &move), TOMC_ERROR_VERSION);
+  EXPECT_NE(last_error().find("this library expects " + std::to_string(sizeof move)), std::string::npos)
+      << last_error();
+  EXPECT_FALSE(move.Busy);
+  tomc_MC_MoveAbsolute_init(&move);
+  move.header.version = TOMC_ABI_VERSION + 1;  // a program built against a later header
+  EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.slide, &move), TOMC_ERROR_VERSION);
+  tomc_runner_config config{{sizeof(tomc_runner_config) - 8, TOMC_ABI_VERSION}, 0, 0, -1, false};
+  EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_VERSION);
+  tomc_alarm alarm{};
+  EXPECT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_ERROR_VERSION);
+}
+
+TEST(CApi, InstructionsOfAnotherTechnologyObjectTypeAreRefused) {
+  Machine m;
+  tomc_MC_MoveAbsolute move;
+  tomc_MC_MoveAbsolute_init(&move);
+  move.Execute = true;
+  EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.conveyor, &move), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  EXPECT_NE(last_error().find("MC_MoveAbsolute: not an instruction of TO_SpeedAxis (Conveyor)"),
+            std::string::npos)
+      << last_error();
+  tomc_MC_GearIn gear;
+  tomc_MC_GearIn_init(&gear);
+  EXPECT_EQ(tomc_MC_GearIn_call(m.slide, &gear), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  // The speed axis' own instructions work: MC_MoveVelocity at 600 1/min.
+  tomc_MC_Power power;
+  tomc_MC_MoveVelocity velocity;
+  tomc_MC_Power_init(&power);
+  tomc_MC_MoveVelocity_init(&velocity);
+  power.Enable = true;
+  velocity.Velocity = 600.0;
+  for (int i = 0; i < 3000 && !velocity.InVelocity; ++i) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(m.conveyor, &power), TOMC_OK) << last_error();
+    velocity.Execute = power.Status;
+    ASSERT_EQ(tomc_MC_MoveVelocity_call(m.conveyor, &velocity), TOMC_OK) << last_error();
   }
+  EXPECT_TRUE(velocity.InVelocity);
+  EXPECT_NEAR(read(m.conveyor, "Velocity"), 600.0, 1e-9);
+}
 
-  TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
-    Machine m;
-    bool b = false;
-    double x = 0.0;
-    int64_t i = 0;
-    EXPECT_EQ(tomc_read_bool(m.slide, "Position", &b), TOMC_ERROR_WRONG_TYPE);
-    EXPECT_NE(last_error().find("Slide.Position is LREAL, not BOOL"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_read_lreal(m.slide, "StatusWord", &x), TOMC_ERROR_WRONG_TYPE);
-    EXPECT_NE(last_error().find("DWORD"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_read_int(m.slide, "Position", &i), TOMC_ERROR_WRONG_TYPE);
-    EXPECT_EQ(tomc_write_int(m.slide, "Override.Velocity", 5), TOMC_ERROR_WRONG_TYPE);
-    EXPECT_EQ(tomc_write_lreal(m.slide, "PositionLimits_SW.Active", 1.0), TOMC_ERROR_WRONG_TYPE);
-    EXPECT_EQ(tomc_read_lreal(m.slide, "Dynamic.Nothing", &x), TOMC_ERROR_UNKNOWN_PATH);
-    EXPECT_NE(last_error().find("Slide.Dynamic.Nothing: no such variable of TO_PositioningAxis"),
-              std::string::npos)
-        << last_error();
-    EXPECT_EQ(tomc_read_bool(m.slide, "StatusWord.X40", &b), TOMC_ERROR_UNKNOWN_PATH);
-    EXPECT_EQ(tomc_write_lreal(m.slide, "", 1.0), TOMC_ERROR_UNKNOWN_PATH);
-    // A speed axis has no position.
-    EXPECT_EQ(tomc_read_lreal(m.conveyor, "Position", &x), TOMC_ERROR_UNKNOWN_PATH);
-    EXPECT_NE(last_error().find("TO_SpeedAxis"), std::string::npos) << last_error();
-    tomc_object* none = reinterpret_cast<tomc_object*>(&x);
-    EXPECT_EQ(tomc_runtime_find_object(m.runtime, "Table", &none), TOMC_ERROR_UNKNOWN_OBJECT);
-    EXPECT_EQ(none, nullptr);
-    EXPECT_NE(last_error().find("'Table' (have: Slide, Conveyor)"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_runtime_object_at(m.runtime, 2, &none), TOMC_ERROR_UNKNOWN_OBJECT);
-  }
-
-  TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
-    Machine m;
-    double x = 0.0;
-    bool b = false;
-    int64_t i = 0;
-    size_t n = 0;
-    tomc_object* o = nullptr;
-    tomc_runtime* r = nullptr;
-    const auto refused = [](tomc_status s, const char* function) {
-      EXPECT_EQ(s, TOMC_ERROR_NULL_ARGUMENT) << function;
-      EXPECT_NE(last_error().find(function), std::string::npos) << last_error();
-      EXPECT_NE(last_error().find("is NULL"), std::string::npos) << last_error();
-    };
-    refused(tomc_runtime_create(nullptr, &r), "tomc_runtime_create");
-    refused(tomc_runtime_create(kSlide, nullptr), "tomc_runtime_create");
-    refused(tomc_runtime_create_from_file(nullptr, &r), "tomc_runtime_create_from_file");
-    refused(tomc_runtime_step(nullptr, 1), "tomc_runtime_step");
-    refused(tomc_runtime_start(nullptr), "tomc_runtime_start");
-    refused(tomc_runtime_set_user_program(nullptr, nullptr, nullptr), "tomc_runtime_set_user_program");
-    refused(tomc_runtime_run_realtime(m.runtime, nullptr), "tomc_runtime_run_realtime");
-    refused(tomc_runtime_stop_realtime(nullptr), "tomc_runtime_stop_realtime");
-    refused(tomc_runtime_runner_statistics(m.runtime, nullptr), "tomc_runtime_runner_statistics");
-    refused(tomc_runtime_object_count(nullptr, &n), "tomc_runtime_object_count");
-    refused(tomc_runtime_find_object(m.runtime, nullptr, &o), "tomc_runtime_find_object");
-    refused(tomc_runtime_find_object(nullptr, "Slide", &o), "tomc_runtime_find_object");
-    refused(tomc_read_lreal(nullptr, "Position", &x), "tomc_read_lreal");
-    refused(tomc_read_lreal(m.slide, nullptr, &x), "tomc_read_lreal");
-    refused(tomc_read_lreal(m.slide, "Position", nullptr), "tomc_read_lreal");
-    refused(tomc_read_bool(m.slide, "StatusWord.X0", nullptr), "tomc_read_bool");
-    refused(tomc_read_int(nullptr, "StatusWord", &i), "tomc_read_int");
-    refused(tomc_write_lreal(nullptr, "Override.Velocity", 1.0), "tomc_write_lreal");
-    refused(tomc_write_bool(m.slide, nullptr, b), "tomc_write_bool");
-    refused(tomc_object_alarm_count(nullptr, &n), "tomc_object_alarm_count");
-    refused(tomc_object_alarm(m.slide, 0, nullptr), "tomc_object_alarm");
-    refused(tomc_object_name(nullptr, nullptr), "tomc_object_name");
-    tomc_MC_Power power;
-    tomc_MC_Power_init(&power);
-    refused(tomc_MC_Power_call(nullptr, &power), "MC_Power");
-    refused(tomc_MC_Power_call(m.slide, nullptr), "MC_Power");
-    tomc_MC_Power_init(nullptr);  // does nothing
-    tomc_runtime_destroy(nullptr);
-  }
-
-  TEST(CApi, StructsOfAnotherLayoutAreRefused) {
-    Machine m;
-    tomc_MC_MoveAbsolute move;
-    std::memset(&move, 0, sizeof move);  // never initialised
-    move.Execute = true;
-    EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.slide, &move), TOMC_ERROR_VERSION);
-    EXPECT_NE(last_error().find("this library expects " + std::to_string(sizeof move)), std::string::npos)
-        << last_error();
-    EXPECT_FALSE(move.Busy);
-    tomc_MC_MoveAbsolute_init(&move);
-    move.header.version = TOMC_ABI_VERSION + 1;  // a program built against a later header
-    EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.slide, &move), TOMC_ERROR_VERSION);
-    tomc_runner_config config{{sizeof(tomc_runner_config) - 8, TOMC_ABI_VERSION}, 0, 0, -1, false};
-    EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_VERSION);
-    tomc_alarm alarm{};
-    EXPECT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_ERROR_VERSION);
-  }
-
-  TEST(CApi, InstructionsOfAnotherTechnologyObjectTypeAreRefused) {
-    Machine m;
-    tomc_MC_MoveAbsolute move;
-    tomc_MC_MoveAbsolute_init(&move);
-    move.Execute = true;
-    EXPECT_EQ(tomc_MC_MoveAbsolute_call(m.conveyor, &move), TOMC_ERROR_WRONG_OBJECT_TYPE);
-    EXPECT_NE(last_error().find("MC_MoveAbsolute: not an instruction of TO_SpeedAxis (Conveyor)"),
-              std::string::npos)
-        << last_error();
-    tomc_MC_GearIn gear;
-    tomc_MC_GearIn_init(&gear);
-    EXPECT_EQ(tomc_MC_GearIn_call(m.slide, &gear), TOMC_ERROR_WRONG_OBJECT_TYPE);
-    // The speed axis' own instructions work: MC_MoveVelocity at 600 1/min.
-    tomc_MC_Power power;
-    tomc_MC_MoveVelocity velocity;
-    tomc_MC_Power_init(&power);
-    tomc_MC_MoveVelocity_init(&velocity);
-    power.Enable = true;
-    velocity.Velocity = 600.0;
-    for (int i = 0; i < 3000 && !velocity.InVelocity; ++i) {
-      ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
-      ASSERT_EQ(tomc_MC_Power_call(m.conveyor, &power), TOMC_OK) << last_error();
-      velocity.Execute = power.Status;
-      ASSERT_EQ(tomc_MC_MoveVelocity_call(m.conveyor, &velocity), TOMC_OK) << last_error();
-    }
-    EXPECT_TRUE(velocity.InVelocity);
-    EXPECT_NEAR(read(m.conveyor, "Velocity"), 600.0, 1e-9);
-  }
-
-  TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
-    tomc_runtime* r = reinterpret_cast<tomc_runtime*>(&r);
-    EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);
-    EXPECT_EQ(r, nullptr);
-    EXPECT_NE(last_error().find("not valid JSON"), std::string::npos) << last_error();
-    // A number beyond a double (found by machine_config_fuzzer: it was TOMC_ERROR_INTERNAL).
-    EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 2e308, "technology_objects": []})", &r),
-              TOMC_ERROR_CONFIG);
-    EXPECT_NE(last_error().find("number overflow"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_runtime_create("[1, 2]", &r), TOMC_ERROR_CONFIG);
-    EXPECT_EQ(tomc_runtime_create("{}", &r), TOMC_ERROR_CONFIG);
-    EXPECT_NE(last_error().find("technology_objects: expected a non-empty array"), std::string::npos)
-        << last_error();
-    EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 5, "technology_objects": [
+TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
+  tomc_runtime* r = reinterpret_cast<tomc_runtime*>(&r);
+  EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);
+  EXPECT_EQ(r, nullptr);
+  EXPECT_NE(last_error().find("not valid JSON"), std::string::npos) << last_error();
+  // A number beyond a double (found by machine_config_fuzzer: it was TOMC_ERROR_INTERNAL).
+  EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 2e308, "technology_objects": []})", &r), TOMC_ERROR_CONFIG);
+  EXPECT_NE(last_error().find("number overflow"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_runtime_create("[1, 2]", &r), TOMC_ERROR_CONFIG);
+  EXPECT_EQ(tomc_runtime_create("{}", &r), TOMC_ERROR_CONFIG);
+  EXPECT_NE(last_error().find("technology_objects: expected a non-empty array"), std::string::npos)
+      << last_error();
+  EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 5, "technology_objects": [
       {"name": "Slide", "type": "TO_PositioningAxis",
        "config": {"Mechanics.LeadScrew": -5.0, "Mechanics.Nothing": 1, "Position": 3.0},
        "drive": {"adapter": "simulated", "telegram": 3}},
       {"name": "Slide", "type": "TO_Nothing"}], "extra": 1})",
-                                  &r),
-              TOMC_ERROR_CONFIG);
-    EXPECT_EQ(r, nullptr);
-    const std::string e = last_error();
-    for (const char* path : {"extra:", "cycle_time:", "technology_objects[0].config.Mechanics.LeadScrew:",
-                             "technology_objects[0].config.Mechanics.Nothing:",
-                             "technology_objects[0].config.Position:", "technology_objects[1]"}) {
-      EXPECT_NE(e.find(path), std::string::npos) << path << " missing in:\n" << e;
-    }
-    // A cam is a valid machine-file entry but has no C type yet (docs/embedding.md "Not there yet").
-    EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
+                                &r),
+            TOMC_ERROR_CONFIG);
+  EXPECT_EQ(r, nullptr);
+  const std::string e = last_error();
+  for (const char* path : {"extra:", "cycle_time:", "technology_objects[0].config.Mechanics.LeadScrew:",
+                           "technology_objects[0].config.Mechanics.Nothing:",
+                           "technology_objects[0].config.Position:", "technology_objects[1]"}) {
+    EXPECT_NE(e.find(path), std::string::npos) << path << " missing in:\n" << e;
+  }
+  // A cam is a valid machine-file entry but has no C type yet (docs/embedding.md "Not there yet").
+  EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
       {"name": "Knife", "type": "TO_Cam_10k", "Points": [[0, 0], [360, 10]]}]})",
-                                  &r),
-              TOMC_ERROR_CONFIG);
-    EXPECT_NE(
-        last_error().find("technology_objects[0].type: TO_Cam_10k is not yet available through the C ABI"),
-        std::string::npos)
-        << last_error();
-    EXPECT_EQ(tomc_runtime_create_from_file("/nonexistent/machine.json", &r), TOMC_ERROR_SYSTEM);
-    EXPECT_NE(last_error().find("/nonexistent/machine.json: cannot open"), std::string::npos) << last_error();
-  }
+                                &r),
+            TOMC_ERROR_CONFIG);
+  EXPECT_NE(
+      last_error().find("technology_objects[0].type: TO_Cam_10k is not yet available through the C ABI"),
+      std::string::npos)
+      << last_error();
+  EXPECT_EQ(tomc_runtime_create_from_file("/nonexistent/machine.json", &r), TOMC_ERROR_SYSTEM);
+  EXPECT_NE(last_error().find("/nonexistent/machine.json: cannot open"), std::string::npos) << last_error();
+}
 
-  TEST(CApi, TheExamplesMachineFilesLoad) {
-    for (const char* file : {"positioning_machine.json", "gearing_machine.json", "demo_machine.json"}) {
-      tomc_runtime* r = nullptr;
-      // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
-      // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false
-      // positive).
-      std::string path = TOMC_EXAMPLES_DIR;
-      path.append("/").append(file);
-      EXPECT_EQ(tomc_runtime_create_from_file(path.c_str(), &r), TOMC_OK) << file << ": " << last_error();
-      size_t count = 0;
-      EXPECT_EQ(tomc_runtime_object_count(r, &count), TOMC_OK);
-      EXPECT_GE(count, 1u) << file;
-      tomc_runtime_destroy(r);
-    }
-  }
-
-  TEST(CApi, AlarmsOfTheTechnologyObject) {
-    Machine m;
-    PositioningProgram program(400.0);  // beyond the software limit switch at 300 mm
-    for (int i = 0; i < 6000 && !program.move.Error && !program.move.Done; ++i) {
-      ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
-      ASSERT_EQ(program(m.slide), TOMC_OK) << last_error();
-    }
-    EXPECT_TRUE(program.move.Error);
+TEST(CApi, TheExamplesMachineFilesLoad) {
+  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "demo_machine.json"}) {
+    tomc_runtime* r = nullptr;
+    // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
+    // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false
+    // positive).
+    std::string path = TOMC_EXAMPLES_DIR;
+    path.append("/").append(file);
+    EXPECT_EQ(tomc_runtime_create_from_file(path.c_str(), &r), TOMC_OK) << file << ": " << last_error();
     size_t count = 0;
-    ASSERT_EQ(tomc_object_alarm_count(m.slide, &count), TOMC_OK);
-    ASSERT_EQ(count, 1u);
-    tomc_alarm alarm = {TOMC_STRUCT_HEADER(tomc_alarm), 0, 0, 0, 0, 0};
-    ASSERT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_OK) << last_error();
-    EXPECT_EQ(alarm.number, 533u);  // software limit switch reached
-    EXPECT_EQ(alarm.reaction, 2u);  // stop with maximum dynamic values
-    EXPECT_GT(alarm.raised_cycle, 0u);
-    EXPECT_EQ(tomc_object_alarm(m.slide, 1, &alarm), TOMC_ERROR_OUT_OF_RANGE);
-    // MC_Reset acknowledges it.
-    tomc_MC_Reset reset;
-    tomc_MC_Reset_init(&reset);
-    reset.Execute = true;
-    for (int i = 0; i < 100 && !reset.Done; ++i) {
-      ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
-      ASSERT_EQ(tomc_MC_Reset_call(m.slide, &reset), TOMC_OK) << last_error();
+    EXPECT_EQ(tomc_runtime_object_count(r, &count), TOMC_OK);
+    EXPECT_GE(count, 1u) << file;
+    tomc_runtime_destroy(r);
+  }
+}
+
+TEST(CApi, AlarmsOfTheTechnologyObject) {
+  Machine m;
+  PositioningProgram program(400.0);  // beyond the software limit switch at 300 mm
+  for (int i = 0; i < 6000 && !program.move.Error && !program.move.Done; ++i) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(program(m.slide), TOMC_OK) << last_error();
+  }
+  EXPECT_TRUE(program.move.Error);
+  size_t count = 0;
+  ASSERT_EQ(tomc_object_alarm_count(m.slide, &count), TOMC_OK);
+  ASSERT_EQ(count, 1u);
+  tomc_alarm alarm = {TOMC_STRUCT_HEADER(tomc_alarm), 0, 0, 0, 0, 0};
+  ASSERT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_OK) << last_error();
+  EXPECT_EQ(alarm.number, 533u);  // software limit switch reached
+  EXPECT_EQ(alarm.reaction, 2u);  // stop with maximum dynamic values
+  EXPECT_GT(alarm.raised_cycle, 0u);
+  EXPECT_EQ(tomc_object_alarm(m.slide, 1, &alarm), TOMC_ERROR_OUT_OF_RANGE);
+  // MC_Reset acknowledges it.
+  tomc_MC_Reset reset;
+  tomc_MC_Reset_init(&reset);
+  reset.Execute = true;
+  for (int i = 0; i < 100 && !reset.Done; ++i) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Reset_call(m.slide, &reset), TOMC_OK) << last_error();
+  }
+  EXPECT_TRUE(reset.Done);
+  ASSERT_EQ(tomc_object_alarm_count(m.slide, &count), TOMC_OK);
+  EXPECT_EQ(count, 0u);
+}
+
+struct RealtimeProgram {
+  tomc_object* slide = nullptr;
+  PositioningProgram program{10.0};
+  std::atomic<bool> done{false};
+  std::atomic<int> failures{0};
+};
+
+void realtime_user_program(tomc_runtime*, void* context) {
+  auto* p = static_cast<RealtimeProgram*>(context);
+  if (p->program(p->slide) != TOMC_OK) p->failures.fetch_add(1);
+  if (p->program.move.Done) p->done.store(true);
+}
+
+TEST(CApi, RealTimeRunnerRunsTheUserProgramInItsThread) {
+  Machine m;
+  RealtimeProgram program;
+  program.slide = m.slide;
+  ASSERT_EQ(tomc_runtime_set_user_program(m.runtime, realtime_user_program, &program), TOMC_OK);
+  tomc_runner_config config = {TOMC_STRUCT_HEADER(tomc_runner_config), 0, 0, 0, false};
+  config.fifo_priority = 120;
+  EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
+  config.fifo_priority = 0;
+  config.cpu = -2;
+  EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
+  config.cpu = 0;
+  ASSERT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_OK) << last_error();
+  // While it runs, the TOs belong to the runner's thread.
+  double x = 0.0;
+  EXPECT_EQ(tomc_read_lreal(m.slide, "Position", &x), TOMC_ERROR_STATE);
+  EXPECT_NE(last_error().find("user program"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_ERROR_STATE);
+  EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_STATE);
+  tomc_MC_Halt halt;
+  tomc_MC_Halt_init(&halt);
+  EXPECT_EQ(tomc_MC_Halt_call(m.slide, &halt), TOMC_ERROR_STATE);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!program.done.load() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(tomc_runtime_stop_realtime(m.runtime), TOMC_OK) << last_error();
+  EXPECT_TRUE(program.done.load());
+  EXPECT_EQ(program.failures.load(), 0);
+  EXPECT_NEAR(read(m.slide, "Position"), 10.0, 1e-9);
+  tomc_runner_statistics statistics;
+  std::memset(&statistics, 0, sizeof statistics);
+  statistics.header = tomc_struct_header TOMC_STRUCT_HEADER(tomc_runner_statistics);
+  ASSERT_EQ(tomc_runtime_runner_statistics(m.runtime, &statistics), TOMC_OK) << last_error();
+  EXPECT_GT(statistics.cycles, 100u);
+  uint64_t cycles = 0;
+  EXPECT_EQ(tomc_runtime_cycle_count(m.runtime, &cycles), TOMC_OK);
+  EXPECT_EQ(cycles, statistics.cycles);
+  // Stepped again in this thread after the runner.
+  EXPECT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+  EXPECT_EQ(tomc_runtime_stop_realtime(m.runtime), TOMC_ERROR_STATE);
+  EXPECT_EQ(tomc_runtime_set_user_program(m.runtime, nullptr, nullptr), TOMC_ERROR_STATE);
+}
+
+// One HTTP/1.0 GET on 127.0.0.1: the whole answer.
+std::string http_get(int port, const std::string& path) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return {};
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  std::string answer;
+  if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0) {
+    const std::string request =
+        "GET " + path + " HTTP/1.0\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
+    if (::write(fd, request.data(), request.size()) == static_cast<ssize_t>(request.size())) {
+      char buffer[4096];
+      for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
+        answer.append(buffer, static_cast<std::size_t>(n));
     }
-    EXPECT_TRUE(reset.Done);
-    ASSERT_EQ(tomc_object_alarm_count(m.slide, &count), TOMC_OK);
-    EXPECT_EQ(count, 0u);
   }
+  ::close(fd);
+  return answer;
+}
 
-  struct RealtimeProgram {
-    tomc_object* slide = nullptr;
-    PositioningProgram program{10.0};
-    std::atomic<bool> done{false};
-    std::atomic<int> failures{0};
-  };
+TEST(CApi, DiagnosticsServerServesTheMachine) {
+  Machine m;
+  tomc_diagnostics_config config = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), nullptr, 70000, nullptr};
+  EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
+  int32_t port = 0;
+  EXPECT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_ERROR_STATE);
+  config.port = 0;  // any free port on 127.0.0.1
+  ASSERT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_OK) << last_error();
+  EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_STATE);
+  ASSERT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_OK);
+  EXPECT_GT(port, 0);
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 20), TOMC_OK);
+  const std::string objects = http_get(port, "/api/objects");
+  EXPECT_NE(objects.find("200 OK"), std::string::npos) << objects.substr(0, 200);
+  EXPECT_NE(objects.find("\"Slide\""), std::string::npos);
+  EXPECT_NE(objects.find("\"Conveyor\""), std::string::npos);
+  ASSERT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_OK);
+  EXPECT_EQ(http_get(port, "/api/objects"), "");  // nobody listens any more
+  EXPECT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_ERROR_STATE);
+  EXPECT_EQ(tomc_runtime_step(m.runtime, 5), TOMC_OK);  // the cycle goes on without the server
+}
 
-  void realtime_user_program(tomc_runtime*, void* context) {
-    auto* p = static_cast<RealtimeProgram*>(context);
-    if (p->program(p->slide) != TOMC_OK) p->failures.fetch_add(1);
-    if (p->program.move.Done) p->done.store(true);
-  }
-
-  TEST(CApi, RealTimeRunnerRunsTheUserProgramInItsThread) {
-    Machine m;
-    RealtimeProgram program;
-    program.slide = m.slide;
-    ASSERT_EQ(tomc_runtime_set_user_program(m.runtime, realtime_user_program, &program), TOMC_OK);
-    tomc_runner_config config = {TOMC_STRUCT_HEADER(tomc_runner_config), 0, 0, 0, false};
-    config.fifo_priority = 120;
-    EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
-    config.fifo_priority = 0;
-    config.cpu = -2;
-    EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
-    config.cpu = 0;
-    ASSERT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_OK) << last_error();
-    // While it runs, the TOs belong to the runner's thread.
-    double x = 0.0;
-    EXPECT_EQ(tomc_read_lreal(m.slide, "Position", &x), TOMC_ERROR_STATE);
-    EXPECT_NE(last_error().find("user program"), std::string::npos) << last_error();
-    EXPECT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_ERROR_STATE);
-    EXPECT_EQ(tomc_runtime_run_realtime(m.runtime, &config), TOMC_ERROR_STATE);
-    tomc_MC_Halt halt;
-    tomc_MC_Halt_init(&halt);
-    EXPECT_EQ(tomc_MC_Halt_call(m.slide, &halt), TOMC_ERROR_STATE);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while (!program.done.load() && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    ASSERT_EQ(tomc_runtime_stop_realtime(m.runtime), TOMC_OK) << last_error();
-    EXPECT_TRUE(program.done.load());
-    EXPECT_EQ(program.failures.load(), 0);
-    EXPECT_NEAR(read(m.slide, "Position"), 10.0, 1e-9);
-    tomc_runner_statistics statistics;
-    std::memset(&statistics, 0, sizeof statistics);
-    statistics.header = tomc_struct_header TOMC_STRUCT_HEADER(tomc_runner_statistics);
-    ASSERT_EQ(tomc_runtime_runner_statistics(m.runtime, &statistics), TOMC_OK) << last_error();
-    EXPECT_GT(statistics.cycles, 100u);
-    uint64_t cycles = 0;
-    EXPECT_EQ(tomc_runtime_cycle_count(m.runtime, &cycles), TOMC_OK);
-    EXPECT_EQ(cycles, statistics.cycles);
-    // Stepped again in this thread after the runner.
-    EXPECT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
-    EXPECT_EQ(tomc_runtime_stop_realtime(m.runtime), TOMC_ERROR_STATE);
-    EXPECT_EQ(tomc_runtime_set_user_program(m.runtime, nullptr, nullptr), TOMC_ERROR_STATE);
-  }
-
-  // One HTTP/1.0 GET on 127.0.0.1: the whole answer.
-  std::string http_get(int port, const std::string& path) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0) return {};
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    std::string answer;
-    if (::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0) {
-      const std::string request =
-          "GET " + path + " HTTP/1.0\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
-      if (::write(fd, request.data(), request.size()) == static_cast<ssize_t>(request.size())) {
-        char buffer[4096];
-        for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;)
-          answer.append(buffer, static_cast<std::size_t>(n));
-      }
-    }
-    ::close(fd);
-    return answer;
-  }
-
-  TEST(CApi, DiagnosticsServerServesTheMachine) {
-    Machine m;
-    tomc_diagnostics_config config = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), nullptr, 70000, nullptr};
-    EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_OUT_OF_RANGE);
-    int32_t port = 0;
-    EXPECT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_ERROR_STATE);
-    config.port = 0;  // any free port on 127.0.0.1
-    ASSERT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_OK) << last_error();
-    EXPECT_EQ(tomc_runtime_serve_diagnostics(m.runtime, &config), TOMC_ERROR_STATE);
-    ASSERT_EQ(tomc_runtime_diagnostics_port(m.runtime, &port), TOMC_OK);
-    EXPECT_GT(port, 0);
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 20), TOMC_OK);
-    const std::string objects = http_get(port, "/api/objects");
-    EXPECT_NE(objects.find("200 OK"), std::string::npos) << objects.substr(0, 200);
-    EXPECT_NE(objects.find("\"Slide\""), std::string::npos);
-    EXPECT_NE(objects.find("\"Conveyor\""), std::string::npos);
-    ASSERT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_OK);
-    EXPECT_EQ(http_get(port, "/api/objects"), "");  // nobody listens any more
-    EXPECT_EQ(tomc_runtime_stop_diagnostics(m.runtime), TOMC_ERROR_STATE);
-    EXPECT_EQ(tomc_runtime_step(m.runtime, 5), TOMC_OK);  // the cycle goes on without the server
-  }
-
-  TEST(CApi, StatusNamesAndVersion) {
-    EXPECT_STREQ(tomc_status_name(TOMC_ERROR_WRONG_TYPE), "TOMC_ERROR_WRONG_TYPE");
-    EXPECT_STREQ(tomc_status_name(static_cast<tomc_status>(99)), "TOMC_ERROR_UNKNOWN_STATUS");
-    EXPECT_STREQ(tomc_version(), "0.1.0");
-  }
+TEST(CApi, StatusNamesAndVersion) {
+  EXPECT_STREQ(tomc_status_name(TOMC_ERROR_WRONG_TYPE), "TOMC_ERROR_WRONG_TYPE");
+  EXPECT_STREQ(tomc_status_name(static_cast<tomc_status>(99)), "TOMC_ERROR_UNKNOWN_STATUS");
+  EXPECT_STREQ(tomc_version(), "0.1.0");
+}
 
 }  // namespace
