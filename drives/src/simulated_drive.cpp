@@ -246,6 +246,14 @@ void SimulatedDrive::update_state_machine() noexcept {
   }
   if (!cyclic_data_) return;
   const bool standstill = std::fabs(mechanics_.motor_speed_rpm()) < p_.standstill_threshold_rpm;
+  // Safety Integrated (spec 01 §4 table): STO = OFF2 at once; SS1 = OFF3 ramp, at standstill STO.
+  safe_torque_off_ = safety_ == SafetyFunction::kSto ||
+                     (safety_ == SafetyFunction::kSs1 && (safe_torque_off_ || standstill));
+  if (safe_torque_off_) {
+    effective &= static_cast<std::uint16_t>(~0x0002u);
+  } else if (safety_ == SafetyFunction::kSs1) {
+    effective &= static_cast<std::uint16_t>(~0x0004u);
+  }
   tg::DriveState next = tg::next_drive_state(state_, effective, standstill);
   // A present fault inhibits switching on: the drive ends in S1 once its fault reaction is complete.
   if (fault_code_ != 0 && (next == tg::DriveState::kS2ReadyForSwitchingOn ||
@@ -558,6 +566,13 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
       // In fault the drive shows OFF2 and OFF3 active (switching on inhibited), as 0x0248 of spec 06
       // TV24/TV26.
       if (fault) zsw1 &= static_cast<std::uint16_t>(~0x0030u);
+      // A drive-autonomous stop shows as OFF2 (STO) or OFF3 (SS1 ramp) active although STW1 does not ask for
+      // it.
+      if (safe_torque_off_) {
+        zsw1 &= static_cast<std::uint16_t>(~0x0010u);
+      } else if (safety_ == SafetyFunction::kSs1) {
+        zsw1 &= static_cast<std::uint16_t>(~0x0020u);
+      }
       const double deviation = std::fabs(cycle_speed_setpoint_rpm_ - speed_rpm);
       if (state_ == tg::DriveState::kS4Operation && deviation < p_.speed_deviation_tolerance_rpm)
         zsw1 |= 0x0100u;

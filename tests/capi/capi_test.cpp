@@ -135,6 +135,56 @@ TEST(CApi, SuperimposedMoveThroughTheGeneratedStructs) {
   EXPECT_EQ(tomc_MC_HaltSuperimposed_call(m.conveyor, &halt), TOMC_ERROR_WRONG_OBJECT_TYPE);
 }
 
+// MC_TorqueAdditive and MC_TorqueRange through the C structs (spec 03 §4.18.1/§4.18.2) on a drive with
+// supplementary telegram 750: StatusTorqueData shows them; the speed axis without 750 rejects with 16#8144.
+TEST(CApi, TorqueJobsOnTelegram750) {
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
+      {"name": "Winder", "type": "TO_PositioningAxis",
+       "drive": {"adapter": "simulated", "telegram": 3, "supplementary_telegram": 750}},
+      {"name": "Conveyor", "type": "TO_SpeedAxis", "drive": {"adapter": "simulated", "telegram": 1}}]})",
+                                &runtime),
+            TOMC_OK)
+      << last_error();
+  tomc_object* winder = nullptr;
+  tomc_object* conveyor = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Winder", &winder), TOMC_OK);
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Conveyor", &conveyor), TOMC_OK);
+  tomc_MC_Power power;
+  tomc_MC_TorqueAdditive additive;
+  tomc_MC_TorqueRange range;
+  tomc_MC_TorqueRange conveyor_range;
+  tomc_MC_Power_init(&power);
+  tomc_MC_TorqueAdditive_init(&additive);
+  tomc_MC_TorqueRange_init(&range);
+  tomc_MC_TorqueRange_init(&conveyor_range);
+  EXPECT_EQ(range.UpperLimit, 1.0e12);  // the manual's defaults
+  EXPECT_EQ(range.LowerLimit, -1.0e12);
+  power.Enable = true;
+  additive.Value = 0.75;
+  range.UpperLimit = 2.0;
+  range.LowerLimit = -1.0;
+  conveyor_range.Enable = true;
+  for (int k = 0; k < 200; ++k) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
+    additive.Enable = power.Status;
+    range.Enable = power.Status;
+    ASSERT_EQ(tomc_MC_Power_call(winder, &power), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueAdditive_call(winder, &additive), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueRange_call(winder, &range), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_TorqueRange_call(conveyor, &conveyor_range), TOMC_OK) << last_error();
+  }
+  EXPECT_TRUE(additive.Busy);
+  EXPECT_TRUE(range.Busy);
+  EXPECT_EQ(read(winder, "StatusTorqueData.TotalTorqueAdditive"), 0.75);
+  int64_t active = 0;
+  EXPECT_EQ(tomc_read_int(winder, "StatusTorqueData.CommandTorqueRangeActive", &active), TOMC_OK);
+  EXPECT_EQ(active, 1);
+  EXPECT_TRUE(conveyor_range.Error);
+  EXPECT_EQ(conveyor_range.ErrorID, 0x8144);
+  tomc_runtime_destroy(runtime);
+}
+
 TEST(CApi, WritesFollowTheManualsAccessRules) {
   Machine m;
   // DIR: written by the user program, effective at the next MC_Servo.

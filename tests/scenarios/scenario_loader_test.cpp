@@ -672,9 +672,11 @@ TEST(ScenarioLoader, FaultEvents) {
             "timeline[1].inject.target: unknown technology object 'Axis2'");
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1"}})")),
             "timeline[1].inject.fault: missing");
-  EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
-            "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
-            "link_loss, technology_alarm, fixed_stop_break, amplifier_fault, encoder_signal_lost");
+  EXPECT_EQ(
+      problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "fire"}})")),
+      "timeline[1].inject.fault: 'fire' is not one of drive_fault, encoder_error, sign_of_life_freeze, "
+      "link_loss, technology_alarm, fixed_stop_break, amplifier_fault, encoder_signal_lost, safe_torque_off, "
+      "safe_stop_1");
   EXPECT_EQ(problem_of(with_event(
                 R"({"cycle": 1, "inject": {"target": "Axis1", "fault": "drive_fault", "code": 0}})")),
             "timeline[1].inject.code: 0 out of range 1..4294967295");

@@ -43,12 +43,14 @@ inline drives::SimulatedDriveParameters linear_drive() {
 struct PositioningAxisMachine {
   explicit PositioningAxisMachine(techobjects::PositioningAxisData data = linear_axis_data(),
                                   drives::SimulatedDriveParameters drive_parameters = linear_drive(),
-                                  std::uint16_t telegram = 3, bool with_drive = true)
+                                  std::uint16_t telegram = 3, bool with_drive = true,
+                                  std::uint16_t supplementary = 0)
       : runtime(techobjects::RuntimeConfig{drive_parameters.servo_cycle_s, 1, 1}) {
     techobjects::DeviceIo* io = nullptr;
     if (with_drive) {
       drives::DeviceConfig device;
       device.drive_telegram = telegram;
+      device.supplementary_telegram = supplementary;  // 0 or 750 (torque data)
       auto owned = std::make_unique<drives::SimulatedDrive>(device, drive_parameters);
       drive = owned.get();
       io = &runtime.add_device(std::move(owned));

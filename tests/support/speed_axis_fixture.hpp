@@ -22,12 +22,14 @@ using techobjects::SpeedAxis;
 
 struct SpeedAxisMachine {
   explicit SpeedAxisMachine(std::uint16_t telegram = 2, techobjects::SpeedAxisData data = {},
-                            drives::SimulatedDriveParameters drive_parameters = {}, bool with_drive = true)
+                            drives::SimulatedDriveParameters drive_parameters = {}, bool with_drive = true,
+                            std::uint16_t supplementary = 0)
       : runtime(techobjects::RuntimeConfig{drive_parameters.servo_cycle_s, 1, 1}) {
     techobjects::DeviceIo* io = nullptr;
     if (with_drive) {
       drives::DeviceConfig device;
       device.drive_telegram = telegram;
+      device.supplementary_telegram = supplementary;  // 0 or 750 (torque data)
       auto owned = std::make_unique<drives::SimulatedDrive>(device, drive_parameters);
       drive = owned.get();
       io = &runtime.add_device(std::move(owned));

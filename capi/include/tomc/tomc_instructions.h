@@ -292,6 +292,37 @@ typedef struct tomc_MC_TorqueLimiting {
 TOMC_API void tomc_MC_TorqueLimiting_init(tomc_MC_TorqueLimiting* fb);
 TOMC_API tomc_status tomc_MC_TorqueLimiting_call(tomc_object* axis, tomc_MC_TorqueLimiting* fb);
 
+/* MC_TorqueAdditive (spec 03 §4.18.1) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_TorqueAdditive {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Value;
+  /* outputs */
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_TorqueAdditive;
+TOMC_API void tomc_MC_TorqueAdditive_init(tomc_MC_TorqueAdditive* fb);
+TOMC_API tomc_status tomc_MC_TorqueAdditive_call(tomc_object* axis, tomc_MC_TorqueAdditive* fb);
+
+/* MC_TorqueRange (spec 03 §4.18.2) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_TorqueRange {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double UpperLimit;
+  double LowerLimit;
+  /* outputs */
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_TorqueRange;
+TOMC_API void tomc_MC_TorqueRange_init(tomc_MC_TorqueRange* fb);
+TOMC_API tomc_status tomc_MC_TorqueRange_call(tomc_object* axis, tomc_MC_TorqueRange* fb);
+
 /* MC_GearIn (spec 07 §2.1) on TO_SynchronousAxis. */
 typedef struct tomc_MC_GearIn {
   tomc_struct_header header; /* set by the init function */

@@ -252,11 +252,31 @@ void AxisCore::supervise_drive(const DriveConnection& drive) noexcept {
   if (fault == CommunicationFault::kLinkLost && drive.cycles_without_fresh_frame() > 0)
     raise(kAlarmDriveCommunication);
   if (fault == CommunicationFault::kSignOfLifeFailed) raise(kAlarmDriveSignOfLife);
+  if (safe_stop(drive)) return;  // 421/550 name the cause; 402 would only repeat it
   // The drive left operation on its own while the TO is enabled.
   if (phase == PowerPhase::kEnabled && reaction_in_force == AlarmReaction::kNone &&
       fault == CommunicationFault::kNone && !drive.in_operation()) {
     raise(kAlarmDriveNotReady);
   }
+}
+
+bool AxisCore::safe_stop(const DriveConnection& drive) noexcept {
+  constexpr std::uint8_t kSafeTorqueOff = 1;
+  constexpr std::uint8_t kSafeStopRamp = 2;
+  // Only a drive that was told to operate stops autonomously: OFF2/OFF3 active in ZSW1 while the STW1 of the
+  // last cycles asked for none of them (the drive-side Safety Integrated reaction, spec 01 §4 table). A drive
+  // fault shows both bits as well (spec 06 TV24): that is alarm 401.
+  const bool operating = phase == PowerPhase::kEnabled && drive.requested() == tg::DriveRequest::kOperate &&
+                         drive.communication_fault() == CommunicationFault::kNone;
+  const auto& status = drive.drive_status();
+  std::uint8_t now = 0;
+  if (operating && status.coast_stop_active) now |= kSafeTorqueOff;
+  if (operating && status.quick_stop_active) now |= kSafeStopRamp;
+  const std::uint8_t appeared = static_cast<std::uint8_t>(now & ~safe_stop_seen_);
+  safe_stop_seen_ = now;
+  if (appeared & kSafeTorqueOff) raise(kAlarmDriveSto);      // reaction remove enable
+  if (appeared & kSafeStopRamp) raise(kAlarmDriveSafeStop);  // reaction follow setpoint
+  return now != 0;
 }
 
 tg::DriveRequest AxisCore::drive_request(std::int32_t remove_enable_reaction) const noexcept {

@@ -154,6 +154,14 @@ std::string_view describe(std::uint16_t id) noexcept {
     case kInvalidClampingConfiguration:
       return "fixed-stop detection: PositionTolerance must be below FollowingErrorDeviation, which must be "
              "below the maximum following error";
+    case kTorqueLimitingExclusion:
+      return "MC_TorqueRange and MC_TorqueLimiting exclude each other: the other one limits the torque";
+    case kNoTorqueData:
+      return "the drive has no supplementary telegram 750 (torque data)";
+    case kInvalidTorqueRange:
+      return "invalid torque/force range (not finite, outside 1E12, or UpperLimit not above LowerLimit)";
+    case kInvalidTorqueValue:
+      return "invalid additive torque/force (not finite or outside 1E12)";
     default:
       return "unknown ErrorID";
   }

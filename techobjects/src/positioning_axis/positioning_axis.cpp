@@ -213,8 +213,22 @@ bool PositioningAxis::homed() const noexcept {
 std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, double acceleration,
                                                                double deceleration, double jerk,
                                                                ProfileLimits& out) noexcept {
-  return core_.resolve_dynamics(velocity, acceleration, deceleration, jerk, db_.DynamicDefaults,
-                                db_.DynamicLimits, dynamic_units(), out);
+  auto error = core_.resolve_dynamics(velocity, acceleration, deceleration, jerk, db_.DynamicDefaults,
+                                      db_.DynamicLimits, dynamic_units(), out);
+  // A modulo axis that leads a synchronous axis moves at most half a modulo length per servo cycle (spec 01
+  // §8.6): the velocity is limited, with warning 501 when the job asked for more (MoveVelocity and Jog, which
+  // pass NaN, compare their own velocity with out.velocity).
+  const double leader_limit = modulo_leader_velocity_limit();
+  if (!error && out.velocity > leader_limit) {
+    if (!std::isnan(velocity)) raise(kAlarmDynamicsLimitedVelocity);
+    out.velocity = leader_limit;
+  }
+  return error;
+}
+
+double PositioningAxis::modulo_leader_velocity_limit() const noexcept {
+  if (!possible_leading_value_ || !modulo()) return std::numeric_limits<double>::infinity();
+  return db_.Modulo.Length / (2.0 * servo_cycle_s_);
 }
 
 std::array<RunningJob, 5> PositioningAxis::running_jobs(std::size_t& n) const noexcept {

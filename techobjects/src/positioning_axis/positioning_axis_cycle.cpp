@@ -60,6 +60,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   control();
   servo_monitoring();
   servo_torque_limiting();
+  servo_torque_data();
   homing_observe();
   if (retained_.valid && device_ != nullptr) {
     // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
@@ -83,12 +84,6 @@ void PositioningAxis::read_actual_values() noexcept {
   db_.StatusDrive.CommunicationOK = drive_.communication_ok();
   db_.StatusDrive.Error = drive_.drive_status().state == tg::DriveState::kFault;
   db_.ActualSpeed = drive_.actual_speed_rpm();
-  if (drive_.device_config().supplementary_telegram == 750) {
-    const double sign = db_.Actor.InverseDirection ? -1.0 : 1.0;
-    db_.StatusTorqueData.ActualTorque = sign * tg::n2_to_torque(drive_.supplementary_actual().M_ACT,
-                                                                db_.Actor.DriveParameter.ReferenceTorque);
-  }
-
   encoder_.read(drive_, device_->fresh);
   const bool encoder_error = encoder_.error();
   auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
@@ -241,8 +236,11 @@ void PositioningAxis::servo_monitoring() noexcept {
     reversal_cam_seen_ = r.reversal_cam;
   }
 
-  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15).
-  if (modulo() && std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
+  // A modulo axis faster than one modulo length per servo cycle cannot be resolved (spec 04 §8 rule 15):
+  // alarm 412, the axis is disabled. A possible leading value is limited to half of it instead (spec 01
+  // §8.6).
+  if (modulo() && !possible_leading_value_ &&
+      std::fabs(actual_velocity_) > db_.Modulo.Length / servo_cycle_s_)
     raise(kAlarmModuloTooFast);
 
   db_.ActualAcceleration = (actual_velocity_ - last_actual_velocity_) / servo_cycle_s_ * units_.acceleration;

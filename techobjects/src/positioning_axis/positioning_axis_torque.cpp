@@ -1,10 +1,13 @@
 // TO_PositioningAxis: MC_TorqueLimiting — force/torque limiting (Mode 0) and fixed-stop detection with
 // clamping (Mode 1), spec 01 §8.10/§8.11, spec 03 §4.18.3, seed 004 §6.7.9.1/§6.7.9.2. Decisions F1–F7.
+// Telegram 750: MC_TorqueAdditive, MC_TorqueRange, torque precontrol, StatusTorqueData (decisions Q1–Q6).
 #include <cmath>
+#include <numbers>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
+#include "tomc/telegrams/normalisation.hpp"
 
 namespace tomc::techobjects {
 
@@ -33,6 +36,8 @@ std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInp
       return error_id::kInvalidClampingConfiguration;
     }
   }
+  // Mutual exclusion with MC_TorqueRange (spec 03 §4.18.3 priority).
+  if (!core_.torque.active && core_.torque_data.range_active()) return error_id::kTorqueLimitingExclusion;
   return 0;
 }
 
@@ -45,8 +50,63 @@ TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs&
 }
 
 bool PositioningAxis::position_monitorings_suspended() const noexcept {
-  return core_.torque.active && db_.TorqueLimiting.PositionBasedMonitorings ==
-                                    static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
+  return (core_.torque.active || core_.torque_data.range_active()) &&
+         db_.TorqueLimiting.PositionBasedMonitorings ==
+             static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
+}
+
+TorqueDataConditions PositioningAxis::torque_data_conditions() const noexcept {
+  const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+                                      linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
+                                                   : db_.Actor.DriveParameter.ReferenceTorque,
+                                      db_.Actor.InverseDirection);
+}
+
+TorqueJobState PositioningAxis::torque_additive(const TorqueAdditiveInputs& in) noexcept {
+  return core_.torque_data.additive(in, torque_data_conditions());
+}
+
+TorqueJobState PositioningAxis::torque_range(const TorqueRangeInputs& in) noexcept {
+  return core_.torque_data.range(in, torque_data_conditions());
+}
+
+double PositioningAxis::torque_precontrol() const noexcept {
+  // Only with Mode 1, in position-controlled operation of a drive that follows the TO's setpoint (spec 02
+  // §7.5; a virtual or simulated axis has no drive: "precontrol has no effect", spec 01 §2.5).
+  if (db_.TorquePreControl.Mode != static_cast<std::int32_t>(TorquePreControlMode::kAccelerationBased) ||
+      device_ == nullptr || !position_controlled_ || follows_actual() || !core_.drive_follows_setpoint())
+    return 0.0;
+  TorquePrecontrolMechanics m;
+  m.linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+  m.motor_inertia =
+      m.linear_motor ? db_.Actor.LinearMotorDriveParameter.MotorMass : db_.Actor.DriveParameter.MotorInertia;
+  m.load_inertia = db_.Actor.LoadInertia;
+  if (db_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kLinear)) {
+    const auto metres = length_unit_scale(db_.Units.LengthUnit);
+    m.metres_or_radians_per_unit = metres ? metres->base : 0.0;
+  } else {
+    m.metres_or_radians_per_unit = 2.0 * std::numbers::pi / units_.units_per_revolution;
+  }
+  m.motor_revolutions_per_unit = encoder_.chain().scaling().motor_revolutions_per_unit();
+  m.scale_percent = db_.TorquePreControl.Scale;
+  // The setpoint acceleration after the dynamic filter, the one the position controller uses (eq. 6).
+  return precontrol_torque(filtered_.acceleration, m);
+}
+
+void PositioningAxis::servo_torque_data() noexcept {
+  auto& status = db_.StatusTorqueData;
+  status.CommandAdditiveTorqueActive = core_.torque_data.additive_active() ? 1 : 0;
+  status.CommandTorqueRangeActive = core_.torque_data.range_active() ? 1 : 0;
+  const TorqueDataConditions c = torque_data_conditions();
+  const double total = c.telegram_750 ? core_.torque_data.additive_value() + torque_precontrol() : 0.0;
+  // A linear motor has force where a standard motor has torque (spec 04 §4.7).
+  const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+  (linear_motor ? status.TotalForceAdditive : status.TotalTorqueAdditive) = total;
+  if (!c.telegram_750) return;
+  core_.torque_data.write(drive_, total, c.reference, c.inverse);
+  (linear_motor ? status.ActualForce : status.ActualTorque) =
+      (c.inverse ? -1.0 : 1.0) * telegrams::n2_to_torque(drive_.supplementary_actual().M_ACT, c.reference);
 }
 
 void PositioningAxis::servo_torque_limiting() noexcept {

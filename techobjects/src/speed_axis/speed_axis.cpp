@@ -228,10 +228,25 @@ TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) n
         return error_id::kAxisBlockedByAlarm;
     }
     if (device_ != nullptr && !drive_has_momred_) return error_id::kNoTorqueReduction;  // F1
+    // Mutual exclusion with MC_TorqueRange (spec 03 §4.18.3 priority).
+    if (!core_.torque.active && core_.torque_data.range_active()) return error_id::kTorqueLimitingExclusion;
     return 0;
   });
   s.InLimitation = core_.torque.active && core_.in_limitation;
   return s;
+}
+
+TorqueDataConditions SpeedAxis::torque_data_conditions() const noexcept {
+  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+                                      db_.Actor.DriveParameter.ReferenceTorque, db_.Actor.InverseDirection);
+}
+
+TorqueJobState SpeedAxis::torque_additive(const TorqueAdditiveInputs& in) noexcept {
+  return core_.torque_data.additive(in, torque_data_conditions());
+}
+
+TorqueJobState SpeedAxis::torque_range(const TorqueRangeInputs& in) noexcept {
+  return core_.torque_data.range(in, torque_data_conditions());
 }
 
 // =========================================================================================================
@@ -297,6 +312,9 @@ void SpeedAxis::write_setpoint() noexcept {
       torque_output &&
       drive_torque_limit(command_, drive_.drive_actual(), core_.torque, motor_limit,
                          db_.Actor.DriveParameter.ReferenceTorque, drive_has_momred_, drive_has_meldw_);
+  // Telegram 750 (spec 01 §8.12/§8.13): MC_TorqueAdditive and MC_TorqueRange; no precontrol on a speed axis.
+  core_.torque_data.write(drive_, core_.torque_data.additive_value(),
+                          db_.Actor.DriveParameter.ReferenceTorque, db_.Actor.InverseDirection);
   drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
   command_.speed_rpm = rpm;
   drive_.write(command_);
@@ -427,6 +445,8 @@ void SpeedAxis::update_status() noexcept {
   std::uint32_t ww = 0;
   core_.update_words(sw, sw2, ew, ww, db_.ErrorDetail, db_.Simulation.Mode == kModeOn);
   const bool enabled = test(sw, StatusWordBit::kEnable);
+  db_.StatusTorqueData.CommandAdditiveTorqueActive = core_.torque_data.additive_active() ? 1 : 0;
+  db_.StatusTorqueData.CommandTorqueRangeActive = core_.torque_data.range_active() ? 1 : 0;
   // SA: Done = motion finished and setpoint velocity 0 (spec 04 §8 rule 2).
   assign(sw, StatusWordBit::kDone, !generator_active_ && std::fabs(setpoint_.velocity) < kStandstillEpsilon);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);

@@ -9,8 +9,15 @@ SynchronousAxis::SynchronousAxis(std::string name, DeviceIo* device, const Posit
                                  std::vector<LeadingValueInterconnection> leaders,
                                  const DriveConnectionConfig& drive)
     : PositioningAxis(std::move(name), device, start_values, drive),
-      operation_(FollowingAxis(*this), this->name(), std::move(leaders)) {
+      operation_(FollowingAxis(*this), this->name(), mark_leaders(std::move(leaders))) {
   attach_synchronous(operation_);
+}
+
+std::vector<LeadingValueInterconnection> SynchronousAxis::mark_leaders(
+    std::vector<LeadingValueInterconnection> leaders) noexcept {
+  for (auto& l : leaders)
+    if (l.source != nullptr) l.source->set_possible_leading_value();
+  return leaders;
 }
 
 double SynchronousAxis::read(std::string_view path) const noexcept {

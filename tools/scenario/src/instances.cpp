@@ -28,7 +28,9 @@
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_torque_additive.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
+#include "tomc/instructions/mc_torque_range.hpp"
 #include "tomc/instructions/mc_write_parameter.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
@@ -302,6 +304,29 @@ const auto kTorqueLimiting = std::to_array<Parameter<TorqueLimiting<Axis>>>({
     out("Busy", &TorqueLimiting<Axis>::Busy),
     out("Error", &TorqueLimiting<Axis>::Error),
     out("ErrorID", &TorqueLimiting<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using TorqueAdditive = instructions::MC_TorqueAdditive<Axis>;
+template <typename Axis>
+const auto kTorqueAdditive = std::to_array<Parameter<TorqueAdditive<Axis>>>({
+    in("Enable", &TorqueAdditive<Axis>::Enable),
+    in("Value", &TorqueAdditive<Axis>::Value),
+    out("Busy", &TorqueAdditive<Axis>::Busy),
+    out("Error", &TorqueAdditive<Axis>::Error),
+    out("ErrorID", &TorqueAdditive<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using TorqueRange = instructions::MC_TorqueRange<Axis>;
+template <typename Axis>
+const auto kTorqueRange = std::to_array<Parameter<TorqueRange<Axis>>>({
+    in("Enable", &TorqueRange<Axis>::Enable),
+    in("UpperLimit", &TorqueRange<Axis>::UpperLimit),
+    in("LowerLimit", &TorqueRange<Axis>::LowerLimit),
+    out("Busy", &TorqueRange<Axis>::Busy),
+    out("Error", &TorqueRange<Axis>::Error),
+    out("ErrorID", &TorqueRange<Axis>::ErrorID),
 });
 
 template <typename Axis>
@@ -617,11 +642,12 @@ const auto kGetCamLeadingValue = std::to_array<Parameter<GetCamLeadingValue>>({
 });
 
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
-constexpr std::array<std::string_view, 9> kSpeedAxisInstructions{
-    "MC_Power", "MC_Reset",      "MC_MoveVelocity",   "MC_MoveJog",        "MC_Halt",
-    "MC_Stop",  "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
+constexpr std::array<std::string_view, 11> kSpeedAxisInstructions{
+    "MC_Power",          "MC_Reset",          "MC_MoveVelocity", "MC_MoveJog",
+    "MC_Halt",           "MC_Stop",           "MC_SetAxisSTW",   "MC_WriteParameter",
+    "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 14> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 16> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -636,8 +662,10 @@ constexpr std::array<std::string_view, 14> kPositioningAxisInstructions{
     "MC_SetAxisSTW",
     "MC_WriteParameter",
     "MC_TorqueLimiting",
+    "MC_TorqueAdditive",
+    "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 25> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 27> kSynchronousAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -663,6 +691,8 @@ constexpr std::array<std::string_view, 25> kSynchronousAxisInstructions{
     "MC_OffsetRelative",
     "MC_LeadingValueAdditive",
     "MC_TorqueLimiting",
+    "MC_TorqueAdditive",
+    "MC_TorqueRange",
 };
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
@@ -670,10 +700,10 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 11> kPlannedInstructions{
-    "MC_CopyCamData",          "MC_TorqueAdditive",      "MC_TorqueRange",      "MC_MeasuringInput",
-    "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput", "MC_OutputCam",        "MC_CamTrack",
-    "MC_ReadParameter",        "MC_MotionInVelocity",    "MC_MotionInPosition",
+constexpr std::array<std::string_view, 9> kPlannedInstructions{
+    "MC_CopyCamData",         "MC_MeasuringInput",   "MC_MeasuringInputCyclic",
+    "MC_AbortMeasuringInput", "MC_OutputCam",        "MC_CamTrack",
+    "MC_ReadParameter",       "MC_MotionInVelocity", "MC_MotionInPosition",
 };
 
 }  // namespace
@@ -745,6 +775,8 @@ std::unique_ptr<Instance> make_motion(std::string_view instruction) {
   if (instruction == "MC_Stop") return make(kStop<Axis>);
   if (instruction == "MC_SetAxisSTW") return make(kSetAxisStw<Axis>);
   if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<Axis>);
+  if (instruction == "MC_TorqueAdditive") return make(kTorqueAdditive<Axis>);
+  if (instruction == "MC_TorqueRange") return make(kTorqueRange<Axis>);
   return nullptr;
 }
 

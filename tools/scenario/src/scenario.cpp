@@ -245,10 +245,12 @@ enum class FaultKind : std::uint8_t {
   kAmplifierFault,     // analog/stepper drive: the servo amplifier or stepper driver faults, its ready drops
   kEncoderSignalLost,  // analog drive: the encoder on the card's counter is unplugged (count stands, signal
                        // lost)
+  kSafeTorqueOff,      // Safety Integrated STO selected in the drive (alarm 421)
+  kSafeStop1,          // Safety Integrated SS1 selected in the drive (alarm 550, then 421)
 };
-constexpr std::array<std::string_view, 8> kFaultNames{
-    "drive_fault",      "encoder_error",    "sign_of_life_freeze", "link_loss",
-    "technology_alarm", "fixed_stop_break", "amplifier_fault",     "encoder_signal_lost"};
+constexpr std::array<std::string_view, 10> kFaultNames{
+    "drive_fault",      "encoder_error",   "sign_of_life_freeze", "link_loss",       "technology_alarm",
+    "fixed_stop_break", "amplifier_fault", "encoder_signal_lost", "safe_torque_off", "safe_stop_1"};
 
 struct SetItem {
   std::size_t to = 0;
@@ -820,6 +822,8 @@ void Scenario::Impl::load_fault_event(ObjectReader& r, Event& event, bool inject
       case FaultKind::kFixedStopBreak:
       case FaultKind::kAmplifierFault:
       case FaultKind::kEncoderSignalLost:
+      case FaultKind::kSafeTorqueOff:
+      case FaultKind::kSafeStop1:
         break;
       case FaultKind::kTechnologyAlarm: {
         // A technology alarm as if its cause had occurred (SpeedAxis::inject_alarm); it ends by MC_Reset.
@@ -1073,6 +1077,13 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         case FaultKind::kFixedStopBreak:
           d.break_fixed_stops(on);
           break;
+        case FaultKind::kSafeTorqueOff:
+        case FaultKind::kSafeStop1: {
+          using Safety = drives::SimulatedDrive::SafetyFunction;
+          const Safety selected = event.fault == FaultKind::kSafeTorqueOff ? Safety::kSto : Safety::kSs1;
+          d.select_safety_function(on ? selected : Safety::kNone);
+          break;
+        }
         case FaultKind::kTechnologyAlarm:
         case FaultKind::kAmplifierFault:
         case FaultKind::kEncoderSignalLost:

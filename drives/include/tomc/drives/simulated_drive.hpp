@@ -43,6 +43,14 @@ class SimulatedDrive final : public DriveAdapter {
   // The machine's fixed stops give way (a broken stop, a workpiece that yields): the load passes them.
   void break_fixed_stops(bool broken) noexcept { mechanics_.break_fixed_stops(broken); }
 
+  // ---- Safety Integrated functions selected in the drive (spec 01 §4, seed 004 §6.3.1) ----
+  // The drive's own stop reaction, which the TO sees only in ZSW1: STO coasts at once (OFF2: ZSW1.4 = 0,
+  // switching on inhibited); SS1 brakes on the OFF3 ramp (ZSW1.5 = 0) and then switches the torque off (STO).
+  // Deselected, the drive waits in S1 for a new switch-on (STW1.0 0 -> 1).
+  enum class SafetyFunction : std::uint8_t { kNone, kSto, kSs1 };
+  void select_safety_function(SafetyFunction function) noexcept { safety_ = function; }
+  bool safe_torque_off() const noexcept { return safe_torque_off_; }
+
   // ---- simulation control ----
   // Power cycle: the mechanics keep their position, the electronics restart (incremental encoders lose it).
   void power_cycle() noexcept;
@@ -115,6 +123,8 @@ class SimulatedDrive final : public DriveAdapter {
   std::uint32_t injected_fault_ = 0;
   SimulatedDriveParameters::FaultReaction injected_reaction_ = SimulatedDriveParameters::FaultReaction::kOff2;
   bool pulses_enabled_ = false;
+  SafetyFunction safety_ = SafetyFunction::kNone;
+  bool safe_torque_off_ = false;    // STO in effect (selected, or SS1 after its ramp)
   double ramp_setpoint_rpm_ = 0.0;  // ramp-function generator output during OFF1/OFF3
   telegrams::SignOfLifeMonitor master_monitor_{};
   telegrams::SignOfLifeGenerator slave_sign_of_life_{};

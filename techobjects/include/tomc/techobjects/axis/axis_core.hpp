@@ -20,6 +20,7 @@
 #include "tomc/techobjects/axis/job_inputs.hpp"
 #include "tomc/techobjects/axis/job_priority.hpp"
 #include "tomc/techobjects/axis/job_table.hpp"
+#include "tomc/techobjects/axis/torque_data.hpp"
 #include "tomc/techobjects/axis/torque_limiting.hpp"
 #include "tomc/techobjects/datablocks/to_types.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
@@ -165,7 +166,9 @@ class AxisCore {
   bool held_off() const noexcept {
     return acknowledged_at_ != 0 && cycle < acknowledged_at_ + kReRaiseHoldOffCycles;
   }
-  // MC_Servo: drive alarms 401/402/405/406, once per appearance and again after MC_Reset's hold-off.
+  // MC_Servo: drive alarms 401/402/405/406, once per appearance and again after MC_Reset's hold-off; the
+  // drive-autonomous stops of Safety Integrated (spec 01 §4, seed §6.3.1): 421 when the drive coasts (OFF2,
+  // STO) and 550 when it brakes on its OFF3 ramp (SS1/SS2) while the TO asks for operation.
   void supervise_drive(const DriveConnection& drive) noexcept;
   // What the drive is asked to do: remove enable -> Actor.RemoveEnableReaction (OFF1/OFF2/OFF3), enabling
   // and enabled -> operate, disabling and disabled per StopMode.
@@ -207,6 +210,22 @@ class AxisCore {
                     std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
                     bool simulation) const noexcept;
 
+  // The start conditions of MC_TorqueAdditive / MC_TorqueRange (torque_data.hpp): `drive` nullptr on a
+  // virtual or simulated axis; `reference` and `inverse` give the wire format of the limits.
+  TorqueDataConditions torque_data_conditions(const DriveConnection* drive, double reference,
+                                              bool inverse) const noexcept {
+    TorqueDataConditions c;
+    c.drive = drive != nullptr;
+    c.telegram_750 = drive != nullptr && drive->device_config().supplementary_telegram == 750;
+    c.enabled = phase == PowerPhase::kEnabled;
+    c.stop_locks = stop_locks();
+    c.panel = control.program_job_rejection();
+    c.torque_limiting = torque.active;
+    c.reference = reference;
+    c.inverse = inverse;
+    return c;
+  }
+
   // ---- state: read by the TO's own steps ----
   AlarmList alarms;
   JobTable<AxisJobKind> jobs;
@@ -220,17 +239,20 @@ class AxisCore {
   CommunicationTimes communication_times{};        // in force
   CommunicationTimes communication_times_start{};  // written by MC_WriteParameter, taken at restart
   TorqueLimitingRequest torque{};                  // MC_TorqueLimiting
+  TorqueDataJobs torque_data{};                    // MC_TorqueAdditive, MC_TorqueRange (telegram 750)
   bool in_limitation = false;                      // MELDW.1 while limiting
   std::uint64_t cycle = 0;                         // interpolator cycles + 1 (0 = never)
   double ipo_cycle_s = 0.001;
   double enable_timeout_s = 2.0;
 
  private:
+  bool safe_stop(const DriveConnection& drive) noexcept;  // 421/550; TRUE while a safe stop is seen
   // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
   static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;
   std::uint64_t acknowledged_at_ = 0;
   bool drive_fault_seen_ = false;
+  std::uint8_t safe_stop_seen_ = 0;  // drive-autonomous stops seen (kSafeTorqueOff, kSafeStopRamp bits)
   bool reset_pending_ = false;
   bool restart_requested_ = false;
   JobId reset_job_ = 0;

@@ -93,6 +93,15 @@ inline constexpr std::uint16_t kNoTorqueReduction = 0x8141;
 // MC_TorqueLimiting Mode 1: Clamping.PositionTolerance >= Clamping.FollowingErrorDeviation, or the
 // following-error monitoring's MaxValue <= Clamping.FollowingErrorDeviation (spec 01 §8.11)
 inline constexpr std::uint16_t kInvalidClampingConfiguration = 0x8142;
+// MC_TorqueRange while MC_TorqueLimiting limits, and MC_TorqueLimiting while MC_TorqueRange limits (spec 03
+// §4.18.2/§4.18.3: "rejected with an error", no number given)
+inline constexpr std::uint16_t kTorqueLimitingExclusion = 0x8143;
+// MC_TorqueAdditive / MC_TorqueRange on a drive without supplementary telegram 750 (spec 01 §12 scenario 36)
+inline constexpr std::uint16_t kNoTorqueData = 0x8144;
+// MC_TorqueRange: UpperLimit or LowerLimit not finite or outside ±1.0E12, or UpperLimit <= LowerLimit
+inline constexpr std::uint16_t kInvalidTorqueRange = 0x8145;
+// MC_TorqueAdditive: Value not finite or outside ±1.0E12
+inline constexpr std::uint16_t kInvalidTorqueValue = 0x8146;
 // Cams, tomc's own: MC_GetCamFollowingValue/LeadingValue on a cam that is not interpolated (the manual names
 // alarm 612 for camming with such a cam, spec 07 §3.2, but no ErrorID for the read instructions)
 inline constexpr std::uint16_t kCamNotInterpolated = 0x8150;

@@ -4,6 +4,7 @@
 // and the clamping state machine of "travel to fixed stop".
 #include <cstdint>
 
+#include "tomc/techobjects/axis/enable_level_job.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 
 namespace tomc::techobjects {
@@ -36,23 +37,16 @@ struct TorqueLimitingRequest {
   std::uint16_t error = 0;       // latched until Enable goes FALSE (decision F7)
   bool stw2_fixed_stop = false;  // STW2.8 set by the limiting (cleared when it ends)
 
-  // One MC_TorqueLimiting call (spec 03 §4.18.3, L3): Enable FALSE ends the job and clears its error; with
-  // Enable TRUE the inputs are checked by `rejection` (0 = accepted) and taken on every call.
+  // One MC_TorqueLimiting call (spec 03 §4.18.3, L3; enable_level_job.hpp): the inputs are checked by
+  // `rejection` (0 = accepted) and taken on every call.
   template <typename Rejection>
   TorqueLimitingState call(const TorqueLimitingInputs& in, Rejection rejection) noexcept {
-    if (!in.Enable) {
-      active = false;
-      error = 0;
-      return TorqueLimitingState{};
-    }
-    if (error == 0) {
-      error = rejection(in);
-      active = error == 0;
-      if (active) {
-        mode = in.Mode;
-        limit = in.Limit;
-      }
-    }
+    enable_level_call(
+        in.Enable, active, error, [&] { return rejection(in); },
+        [&] {
+          mode = in.Mode;
+          limit = in.Limit;
+        });
     TorqueLimitingState s;
     s.Error = error != 0;
     s.ErrorID = error;

@@ -76,6 +76,14 @@ class DriveConnection {
   // ---- MC_Servo ----
   void read() noexcept;                              // first, after the runtime read the actual frames
   void write(const ServoCommand& command) noexcept;  // last: this cycle's setpoints, encoded
+  // Telegram 750 (spec 06 §2.14, §8), before write(): additive torque and torque limits, N2 of the reference
+  // torque. Kept in the setpoint signals themselves, not in ServoCommand, so that no axis carries a copy (the
+  // positioning axis' memory budget); until the first call the limits are ±100 % (TV14).
+  void set_torque_data(std::int16_t m_add1, std::int16_t m_limit_pos, std::int16_t m_limit_neg) noexcept {
+    supplementary_sp_.M_ADD1 = m_add1;
+    supplementary_sp_.M_LIMIT_POS = m_limit_pos;
+    supplementary_sp_.M_LIMIT_NEG = m_limit_neg;
+  }
 
   // ---- what the TO asks of the drive ----
   void request(telegrams::DriveRequest request) noexcept { request_ = request; }

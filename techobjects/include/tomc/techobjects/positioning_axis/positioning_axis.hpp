@@ -94,6 +94,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // 9.18.3 MC_TorqueLimiting, called on every user-program cycle: Mode 0 limits the drive's torque/force
   // through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
+  // 9.18.1 MC_TorqueAdditive / 9.18.2 MC_TorqueRange: telegram 750 (torque_data.hpp), on every call.
+  TorqueJobState torque_additive(const TorqueAdditiveInputs& in) noexcept;
+  TorqueJobState torque_range(const TorqueRangeInputs& in) noexcept;
   // MC_Home.ReferenceMarkPosition of the last completed homing (spec 03 §4.3).
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
@@ -112,6 +115,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // ---- as a leading value (spec 07 §1.3, §1.4) ----
   LeadingValue leading_value(LeadingValueCoupling coupling) const noexcept override;
   ModuloRange leading_value_modulo() const noexcept override;
+  // A synchronous axis has this axis among its possible leading values: a modulo axis is then limited to
+  // half a modulo length per servo cycle with warning 501 instead of alarm 412 at a whole one (spec 01 §8.6).
+  void set_possible_leading_value() noexcept override { possible_leading_value_ = true; }
 
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
@@ -262,8 +268,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void plan_positioning(double v) noexcept;
   double override_factor() const noexcept { return core_.override_factor(db_.Override); }
   double velocity_limit() const noexcept {  // position units / s
-    return AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units());
+    return std::min(AxisCore::velocity_limit(db_.DynamicLimits, dynamic_units()),
+                    modulo_leader_velocity_limit());
   }
+  // Modulo.Length / (2·T_servo) on a modulo axis that is a possible leading value (spec 01 §8.6), else ∞.
+  double modulo_leader_velocity_limit() const noexcept;
   DynamicUnits dynamic_units() const noexcept { return {units_.velocity, units_.acceleration}; }
   double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept { core_.raise(number, additional); }
@@ -281,8 +290,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
   void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
   void apply_clamping() noexcept;         // MC_Interpolator: the jobs a clamping ends
+  // MC_Servo: telegram 750 — M_ADD1 (MC_TorqueAdditive + torque precontrol), the limits of MC_TorqueRange,
+  // StatusTorqueData from M_ACT (spec 01 §8.12/§8.13, spec 02 §7.5).
+  void servo_torque_data() noexcept;
+  double torque_precontrol() const noexcept;  // spec 02 §7.5, technology units (0 when not in force)
+  TorqueDataConditions torque_data_conditions() const noexcept;
   // TorqueLimiting.PositionBasedMonitorings = 0: following-error and positioning monitoring are off while
-  // limiting is active (spec 01 §8.10).
+  // MC_TorqueLimiting or MC_TorqueRange limits (spec 01 §8.10, §8.13; decision Q4).
   bool position_monitorings_suspended() const noexcept;
   // servo
   void read_actual_values() noexcept;
@@ -374,9 +388,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool actual_valid_ = false;
   bool encoder_fault_seen_ = false;
   FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
-  bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
-  bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
-  bool drive_has_meldw_ = false;      // ... and MELDW
+  bool clamp_abort_pending_ = false;     // MC_Servo detected the stop; MC_Interpolator ends the jobs
+  bool drive_has_momred_ = false;        // the drive telegram carries MOMRED (resolved at construction)
+  bool drive_has_meldw_ = false;         // ... and MELDW
+  bool possible_leading_value_ = false;  // interconnected as a leading value of a synchronous axis
   SynchronousSlot* synchronous_ = nullptr;
 };
 

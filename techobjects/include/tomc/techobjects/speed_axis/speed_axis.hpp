@@ -57,6 +57,9 @@ class SpeedAxis final : public AxisObject<SpeedAxisData> {
   // 9.18.3 MC_TorqueLimiting: Mode 0 torque limiting through MOMRED (telegrams 10x); fixed-stop detection
   // (Mode 1) is for positioning and synchronous axes only.
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
+  // 9.18.1 MC_TorqueAdditive / 9.18.2 MC_TorqueRange: telegram 750 (torque_data.hpp), on every call.
+  TorqueJobState torque_additive(const TorqueAdditiveInputs& in) noexcept;
+  TorqueJobState torque_range(const TorqueRangeInputs& in) noexcept;
 
  private:
   using JobKind = AxisJobKind;
@@ -92,6 +95,7 @@ class SpeedAxis final : public AxisObject<SpeedAxisData> {
   double override_factor() const noexcept;
   double velocity_limit() const noexcept;  // rev/s
   bool virtual_axis() const noexcept { return device_ == nullptr; }
+  TorqueDataConditions torque_data_conditions() const noexcept;
 
   ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
 

@@ -37,6 +37,9 @@ class LeadingValueSource {
   // A following axis: the leading value its active synchronous job follows (spec 07 §1.2: a leader that
   // follows its own follower would close a loop, 16#8019). nullptr for every other source.
   virtual const LeadingValueSource* followed_leading_value() const noexcept { return nullptr; }
+  // Called once by each synchronous axis that has this source among its possible leading values (the
+  // interconnection of the configuration, spec 07 §1.3): a positioning axis takes the limit of spec 01 §8.6.
+  virtual void set_possible_leading_value() noexcept {}
 };
 
 }  // namespace tomc::techobjects

@@ -76,6 +76,9 @@ class SynchronousAxis final : public PositioningAxis {
   double read(std::string_view path) const noexcept;
 
  private:
+  // Tells each leading value it is one (spec 01 §8.6), before the operation takes the list over.
+  static std::vector<LeadingValueInterconnection> mark_leaders(
+      std::vector<LeadingValueInterconnection> leaders) noexcept;
   SynchronousOperation operation_;
 };
 
