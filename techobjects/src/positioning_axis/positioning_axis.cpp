@@ -224,7 +224,9 @@ std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const no
   if (motion_.id != 0 && !synchronous_kind(motion_.kind)) {
     running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
                    : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
-                                                    : RunningJob::kBaseMotionActive;
+                   : motion_.kind == JobKind::kMotionInVelocity || motion_.kind == JobKind::kMotionInPosition
+                       ? RunningJob::kMotionIn
+                       : RunningJob::kBaseMotionActive;
   }
   if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
   if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
@@ -239,7 +241,8 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
   ArbitrationContext ctx;
   // C3 "-/N": positioning and MC_Halt end by themselves, MoveVelocity/Jog do not (spec 03 §6.1 [AMB-11]).
   ctx.running_job_ends_by_itself = motion_.kind == JobKind::kMoveAbsolute ||
-                                   motion_.kind == JobKind::kMoveRelative || motion_.kind == JobKind::kHalt;
+                                   motion_.kind == JobKind::kMoveRelative || motion_.kind == JobKind::kHalt ||
+                                   motion_.kind == JobKind::kPositionProfile;
   ctx.virtual_or_simulated_axis = virtual_axis();
   ctx.running_stop_weight = core_.stop.weight;
   const Decision d = arbitrate(row, std::span<const RunningJob>(running.data(), n), ctx);

@@ -448,6 +448,9 @@ void PositioningAxis::generate_setpoint() noexcept {
             end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
             end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
+        if (motion_.kind == JobKind::kPositionProfile) {  // the relative transition ended within this cycle
+          enter_time_profile(profile_time_ - velocity_profile().duration());
+        }
       } else {
         setpoint_ = velocity_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
@@ -469,6 +472,7 @@ void PositioningAxis::generate_setpoint() noexcept {
             positioning_start_pending_ = true;
           }
         }
+        if (motion_.kind == JobKind::kPositionProfile) enter_time_profile();  // absolute transition ended
       } else {
         setpoint_ = position_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
@@ -481,6 +485,12 @@ void PositioningAxis::generate_setpoint() noexcept {
       break;
     case Generator::kSynchronous:
       setpoint_ = synchronous_setpoint();
+      break;
+    case Generator::kTimeProfile:
+      follow_time_profile();
+      break;
+    case Generator::kMotionIn:
+      follow_motion_in();
       break;
   }
   // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
@@ -510,6 +520,9 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
       s = position_profile().at(t);
       s.position += profile_offset_;
     }
+  } else if (generator_ == Generator::kTimeProfile && motion_.kind == JobKind::kPositionProfile) {
+    s = evaluate(*motion_.time_profile, motion_.distance + dt);
+    s.position += motion_.absolute_position;
   }
   return s;
 }
@@ -595,6 +608,7 @@ void PositioningAxis::complete_jobs() noexcept {
       case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
       case JobKind::kMoveAbsolute:
       case JobKind::kMoveRelative:
+      case JobKind::kPositionProfile:
         // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
         if (motion_.interpolation_done && !positioning_start_pending_ &&
             outcome == PositioningOutcome::kDone) {
@@ -604,7 +618,7 @@ void PositioningAxis::complete_jobs() noexcept {
           if (pending_.id != 0) {
             const Motion next = pending_;
             pending_ = Motion{};
-            start_positioning(next);
+            start_motion(next);
           }
         }
         break;
@@ -720,6 +734,13 @@ void PositioningAxis::update_status() noexcept {
   assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
+  // MotionIn (spec 04 §5.1 X31, §4.8 StatusMotionIn.FunctionState)
+  const auto motion_in = motion_.kind == JobKind::kMotionInVelocity ? MotionInFunctionState::kMotionInVelocity
+                         : motion_.kind == JobKind::kMotionInPosition
+                             ? MotionInFunctionState::kMotionInPosition
+                             : MotionInFunctionState::kNone;
+  assign(sw, StatusWordBit::kMotionInCommand, motion_in != MotionInFunctionState::kNone);
+  db_.StatusMotionIn.FunctionState = static_cast<std::int32_t>(motion_in);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
   // ramp passes a = 0 only for an instant).
   const bool constant =
@@ -733,6 +754,12 @@ void PositioningAxis::update_status() noexcept {
   sw |= limit_bits.status_word();
   db_.StatusWord = sw;
   assign(sw2, StatusWord2Bit::kPassingBacklash, backlash_.passing());
+  // MC_PositionProfile (seed 004 §6.8.4): X9 while the job is active, X10 while the setpoint is the
+  // profile's.
+  const bool profile_job = motion_.kind == JobKind::kPositionProfile;
+  assign(sw2, StatusWord2Bit::kPositionProfileCommand, profile_job);
+  assign(sw2, StatusWord2Bit::kOnProfile,
+         profile_job && generator_ == Generator::kTimeProfile && !motion_.profile_limited);
   db_.StatusWord2 = sw2;
   db_.ErrorWord = ew;
   db_.WarningWord = ww;

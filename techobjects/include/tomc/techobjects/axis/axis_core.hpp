@@ -41,12 +41,15 @@ enum class AxisJobKind : std::uint8_t {
   kStop,
   kSetAxisStw,
   kWriteParameter,
-  kGearIn,          // synchronous axis: MC_GearIn
-  kGearInPos,       // MC_GearInPos, once synchronization started
-  kGearInVelocity,  // MC_GearInVelocity
-  kGearOut,         // MC_GearOut, once desynchronization started
-  kCamIn,           // MC_CamIn
-  kCamOut,          // MC_CamOut, once desynchronization started
+  kGearIn,            // synchronous axis: MC_GearIn
+  kGearInPos,         // MC_GearInPos, once synchronization started
+  kGearInVelocity,    // MC_GearInVelocity
+  kGearOut,           // MC_GearOut, once desynchronization started
+  kCamIn,             // MC_CamIn
+  kCamOut,            // MC_CamOut, once desynchronization started
+  kPositionProfile,   // MC_PositionProfile (spec 03 §4.7)
+  kMotionInVelocity,  // MC_MotionInVelocity (spec 03 §4.17.1)
+  kMotionInPosition,  // MC_MotionInPosition (spec 03 §4.17.2)
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).
