@@ -33,7 +33,7 @@ Shown shown(const FB& fb) {
 enum class Expect { kAbort, kReject, kQueue };
 
 struct Case {
-  std::string cell;                                 // row x column of §9.19.1
+  std::string cell;  // row x column of §9.19.1
   std::function<void(ProfileMachine&)> start_running;
   std::function<Shown(const ProfileMachine&)> running;
   std::function<void(ProfileMachine&)> start_new;
@@ -66,14 +66,30 @@ void motion_in(ProfileMachine& m) {
   m.motion_in_velocity.Velocity = 10.0;
   m.motion_in_velocity.Enable = true;
 }
-Shown p1(const ProfileMachine& m) { return shown(m.profile); }
-Shown p2(const ProfileMachine& m) { return shown(m.profile2); }
-Shown mv(const ProfileMachine& m) { return shown(m.move_velocity); }
-Shown ma(const ProfileMachine& m) { return shown(m.move_absolute); }
-Shown mr(const ProfileMachine& m) { return shown(m.move_relative); }
-Shown mi(const ProfileMachine& m) { return shown(m.motion_in_velocity); }
-Shown mip(const ProfileMachine& m) { return shown(m.motion_in_position); }
-Shown halt(const ProfileMachine& m) { return shown(m.halt); }
+Shown p1(const ProfileMachine& m) {
+  return shown(m.profile);
+}
+Shown p2(const ProfileMachine& m) {
+  return shown(m.profile2);
+}
+Shown mv(const ProfileMachine& m) {
+  return shown(m.move_velocity);
+}
+Shown ma(const ProfileMachine& m) {
+  return shown(m.move_absolute);
+}
+Shown mr(const ProfileMachine& m) {
+  return shown(m.move_relative);
+}
+Shown mi(const ProfileMachine& m) {
+  return shown(m.motion_in_velocity);
+}
+Shown mip(const ProfileMachine& m) {
+  return shown(m.motion_in_position);
+}
+Shown halt(const ProfileMachine& m) {
+  return shown(m.halt);
+}
 // A running MC_Stop holds the axis while Execute stays TRUE, also once Done at standstill (spec 03 §8.2 T19).
 Shown stop(const ProfileMachine& m) {
   Shown s = shown(m.stop);
@@ -126,7 +142,8 @@ std::vector<Case> cases() {
        Expect::kReject},
       {"R4 PositionProfile BM0 x C6 MC_Stop", start_stop, stop, [](auto& m) { profile(m, 0); }, p1,
        Expect::kReject},
-      {"R4 PositionProfile BM0 x C8 MotionIn", motion_in, mi, [](auto& m) { profile(m, 0); }, p1, Expect::kAbort},
+      {"R4 PositionProfile BM0 x C8 MotionIn", motion_in, mi, [](auto& m) { profile(m, 0); }, p1,
+       Expect::kAbort},
       {"R5 PositionProfile BM1 x C8 MotionIn", motion_in, mi, [](auto& m) { profile(m, 1); }, p1,
        Expect::kReject},
       // MC_PositionProfile as the running job (columns C3 / C4)
@@ -136,15 +153,16 @@ std::vector<Case> cases() {
        [](auto& m) { profile2(m, 1); }, p2, Expect::kQueue},
       {"R4 MoveAbsolute BM0 x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, move_absolute, ma,
        Expect::kAbort},
-      {"R5 MoveRelative BM1 x C3 PositionProfile (-)", [](auto& m) { profile(m, 0); }, p1, relative_appended, mr,
-       Expect::kQueue},
+      {"R5 MoveRelative BM1 x C3 PositionProfile (-)", [](auto& m) { profile(m, 0); }, p1, relative_appended,
+       mr, Expect::kQueue},
       {"R3 Halt Mode 1 x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, start_halt(1), halt,
        Expect::kAbort},
       {"R4 Halt Mode 0 x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, start_halt(0), halt,
        Expect::kAbort},
       {"R4 MotionInVelocity x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, motion_in, mi,
        Expect::kAbort},
-      {"R7 MC_Stop x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, start_stop, stop, Expect::kAbort},
+      {"R7 MC_Stop x C3 PositionProfile", [](auto& m) { profile(m, 0); }, p1, start_stop, stop,
+       Expect::kAbort},
       {"R4 MoveVelocity x C4 pending PositionProfile", absolute_with_pending_profile, p1, move_velocity, mv,
        Expect::kAbort},
       // MotionIn as the running job (column C8)
