@@ -256,6 +256,8 @@ void PositioningAxis::shift_position(double delta) noexcept {
   actual_position_ += delta;
   profile_offset_ += delta;
   motion_.target += delta;
+  // MC_PositionProfile: the profile's positions move with the axis too (its transition moved above).
+  if (motion_.kind == JobKind::kPositionProfile) motion_.absolute_position += delta;
   if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
   positioning_target_ += delta;
   limit_stop_position_ += delta;

@@ -144,7 +144,7 @@ TEST(MotionIn, VelocityForcesTheControlModeItIsGiven) {
 
 // spec 03 §4.17: the TO's dynamic limits do not apply: 600 mm/s on an axis with MaxVelocity 500, no 501.
 TEST(MotionIn, DynamicLimitsDoNotApply) {
-  ProfileMachine m(virtual_axis_data(), false);
+  ProfileMachine m(virtual_axis_data(), tomc::testing::linear_drive(), false);
   ASSERT_GT(m.enable(), 0);
   m.motion_in_velocity.Velocity = 600.0;
   m.motion_in_velocity.Acceleration = 1e6;
@@ -164,7 +164,7 @@ TEST(MotionIn, ReplacementReducesTheAccelerationThroughTheJerk) {
   for (const double acceleration : {500.0, 0.0}) {
     auto data = virtual_axis_data();
     data.DynamicLimits.MaxJerk = 1e6;
-    ProfileMachine m(data, false);
+    ProfileMachine m(data, tomc::testing::linear_drive(), false);
     ASSERT_GT(m.enable(), 0);
     m.motion_in_velocity.Velocity = 50.0;
     m.motion_in_velocity.Acceleration = acceleration;

@@ -292,4 +292,36 @@ TEST(PositionProfile, ProfileBeyondTheDynamicLimitsIsFollowedWithinThemAndRaises
   EXPECT_NEAR(m.db().Position, x0 + 40.0, 1e-9);
 }
 
+// Direct homing during the absolute transition (MC_Home Mode 1 shifts the coordinates by 10 mm, spec 02
+// §5.7): the transition and the profile move with the axis, so the setpoint never steps (found by the
+// property test: before, the profile kept the old coordinates and the setpoint jumped by the shift).
+TEST(PositionProfile, DirectHomingDuringTheTransitionMovesTheProfileWithTheAxis) {
+  ProfileMachine m;
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  TimePositionProfile p;
+  p.NumberOfPoints = 3;
+  p.Point[0] = {0.0, 50.0};
+  p.Point[1] = {0.2, 60.0};
+  p.Point[2] = {0.4, 70.0};
+  m.profile.TimePosition = &p;
+  m.profile.ProfileReference = 1;
+  m.profile.Execute = true;
+  m.run(100);  // in the transition
+  m.home.Mode = 1;
+  m.home.Position = 10.0;
+  m.home.Execute = true;
+  m.run(1);
+  m.home.Execute = false;
+  double last = m.axis->setpoint().position;
+  for (int k = 0; k < 1500 && !m.profile.Done; ++k) {
+    m.run(1);
+    const double x = m.axis->setpoint().position;
+    ASSERT_LE(std::fabs(x - last), 100.0 * 0.001 + 1e-9) << k;  // at most DynamicDefaults.Velocity x 1 ms
+    last = x;
+  }
+  EXPECT_TRUE(m.profile.Done);
+  EXPECT_NEAR(m.db().Position, 70.0 + 10.0, 1e-9);
+}
+
 }  // namespace

@@ -20,8 +20,10 @@ inline techobjects::TimePositionProfile ramp_profile() {
 }
 
 struct ProfileMachine : PositioningAxisMachine {
-  explicit ProfileMachine(techobjects::PositioningAxisData data = linear_axis_data(), bool with_drive = true)
-      : PositioningAxisMachine(data, linear_drive(), 3, with_drive) {
+  explicit ProfileMachine(techobjects::PositioningAxisData data = linear_axis_data(),
+                          drives::SimulatedDriveParameters drive_parameters = linear_drive(),
+                          bool with_drive = true)
+      : PositioningAxisMachine(data, drive_parameters, 3, with_drive) {
     user = [this] {
       profile(*axis);
       profile2(*axis);
