@@ -50,6 +50,21 @@ std::string validate(const DeviceConfig& c) {
   return {};
 }
 
+DeviceCodecs::DeviceCodecs() noexcept {
+  setpoint.fill(&tg::TelegramCodec::empty());
+  actual.fill(&tg::TelegramCodec::empty());
+}
+
+DeviceCodecs::DeviceCodecs(const DeviceConfig& config) noexcept : DeviceCodecs() {
+  for (std::size_t i = 0; i < kSlotCount; ++i) {
+    const auto t = config.telegram(static_cast<Slot>(i));
+    if (t == 0) continue;
+    if (auto c = tg::TelegramCodec::shared(t, tg::Direction::kSetpoint, config.codec))
+      setpoint[i] = c.value();
+    if (auto c = tg::TelegramCodec::shared(t, tg::Direction::kActual, config.codec)) actual[i] = c.value();
+  }
+}
+
 DeviceFrames make_frames(const DeviceConfig& config, tg::Direction direction) {
   DeviceFrames frames;
   for (std::size_t i = 0; i < kSlotCount; ++i) {

@@ -40,19 +40,11 @@ double counts_per_revolution(const SimulatedEncoderParameters& e) {
 }  // namespace
 
 SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveParameters& parameters)
-    : config_(config), p_(parameters), mechanics_(p_) {
+    : config_(config), p_(parameters), mechanics_(p_), codecs_(config_) {
   if (p_.substeps == 0) p_.substeps = 1;
-  for (std::size_t i = 0; i < kSlotCount; ++i) {
-    const auto t = config_.telegram(static_cast<Slot>(i));
-    if (t == 0) continue;
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, config_.codec))
-      setpoint_codecs_[i] = c.value();
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, config_.codec))
-      actual_codecs_[i] = c.value();
-  }
   setpoint_frames_ = make_frames(config_, tg::Direction::kSetpoint);
   // Which encoders exist: those carried by the drive telegram, plus separately connected ones.
-  const auto& drive_actual = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  const auto& drive_actual = codecs_(tg::Direction::kActual, Slot::kDrive);
   encoders_[0].present = drive_actual.carries(tg::Signal::G1_ZSW);
   encoders_[1].present = drive_actual.carries(tg::Signal::G2_ZSW);
   for (Slot s : {Slot::kEncoder1, Slot::kEncoder2}) {
@@ -60,7 +52,7 @@ SimulatedDrive::SimulatedDrive(const DeviceConfig& config, const SimulatedDriveP
       encoders_[static_cast<std::size_t>(encoder_index_of_slot(config_, s))].present = true;
   }
   master_monitor_ = tg::SignOfLifeMonitor(tg::SignOfLifeMonitorConfig{p_.sign_of_life_tolerance, 1});
-  const auto& drive_setpoint = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  const auto& drive_setpoint = codecs_(tg::Direction::kSetpoint, Slot::kDrive);
   r_.nsoll_b = drive_setpoint.carries(tg::Signal::NSOLL_B);
   r_.stw2 = drive_setpoint.carries(tg::Signal::STW2);
   r_.momred = drive_setpoint.carries(tg::Signal::MOMRED);
@@ -150,8 +142,8 @@ void SimulatedDrive::apply_setpoints() noexcept {
   previous_stw1_ = drive_sp_.STW1.value();
   auto decode = [&](Slot s, tg::SetpointSignals& into) {
     const auto i = static_cast<std::size_t>(s);
-    if (setpoint_codecs_[i].frame_size() != 0)
-      (void)setpoint_codecs_[i].decode(setpoint_frames_.slots[i].view(), into);
+    if (codecs_.setpoint[i]->frame_size() != 0)
+      (void)codecs_.setpoint[i]->decode(setpoint_frames_.slots[i].view(), into);
   };
   decode(Slot::kDrive, drive_sp_);
   decode(Slot::kSupplementary, supplementary_sp_);
@@ -554,7 +546,7 @@ void SimulatedDrive::encode_actuals(DeviceFrames& actual) noexcept {
   const double speed_rpm = mechanics_.motor_speed_rpm();
   const double torque_nm = mechanics_.motor_torque_nm();
   for (std::size_t i = 0; i < kSlotCount; ++i) {
-    const auto& codec = actual_codecs_[i];
+    const auto& codec = *codecs_.actual[i];
     if (codec.frame_size() == 0) continue;
     const auto slot = static_cast<Slot>(i);
     tg::ActualSignals a;

@@ -32,9 +32,9 @@ bool switched_on(tg::DriveState s) noexcept {
 Telegram3Actor::Telegram3Actor(io::HardwareIo& hardware, const ActorParameters& parameters)
     : hw_(&hardware), base_(parameters), extension_(parameters.counter_width_bits) {
   config_.drive_telegram = kTelegram;
-  if (auto c = tg::TelegramCodec::create(kTelegram, tg::Direction::kSetpoint, config_.codec))
+  if (auto c = tg::TelegramCodec::shared(kTelegram, tg::Direction::kSetpoint, config_.codec))
     setpoint_codec_ = c.value();
-  if (auto c = tg::TelegramCodec::create(kTelegram, tg::Direction::kActual, config_.codec))
+  if (auto c = tg::TelegramCodec::shared(kTelegram, tg::Direction::kActual, config_.codec))
     actual_codec_ = c.value();
   setpoint_frames_ = make_frames(config_, tg::Direction::kSetpoint);
   sign_of_life_.reset(1);
@@ -82,7 +82,7 @@ bool Telegram3Actor::read_actual(DeviceFrames& actual) noexcept {
   a.ZSW2.set_field(tg::kSignOfLifeField, slave_counter_);
   update_encoder(sp_.G1_STW.value(), a);
   a.G1_XIST1 = static_cast<std::uint32_t>(static_cast<std::uint64_t>(count));
-  (void)actual_codec_.encode(a, actual[Slot::kDrive].view());
+  (void)actual_codec_->encode(a, actual[Slot::kDrive].view());
   return true;
 }
 
@@ -130,7 +130,7 @@ void Telegram3Actor::update_encoder(std::uint16_t control, tg::ActualSignals& a)
 void Telegram3Actor::write_setpoint(const DeviceFrames& setpoint) noexcept {
   const auto& frame = setpoint[Slot::kDrive];
   if (frame.length == setpoint_frames_[Slot::kDrive].length) {
-    (void)setpoint_codec_.decode(frame.view(), sp_);
+    (void)setpoint_codec_->decode(frame.view(), sp_);
     cyclic_data_ = true;
   }
   update_state(sp_.STW1.value());

@@ -170,6 +170,68 @@ Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction,
   return codec;
 }
 
+namespace {
+
+constexpr std::array<std::uint8_t, 3> kNistBOffsets{4, 8, 12};  // spec 06 §2.13
+constexpr std::size_t kByteOrders = static_cast<std::size_t>(ByteOrder::kLittle) + 1;
+constexpr std::size_t kMaxTelegrams = 16;
+// Per telegram and byte order: the setpoint codec, then the actual codec for each NIST_B offset (only
+// telegram 83's actual frame depends on it; the others repeat the same layout).
+constexpr std::size_t kCodecsPerOrder = 1 + kNistBOffsets.size();
+
+struct SharedCodecTable {
+  std::array<std::uint16_t, kMaxTelegrams> telegram{};
+  std::size_t count = 0;
+  std::array<std::array<std::array<TelegramCodec, kCodecsPerOrder>, kByteOrders>, kMaxTelegrams> codec{};
+};
+
+const SharedCodecTable& shared_codecs() noexcept {
+  static const SharedCodecTable table = [] {
+    SharedCodecTable t;
+    for (const std::uint16_t number : supported_telegrams()) {
+      if (t.count == kMaxTelegrams) break;  // guarded by a test: every supported telegram is in the table
+      auto& row = t.codec[t.count];
+      t.telegram[t.count++] = number;
+      for (std::size_t order = 0; order < kByteOrders; ++order) {
+        CodecOptions options;
+        options.byte_order = static_cast<ByteOrder>(order);
+        if (auto c = TelegramCodec::create(number, Direction::kSetpoint, options)) row[order][0] = c.value();
+        for (std::size_t n = 0; n < kNistBOffsets.size(); ++n) {
+          options.telegram83_nist_b_offset = kNistBOffsets[n];
+          if (auto c = TelegramCodec::create(number, Direction::kActual, options))
+            row[order][1 + n] = c.value();
+        }
+      }
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+Result<const TelegramCodec*> TelegramCodec::shared(int telegram, Direction direction,
+                                                   CodecOptions options) noexcept {
+  // create() decides validity and the error; the table only answers for what it accepts.
+  if (auto checked = create(telegram, direction, options); !checked) return checked.error();
+  const auto& table = shared_codecs();
+  for (std::size_t i = 0; i < table.count; ++i) {
+    if (table.telegram[i] != telegram) continue;
+    const auto& row = table.codec[i][static_cast<std::size_t>(options.byte_order)];
+    if (direction == Direction::kSetpoint) return &row[0];
+    for (std::size_t n = 0; n < kNistBOffsets.size(); ++n) {
+      if (kNistBOffsets[n] == options.telegram83_nist_b_offset) return &row[1 + n];
+    }
+    return &row[kNistBOffsets.size()];  // not telegram 83 (create() checked its offset): one layout
+  }
+  return TelegramError::kUnknownTelegram;  // unreachable while the table holds every supported telegram
+}
+
+const TelegramCodec& TelegramCodec::empty() noexcept {
+  static const TelegramCodec codec;
+  return codec;
+}
+
 void TelegramCodec::compile() noexcept {
   for (std::size_t i = 0; i < layout_.field_count; ++i) {
     const FieldLayout& f = layout_.field_table[i];

@@ -245,6 +245,59 @@ TEST(CodecErrors, EmptyCodec) {
   EXPECT_EQ(codec.decode(frame, a), TelegramError::kUnknownTelegram);
 }
 
+// The shared codec table (decision U1) answers every input create() accepts with a codec that encodes the
+// same bytes, one address per distinct codec, and create()'s error for every input it rejects.
+TEST(SharedCodec, SameFramesAsCreateForEveryTelegramOrderAndNistBOffset) {
+  std::mt19937 rng(0x5A4EDu);
+  for (const std::uint16_t telegram : supported_telegrams()) {
+    for (const ByteOrder order : kAllOrders) {
+      for (const std::uint8_t nist : {4, 8, 12}) {
+        const CodecOptions options{.byte_order = order, .telegram83_nist_b_offset = nist};
+        SCOPED_TRACE(trace(telegram, Direction::kActual, order) + " NIST_B@" + std::to_string(nist));
+        const auto own_sp = TelegramCodec::create(telegram, Direction::kSetpoint, options);
+        const auto own_act = TelegramCodec::create(telegram, Direction::kActual, options);
+        const auto shared_sp = TelegramCodec::shared(telegram, Direction::kSetpoint, options);
+        const auto shared_act = TelegramCodec::shared(telegram, Direction::kActual, options);
+        ASSERT_TRUE(own_sp.ok() && own_act.ok() && shared_sp.ok() && shared_act.ok());
+        EXPECT_EQ(shared_sp.value(), TelegramCodec::shared(telegram, Direction::kSetpoint, options).value());
+        ASSERT_EQ((*shared_sp)->frame_size(), own_sp->frame_size());
+        ASSERT_EQ((*shared_act)->frame_size(), own_act->frame_size());
+        EXPECT_EQ((*shared_act)->byte_order(), order);
+        const auto sp = random_values<SetpointSignals>(rng, kSetpointSignals);
+        const auto act = random_values<ActualSignals>(rng, kActualSignals);
+        std::vector<std::byte> a(own_sp->frame_size()), b(a.size()), c(own_act->frame_size()), d(c.size());
+        ASSERT_EQ(own_sp->encode(sp, a), TelegramError::kNone);
+        ASSERT_EQ((*shared_sp)->encode(sp, b), TelegramError::kNone);
+        EXPECT_EQ(a, b);
+        ASSERT_EQ(own_act->encode(act, c), TelegramError::kNone);
+        ASSERT_EQ((*shared_act)->encode(act, d), TelegramError::kNone);
+        EXPECT_EQ(c, d);
+      }
+    }
+  }
+  // Telegram 83's three NIST_B layouts are three codecs.
+  const auto at4 = TelegramCodec::shared(83, Direction::kActual, CodecOptions{.telegram83_nist_b_offset = 4});
+  const auto at12 =
+      TelegramCodec::shared(83, Direction::kActual, CodecOptions{.telegram83_nist_b_offset = 12});
+  ASSERT_TRUE(at4.ok() && at12.ok());
+  EXPECT_NE(at4.value(), at12.value());
+  EXPECT_EQ((*at4)->layout().offset_of(Signal::NIST_B), 4);
+  EXPECT_EQ((*at12)->layout().offset_of(Signal::NIST_B), 12);
+}
+
+TEST(SharedCodec, RejectsWhatCreateRejects) {
+  EXPECT_EQ(TelegramCodec::shared(104, Direction::kSetpoint).error(), TelegramError::kTelegram104NotDefined);
+  EXPECT_EQ(TelegramCodec::shared(7, Direction::kActual).error(), TelegramError::kUnknownTelegram);
+  EXPECT_EQ(
+      TelegramCodec::shared(83, Direction::kActual, CodecOptions{.telegram83_nist_b_offset = 6}).error(),
+      TelegramCodec::create(83, Direction::kActual, CodecOptions{.telegram83_nist_b_offset = 6}).error());
+  EXPECT_EQ(
+      TelegramCodec::shared(3, Direction::kSetpoint, CodecOptions{.byte_order = static_cast<ByteOrder>(9)})
+          .error(),
+      TelegramError::kInvalidOption);
+  EXPECT_EQ(TelegramCodec::empty().frame_size(), 0u);
+}
+
 // Every error has its own description (for messages).
 TEST(CodecErrors, Descriptions) {
   EXPECT_EQ(describe(TelegramError::kNone), "no error");

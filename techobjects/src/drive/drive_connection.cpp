@@ -28,17 +28,9 @@ std::string_view to_string(CommunicationFault fault) noexcept {
 DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& config)
     : device_(&device),
       config_(config),
+      codecs_(device.adapter->config()),
       slave_monitor_(config.sign_of_life),
       peer_restarts_(device.adapter->link_health().peer_restarts) {
-  const auto& dc = device.adapter->config();
-  for (std::size_t i = 0; i < drives::kSlotCount; ++i) {
-    const auto t = dc.telegram(static_cast<Slot>(i));
-    if (t == 0) continue;
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kSetpoint, dc.codec))
-      setpoint_codecs_[i] = c.value();
-    if (auto c = tg::TelegramCodec::create(t, tg::Direction::kActual, dc.codec))
-      actual_codecs_[i] = c.value();
-  }
   // Without MC_TorqueRange the TO sends the reference torque as limits (spec 06 §8, TV14).
   supplementary_sp_.M_LIMIT_POS = 0x4000;
   supplementary_sp_.M_LIMIT_NEG = static_cast<std::int16_t>(-0x4000);
@@ -46,7 +38,7 @@ DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& 
   drive_sp_.STW1 = tg::Stw1{tg::stw1_for(tg::DriveCommand::kIdle)};
   for (auto& e : encoder_sp_)
     e.STW2_ENC.set(tg::Stw2EncBit::kControlByPlc);
-  const auto& drive_actual = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  const auto& drive_actual = codecs_(tg::Direction::kActual, Slot::kDrive);
   has_nist_b_ = drive_actual.carries(tg::Signal::NIST_B);
   has_zsw2_ = drive_actual.carries(tg::Signal::ZSW2);
 }
@@ -99,8 +91,8 @@ void DriveConnection::read() noexcept {
     ever_fresh_ = true;
     auto decode = [&](Slot s, tg::ActualSignals& into) {
       const auto i = static_cast<std::size_t>(s);
-      if (actual_codecs_[i].frame_size() != 0)
-        (void)actual_codecs_[i].decode(device_->actual.slots[i].view(), into);
+      if (codecs_.actual[i]->frame_size() != 0)
+        (void)codecs_.actual[i]->decode(device_->actual.slots[i].view(), into);
     };
     decode(Slot::kDrive, drive_act_);
     decode(Slot::kSupplementary, supplementary_act_);
@@ -110,7 +102,7 @@ void DriveConnection::read() noexcept {
     ++missed_;
   }
 
-  const auto& drive_codec = actual_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  const auto& drive_codec = codecs_(tg::Direction::kActual, Slot::kDrive);
   const bool has_drive = drive_codec.frame_size() != 0;
   if (has_drive) {
     status_ = tg::decode_zsw1(drive_act_.ZSW1.value());
@@ -122,7 +114,7 @@ void DriveConnection::read() noexcept {
   if (config_.isochronous && fresh) {
     if (has_zsw2_) {
       (void)slave_monitor_.check(static_cast<std::uint8_t>(drive_act_.ZSW2.field(tg::kSignOfLifeField)));
-    } else if (!has_drive && actual_codecs_[static_cast<std::size_t>(Slot::kEncoder1)].frame_size() != 0) {
+    } else if (!has_drive && codecs_(tg::Direction::kActual, Slot::kEncoder1).frame_size() != 0) {
       (void)slave_monitor_.check(
           static_cast<std::uint8_t>(encoder_act_[0].ZSW2_ENC.field(tg::kSignOfLifeField)));
     }
@@ -165,7 +157,7 @@ void DriveConnection::write(const ServoCommand& command) noexcept {
       encoder_sp_[0].G1_STW = command.encoder_control;
       break;
   }
-  const auto& drive_codec = setpoint_codecs_[static_cast<std::size_t>(Slot::kDrive)];
+  const auto& drive_codec = codecs_(tg::Direction::kSetpoint, Slot::kDrive);
   const std::uint8_t master = config_.isochronous ? master_.next() : 0;
   if (drive_codec.frame_size() != 0) {
     // STW1: the TO's bits 0..7 and 10 from the sequencer, the user's bits (8, 9, 11..15) kept.
@@ -184,8 +176,8 @@ void DriveConnection::write(const ServoCommand& command) noexcept {
     e.STW2_ENC.set_field(tg::kSignOfLifeField, master);
   auto encode = [&](Slot s, const tg::SetpointSignals& from) {
     const auto i = static_cast<std::size_t>(s);
-    if (setpoint_codecs_[i].frame_size() != 0)
-      (void)setpoint_codecs_[i].encode(from, device_->setpoint.slots[i].view());
+    if (codecs_.setpoint[i]->frame_size() != 0)
+      (void)codecs_.setpoint[i]->encode(from, device_->setpoint.slots[i].view());
   };
   encode(Slot::kDrive, drive_sp_);
   encode(Slot::kSupplementary, supplementary_sp_);

@@ -90,6 +90,7 @@ class ProfileBuilder : public Integrator {
   ProfileBuilder(PiecewiseJerkProfile* out, const MotionState& start) noexcept
       : Integrator(start), out_(out) {
     out_->count_ = 0;
+    out_->truncated_ = false;
   }
 
   void ramp(double duration, double jerk) noexcept { push(duration, a_, jerk); }
@@ -105,6 +106,8 @@ class ProfileBuilder : public Integrator {
     if (!(duration > 0)) return;  // also drops NaN
     if (out_->count_ < kMaxProfileSegments) {
       out_->segments_[out_->count_++] = ProfileSegment{t_, p_, v_, acceleration, jerk};
+    } else {
+      out_->truncated_ = true;
     }
     advance(duration, acceleration, jerk);
   }

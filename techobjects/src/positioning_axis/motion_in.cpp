@@ -75,9 +75,11 @@ void PositioningAxis::end_motion_in(JobId running) noexcept {
   if (motion_.kind != JobKind::kMotionInVelocity && motion_.kind != JobKind::kMotionInPosition) return;
   core_.jobs.set(motion_.id, JobState::kDone);
   motion_ = Motion{};
-  // spec 03 §3.1 class M: velocity and acceleration drop to 0.0, the position setpoint keeps its value.
-  setpoint_.velocity = 0.0;
-  setpoint_.acceleration = 0.0;
+  // spec 03 §3.1 class M: velocity and acceleration drop to 0.0, the position setpoint keeps its value
+  // (those of the base motion: a superimposed motion goes on, §9.19.1 R6 x C8 "-").
+  const MotionState base = base_setpoint();
+  setpoint_.velocity -= base.velocity;
+  setpoint_.acceleration -= base.acceleration;
   generator_ = Generator::kIdle;
   if (position_controlled_) {  // StatusWord.X6 Done after the positioning window (spec 04 §8 rule 2)
     positioning_target_ = setpoint_.position;

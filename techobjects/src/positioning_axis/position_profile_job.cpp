@@ -43,9 +43,10 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
   // An absolute profile that moves at StartTime can be joined only by an axis already on it (decision L3);
   // checked before the matrix aborts anything. An appended job is checked when it becomes active.
   const MotionState start = evaluate(*in.TimePosition, in.StartTime);
+  const MotionState base = base_setpoint();  // the profile is a base motion (a superimposed one goes on)
   if (in.BufferMode == 0 && in.ProfileReference == kAbsolute && start.velocity != 0.0 &&
-      !(std::fabs(setpoint_.position - start.position) <= 1e-9 * std::max(1.0, std::fabs(start.position)) &&
-        same_velocity(setpoint_.velocity, start.velocity))) {
+      !(std::fabs(base.position - start.position) <= 1e-9 * std::max(1.0, std::fabs(start.position)) &&
+        same_velocity(base.velocity, start.velocity))) {
     return Submission::reject(error_id::kProfileStartNotReachable);
   }
   bool queue = false;
@@ -78,12 +79,13 @@ void PositioningAxis::start_motion(const Motion& motion) noexcept {
 // (shortest path on a modulo axis), which ends at rest.
 void PositioningAxis::start_time_profile(Motion motion) noexcept {
   const MotionState start = evaluate(*motion.time_profile, motion.distance);
+  const MotionState base = base_setpoint();
   motion.interpolation_done = false;
   motion.profile_limited = false;
   motion.absolute_position = 0.0;
   double target = start.position;
   if (motion.direction == kAbsolute && modulo()) {
-    target = absolute_target(start.position, 3, setpoint_.position).value_or(setpoint_.position);
+    target = absolute_target(start.position, 3, base.position).value_or(base.position);
     motion.absolute_position = target - start.position;
   }
   motion_ = motion;
@@ -92,10 +94,10 @@ void PositioningAxis::start_time_profile(Motion motion) noexcept {
   positioning_.cancel();
   positioning_start_pending_ = false;
   check_profile_limits(motion_);
-  const bool velocity_matches = same_velocity(setpoint_.velocity, start.velocity);
+  const bool velocity_matches = same_velocity(base.velocity, start.velocity);
   if (motion.direction == kRelative) {
     if (velocity_matches) {
-      enter_time_profile();  // "ready to follow directly: OnProfile at once"
+      enter_time_profile(base.position);  // "ready to follow directly: OnProfile at once"
     } else {
       // The job's Velocity bounds the way there, not the profile's own velocity at StartTime.
       ProfileLimits l = motion_.limits;
@@ -105,26 +107,24 @@ void PositioningAxis::start_time_profile(Motion motion) noexcept {
     return;
   }
   const bool at_start =
-      std::fabs(setpoint_.position - target) <= 1e-9 * std::max(1.0, std::fabs(target)) && velocity_matches;
+      std::fabs(base.position - target) <= 1e-9 * std::max(1.0, std::fabs(target)) && velocity_matches;
   if (at_start) {
-    enter_time_profile();
+    enter_time_profile(base.position);
   } else if (start.velocity != 0.0) {
     // An appended absolute job whose profile moves at StartTime, behind a job that stopped elsewhere.
     core_.jobs.set(motion_.id, JobState::kError, error_id::kProfileStartNotReachable);
     motion_ = Motion{};
   } else {
-    motion_.planned_velocity = positioning_velocity(motion_);
     ProfileLimits l = motion_.limits;
-    l.velocity = motion_.planned_velocity;
+    l.velocity = positioning_velocity(motion_);
     plan_position(target, l);
   }
 }
 
-void PositioningAxis::enter_time_profile(double elapsed) noexcept {
+void PositioningAxis::enter_time_profile(double base_position, double elapsed) noexcept {
   motion_.distance = std::min(motion_.distance + elapsed, end_time(*motion_.time_profile));
   if (motion_.direction == kRelative) {
-    motion_.absolute_position =
-        setpoint_.position - evaluate(*motion_.time_profile, motion_.distance).position;
+    motion_.absolute_position = base_position - evaluate(*motion_.time_profile, motion_.distance).position;
   }
   motion_.target =
       evaluate(*motion_.time_profile, end_time(*motion_.time_profile)).position + motion_.absolute_position;

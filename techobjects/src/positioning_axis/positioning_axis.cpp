@@ -217,12 +217,14 @@ std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, 
                                 db_.DynamicLimits, dynamic_units(), out);
 }
 
-std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
-  std::array<RunningJob, 4> running{};
+std::array<RunningJob, 5> PositioningAxis::running_jobs(std::size_t& n) const noexcept {
+  std::array<RunningJob, 5> running{};
   n = 0;
   // A running synchronous job is a column of §9.19.2, not of §9.19.1 (arbitrate_synchronous).
   if (motion_.id != 0 && !synchronous_kind(motion_.kind)) {
-    running[n++] = motion_.kind == JobKind::kHalt   ? RunningJob::kHaltAll
+    // MC_Halt Mode 1 is a C3 job, Mode 0 the C5 one (spec 03 §6.1).
+    const bool halt_all = motion_.kind == JobKind::kHalt && !motion_.halt_base_only;
+    running[n++] = halt_all                         ? RunningJob::kHaltAll
                    : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
                    : motion_.kind == JobKind::kMotionInVelocity || motion_.kind == JobKind::kMotionInPosition
                        ? RunningJob::kMotionIn
@@ -231,6 +233,7 @@ std::array<RunningJob, 4> PositioningAxis::running_jobs(std::size_t& n) const no
   if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
   if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
   if (core_.stop.id != 0 && (!core_.stop.done || core_.stop.execute)) running[n++] = RunningJob::kStop;
+  if (superimposed_.job() != SuperimposedMotion::Job::kNone) running[n++] = RunningJob::kSuperimposed;  // C7
   return running;
 }
 
@@ -260,6 +263,9 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
         break;
       case RunningJob::kPassiveHoming:
         end_passive_homing(JobState::kAborted);
+        break;
+      case RunningJob::kSuperimposed:  // a new superimposed job continues from its state (R6 x C7)
+        abort_superimposed(0, row != NewJob::kSuperimposed);
         break;
       default:
         abort_motion(0);
@@ -317,9 +323,12 @@ std::optional<double> PositioningAxis::absolute_target(double position, std::int
 
 // Makes `motion` the running positioning job and plans its profile from the present setpoint.
 void PositioningAxis::start_positioning(Motion motion) noexcept {
-  if (motion.relative_to_end) motion.target = setpoint_.position + motion.distance;
+  // Positions of base jobs are those of the base motion: a superimposed distance adds to them (spec 01
+  // §8.14, decision U3).
+  const double base_position = base_setpoint().position;
+  if (motion.relative_to_end) motion.target = base_position + motion.distance;
   if (motion.kind == JobKind::kMoveAbsolute && modulo()) {
-    if (const auto t = absolute_target(motion.absolute_position, motion.direction, setpoint_.position)) {
+    if (const auto t = absolute_target(motion.absolute_position, motion.direction, base_position)) {
       motion.target = *t;
     }
   }
@@ -354,7 +363,7 @@ Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept
     return Submission::reject(*e);
   if (const auto e = motion_prerequisites()) return Submission::reject(e);
   if (!homed()) return Submission::reject(error_id::kAxisNotHomed);  // spec 03 §4.5 prerequisites
-  if (modulo() && !absolute_target(in.Position, in.Direction, setpoint_.position)) {
+  if (modulo() && !absolute_target(in.Position, in.Direction, base_setpoint().position)) {
     return Submission::reject(error_id::kInvalidPosition);
   }
   bool queue = false;
@@ -422,7 +431,7 @@ Submission PositioningAxis::move_velocity(const MoveVelocityInputs& in) noexcept
   double v = in.Velocity / units_.velocity;
   if (in.Direction == 1) v = std::fabs(v);
   if (in.Direction == 2) v = -std::fabs(v);
-  const double command = in.Current ? setpoint_.velocity / std::max(override_factor(), 1e-12) : v;
+  const double command = in.Current ? base_setpoint().velocity / std::max(override_factor(), 1e-12) : v;
   Motion m;
   m.id = core_.jobs.create(JobKind::kMoveVelocity, JobState::kActive);
   m.kind = JobKind::kMoveVelocity;
@@ -456,6 +465,7 @@ Submission PositioningAxis::halt(const HaltInputs& in) noexcept {
   m.id = core_.jobs.create(JobKind::kHalt, JobState::kActive);
   m.kind = JobKind::kHalt;
   m.limits = limits;
+  m.halt_base_only = in.Mode == 1;
   motion_ = m;
   positioning_.cancel();
   positioning_start_pending_ = false;
@@ -473,7 +483,8 @@ Submission PositioningAxis::stop(const StopInputs& in) noexcept {
                              std::span<const RunningJob>(running.data(), n), weight, limits)) {
     return *decided;
   }
-  abort_synchronous(0);  // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
+  abort_synchronous(0);   // MC_Stop aborts every synchronous job (§9.19.2 row MC_Stop)
+  abort_superimposed(0);  // R7 x C7 = A
   abort_motion(0);
   abort_pending(0);
   if (passive_.id != 0) {  // R7 x C1 = A

@@ -205,7 +205,8 @@ void PositioningAxis::servo_monitoring() noexcept {
   (void)standstill_.update(actual_velocity_);
 
   // Positioning monitoring (spec 02 §6.1): started in the servo cycle that uses the final setpoint.
-  if (positioning_start_pending_) {
+  // With a superimposed motion still moving the axis is not in position yet: the check waits for it.
+  if (positioning_start_pending_ && superimposed_.settled()) {
     positioning_start_pending_ = false;
     positioning_.start(positioning_target_);
   }
@@ -316,6 +317,7 @@ void PositioningAxis::apply_alarm_reactions() noexcept {
   const ProfileLimits current =
       motion_.id != 0 ? motion_.limits : AxisCore::default_ramp(db_.DynamicDefaults, dynamic_units());
   abort_synchronous(error_id::kAbortedByAlarmReaction);
+  abort_superimposed(error_id::kAbortedByAlarmReaction);
   abort_motion(error_id::kAbortedByAlarmReaction);
   abort_pending(error_id::kAbortedByAlarmReaction);
   if (passive_.id != 0) {  // passive homing needs an enabled, unblocked axis (spec 02 §5.6)
@@ -344,6 +346,8 @@ void PositioningAxis::update_power_phase() noexcept {
     case PowerEvent::kEnabled:
       // Enabled at the actual position; a moving axis is braked by the position loop (spec 01 §6.2).
       position_controlled_ = core_.start_mode == 1;
+      superimposed_.fold();
+      superimposed_.reset_distance();
       setpoint_ = MotionState{actual_position_, 0.0, 0.0};
       generator_ = Generator::kIdle;
       if (auto* controller = this->controller()) controller->reset();
@@ -352,6 +356,7 @@ void PositioningAxis::update_power_phase() noexcept {
     case PowerEvent::kDisabling:
       // MC_Power.Enable = FALSE aborts every job (spec 03 §6.6) and stops per StopMode (spec 02 §3.1).
       abort_synchronous(0);
+      abort_superimposed(0);
       abort_motion(0);
       abort_pending(0);
       if (passive_.id != 0) end_passive_homing(JobState::kAborted);
@@ -399,7 +404,7 @@ void PositioningAxis::update_live_motion() noexcept {
 
 void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
                                     bool abort_acceleration) noexcept {
-  MotionState start = setpoint_;
+  MotionState start = base_setpoint();
   if (abort_acceleration) start.acceleration = 0.0;
   ProfileLimits l = limits;
   if (!(l.velocity > 0.0)) l.velocity = std::numeric_limits<double>::infinity();
@@ -416,7 +421,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
   // The job's jerk, whatever the start state (seed 004 §6.7.7, decision S4).
   PositionProfile planned;
-  if (planned.plan(setpoint_, target, limits)) {
+  if (planned.plan(base_setpoint(), target, limits)) {
     profile_ = planned;
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
@@ -437,10 +442,12 @@ void PositioningAxis::plan_positioning(double v) noexcept {
 
 void PositioningAxis::generate_setpoint() noexcept {
   if (follows_actual()) {
+    superimposed_.fold();
     setpoint_ = MotionState{actual_position_, actual_velocity_, 0.0};  // follow-up (spec 02 §3.2)
     generator_ = Generator::kIdle;
     return;
   }
+  setpoint_ = base_setpoint();  // the generators below produce the base motion; run_superimposed() adds
   switch (generator_) {
     case Generator::kVelocity: {
       profile_time_ += core_.ipo_cycle_s;
@@ -451,7 +458,7 @@ void PositioningAxis::generate_setpoint() noexcept {
             end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
         if (motion_.kind == JobKind::kPositionProfile) {  // the relative transition ended within this cycle
-          enter_time_profile(profile_time_ - velocity_profile().duration());
+          enter_time_profile(setpoint_.position, profile_time_ - velocity_profile().duration());
         }
       } else {
         setpoint_ = velocity_profile().at(profile_time_);
@@ -474,7 +481,9 @@ void PositioningAxis::generate_setpoint() noexcept {
             positioning_start_pending_ = true;
           }
         }
-        if (motion_.kind == JobKind::kPositionProfile) enter_time_profile();  // absolute transition ended
+        if (motion_.kind == JobKind::kPositionProfile) {  // the absolute transition ended
+          enter_time_profile(setpoint_.position);
+        }
       } else {
         setpoint_ = position_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
@@ -495,6 +504,7 @@ void PositioningAxis::generate_setpoint() noexcept {
       follow_motion_in();
       break;
   }
+  run_superimposed();
   // Without position control the setpoint position tracks the actual one (spec 02 §7.7); the velocity
   // setpoint goes to the drive directly.
   if (!position_controlled_) setpoint_.position = actual_position_;
@@ -504,7 +514,8 @@ void PositioningAxis::generate_setpoint() noexcept {
 // generate_setpoint() evaluates the profiles).
 MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
   const double t = profile_time_ + dt;
-  MotionState s{setpoint_.position + setpoint_.velocity * dt, setpoint_.velocity, 0.0};
+  const MotionState base = base_setpoint();
+  MotionState s{base.position + base.velocity * dt, base.velocity, 0.0};
   if (generator_ == Generator::kVelocity) {
     const double end = velocity_profile().duration();
     if (t >= end - 1e-9) {
@@ -526,7 +537,8 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
     s = evaluate(*motion_.time_profile, motion_.distance + dt);
     s.position += motion_.absolute_position;
   }
-  return s;
+  const MotionState sup = superimposed_.predicted(dt);
+  return MotionState{s.position + sup.position, s.velocity + sup.velocity, s.acceleration + sup.acceleration};
 }
 
 // Software limit switches (spec 02 §4.5): setpoint-based look-ahead, effective only on a homed axis.
@@ -590,7 +602,10 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
     in.next_acceleration = next.acceleration;
   }
   const auto r = software_limits_.update(in);
-  if (!std::isnan(crossed)) setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
+  if (!std::isnan(crossed)) {
+    superimposed_.fold();  // the setpoint stops at the limit, base and superimposed alike
+    setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
+  }
   if (r.stop_now) {
     limit_stop_ = true;
     limit_stop_position_ = r.stop_position + static_cast<double>(k) * (modulo() ? length : 0.0);
@@ -603,7 +618,9 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
 
 void PositioningAxis::complete_jobs() noexcept {
   const bool settled = generator_ == Generator::kIdle;
-  const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
+  // The base motion's standstill: MC_Halt Mode 1 is Done when the base stops, the superimposed motion may go
+  // on (spec 03 §4.4 function diagram, Mode 1).
+  const bool at_zero = std::fabs(base_setpoint().velocity) < kStandstillEpsilon;
   const PositioningOutcome outcome = positioning_.status().outcome;
   if (motion_.id != 0) {
     switch (motion_.kind) {
@@ -657,6 +674,7 @@ void PositioningAxis::complete_jobs() noexcept {
     }
   }
   if (limit_stop_ && settled && at_zero) limit_stop_ = false;
+  settle_superimposed();
   if (core_.phase == PowerPhase::kDisabling) {
     const bool drive_off = virtual_axis() || !drive_.in_operation();
     // A virtual or simulated axis' actual value lags its setpoint (spec 01 §2.5): it is disabled once the
@@ -710,6 +728,7 @@ void PositioningAxis::update_status() noexcept {
                                       cycle_index(setpoint_.position, start, length))
           : 0;
   db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
+  db_.StatusPositioning.SuperimposedDistance = superimposed_.distance();
   db_.StatusPositioning.SetpointExecutionTime =
       generator_ == Generator::kPosition ? std::max(0.0, position_profile().duration() - profile_time_) : 0.0;
 
@@ -722,7 +741,8 @@ void PositioningAxis::update_status() noexcept {
   const bool enabled = test(sw, StatusWordBit::kEnable);
   const bool settled = generator_ == Generator::kIdle;
   const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
-  const bool job_running = motion_.id != 0 || pending_.id != 0 || (core_.stop.id != 0 && !core_.stop.done);
+  const bool job_running = motion_.id != 0 || pending_.id != 0 || (core_.stop.id != 0 && !core_.stop.done) ||
+                           !superimposed_.settled();
   db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
       retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   const PositioningOutcome outcome = positioning_.status().outcome;
@@ -743,6 +763,9 @@ void PositioningAxis::update_status() noexcept {
                              : MotionInFunctionState::kNone;
   assign(sw, StatusWordBit::kMotionInCommand, motion_in != MotionInFunctionState::kNone);
   db_.StatusMotionIn.FunctionState = static_cast<std::int32_t>(motion_in);
+  assign(sw, StatusWordBit::kMoveSuperimposedCommand, superimposed_.job() == SuperimposedMotion::Job::kMove);
+  assign(sw2, StatusWord2Bit::kHaltSuperimposedCommand,
+         superimposed_.job() == SuperimposedMotion::Job::kHalt);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
   // ramp passes a = 0 only for an instant).
   const bool constant =
@@ -784,6 +807,7 @@ void PositioningAxis::restart() noexcept {
   assign(db_.StatusWord, changed, false);
   db_.OperativeSensor = db_.PositionControl.InitialOperativeSensor;
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
+  superimposed_ = SuperimposedMotion{};
   motion_ = Motion{};
   pending_ = Motion{};
   generator_ = Generator::kIdle;

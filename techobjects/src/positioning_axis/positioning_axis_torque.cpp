@@ -124,6 +124,7 @@ void PositioningAxis::apply_clamping() noexcept {
   const bool into_stop = motion_.id != 0 && setpoint_.velocity * clamping_.stop_direction() > 0.0;
   if (!clamp_abort_pending_ && !into_stop) return;
   clamp_abort_pending_ = false;
+  abort_superimposed(0);
   abort_motion(0);
   abort_pending(0);
   abort_synchronous(0);

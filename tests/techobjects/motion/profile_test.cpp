@@ -504,6 +504,7 @@ void check_profile(const Profile& profile, const Case& c, const Bounds& bounds, 
   ASSERT_GE(duration, 0.0);
   const auto segments = profile.segments();
   ASSERT_LE(segments.size(), kMaxProfileSegments);
+  ASSERT_FALSE(profile.truncated()) << "the plan needed more than kMaxProfileSegments segments";
   for (std::size_t i = 0; i < segments.size(); ++i) {
     EXPECT_LE(std::abs(segments[i].jerk), jerk * (1 + 1e-12));
     if (i > 0) {

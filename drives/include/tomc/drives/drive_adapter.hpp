@@ -40,6 +40,20 @@ struct DeviceConfig {
   std::uint16_t telegram(Slot s) const noexcept;
 };
 
+// The shared codecs of a device's slots (TelegramCodec::shared), one per direction; an unused slot (or a
+// telegram the codec rejects: validate() names it) holds TelegramCodec::empty(), whose frame_size() is 0.
+// Both ends of the link use it: the technology object's DriveConnection and the simulated drives.
+struct DeviceCodecs {
+  std::array<const telegrams::TelegramCodec*, kSlotCount> setpoint{};
+  std::array<const telegrams::TelegramCodec*, kSlotCount> actual{};
+
+  DeviceCodecs() noexcept;  // every slot unused
+  explicit DeviceCodecs(const DeviceConfig& config) noexcept;
+  const telegrams::TelegramCodec& operator()(telegrams::Direction d, Slot s) const noexcept {
+    return *(d == telegrams::Direction::kSetpoint ? setpoint : actual)[static_cast<std::size_t>(s)];
+  }
+};
+
 // Empty when the configuration is usable, else one line naming the problem (e.g. "drive_telegram: 104 ...").
 std::string validate(const DeviceConfig& config);
 

@@ -96,8 +96,7 @@ class SimulatedDrive final : public DriveAdapter {
   DeviceConfig config_;
   SimulatedDriveParameters p_;
   MotorLoad mechanics_;  // after p_: built from it
-  std::array<telegrams::TelegramCodec, kSlotCount> setpoint_codecs_{};
-  std::array<telegrams::TelegramCodec, kSlotCount> actual_codecs_{};
+  DeviceCodecs codecs_;
 
   // received setpoints
   DeviceFrames setpoint_frames_{};

@@ -72,8 +72,8 @@ class Telegram3Actor : public DriveAdapter {
   io::HardwareIo* hw_;
   ActorParameters base_;
   DeviceConfig config_{};
-  telegrams::TelegramCodec setpoint_codec_{};
-  telegrams::TelegramCodec actual_codec_{};
+  const telegrams::TelegramCodec* setpoint_codec_ = &telegrams::TelegramCodec::empty();
+  const telegrams::TelegramCodec* actual_codec_ = &telegrams::TelegramCodec::empty();
   DeviceFrames setpoint_frames_{};
   bool cyclic_data_ = false;
   telegrams::SetpointSignals sp_{};

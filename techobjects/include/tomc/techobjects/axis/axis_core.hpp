@@ -50,6 +50,8 @@ enum class AxisJobKind : std::uint8_t {
   kPositionProfile,   // MC_PositionProfile (spec 03 §4.7)
   kMotionInVelocity,  // MC_MotionInVelocity (spec 03 §4.17.1)
   kMotionInPosition,  // MC_MotionInPosition (spec 03 §4.17.2)
+  kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
+  kHaltSuperimposed,  // MC_HaltSuperimposed
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).

@@ -100,6 +100,20 @@ struct MotionInPositionInputs {
   double Velocity = 0.0;
   double Acceleration = 0.0;
 };
+// Inputs of MC_MoveSuperimposed (spec 03 §4.10).
+struct MoveSuperimposedInputs {
+  double Distance = 0.0;
+  double VelocityDiff = -1.0;
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+};
+// Inputs of MC_HaltSuperimposed (spec 03 §4.11).
+struct HaltSuperimposedInputs {
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  bool AbortAcceleration = false;
+};
 // Inputs of MC_Home (spec 03 §4.3).
 struct HomeInputs {
   double Position = 0.0;

@@ -113,8 +113,7 @@ class DriveConnection {
  private:
   DeviceIo* device_ = nullptr;
   DriveConnectionConfig config_{};
-  std::array<telegrams::TelegramCodec, drives::kSlotCount> setpoint_codecs_{};
-  std::array<telegrams::TelegramCodec, drives::kSlotCount> actual_codecs_{};
+  drives::DeviceCodecs codecs_;  // pointers to shared, immutable codecs (64 bytes for the four slots)
 
   telegrams::SetpointSignals drive_sp_{};
   telegrams::SetpointSignals supplementary_sp_{};

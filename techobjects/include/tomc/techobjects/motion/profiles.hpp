@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 namespace tomc::techobjects {
@@ -50,8 +51,10 @@ struct ProfileSegment {
   double jerk = 0;
 };
 
-// Worst case: a velocity change through zero (2 × 3 segments) + cruise + braking (3) = 10.
-inline constexpr std::size_t kMaxProfileSegments = 12;
+// Worst case: a velocity change through zero (2 × 3 segments) + cruise + braking (3) = 10; 3·10^6 random
+// plans from any state see at most 9 (decision U2: 10, not 12, to make room for the superimposed profile).
+// A plan that would need more is marked truncated(); the property tests assert it never is.
+inline constexpr std::size_t kMaxProfileSegments = 10;
 // Fixed bound of one PositionProfile root search (bracketed, Chandrupatla's method); a plan runs at most 3
 // of them (decision S18), so at most 4 + 3 × 101 evaluations of a closed-form velocity change and stop.
 // The randomized tests and the benchmark see at most 9 iterations per search.
@@ -63,11 +66,13 @@ class PiecewiseJerkProfile {
   MotionState at(double t) const noexcept;
   double duration() const noexcept { return duration_; }
   std::span<const ProfileSegment> segments() const noexcept { return {segments_.data(), count_}; }
+  bool truncated() const noexcept { return truncated_; }  // more segments than kMaxProfileSegments were built
 
  private:
   friend class ProfileBuilder;
   std::array<ProfileSegment, kMaxProfileSegments> segments_{};
-  std::size_t count_ = 0;
+  std::uint32_t count_ = 0;
+  bool truncated_ = false;
   double duration_ = 0;
   MotionState end_{};  // exact final state; beyond duration() the profile continues at end_.velocity
 };
@@ -85,6 +90,7 @@ class VelocityProfile {
   MotionState at(double t) const noexcept { return profile_.at(t); }  // t from 0; beyond duration(): cruise
   double duration() const noexcept { return profile_.duration(); }    // time to target velocity with a = 0
   std::span<const ProfileSegment> segments() const noexcept { return profile_.segments(); }
+  bool truncated() const noexcept { return profile_.truncated(); }
   // Velocity error of the closed-form end state before it was snapped to the target (for tests).
   double end_error() const noexcept { return end_error_; }
 
@@ -103,6 +109,7 @@ class PositionProfile {
   MotionState at(double t) const noexcept { return profile_.at(t); }  // beyond duration(): rest at target
   double duration() const noexcept { return profile_.duration(); }
   std::span<const ProfileSegment> segments() const noexcept { return profile_.segments(); }
+  bool truncated() const noexcept { return profile_.truncated(); }
   // Position error of the closed-form end state before it was snapped to the target (for tests).
   double end_error() const noexcept { return end_error_; }
   // Peak (or cruise) velocity the plan settled on, and the iterations of its longest root search (<= the

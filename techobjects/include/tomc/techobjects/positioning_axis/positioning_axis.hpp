@@ -45,6 +45,7 @@
 #include "tomc/techobjects/position/passive_homing.hpp"
 #include "tomc/techobjects/position/position_control.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
+#include "tomc/techobjects/positioning_axis/superimposed_motion.hpp"
 #include "tomc/techobjects/positioning_axis/synchronous_slot.hpp"
 #include "tomc/techobjects/runtime/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
@@ -86,6 +87,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   Submission position_profile(const PositionProfileInputs& in) noexcept;                    // 9.7
   Submission move_velocity(const MoveVelocityInputs& in) noexcept;                          // 9.8
   Submission jog(JobId running, const JogInputs& in) noexcept;                              // 9.9
+  Submission move_superimposed(const MoveSuperimposedInputs& in) noexcept;                  // 9.10
+  Submission halt_superimposed(const HaltSuperimposedInputs& in) noexcept;                  // 9.11
   Submission stop(const StopInputs& in) noexcept;                                           // 9.13
   // 9.15: 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart),
   // 1020 Actor.RemoveEnableReaction (immediately).
@@ -121,6 +124,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
   const MotionState& setpoint() const noexcept { return setpoint_; }
+  // The superimposed part of it (MC_MoveSuperimposed, MC_HaltSuperimposed); the base motion is the rest.
+  const SuperimposedMotion& superimposed() const noexcept { return superimposed_; }
   // The same after the dynamic filter, as the position controller used it in the last servo cycle.
   const MotionState& filtered_setpoint() const noexcept { return filtered_; }
   const BacklashCompensation& backlash() const noexcept { return backlash_; }
@@ -140,9 +145,21 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // kTimeProfile: MC_PositionProfile on its profile; kMotionIn: the MotionIn inputs act directly.
   enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous, kTimeProfile, kMotionIn };
 
-  // A base motion job (running or appended). MC_PositionProfile and MotionIn reuse the fields named for them
-  // below instead of adding their own (the 8 KiB budget per axis, decision L2).
+  // A base motion job (running or appended); members ordered to leave no padding. MC_PositionProfile and
+  // MotionIn reuse the fields named for them below instead of adding their own (the 8 KiB budget, decision
+  // L2).
   struct Motion {
+    ProfileLimits limits{};       // resolved (position units), velocity before override
+    double command_velocity = 0;  // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp;
+                                  // MotionIn: Velocity
+    double target = 0;            // positioning: continuous target position; MotionInPosition: Position
+    double distance =
+        0;  // appended positioning: target relative to the end of the running job; PositionProfile:
+            // the time on the profile (StartTime until it follows it); MotionIn: Acceleration
+    double absolute_position = 0;  // appended MoveAbsolute: the requested position; PositionProfile: the
+                                   // shift from profile positions to the continuous position
+    double planned_velocity = 0;  // the velocity limit the profile was planned with (override changes)
+    const TimePositionProfile* time_profile = nullptr;  // PositionProfile: the user's profile
     JobId id = 0;
     std::int32_t direction = 1;  // appended MoveAbsolute on a modulo axis; PositionProfile: ProfileReference
     JobKind kind = JobKind::kNone;
@@ -151,18 +168,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     bool position_controlled = true;
     bool interpolation_done =
         false;                     // positioning: the setpoint has reached the target (PositionProfile: end)
+    bool halt_base_only = false;   // MC_Halt Mode 1: a §9.19.1 C3 job, the superimposed motion goes on
     bool profile_limited = false;  // PositionProfile: DynamicLimits hold the setpoint off the profile
-    ProfileLimits limits{};        // resolved (position units), velocity before override
-    double command_velocity = 0;   // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp;
-                                   // MotionIn: Velocity
-    double target = 0;             // positioning: continuous target position; MotionInPosition: Position
-    double distance =
-        0;  // appended positioning: target relative to the end of the running job; PositionProfile:
-            // the time on the profile (StartTime until it follows it); MotionIn: Acceleration
-    double absolute_position = 0;  // appended MoveAbsolute: the requested position; PositionProfile: the
-                                   // shift from profile positions to the continuous position
-    double planned_velocity = 0;  // the velocity limit the profile was planned with (override changes)
-    const TimePositionProfile* time_profile = nullptr;  // PositionProfile: the user's profile
   };
 
   // homing (positioning_axis_homing.cpp)
@@ -238,16 +245,24 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
                                                 double jerk, ProfileLimits& out) noexcept;
   std::uint16_t arbitrate_motion(NewJob row, bool& queue) noexcept;
-  std::array<RunningJob, 4> running_jobs(std::size_t& n) const noexcept;
+  std::array<RunningJob, 5> running_jobs(std::size_t& n) const noexcept;
   void abort_motion(std::uint16_t error_id) noexcept;
   void abort_pending(std::uint16_t error_id) noexcept;
+  // superimposed motion (positioning_axis_superimposed.cpp)
+  // The running superimposed job ends (CommandAborted, or Error with error_id). fold: its velocity and
+  // acceleration go over into the base motion (every abort but a new superimposed job's, §9.19.1 R6 x C7).
+  void abort_superimposed(std::uint16_t error_id, bool fold = true) noexcept;
+  void run_superimposed() noexcept;  // MC_Interpolator, after the base setpoint: total = base + superimposed
+  void settle_superimposed() noexcept;  // both motions finished: the superimposed part joins the base
+  MotionState base_setpoint() const noexcept;
   std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
   void start_positioning(Motion motion) noexcept;
   // MC_PositionProfile (position_profile_job.cpp)
   void start_motion(const Motion& motion) noexcept;  // an appended job becomes active
   void start_time_profile(Motion motion) noexcept;   // transition profile, or on the profile at once
-  // The transition ended `elapsed` s ago (within this cycle): follow the profile from StartTime + elapsed.
-  void enter_time_profile(double elapsed = 0.0) noexcept;
+  // The transition ended `elapsed` s ago (within this cycle) with the base setpoint at `base_position`:
+  // follow the profile from StartTime + elapsed.
+  void enter_time_profile(double base_position, double elapsed = 0.0) noexcept;
   void follow_time_profile() noexcept;  // Generator::kTimeProfile, one interpolator cycle
   void check_profile_limits(const Motion& motion) noexcept;  // alarms 501/502 (seed 004 §6.8.4)
   // MotionIn (motion_in.cpp)
@@ -296,15 +311,12 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }
 
-  AxisDigitalInputs inputs_{};
   double servo_cycle_s_ = 0.001;
-  bool servo_cycle_known_ = false;
 
   // components
   AxisUnitFactors units_{};
   AxisMechanics mechanics_{};
   EncoderMechanics encoder_mechanics_{};
-  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
   EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
   ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
   // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
@@ -325,12 +337,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
   ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
 
-  bool position_controlled_ = true;
-
   // motion
   Motion motion_{};
   Motion pending_{};  // BufferMode 1
-  Generator generator_ = Generator::kIdle;
   // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
   // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
   std::variant<VelocityProfile, PositionProfile> profile_;
@@ -341,10 +350,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     return *std::get_if<PositionProfile>(&profile_);
   }
   double profile_time_ = 0.0;
-  MotionState setpoint_{};                  // continuous position units
-  bool positioning_start_pending_ = false;  // servo starts the positioning monitor with this target
+  MotionState setpoint_{};  // continuous position units: base + superimposed
+  SuperimposedMotion superimposed_{};
   double positioning_target_ = 0.0;
-  bool limit_stop_ = false;  // a software-limit stop to limit_stop_position_ is in force
   double limit_stop_position_ = 0.0;
   double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
   double last_actual_velocity_ = 0.0;
@@ -356,28 +364,34 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   PassiveHomingSearch passive_search_{};
   InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
   std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
-  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
-  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
   RetainedEncoderData retained_{};
-  bool retained_restored_ = false;
 
   // actual values (continuous position units)
   double actual_position_ = 0.0;
   double actual_velocity_ = 0.0;
-  bool homed_ = false;
   double reference_mark_position_ = 0.0;
-  bool actual_valid_ = false;
-
-  // alarms
-  bool encoder_fault_seen_ = false;
-  FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
 
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
   ClampingMonitor clamping_{};
+
+  // ---- one-byte state, kept together so that it leaves no padding (8 KiB per axis TO, issue 18) ----
+  AxisDigitalInputs inputs_{};
+  bool servo_cycle_known_ = false;
+  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
+  bool position_controlled_ = true;
+  Generator generator_ = Generator::kIdle;
+  bool positioning_start_pending_ = false;  // servo starts the positioning monitor with positioning_target_
+  bool limit_stop_ = false;                 // a software-limit stop to limit_stop_position_ is in force
+  limits::LimitSide reversal_cam_ = limits::LimitSide::kNone;  // reached this cycle (for the interpolator)
+  limits::LimitSide reversal_cam_seen_ = limits::LimitSide::kNone;  // reported by the monitor last cycle
+  bool retained_restored_ = false;
+  bool homed_ = false;
+  bool actual_valid_ = false;
+  bool encoder_fault_seen_ = false;
+  FollowingErrorAlarm following_error_state_ = FollowingErrorAlarm::kNone;
   bool clamp_abort_pending_ = false;  // MC_Servo detected the stop; MC_Interpolator ends the jobs
   bool drive_has_momred_ = false;     // the drive telegram carries MOMRED (resolved at construction)
   bool drive_has_meldw_ = false;      // ... and MELDW
-
   SynchronousSlot* synchronous_ = nullptr;
 };
 

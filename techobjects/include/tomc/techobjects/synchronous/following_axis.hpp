@@ -18,7 +18,9 @@ class FollowingAxis {
   // ---- state and configuration ----
   const TechnologyObject* as_object() const noexcept { return &axis_; }
   const LeadingValueSource* as_leading_value() const noexcept { return &axis_; }
-  const MotionState& setpoint() const noexcept { return axis_.setpoint_; }
+  // The base motion's setpoint: synchronous operation generates the base; a superimposed motion (spec 01
+  // §8.14: on a following axis it affects only the follower) is added on top by the axis.
+  MotionState setpoint() const noexcept { return axis_.base_setpoint(); }
   const PositioningAxisData& data() const noexcept { return axis_.db_; }
   const AxisUnitFactors& units() const noexcept { return axis_.units_; }
   ModuloRange modulo() const noexcept {
@@ -59,7 +61,11 @@ class FollowingAxis {
     adopt_motion(id, kind);
     axis_.plan_position(target, limits);
   }
-  void set_setpoint(const MotionState& s) noexcept { axis_.setpoint_ = s; }
+  void set_setpoint(const MotionState& s) noexcept {  // the base setpoint
+    const MotionState& sup = axis_.superimposed_.state();
+    axis_.setpoint_ =
+        MotionState{s.position + sup.position, s.velocity + sup.velocity, s.acceleration + sup.acceleration};
+  }
   // The job ended: it is no longer the axis' motion.
   void end_motion(JobId id) noexcept {
     if (axis_.motion_.id == id) axis_.motion_ = PositioningAxis::Motion{};

@@ -1,0 +1,73 @@
+#pragma once
+// The superimposed part of a positioning or synchronous axis' setpoint (seed 004 §6.7.10, spec 01 §8.14,
+// spec 03 §4.10–4.11): MC_MoveSuperimposed adds a relative move to whatever the base motion does, and
+// MC_HaltSuperimposed brakes that part to standstill. The axis' setpoint is base + superimposed; the data
+// block shows the total. Pure motion math for MC_Interpolator: no heap, no exceptions, bounded work (at most
+// one replan per cycle, each a bounded plan of profiles.hpp).
+//
+// Limits (spec 01 §8.14, single-axis base): the superimposed velocity may use only what the base leaves of
+// the velocity limit, v_sup ∈ [−(v_limit + v_base), v_limit − v_base], and at most VelocityDiff. The profile
+// is replanned (from the present superimposed state, with the job's jerk) whenever that headroom falls below
+// the planned velocity or rises again (decision U4).
+#include <cstdint>
+#include <variant>
+
+#include "tomc/techobjects/axis/job.hpp"
+#include "tomc/techobjects/motion/profiles.hpp"
+
+namespace tomc::techobjects {
+
+class SuperimposedMotion {
+ public:
+  enum class Job : std::uint8_t { kNone, kMove, kHalt };
+
+  // The superimposed part of the setpoint: position = distance since the last fold().
+  const MotionState& state() const noexcept { return state_; }
+  // StatusPositioning.SuperimposedDistance: the distance superimposed jobs travelled since both motions
+  // last finished (folded parts included).
+  double distance() const noexcept { return folded_distance_ + state_.position; }
+  JobId job_id() const noexcept { return id_; }
+  Job job() const noexcept { return job_; }
+  // No job and no superimposed velocity or acceleration left.
+  bool settled() const noexcept {
+    return job_ == Job::kNone && !planned_ && state_.velocity == 0.0 && state_.acceleration == 0.0;
+  }
+
+  // MC_MoveSuperimposed: `distance` beyond the present superimposed position, from the present superimposed
+  // state. limits.velocity is VelocityDiff. A job this one replaces ends without a fold (§9.19.1 R6 x C7).
+  void move(JobId id, double distance, const ProfileLimits& limits) noexcept;
+  // MC_HaltSuperimposed: brakes the superimposed velocity to 0 (AbortAcceleration: from a = 0 at once).
+  void halt(JobId id, const ProfileLimits& limits, bool abort_acceleration) noexcept;
+  // One interpolator cycle; `headroom_positive`/`headroom_negative` are the velocities the base motion
+  // leaves in each direction (+inf: no limit, e.g. a following axis, spec 01 §8.14). Returns true in the
+  // cycle the job's motion is complete (the job itself is ended by the caller: end_job()).
+  bool advance(double dt, double headroom_positive, double headroom_negative) noexcept;
+  // The superimposed setpoint `dt` after the present one, without replanning (software-limit look-ahead).
+  MotionState predicted(double dt) const noexcept;
+  void end_job() noexcept {
+    id_ = 0;
+    job_ = Job::kNone;
+  }
+  // The base motion takes the superimposed state over: an abort by a base job (its velocity and acceleration
+  // continue in the base motion's plan, spec 01 §8.8 "current dynamics are carried into the new motion"),
+  // or both motions finished. The job ends; distance() keeps counting what was travelled.
+  void fold() noexcept;
+  // Both motions finished or aborted: SuperimposedDistance returns to 0 (spec 01 §8.14).
+  void reset_distance() noexcept { folded_distance_ = 0.0; }
+
+ private:
+  void replan(double velocity_limit) noexcept;
+
+  std::variant<VelocityProfile, PositionProfile> profile_;
+  MotionState state_{};
+  ProfileLimits limits_{};  // the job's: velocity = VelocityDiff
+  double target_ = 0.0;     // kMove: the superimposed position to reach
+  double time_ = 0.0;       // in the present profile
+  double planned_velocity_ = 0.0;
+  double folded_distance_ = 0.0;
+  JobId id_ = 0;
+  Job job_ = Job::kNone;
+  bool planned_ = false;  // a profile is running
+};
+
+}  // namespace tomc::techobjects

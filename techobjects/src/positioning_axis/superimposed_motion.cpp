@@ -1,0 +1,116 @@
+#include "tomc/techobjects/positioning_axis/superimposed_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tomc::techobjects {
+namespace {
+
+// A headroom change smaller than this share of VelocityDiff does not replan (a base ramp would otherwise
+// replan on every cycle for a difference no one can see); shrinking always replans.
+constexpr double kRaiseHysteresis = 1e-3;
+
+}  // namespace
+
+void SuperimposedMotion::move(JobId id, double distance, const ProfileLimits& limits) noexcept {
+  id_ = id;
+  job_ = Job::kMove;
+  limits_ = limits;
+  target_ = state_.position + distance;
+  replan(limits.velocity);
+}
+
+void SuperimposedMotion::halt(JobId id, const ProfileLimits& limits, bool abort_acceleration) noexcept {
+  id_ = id;
+  job_ = Job::kHalt;
+  limits_ = limits;
+  if (abort_acceleration) state_.acceleration = 0.0;  // spec 03 §4.11 AbortAcceleration
+  ProfileLimits l = limits;
+  l.velocity = std::numeric_limits<double>::infinity();
+  l.jerk = replanning_jerk(state_.velocity, state_.acceleration, l.jerk, true);  // decision R1
+  VelocityProfile stop;
+  if (stop.plan(state_, 0.0, l)) {
+    profile_ = stop;
+    time_ = 0.0;
+    planned_ = true;
+  }
+}
+
+void SuperimposedMotion::replan(double velocity_limit) noexcept {
+  planned_velocity_ = velocity_limit;
+  time_ = 0.0;
+  if (velocity_limit > 0.0) {
+    ProfileLimits l = limits_;
+    l.velocity = velocity_limit;
+    PositionProfile to_target;
+    if (to_target.plan(state_, target_, l)) {
+      profile_ = to_target;
+      planned_ = true;
+    }
+    return;
+  }
+  // No headroom in the direction of travel: the superimposed part stops and waits (as an override of 0 %).
+  VelocityProfile stop;
+  if (stop.plan(state_, 0.0, limits_)) {
+    profile_ = stop;
+    planned_ = true;
+  }
+}
+
+bool SuperimposedMotion::advance(double dt, double headroom_positive, double headroom_negative) noexcept {
+  if (job_ == Job::kMove) {
+    const double direction = target_ - state_.position;
+    const double headroom = direction >= 0.0 ? headroom_positive : headroom_negative;
+    const double allowed = std::clamp(headroom, 0.0, limits_.velocity);
+    const double tolerance = 1e-9 * limits_.velocity;
+    const bool at_target = !planned_ && state_.position == target_;
+    if (!at_target && (allowed < planned_velocity_ - tolerance ||
+                       allowed > planned_velocity_ + kRaiseHysteresis * limits_.velocity ||
+                       (allowed == limits_.velocity && planned_velocity_ < allowed - tolerance))) {
+      replan(allowed);
+    }
+  }
+  if (!planned_) {
+    state_.position += state_.velocity * dt;
+    state_.acceleration = 0.0;
+    return false;
+  }
+  time_ += dt;
+  const bool position = std::holds_alternative<PositionProfile>(profile_);
+  const double duration = position ? std::get<PositionProfile>(profile_).duration()
+                                   : std::get<VelocityProfile>(profile_).duration();
+  if (time_ < duration - 1e-9) {
+    state_ = position ? std::get<PositionProfile>(profile_).at(time_)
+                      : std::get<VelocityProfile>(profile_).at(time_);
+    return false;
+  }
+  planned_ = false;
+  if (position) {
+    state_ = MotionState{target_, 0.0, 0.0};  // exact: the job's distance
+    return true;
+  }
+  const MotionState end = std::get<VelocityProfile>(profile_).at(duration);
+  state_ = MotionState{end.position, 0.0, 0.0};
+  // A stop for lack of headroom is not the end of a move: it waits for headroom (next advance replans).
+  return job_ == Job::kHalt;
+}
+
+MotionState SuperimposedMotion::predicted(double dt) const noexcept {
+  if (!planned_) return MotionState{state_.position + state_.velocity * dt, state_.velocity, 0.0};
+  const double t = time_ + dt;
+  if (const auto* p = std::get_if<PositionProfile>(&profile_)) {
+    return t >= p->duration() ? MotionState{target_, 0.0, 0.0} : p->at(t);
+  }
+  const auto& v = std::get<VelocityProfile>(profile_);
+  return t >= v.duration() ? MotionState{v.at(v.duration()).position, 0.0, 0.0} : v.at(t);
+}
+
+void SuperimposedMotion::fold() noexcept {
+  folded_distance_ += state_.position;
+  state_ = MotionState{};
+  planned_ = false;
+  end_job();
+}
+
+}  // namespace tomc::techobjects

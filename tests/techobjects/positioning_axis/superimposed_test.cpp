@@ -1,0 +1,379 @@
+// MC_MoveSuperimposed / MC_HaltSuperimposed on the positioning axis: seed 004 §6.7.10 (spec 01 §8.14), the
+// instructions of spec 03 §4.10–4.11 with their function diagrams, MC_Halt Mode 1 vs Mode 0 (spec 03 §4.4),
+// the §9.19.1 row R6 and column C7 (spec 03 §6.1) and the test scenarios T28, T39, T40, T50, T51 of spec 03
+// §8 and 39, 40 of spec 01. Simulated drive, 1 ms servo = interpolator cycle.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "positioning_axis_fixture.hpp"
+#include "tomc/instructions/mc_halt_superimposed.hpp"
+#include "tomc/instructions/mc_move_superimposed.hpp"
+#include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/datablocks/status_bits.hpp"
+
+namespace {
+
+using tomc::instructions::MC_HaltSuperimposed;
+using tomc::instructions::MC_MoveSuperimposed;
+using tomc::techobjects::PositioningAxis;
+using tomc::techobjects::StatusWord2Bit;
+using tomc::techobjects::StatusWordBit;
+namespace error_id = tomc::techobjects::error_id;
+
+bool bit(std::uint32_t word, StatusWordBit b) {
+  return (word >> static_cast<unsigned>(b)) & 1u;
+}
+bool bit(std::uint32_t word, StatusWord2Bit b) {
+  return (word >> static_cast<unsigned>(b)) & 1u;
+}
+
+struct SuperimposedMachine : tomc::testing::PositioningAxisMachine {
+  SuperimposedMachine() : SuperimposedMachine(tomc::testing::linear_axis_data()) {}
+  explicit SuperimposedMachine(const tomc::techobjects::PositioningAxisData& data)
+      : PositioningAxisMachine(data) {
+    user = [this] {
+      move_superimposed(*axis);
+      move_superimposed2(*axis);
+      halt_superimposed(*axis);
+    };
+  }
+  MC_MoveSuperimposed<PositioningAxis> move_superimposed;
+  MC_MoveSuperimposed<PositioningAxis> move_superimposed2;
+  MC_HaltSuperimposed<PositioningAxis> halt_superimposed;
+};
+
+// Base MoveRelative of 50 mm at 50 mm/s (trapezoid, 500 mm/s²) from a homed axis at 0.
+void start_base_move_relative(SuperimposedMachine& m, double distance = 50.0) {
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  m.move_relative.Distance = distance;
+  m.move_relative.Velocity = 50.0;
+  m.move_relative.Acceleration = 500.0;
+  m.move_relative.Deceleration = 500.0;
+  m.move_relative.Execute = true;
+  m.run(200);  // ① : 0.2 s into the base move, 50 mm/s reached after 0.1 s
+  ASSERT_TRUE(m.move_relative.Busy);
+}
+
+// Spec 03 §4.10 function diagram, section A (T39): MoveRelative 50 as the base, MoveSuperimposed 50 at ①:
+// the axis travels 50 + 50 = 100 and both jobs end Done; StatusWord.X23 while the superimposed job runs.
+TEST(MoveSuperimposed, AddsItsDistanceToTheBaseMotion) {
+  SuperimposedMachine m;
+  start_base_move_relative(m);
+  m.move_superimposed.Distance = 50.0;
+  m.move_superimposed.VelocityDiff = 50.0;
+  m.move_superimposed.Acceleration = 500.0;
+  m.move_superimposed.Deceleration = 500.0;
+  m.move_superimposed.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(m.move_superimposed.Busy);
+  m.run(1);
+  EXPECT_TRUE(bit(m.db().StatusWord, StatusWordBit::kMoveSuperimposedCommand));
+  double fastest = 0.0;
+  const int cycles = m.run_until(
+      [&] {
+        fastest = std::max(fastest, m.db().Velocity);
+        return m.move_relative.Done && m.move_superimposed.Done;
+      },
+      5000);
+  ASSERT_GT(cycles, 0);
+  EXPECT_NEAR(m.db().Position, 100.0, 1e-9);
+  EXPECT_NEAR(fastest, 100.0, 1e-9);  // summed dynamics: 50 + 50 mm/s
+  EXPECT_FALSE(bit(m.db().StatusWord, StatusWordBit::kMoveSuperimposedCommand));
+  EXPECT_FALSE(m.move_superimposed.Error);
+  EXPECT_FALSE(m.move_relative.CommandAborted);  // "the base motion is not influenced" (spec 01 §8.14)
+}
+
+// Section B: −50 at ②: the axis reverses; net travel 50 − 50 = 0, Done_2.
+TEST(MoveSuperimposed, NegativeDistanceReversesTheAxis) {
+  SuperimposedMachine m;
+  start_base_move_relative(m);
+  m.move_superimposed.Distance = -50.0;
+  m.move_superimposed.VelocityDiff = 100.0;
+  m.move_superimposed.Acceleration = 1000.0;
+  m.move_superimposed.Deceleration = 1000.0;
+  m.move_superimposed.Execute = true;
+  double slowest = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  slowest = std::min(slowest, m.db().Velocity);
+                  return m.move_relative.Done && m.move_superimposed.Done;
+                },
+                5000),
+            0);
+  EXPECT_NEAR(m.db().Position, 0.0, 1e-9);
+  EXPECT_LT(slowest, -40.0);  // 50 − 100 mm/s: the total runs backwards
+}
+
+// T40: X23 while MoveSuperimposed runs; HaltSuperimposed in the next cycle aborts it (R6 x C7 = A), X23 = 0,
+// StatusWord2.X7 = 1; after its Done X7 = 0 and the base motion is still Busy (spec 03 §4.11 steps 1–4).
+TEST(HaltSuperimposed, ReplacesTheMoveAndLeavesTheBase) {
+  SuperimposedMachine m;
+  start_base_move_relative(m, 200.0);
+  m.move_superimposed.Distance = 100.0;
+  m.move_superimposed.VelocityDiff = 100.0;
+  m.move_superimposed.Acceleration = 500.0;
+  m.move_superimposed.Deceleration = 500.0;
+  m.move_superimposed.Execute = true;
+  m.run(50);  // superimposed at 25 mm/s, accelerating
+  ASSERT_TRUE(bit(m.db().StatusWord, StatusWordBit::kMoveSuperimposedCommand));
+  m.halt_superimposed.Deceleration = 1000.0;
+  m.halt_superimposed.Jerk = 0.0;
+  m.halt_superimposed.Execute = true;
+  m.run(2);  // the aborted instance shows CommandAborted at its next call
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  EXPECT_TRUE(m.halt_superimposed.Busy);
+  EXPECT_FALSE(bit(m.db().StatusWord, StatusWordBit::kMoveSuperimposedCommand));
+  EXPECT_TRUE(bit(m.db().StatusWord2, StatusWord2Bit::kHaltSuperimposedCommand));
+  // 25 mm/s braked at 1000 mm/s² (trapezoid): 25 ms.
+  const int cycles = m.run_until([&] { return m.halt_superimposed.Done; }, 200);
+  EXPECT_NEAR(cycles + 1, 25, 2);
+  EXPECT_FALSE(bit(m.db().StatusWord2, StatusWord2Bit::kHaltSuperimposedCommand));
+  EXPECT_TRUE(m.move_relative.Busy);
+  EXPECT_NEAR(m.db().Velocity, 50.0, 1e-9);  // the base alone again
+  EXPECT_NEAR(m.axis->superimposed().state().velocity, 0.0, 1e-12);
+}
+
+// Spec 01 scenario 40 / §8.14: HaltSuperimposed without a superimposed motion is Done at once, Busy FALSE.
+TEST(HaltSuperimposed, WithoutSuperimposedMotionIsDoneAtOnce) {
+  SuperimposedMachine m;
+  ASSERT_GT(m.enable(), 0);
+  m.halt_superimposed.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.halt_superimposed.Done);
+  EXPECT_FALSE(m.halt_superimposed.Busy);
+  EXPECT_FALSE(m.halt_superimposed.Error);
+}
+
+// T28: base MoveAbsolute at 100 mm/s plus MoveSuperimposed with VelocityDiff 50: 150 mm/s.
+void start_t28(SuperimposedMachine& m) {
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  m.move_absolute.Position = 1000.0;
+  m.move_absolute.Velocity = 100.0;
+  m.move_absolute.Acceleration = 1000.0;
+  m.move_absolute.Deceleration = 1000.0;
+  m.move_absolute.Execute = true;
+  m.run(150);
+  m.move_superimposed.Distance = 200.0;
+  m.move_superimposed.VelocityDiff = 50.0;
+  m.move_superimposed.Acceleration = 1000.0;
+  m.move_superimposed.Deceleration = 1000.0;
+  m.move_superimposed.Execute = true;
+  m.run(100);
+  ASSERT_NEAR(m.db().Velocity, 150.0, 1e-9);
+}
+
+// MC_Halt Mode 1 (R3 x C7 = "-"): A1 CommandAborted, A2 stays Busy; Done when the base velocity is 0 — the
+// axis then moves at the superimposed 50 mm/s.
+TEST(HaltSuperimposed, HaltMode1StopsTheBaseOnly) {
+  SuperimposedMachine m;
+  start_t28(m);
+  m.halt.Mode = 1;
+  m.halt.Deceleration = 1000.0;
+  m.halt.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.move_absolute.CommandAborted);
+  EXPECT_TRUE(m.move_superimposed.Busy);
+  // 100 mm/s at 1000 mm/s²: the base stands after 100 ms.
+  const int cycles = m.run_until([&] { return m.halt.Done; }, 500);
+  EXPECT_NEAR(cycles + 1, 100, 2);
+  EXPECT_TRUE(m.move_superimposed.Busy);
+  EXPECT_NEAR(m.db().Velocity, 50.0, 1e-9);
+  ASSERT_GT(m.run_until([&] { return m.move_superimposed.Done; }, 5000), 0);
+}
+
+// MC_Halt Mode 0 (R4 x C7 = A): A1 and A2 CommandAborted; Done when the total velocity is 0 (150 mm/s at
+// 1000 mm/s²: 150 ms).
+TEST(HaltSuperimposed, HaltMode0StopsBoth) {
+  SuperimposedMachine m;
+  start_t28(m);
+  m.halt.Mode = 0;
+  m.halt.Deceleration = 1000.0;
+  m.halt.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.move_absolute.CommandAborted);
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  const int cycles = m.run_until([&] { return m.halt.Done; }, 500);
+  EXPECT_NEAR(cycles + 1, 150, 2);
+  EXPECT_NEAR(m.db().Velocity, 0.0, 1e-9);
+}
+
+// T50: a second MoveSuperimposed aborts the first and continues from its state; MoveAbsolute BufferMode 0
+// aborts the superimposed motion (R4 x C7 = A) and takes its velocity over without a step.
+TEST(MoveSuperimposed, PriorityRowR6AndColumnC7) {
+  SuperimposedMachine m;
+  start_t28(m);
+  const double travelled_before = m.axis->superimposed().state().position;
+  m.move_superimposed2.Distance = 10.0;
+  m.move_superimposed2.VelocityDiff = 50.0;
+  m.move_superimposed2.Acceleration = 1000.0;
+  m.move_superimposed2.Deceleration = 1000.0;
+  m.move_superimposed2.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  EXPECT_TRUE(m.move_superimposed2.Busy);
+  EXPECT_TRUE(m.move_absolute.Busy);  // R6 x C3 = "-"
+  ASSERT_GT(m.run_until([&] { return m.move_superimposed2.Done; }, 2000), 0);
+  EXPECT_NEAR(m.axis->superimposed().state().position, travelled_before + 2 * 50.0 * 0.001 + 10.0, 0.06);
+  EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, m.axis->superimposed().state().position, 1e-12);
+
+  SuperimposedMachine n;
+  start_t28(n);
+  n.move_absolute2.Position = 2000.0;
+  n.move_absolute2.Velocity = 100.0;
+  n.move_absolute2.Acceleration = 1000.0;
+  n.move_absolute2.Deceleration = 1000.0;
+  n.move_absolute2.Execute = true;
+  double previous = n.db().Velocity, steepest = 0.0;
+  n.run(1);
+  steepest = std::fabs(n.db().Velocity - previous);
+  previous = n.db().Velocity;
+  n.run(1);
+  steepest = std::max(steepest, std::fabs(n.db().Velocity - previous));
+  previous = n.db().Velocity;
+  EXPECT_TRUE(n.move_superimposed.CommandAborted);
+  EXPECT_TRUE(n.move_absolute.CommandAborted);
+  ASSERT_GT(n.run_until(
+                [&] {
+                  steepest = std::max(steepest, std::fabs(n.db().Velocity - previous));
+                  previous = n.db().Velocity;
+                  return n.db().Velocity <= 100.0 + 1e-9;
+                },
+                500),
+            0);
+  EXPECT_LE(steepest, 1000.0 * 0.001 + 1e-9);  // 150 -> 100 mm/s with the new job's deceleration
+}
+
+// T51: MC_Stop aborts a running MoveSuperimposed (R7 x C7 = A); the stop brakes the total motion.
+TEST(MoveSuperimposed, StopAbortsIt) {
+  SuperimposedMachine m;
+  start_t28(m);
+  m.stop.Mode = 3;
+  m.stop.Deceleration = 1500.0;
+  m.stop.Execute = true;
+  m.run(2);
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  EXPECT_TRUE(m.move_absolute.CommandAborted);
+  const int cycles = m.run_until([&] { return m.stop.Done; }, 500);
+  EXPECT_NEAR(cycles + 1, 100, 2);  // 150 mm/s at 1500 mm/s²
+  // While the stop holds Execute, a superimposed job is rejected (R6 x C6 = N).
+  m.move_superimposed2.Distance = 1.0;
+  m.move_superimposed2.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.move_superimposed2.Error);
+  EXPECT_EQ(m.move_superimposed2.ErrorID, error_id::kLockedByStop);
+}
+
+// Spec 01 scenario 39 (§8.14): base MoveVelocity at 100 mm/s, MaxVelocity 150; MoveSuperimposed +10 mm with
+// VelocityDiff 100: the total never exceeds 150 mm/s; SuperimposedDistance is 10 when done and stays 10 while
+// the base continues; it returns to 0 only when the base motion is finished too.
+TEST(MoveSuperimposed, TotalVelocityStaysWithinTheLimitAndTheDistanceIsShown) {
+  auto data = tomc::testing::linear_axis_data();
+  data.DynamicLimits.MaxVelocity = 150.0;
+  SuperimposedMachine m(data);
+  ASSERT_GT(m.enable(), 0);
+  m.move_velocity.Velocity = 100.0;
+  m.move_velocity.Acceleration = 1000.0;
+  m.move_velocity.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.move_velocity.InVelocity; }, 500), 0);
+  m.move_superimposed.Distance = 10.0;
+  m.move_superimposed.VelocityDiff = 100.0;
+  m.move_superimposed.Acceleration = 1000.0;
+  m.move_superimposed.Deceleration = 1000.0;
+  m.move_superimposed.Execute = true;
+  double fastest = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  fastest = std::max(fastest, m.db().Velocity);
+                  return m.move_superimposed.Done;
+                },
+                2000),
+            0);
+  EXPECT_LE(fastest, 150.0 + 1e-9);
+  EXPECT_NEAR(fastest, 150.0, 1e-6);  // the 50 mm/s the base leaves are used
+  EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, 10.0, 1e-9);
+  m.run(100);
+  EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, 10.0, 1e-9);
+  EXPECT_NEAR(m.db().Velocity, 100.0, 1e-9);
+  m.halt.Deceleration = 1000.0;
+  m.halt.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.halt.Done; }, 500), 0);
+  m.run(1);
+  EXPECT_EQ(m.db().StatusPositioning.SuperimposedDistance, 0.0);
+  const double stopped_at = m.db().Position;
+  m.run(10);
+  EXPECT_EQ(m.db().Position, stopped_at);  // folding into the base moves nothing
+}
+
+// "Superimposed motion requires position-controlled operation" (spec 03 §4.10): 16#8108 otherwise; and the
+// parameter checks of spec 03 §2.1.
+TEST(MoveSuperimposed, RejectsWithoutPositionControlAndInvalidParameters) {
+  SuperimposedMachine m;
+  ASSERT_GT(m.enable(), 0);
+  m.move_velocity.Velocity = 50.0;
+  m.move_velocity.PositionControlled = false;
+  m.move_velocity.Execute = true;
+  m.run(5);
+  m.move_superimposed.Distance = 5.0;
+  m.move_superimposed.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.move_superimposed.Error);
+  EXPECT_EQ(m.move_superimposed.ErrorID, error_id::kNotPositionControlled);
+
+  SuperimposedMachine n;
+  ASSERT_GT(n.enable(), 0);
+  struct Case {
+    double distance, velocity_diff, acceleration, deceleration, jerk;
+    std::uint16_t error;
+  };
+  const Case cases[] = {
+      {std::nan(""), -1.0, -1.0, -1.0, -1.0, error_id::kInvalidPosition},
+      {5.0, 0.0, -1.0, -1.0, -1.0, error_id::kInvalidVelocity},
+      {5.0, -1.0, 0.0, -1.0, -1.0, error_id::kInvalidAcceleration},
+      {5.0, -1.0, -1.0, 0.0, -1.0, error_id::kInvalidDeceleration},
+      {5.0, -1.0, -1.0, -1.0, std::nan(""), error_id::kInvalidJerk},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.error);
+    n.move_superimposed.Execute = false;
+    n.run(1);
+    n.move_superimposed.Distance = c.distance;
+    n.move_superimposed.VelocityDiff = c.velocity_diff;
+    n.move_superimposed.Acceleration = c.acceleration;
+    n.move_superimposed.Deceleration = c.deceleration;
+    n.move_superimposed.Jerk = c.jerk;
+    n.move_superimposed.Execute = true;
+    n.run(1);
+    EXPECT_TRUE(n.move_superimposed.Error);
+    EXPECT_EQ(n.move_superimposed.ErrorID, c.error);
+  }
+  EXPECT_EQ(n.db().Position, 0.0);  // no rejected job moved the axis
+}
+
+// VelocityDiff < 0 takes DynamicDefaults.Velocity (spec 01 §8.1 table): 100 mm/s on a standing axis.
+TEST(MoveSuperimposed, DefaultsAndAStandingBase) {
+  SuperimposedMachine m;
+  ASSERT_GT(m.enable(), 0);
+  m.move_superimposed.Distance = 20.0;
+  m.move_superimposed.Execute = true;
+  double fastest = 0.0;
+  const int cycles = m.run_until(
+      [&] {
+        fastest = std::max(fastest, m.db().Velocity);
+        return m.move_superimposed.Done;
+      },
+      2000);
+  ASSERT_GT(cycles, 0);
+  EXPECT_NEAR(fastest, 100.0, 1e-9);
+  // 20 mm at 100 mm/s with 1000 mm/s² (defaults, trapezoid): 0.1 s ramp each way + 0.1 s cruise = 0.3 s.
+  EXPECT_NEAR(cycles, 300, 2);
+  EXPECT_NEAR(m.db().Position, 20.0, 1e-9);
+  m.run(2);
+  EXPECT_EQ(m.db().StatusPositioning.SuperimposedDistance, 0.0);  // no base motion: settled at once
+  EXPECT_TRUE(bit(m.db().StatusWord, StatusWordBit::kDone));
+}
+
+}  // namespace
