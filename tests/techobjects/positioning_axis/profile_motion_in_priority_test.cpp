@@ -30,7 +30,7 @@ Shown shown(const FB& fb) {
   return s;
 }
 
-enum class Expect { kAbort, kReject, kQueue };
+enum class Expect { kAbort, kReject, kQueue, kBoth };
 
 struct Case {
   std::string cell;  // row x column of §9.19.1
@@ -91,6 +91,9 @@ Shown halt(const ProfileMachine& m) {
   return shown(m.halt);
 }
 // A running MC_Stop holds the axis while Execute stays TRUE, also once Done at standstill (spec 03 §8.2 T19).
+Shown superimposed(const ProfileMachine& m) {
+  return shown(m.superimposed);
+}
 Shown stop(const ProfileMachine& m) {
   Shown s = shown(m.stop);
   s.busy = s.active = m.stop.Busy || m.stop.Done;
@@ -105,6 +108,11 @@ std::vector<Case> cases() {
     };
   };
   const auto start_stop = [](ProfileMachine& m) { m.stop.Execute = true; };
+  const auto start_superimposed = [](ProfileMachine& m) {
+    m.superimposed.Distance = 50.0;
+    m.superimposed.VelocityDiff = 10.0;
+    m.superimposed.Execute = true;
+  };
   const auto relative_appended = [](ProfileMachine& m) {
     m.move_relative.Distance = 10.0;
     m.move_relative.BufferMode = 1;
@@ -178,6 +186,15 @@ std::vector<Case> cases() {
          m.motion_in_position.Enable = true;
        },
        mip, Expect::kAbort},
+      // With MC_MoveSuperimposed (R6 / C7)
+      {"R6 MoveSuperimposed x C8 MotionIn (-)", motion_in, mi, start_superimposed, superimposed,
+       Expect::kBoth},
+      {"R6 MoveSuperimposed x C3 PositionProfile (-)", [](auto& m) { profile(m, 0); }, p1, start_superimposed,
+       superimposed, Expect::kBoth},
+      {"R4 MotionInVelocity x C7 MoveSuperimposed", start_superimposed, superimposed, motion_in, mi,
+       Expect::kAbort},
+      {"R4 PositionProfile BM0 x C7 MoveSuperimposed", start_superimposed, superimposed,
+       [](auto& m) { profile(m, 0); }, p1, Expect::kAbort},
       // MotionIn as the new job against MC_Stop (R4 x C6)
       {"R4 MotionInVelocity x C6 MC_Stop", start_stop, stop, motion_in, mi, Expect::kReject},
   };
@@ -205,6 +222,10 @@ TEST(ProfileMotionInPriority, MatrixCellsAsBehaviour) {
         EXPECT_TRUE(running.busy && !running.aborted) << c.cell;
         EXPECT_TRUE(fresh.error) << c.cell;
         EXPECT_FALSE(fresh.busy) << c.cell;
+        break;
+      case Expect::kBoth:  // "-": both jobs go on
+        EXPECT_TRUE(running.busy && !running.aborted && !running.error) << c.cell;
+        EXPECT_TRUE(fresh.busy && !fresh.error) << c.cell;
         break;
       case Expect::kQueue:
         EXPECT_TRUE(running.busy && running.active && !running.aborted) << c.cell;
