@@ -195,6 +195,38 @@ TEST(CApi, MotionInVelocityOnThePositioningAxis) {
   EXPECT_EQ(tomc_MC_MotionInVelocity_call(m.conveyor, &feed), TOMC_ERROR_WRONG_OBJECT_TYPE);
 }
 
+// MC_MoveSuperimposed through the C ABI (spec 03 §4.10): 20 mm superimposed on the 200 mm base move end at
+// 220 mm, both Done; then MC_HaltSuperimposed without a superimposed motion is Done at once (spec 01 §8.14).
+TEST(CApi, SuperimposedMoveThroughTheGeneratedStructs) {
+  Machine m;
+  PositioningProgram program(200.0);
+  tomc_MC_MoveSuperimposed superimposed;
+  tomc_MC_MoveSuperimposed_init(&superimposed);
+  EXPECT_EQ(superimposed.VelocityDiff, -1.0);
+  superimposed.Distance = 20.0;
+  superimposed.VelocityDiff = 20.0;
+  int cycles = 0;
+  for (; cycles < 8000 && !(program.move.Done && superimposed.Done); ++cycles) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(program(m.slide), TOMC_OK) << last_error();
+    superimposed.Execute = superimposed.Execute || program.move.Busy;  // once the base move runs
+    ASSERT_EQ(tomc_MC_MoveSuperimposed_call(m.slide, &superimposed), TOMC_OK) << last_error();
+    ASSERT_FALSE(superimposed.Error) << superimposed.ErrorID;
+  }
+  EXPECT_TRUE(program.move.Done);
+  EXPECT_TRUE(superimposed.Done);
+  EXPECT_NEAR(read(m.slide, "Position"), 220.0, 1e-9);
+  tomc_MC_HaltSuperimposed halt;
+  tomc_MC_HaltSuperimposed_init(&halt);
+  halt.Execute = true;
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_MC_HaltSuperimposed_call(m.slide, &halt), TOMC_OK) << last_error();
+  EXPECT_TRUE(halt.Done);
+  EXPECT_FALSE(halt.Busy);
+  // A speed axis has no superimposed motion (spec 01 §1.3 table).
+  EXPECT_EQ(tomc_MC_HaltSuperimposed_call(m.conveyor, &halt), TOMC_ERROR_WRONG_OBJECT_TYPE);
+}
+
 TEST(CApi, WritesFollowTheManualsAccessRules) {
   Machine m;
   // DIR: written by the user program, effective at the next MC_Servo.

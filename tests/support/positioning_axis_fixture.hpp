@@ -7,10 +7,12 @@
 
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_halt.hpp"
+#include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
+#include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
@@ -75,6 +77,8 @@ struct PositioningAxisMachine {
       stop(*axis);
       jog(*axis);
       write_parameter(*axis);
+      move_superimposed(*axis);
+      halt_superimposed(*axis);
       if (user) user();
     });
     runtime.start();
@@ -123,6 +127,8 @@ struct PositioningAxisMachine {
   instructions::MC_Stop<PositioningAxis> stop;
   instructions::MC_MoveJog<PositioningAxis> jog;
   instructions::MC_WriteParameter<PositioningAxis> write_parameter;
+  instructions::MC_MoveSuperimposed<PositioningAxis> move_superimposed;
+  instructions::MC_HaltSuperimposed<PositioningAxis> halt_superimposed;
   std::function<void()> user;
 };
 

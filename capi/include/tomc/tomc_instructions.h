@@ -176,6 +176,46 @@ typedef struct tomc_MC_MoveJog {
 TOMC_API void tomc_MC_MoveJog_init(tomc_MC_MoveJog* fb);
 TOMC_API tomc_status tomc_MC_MoveJog_call(tomc_object* axis, tomc_MC_MoveJog* fb);
 
+/* MC_MoveSuperimposed (spec 03 §4.10) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_MoveSuperimposed {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double Distance;
+  double VelocityDiff;
+  double Acceleration;
+  double Deceleration;
+  double Jerk;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_MoveSuperimposed;
+TOMC_API void tomc_MC_MoveSuperimposed_init(tomc_MC_MoveSuperimposed* fb);
+TOMC_API tomc_status tomc_MC_MoveSuperimposed_call(tomc_object* axis, tomc_MC_MoveSuperimposed* fb);
+
+/* MC_HaltSuperimposed (spec 03 §4.11) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_HaltSuperimposed {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double Deceleration;
+  double Jerk;
+  bool AbortAcceleration;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_HaltSuperimposed;
+TOMC_API void tomc_MC_HaltSuperimposed_init(tomc_MC_HaltSuperimposed* fb);
+TOMC_API tomc_status tomc_MC_HaltSuperimposed_call(tomc_object* axis, tomc_MC_HaltSuperimposed* fb);
+
 /* MC_Stop (spec 03 §4.13) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
 typedef struct tomc_MC_Stop {
   tomc_struct_header header; /* set by the init function */

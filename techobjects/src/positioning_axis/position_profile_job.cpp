@@ -115,8 +115,10 @@ void PositioningAxis::start_time_profile(Motion motion) noexcept {
     core_.jobs.set(motion_.id, JobState::kError, error_id::kProfileStartNotReachable);
     motion_ = Motion{};
   } else {
+    // The job's Velocity within the limit; the override does not act on a PositionProfile job (decision L4),
+    // so the transition always ends and the profile always follows (0 % would stop it for good).
     ProfileLimits l = motion_.limits;
-    l.velocity = positioning_velocity(motion_);
+    l.velocity = std::min(motion_.command_velocity, velocity_limit());
     plan_position(target, l);
   }
 }

@@ -57,10 +57,31 @@ struct Step {
 
 // Rising edges of the instances' Done (InVelocity, CommandAborted): the job kinds the script reached. Fixed
 // arrays: the bookkeeping itself must not allocate inside the counted loop.
-enum Reached { kAbsolute, kRelative, kVelocity, kHalt, kStop, kHome, kJog, kReset, kAborted, kReachedCount };
-constexpr const char* kReachedNames[kReachedCount] = {
-    "MC_MoveAbsolute", "MC_MoveRelative", "MC_MoveVelocity",        "MC_Halt", "MC_Stop", "MC_Home",
-    "MC_MoveJog",      "MC_Reset",        "MC_MoveAbsolute aborted"};
+enum Reached {
+  kAbsolute,
+  kRelative,
+  kVelocity,
+  kHalt,
+  kStop,
+  kHome,
+  kJog,
+  kReset,
+  kAborted,
+  kSuperimposed,
+  kHaltSuperimposed,
+  kReachedCount
+};
+constexpr const char* kReachedNames[kReachedCount] = {"MC_MoveAbsolute",
+                                                      "MC_MoveRelative",
+                                                      "MC_MoveVelocity",
+                                                      "MC_Halt",
+                                                      "MC_Stop",
+                                                      "MC_Home",
+                                                      "MC_MoveJog",
+                                                      "MC_Reset",
+                                                      "MC_MoveAbsolute aborted",
+                                                      "MC_MoveSuperimposed",
+                                                      "MC_HaltSuperimposed"};
 struct Edges {
   std::array<bool, kReachedCount> last{};
   std::array<long, kReachedCount> count{};
@@ -178,6 +199,25 @@ std::vector<Step> script(const Axis& a) {
   s.push_back({"jog backward", [](M& m) { m.jog.JogBackward = true; }, [](M&, int k) { return k >= 150; },
                [](M& m) { m.jog.JogBackward = false; }, 151});
   s.push_back({"jog ends", nothing, [](M& m, int) { return !m.jog.Busy; }, nothing});
+  // Superimposed motion on a base move (spec 01 §8.14): a MoveSuperimposed, replaced by a second one, braked
+  // by MC_HaltSuperimposed, then one that runs to its end.
+  s.push_back({"superimposed",
+               [](M& m) {
+                 m.move_relative.Distance = 60.0;
+                 m.move_relative.Execute = true;
+               },
+               [](M& m, int k) {
+                 m.move_superimposed.Distance = k < 60 ? 15.0 : -10.0;
+                 m.move_superimposed.Execute = (k >= 10 && k < 30) || (k >= 40 && k < 50) || k >= 300;
+                 m.halt_superimposed.Jerk = k % 2 == 0 ? 0.0 : -1.0;
+                 m.halt_superimposed.Execute = k >= 80 && k < 90;  // braked within 200 cycles
+                 return m.move_relative.Done && (k < 300 || m.move_superimposed.Done);
+               },
+               [](M& m) {
+                 m.move_relative.Execute = false;
+                 m.move_superimposed.Execute = false;
+                 m.halt_superimposed.Execute = false;
+               }});
   // Direct homing while a positioning job runs (spec 02 §5.7).
   s.push_back({"homing during motion",
                [](M& m) {
@@ -396,6 +436,8 @@ TEST(PositioningAllocation, EveryJobKindRunsWithoutAllocating) {
       p.edges.see(kJog, m.jog.InVelocity);
       p.edges.see(kReset, m.reset.Done);
       p.edges.see(kAborted, m.move_absolute.CommandAborted || m.move_absolute2.CommandAborted);
+      p.edges.see(kSuperimposed, m.move_superimposed.Done);
+      p.edges.see(kHaltSuperimposed, m.halt_superimposed.Done);
     }
   }
   const auto allocated = tomc::testing::allocation_count() - before;

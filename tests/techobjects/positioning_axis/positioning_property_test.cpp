@@ -2,19 +2,21 @@
 // limit switches and (b) a rotary modulo axis, both on the simulated PROFIdrive drive, driven through the
 // MC_* instructions as a user program drives them: MC_MoveAbsolute/MC_MoveRelative (two instances each,
 // random BufferMode 0/1, velocities, accelerations, jerks incl. 0 and "default"), MC_MoveVelocity,
-// MC_MoveJog, MC_Halt, MC_Stop (Modes 0/1/2), override changes, direct homing, MC_Power off/on with every
-// StopMode, injected technology alarms with reactions 1..5 and MC_Reset (with and without Restart) after
-// alarms; and (issue 18) MC_PositionProfile (two instances, random profiles within the dynamic limits,
-// relative, and absolute on the linear axis, random StartTime and BufferMode) and MC_MotionInVelocity fed
-// by an application that keeps its own setpoints within the limits (spec 03 §4.17: "respect the dynamic
-// limits yourself") and brings the velocity to 0 before Enable falls — the limits hold for the total motion.
+// MC_MoveJog, MC_Halt, MC_Stop (Modes 0/1/2), MC_MoveSuperimposed and MC_HaltSuperimposed (issue 18),
+// override changes, direct homing, MC_Power off/on with every StopMode, injected technology alarms with
+// reactions 1..5 and MC_Reset (with and without Restart) after alarms; and MC_PositionProfile (two
+// instances, random profiles within the dynamic limits, relative, and absolute on the linear axis, random
+// StartTime and BufferMode) and MC_MotionInVelocity fed by an application that keeps its own setpoints within
+// the limits (spec 03 §4.17: "respect the dynamic limits yourself") and brings the velocity to 0 before
+// Enable falls — the limits hold for the total motion.
 //
 // Checked in every cycle, each property against the spec section it comes from:
 //  P1 spec 02 §4.5    the setpoint never passes an active software limit on a homed axis (except after direct
 //                     homing during motion: the limits then apply in the new coordinates, and an axis the
 //                     homing put within its braking distance of a limit passes it, 534 — until standstill);
 //  P2 spec 02 §6.1, spec 03 §3.5  every Done of a positioning job comes with |ActualPosition − target| <=
-//                     PositioningMonitoring.Window (on the modulo circle for the rotary axis);
+//                     PositioningMonitoring.Window (on the modulo circle for the rotary axis); the target is
+//                     the base motion's plus the superimposed part (spec 01 §8.14, decision U3);
 //  P3 spec 01 §8.3, §8.5  |setpoint velocity| <= min(DynamicLimits.MaxVelocity, DynamicLimits.Velocity),
 //                     also under Override up to 200 %; beyond it only while an outward acceleration is being
 //                     taken back (|a| shrinking): a jerk-limited replan carries a0 over "tramite lo strappo"
@@ -24,7 +26,8 @@
 //                     while it shrinks; EmergencyDeceleration while an emergency ramp is in force (MC_Stop
 //                     Mode 0, alarm reaction 3, MC_Power StopMode 0) and while a later plan brings that
 //                     acceleration back with the jerk (profiles.hpp: an |a0| above the limit is never
-//                     increased);
+//                     increased); while a superimposed motion moves, the base's bound plus the superimposed
+//                     job's own (decision U4: the total's acceleration is not limited, its velocity is);
 //  P5 spec 02 §6.2    in position-controlled operation |FollowingError| <= FE_max(|v_set|) of the
 //                     FollowingError.* characteristic, and alarm 521 is never raised (a well-tuned axis) —
 //                     except while an axis enabled in motion is braked onto the position of the enable
@@ -160,21 +163,23 @@ struct Tracked {
 };
 
 struct Stats {
-  long done_checked = 0;           // P2 checks made
-  long done_after_homing = 0;      // Done of a job whose coordinate system changed under it (not checked)
-  long limited_cycles = 0;         // P1: cycles with a homed, monitored, generated setpoint
-  long rebased_cycles = 0;         // P1 not checked: homed during motion, not yet at standstill
-  long enabled_in_motion = 0;      // P5: enabled while the axis moved (braked onto the enable position)
-  long fe_alarms_in_motion = 0;    // 521 raised while doing so
-  long moving_cycles = 0;          // generated setpoint with v != 0
-  long controlled_cycles = 0;      // P5 checks made
-  long limit_stops = 0;            // 533 raised by the look-ahead
-  long emergency_cycles = 0;       // cycles braking beyond MaxDeceleration under an emergency ramp
-  long replans = 0;                // positioning jobs replacing a moving one (BufferMode 0)
-  long beyond_velocity_limit = 0;  // P3: cycles past the limit while an outward acceleration is taken back
-  long modulo_turns = 0;           // modulo cycle counter changes
-  long on_profile_cycles = 0;      // MC_PositionProfile on its profile (StatusWord2.X10)
-  long motion_in_cycles = 0;       // MC_MotionInVelocity Busy
+  long done_checked = 0;            // P2 checks made
+  long done_after_homing = 0;       // Done of a job whose coordinate system changed under it (not checked)
+  long limited_cycles = 0;          // P1: cycles with a homed, monitored, generated setpoint
+  long rebased_cycles = 0;          // P1 not checked: homed during motion, not yet at standstill
+  long enabled_in_motion = 0;       // P5: enabled while the axis moved (braked onto the enable position)
+  long fe_alarms_in_motion = 0;     // 521 raised while doing so
+  long moving_cycles = 0;           // generated setpoint with v != 0
+  long controlled_cycles = 0;       // P5 checks made
+  long limit_stops = 0;             // 533 raised by the look-ahead
+  long emergency_cycles = 0;        // cycles braking beyond MaxDeceleration under an emergency ramp
+  long replans = 0;                 // positioning jobs replacing a moving one (BufferMode 0)
+  long beyond_velocity_limit = 0;   // P3: cycles past the limit while an outward acceleration is taken back
+  long modulo_turns = 0;            // modulo cycle counter changes
+  long superimposed_cycles = 0;     // cycles with a superimposed motion moving
+  long done_with_superimposed = 0;  // P2 checks of a target moved by a superimposed distance
+  long on_profile_cycles = 0;       // MC_PositionProfile on its profile (StatusWord2.X10)
+  long motion_in_cycles = 0;        // MC_MotionInVelocity Busy
   double worst_window = 0, worst_fe_ratio = 0, worst_velocity_ratio = 0, worst_acceleration_ratio = 0;
 };
 
@@ -222,6 +227,7 @@ class Run {
     bool controlled = false;
     double position = 0, velocity = 0, acceleration = 0;
     bool elevated = false;  // an acceleration above the normal limit was admissible (P4)
+    bool superimposed_moving = false;
     std::int32_t modulo_cycle = 0;
   };
 
@@ -293,6 +299,8 @@ class Run {
       m.move_velocity.Execute = false;
     if (m.move_velocity.Execute && chance(0.0005)) m.move_velocity.Execute = false;  // the job runs on
     release(m.halt);
+    release(m.move_superimposed);
+    release(m.halt_superimposed);
     release(m.home);
     release(m.reset);
     if (m.stop.Execute && (m.stop.Done || m.stop.Error || m.stop.CommandAborted) && chance(0.01))
@@ -366,6 +374,25 @@ class Run {
       m.jog.Deceleration = dynamic(s_.acceleration);
       m.jog.Jerk = jerk();
       note("MC_MoveJog (Forward, Backward, Velocity)", m.jog.JogForward, m.jog.JogBackward, m.jog.Velocity);
+    }
+    // Superimposed motion on whatever the base does (spec 03 §4.10–4.11).
+    if (chance(p_job * 0.05) && !m.move_superimposed.Execute) {
+      m.move_superimposed.Distance = uniform(-0.25 * s_.distance, 0.25 * s_.distance);
+      m.move_superimposed.VelocityDiff = dynamic(s_.velocity);
+      m.move_superimposed.Acceleration = dynamic(s_.acceleration);
+      m.move_superimposed.Deceleration = dynamic(s_.acceleration);
+      m.move_superimposed.Jerk = jerk();
+      m.move_superimposed.Execute = true;
+      note("MC_MoveSuperimposed (Distance, VelocityDiff, Jerk)", m.move_superimposed.Distance,
+           m.move_superimposed.VelocityDiff, m.move_superimposed.Jerk);
+    }
+    if (chance(p_job * 0.02) && !m.halt_superimposed.Execute) {
+      m.halt_superimposed.Deceleration = dynamic(s_.acceleration);
+      m.halt_superimposed.Jerk = jerk();
+      m.halt_superimposed.AbortAcceleration = chance(0.3);
+      m.halt_superimposed.Execute = true;
+      note("MC_HaltSuperimposed (Deceleration, Jerk)", m.halt_superimposed.Deceleration,
+           m.halt_superimposed.Jerk);
     }
     if (chance(p_job * 0.1) && !m.halt.Execute) {
       m.halt.Deceleration = dynamic(s_.acceleration);
@@ -565,8 +592,11 @@ class Run {
       // The coordinate system moved under the job (or, homing in the user program of the cycle of Done, under
       // the ActualPosition read here).
       if (homing_now && (fb.Busy || fb.Done)) t.target_known = false;
+      // The superimposed part as the job's start saw it, and as its Done saw it: in the cycle of Done both
+      // motions are finished and the part has just joined the base (decision U3), so the cycle before tells.
+      const double superimposed = m_.axis->superimposed().state().position;
       if (t.kind == Kind::kRelative && fb.Active && !t.active) {
-        const double target = m_.axis->setpoint().position + t.distance;
+        const double target = m_.axis->setpoint().position - superimposed + t.distance;  // the base's
         t.target = s_.modulo ? wrap(target, 360.0) : target;
         t.target_known = !homing_now;
       }
@@ -574,12 +604,15 @@ class Run {
         if (!t.target_known) {
           ++stats_.done_after_homing;
         } else {
-          double e = std::fabs(d.ActualPosition - t.target);
+          const double offset = prev_superimposed_;
+          const double target = s_.modulo ? wrap(t.target + offset, 360.0) : t.target + offset;
+          if (offset != 0.0) ++stats_.done_with_superimposed;
+          double e = std::fabs(d.ActualPosition - target);
           if (s_.modulo) e = std::min(e, 360.0 - e);
           stats_.worst_window = std::max(stats_.worst_window, e);
           ++stats_.done_checked;
           EXPECT_LE(e, d.PositioningMonitoring.Window + 1e-9)
-              << where() << ": Done at " << d.ActualPosition << ", target " << t.target;
+              << where() << ": Done at " << d.ActualPosition << ", target " << target;
         }
       }
       t.busy = fb.Busy;
@@ -590,6 +623,7 @@ class Run {
     check_job(m_.move_absolute2, tracked_[1]);
     check_job(m_.move_relative, tracked_[2]);
     check_job(m_.move_relative2, tracked_[3]);
+    prev_superimposed_ = m_.axis->superimposed().state().position;
 
     const double v_limit = std::min(d.DynamicLimits.MaxVelocity, d.DynamicLimits.Velocity);
     if (now.generated) {
@@ -619,12 +653,23 @@ class Run {
       const bool growing = a * now.velocity > 0.0 || std::fabs(now.velocity) > std::fabs(prev_.velocity);
       const double normal = growing ? l.MaxAcceleration : l.MaxDeceleration;
       const double tol = 1e-6 * std::max(l.MaxAcceleration, l.MaxDeceleration);
-      // Above the normal limit only under an emergency ramp, or while a later plan brings such an
-      // acceleration back (never increased).
-      now.elevated =
-          worst > normal + tol &&
-          (emergency_ramp || (prev_.elevated && std::fabs(a) <= std::fabs(prev_.acceleration) + tol));
-      const double bound = now.elevated ? std::max(normal, d.DynamicDefaults.EmergencyDeceleration) : normal;
+      // The superimposed job's own limits are at most the axis' (warnings 502/503 clamp them): while it moves
+      // the total may use both.
+      const bool superimposed_moving = !m_.axis->superimposed().settled() || prev_.superimposed_moving;
+      now.superimposed_moving = !m_.axis->superimposed().settled();
+      if (now.superimposed_moving) ++stats_.superimposed_cycles;
+      const double superimposed_extra =
+          superimposed_moving ? std::max(l.MaxAcceleration, l.MaxDeceleration) : 0.0;
+      // Above the normal limit only under an emergency ramp, with a superimposed motion, or while a later
+      // plan brings such an acceleration back (never increased: a base job that replaces a superimposed one
+      // takes its acceleration over, decision U3).
+      const bool carried = prev_.elevated && std::fabs(a) <= std::fabs(prev_.acceleration) + tol;
+      now.elevated = worst > normal + tol && (emergency_ramp || superimposed_moving || carried);
+      double bound = normal + superimposed_extra;
+      if (now.elevated) {
+        bound = std::max(
+            {bound, d.DynamicDefaults.EmergencyDeceleration, carried ? std::fabs(prev_.acceleration) : 0.0});
+      }
       if (now.elevated) ++stats_.emergency_cycles;
       stats_.worst_acceleration_ratio = std::max(stats_.worst_acceleration_ratio, worst / bound);
       EXPECT_LE(worst, bound + tol) << where() << ": |a| " << std::fabs(a) << ", dv/dt " << dv << " v "
@@ -673,6 +718,7 @@ class Run {
   std::array<techobjects::TimePositionProfile, 2> profiles_{};  // one per instance, unchanged while it runs
   double motion_in_target_ = 0.0;
   Snapshot prev_{};
+  double prev_superimposed_ = 0.0;  // the superimposed part of the setpoint in the last cycle
   Stats stats_{};
   int cycle_ = 0;
   bool busy_phase_ = false;
@@ -706,12 +752,14 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
       "after homing in motion), %ld limit stops; %ld replans; worst |v|/limit %.6f (%ld cycles beyond); "
       "worst |a|/bound "
       "%.4f (%ld cycles above the normal limit); worst FE/permitted %.3f (%ld enables in motion, %ld with "
-      "521); %ld modulo turns\n",
+      "521); %ld modulo turns; %ld cycles with superimposed motion, %ld Done checked with a superimposed "
+      "distance\n",
       seed, s.name.c_str(), st.done_checked, st.done_after_homing, st.worst_window, st.limited_cycles,
       st.rebased_cycles, st.limit_stops, st.replans, st.worst_velocity_ratio, st.beyond_velocity_limit,
       st.worst_acceleration_ratio, st.emergency_cycles, st.worst_fe_ratio, st.enabled_in_motion,
-      st.fe_alarms_in_motion, st.modulo_turns);
+      st.fe_alarms_in_motion, st.modulo_turns, st.superimposed_cycles, st.done_with_superimposed);
   total.done_checked += st.done_checked;
+  total.superimposed_cycles += st.superimposed_cycles;
   total.limited_cycles += st.limited_cycles;
   total.limit_stops += st.limit_stops;
   total.replans += st.replans;
@@ -738,6 +786,7 @@ TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
   EXPECT_GT(total.moving_cycles, kSeeds * kCycles / 4);
   EXPECT_GT(total.controlled_cycles, kSeeds * kCycles / 2);
   EXPECT_GT(total.emergency_cycles, 0);
+  EXPECT_GT(total.superimposed_cycles, kSeeds * kCycles / 200);
   EXPECT_GT(total.on_profile_cycles, kSeeds * 100);
   EXPECT_GT(total.motion_in_cycles, kSeeds * 100);
 }

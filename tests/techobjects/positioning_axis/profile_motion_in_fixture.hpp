@@ -1,10 +1,8 @@
 #pragma once
 // The positioning-axis machine of positioning_axis_fixture.hpp whose user program also calls two
-// MC_PositionProfile, the two MotionIn instances and an MC_MoveSuperimposed (after the fixture's own
-// instances, in this order).
+// MC_PositionProfile and the two MotionIn instances (after the fixture's own instances, in this order).
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_motion_in.hpp"
-#include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_position_profile.hpp"
 #include "tomc/techobjects/motion/time_position_profile.hpp"
 
@@ -31,7 +29,6 @@ struct ProfileMachine : PositioningAxisMachine {
       profile2(*axis);
       motion_in_velocity(*axis);
       motion_in_position(*axis);
-      superimposed(*axis);
     };
   }
   bool x9() const {
@@ -43,7 +40,6 @@ struct ProfileMachine : PositioningAxisMachine {
   instructions::MC_PositionProfile<PositioningAxis> profile2;
   instructions::MC_MotionInVelocity<PositioningAxis> motion_in_velocity;
   instructions::MC_MotionInPosition<PositioningAxis> motion_in_position;
-  instructions::MC_MoveSuperimposed<PositioningAxis> superimposed;
 };
 
 }  // namespace tomc::testing

@@ -92,7 +92,7 @@ Shown halt(const ProfileMachine& m) {
 }
 // A running MC_Stop holds the axis while Execute stays TRUE, also once Done at standstill (spec 03 §8.2 T19).
 Shown superimposed(const ProfileMachine& m) {
-  return shown(m.superimposed);
+  return shown(m.move_superimposed);
 }
 Shown stop(const ProfileMachine& m) {
   Shown s = shown(m.stop);
@@ -109,9 +109,9 @@ std::vector<Case> cases() {
   };
   const auto start_stop = [](ProfileMachine& m) { m.stop.Execute = true; };
   const auto start_superimposed = [](ProfileMachine& m) {
-    m.superimposed.Distance = 50.0;
-    m.superimposed.VelocityDiff = 10.0;
-    m.superimposed.Execute = true;
+    m.move_superimposed.Distance = 50.0;
+    m.move_superimposed.VelocityDiff = 10.0;
+    m.move_superimposed.Execute = true;
   };
   const auto relative_appended = [](ProfileMachine& m) {
     m.move_relative.Distance = 10.0;

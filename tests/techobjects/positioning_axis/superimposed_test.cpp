@@ -10,12 +10,12 @@
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
+#include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/datablocks/status_bits.hpp"
 
 namespace {
 
-using tomc::instructions::MC_HaltSuperimposed;
 using tomc::instructions::MC_MoveSuperimposed;
 using tomc::techobjects::PositioningAxis;
 using tomc::techobjects::StatusWord2Bit;
@@ -33,15 +33,10 @@ struct SuperimposedMachine : tomc::testing::PositioningAxisMachine {
   SuperimposedMachine() : SuperimposedMachine(tomc::testing::linear_axis_data()) {}
   explicit SuperimposedMachine(const tomc::techobjects::PositioningAxisData& data)
       : PositioningAxisMachine(data) {
-    user = [this] {
-      move_superimposed(*axis);
-      move_superimposed2(*axis);
-      halt_superimposed(*axis);
-    };
+    user = [this] { move_superimposed2(*axis); };
   }
-  MC_MoveSuperimposed<PositioningAxis> move_superimposed;
-  MC_MoveSuperimposed<PositioningAxis> move_superimposed2;
-  MC_HaltSuperimposed<PositioningAxis> halt_superimposed;
+  MC_MoveSuperimposed<PositioningAxis>
+      move_superimposed2;  // the fixture has move_superimposed, halt_superimposed
 };
 
 // Base MoveRelative of 50 mm at 50 mm/s (trapezoid, 500 mm/s²) from a homed axis at 0.
@@ -134,6 +129,44 @@ TEST(HaltSuperimposed, ReplacesTheMoveAndLeavesTheBase) {
   EXPECT_TRUE(m.move_relative.Busy);
   EXPECT_NEAR(m.db().Velocity, 50.0, 1e-9);  // the base alone again
   EXPECT_NEAR(m.axis->superimposed().state().velocity, 0.0, 1e-12);
+}
+
+// spec 03 §4.11 AbortAcceleration, on a jerk-limited superimposed acceleration (jerk 10^5 mm/s³, 20 ms into
+// the ramp: a_sup = 2000 mm/s²): FALSE ramps the acceleration down with the jerk (100 mm/s² per cycle) before
+// braking; TRUE sets it to 0 at once and brakes.
+TEST(HaltSuperimposed, AbortAccelerationTakesTheAccelerationAwayAtOnce) {
+  for (const bool abort_acceleration : {false, true}) {
+    SCOPED_TRACE(abort_acceleration);
+    auto data = tomc::testing::linear_axis_data();
+    data.DynamicLimits.MaxJerk = 1.0e5;
+    SuperimposedMachine m(data);
+    ASSERT_GT(m.enable(), 0);
+    m.move_superimposed.Distance = 100.0;
+    m.move_superimposed.VelocityDiff = 200.0;
+    m.move_superimposed.Acceleration = 4000.0;
+    m.move_superimposed.Deceleration = 4000.0;
+    m.move_superimposed.Jerk = 1.0e5;
+    m.move_superimposed.Execute = true;
+    m.run(21);  // submitted in cycle 1, 20 cycles of +j: a = 2000 mm/s²
+    ASSERT_NEAR(m.db().Acceleration, 2000.0, 1e-6);
+    m.halt_superimposed.Deceleration = 4000.0;
+    m.halt_superimposed.Jerk = 1.0e5;
+    m.halt_superimposed.AbortAcceleration = abort_acceleration;
+    m.halt_superimposed.Execute = true;
+    m.run(1);  // the halt was planned in this cycle's user program; its first setpoint comes next
+    const double a0 = m.db().Acceleration;
+    m.run(1);
+    const double a1 = m.db().Acceleration;
+    if (abort_acceleration) {
+      EXPECT_NEAR(a1, -100.0, 1e-6);  // from 0 at once, then -j·T
+    } else {
+      EXPECT_NEAR(a1, a0 - 100.0, 1e-6);  // continuous: 100 mm/s² less per cycle
+      EXPECT_GT(a1, 0.0);
+    }
+    ASSERT_GT(m.run_until([&] { return m.halt_superimposed.Done; }, 2000), 0);
+    EXPECT_NEAR(m.db().Velocity, 0.0, 1e-9);
+    EXPECT_NEAR(m.db().Acceleration, 0.0, 1e-9);
+  }
 }
 
 // Spec 01 scenario 40 / §8.14: HaltSuperimposed without a superimposed motion is Done at once, Busy FALSE.
@@ -306,6 +339,44 @@ TEST(MoveSuperimposed, TotalVelocityStaysWithinTheLimitAndTheDistanceIsShown) {
   const double stopped_at = m.db().Position;
   m.run(10);
   EXPECT_EQ(m.db().Position, stopped_at);  // folding into the base moves nothing
+}
+
+// Limits apply to the total motion (spec 01 §8.14, spec 02 §4.5): a base move to 150 mm plus 100 mm
+// superimposed runs into the software limit at 200 mm; the look-ahead stops the total exactly there with 533
+// and both jobs end with 16#8001.
+TEST(MoveSuperimposed, SoftwareLimitStopsTheTotalMotion) {
+  auto data = tomc::testing::linear_axis_data();
+  data.PositionLimits_SW.Active = true;
+  data.PositionLimits_SW.MinPosition = -50.0;
+  data.PositionLimits_SW.MaxPosition = 200.0;
+  SuperimposedMachine m(data);
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  m.move_absolute.Position = 150.0;
+  m.move_absolute.Execute = true;
+  m.move_superimposed.Distance = 100.0;
+  m.move_superimposed.Execute = true;
+  double highest = 0.0;
+  ASSERT_GT(m.run_until(
+                [&] {
+                  highest = std::max(highest, m.axis->setpoint().position);
+                  return m.axis->alarms().pending(tomc::techobjects::kAlarmSoftwareLimitReached);
+                },
+                5000),
+            0);
+  m.run_until(
+      [&] {
+        highest = std::max(highest, m.axis->setpoint().position);
+        return m.db().Velocity == 0.0;
+      },
+      1000);
+  m.run(2);
+  EXPECT_TRUE(m.move_absolute.Error);
+  EXPECT_EQ(m.move_absolute.ErrorID, error_id::kAbortedByAlarmReaction);
+  EXPECT_TRUE(m.move_superimposed.Error);
+  EXPECT_EQ(m.move_superimposed.ErrorID, error_id::kAbortedByAlarmReaction);
+  EXPECT_NEAR(m.db().Position, 200.0, 1e-6);
+  EXPECT_LE(highest, 200.0 + 1e-6);
 }
 
 // "Superimposed motion requires position-controlled operation" (spec 03 §4.10): 16#8108 otherwise; and the

@@ -14,12 +14,14 @@
 #include "tomc/instructions/mc_gear_out.hpp"
 #include "tomc/instructions/mc_get_cam_value.hpp"
 #include "tomc/instructions/mc_halt.hpp"
+#include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_interpolate_cam.hpp"
 #include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
+#include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_position_profile.hpp"
 #include "tomc/instructions/mc_power.hpp"
@@ -351,6 +353,38 @@ const auto kMoveRelative = std::to_array<Parameter<MoveRelative<Axis>>>({
 });
 
 template <typename Axis>
+using MoveSuperimposed = instructions::MC_MoveSuperimposed<Axis>;
+template <typename Axis>
+const auto kMoveSuperimposed = std::to_array<Parameter<MoveSuperimposed<Axis>>>({
+    in("Execute", &MoveSuperimposed<Axis>::Execute),
+    in("Distance", &MoveSuperimposed<Axis>::Distance),
+    in("VelocityDiff", &MoveSuperimposed<Axis>::VelocityDiff),
+    in("Acceleration", &MoveSuperimposed<Axis>::Acceleration),
+    in("Deceleration", &MoveSuperimposed<Axis>::Deceleration),
+    in("Jerk", &MoveSuperimposed<Axis>::Jerk),
+    out("Done", &MoveSuperimposed<Axis>::Done),
+    out("Busy", &MoveSuperimposed<Axis>::Busy),
+    out("CommandAborted", &MoveSuperimposed<Axis>::CommandAborted),
+    out("Error", &MoveSuperimposed<Axis>::Error),
+    out("ErrorID", &MoveSuperimposed<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using HaltSuperimposed = instructions::MC_HaltSuperimposed<Axis>;
+template <typename Axis>
+const auto kHaltSuperimposed = std::to_array<Parameter<HaltSuperimposed<Axis>>>({
+    in("Execute", &HaltSuperimposed<Axis>::Execute),
+    in("Deceleration", &HaltSuperimposed<Axis>::Deceleration),
+    in("Jerk", &HaltSuperimposed<Axis>::Jerk),
+    in("AbortAcceleration", &HaltSuperimposed<Axis>::AbortAcceleration),
+    out("Done", &HaltSuperimposed<Axis>::Done),
+    out("Busy", &HaltSuperimposed<Axis>::Busy),
+    out("CommandAborted", &HaltSuperimposed<Axis>::CommandAborted),
+    out("Error", &HaltSuperimposed<Axis>::Error),
+    out("ErrorID", &HaltSuperimposed<Axis>::ErrorID),
+});
+
+template <typename Axis>
 using Home = instructions::MC_Home<Axis>;
 template <typename Axis>
 const auto kHome = std::to_array<Parameter<Home<Axis>>>({
@@ -569,7 +603,7 @@ constexpr std::array<std::string_view, 9> kSpeedAxisInstructions{
     "MC_Power", "MC_Reset",      "MC_MoveVelocity",   "MC_MoveJog",        "MC_Halt",
     "MC_Stop",  "MC_SetAxisSTW", "MC_WriteParameter", "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 15> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 17> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -579,6 +613,8 @@ constexpr std::array<std::string_view, 15> kPositioningAxisInstructions{
     "MC_PositionProfile",
     "MC_MoveVelocity",
     "MC_MoveJog",
+    "MC_MoveSuperimposed",
+    "MC_HaltSuperimposed",
     "MC_Stop",
     "MC_SetAxisSTW",
     "MC_WriteParameter",
@@ -586,7 +622,7 @@ constexpr std::array<std::string_view, 15> kPositioningAxisInstructions{
     "MC_MotionInPosition",
     "MC_TorqueLimiting",
 };
-constexpr std::array<std::string_view, 21> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 23> kSynchronousAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -596,6 +632,8 @@ constexpr std::array<std::string_view, 21> kSynchronousAxisInstructions{
     "MC_PositionProfile",
     "MC_MoveVelocity",
     "MC_MoveJog",
+    "MC_MoveSuperimposed",
+    "MC_HaltSuperimposed",
     "MC_Stop",
     "MC_SetAxisSTW",
     "MC_WriteParameter",
@@ -615,10 +653,8 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 17> kPlannedInstructions{
+constexpr std::array<std::string_view, 15> kPlannedInstructions{
     "MC_CopyCamData",
-    "MC_MoveSuperimposed",
-    "MC_HaltSuperimposed",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
     "MC_PhasingAbsolute",
@@ -709,13 +745,18 @@ std::unique_ptr<Instance> make_motion(std::string_view instruction) {
   return nullptr;
 }
 
-// MC_PositionProfile and MotionIn (positioning and synchronous axes).
+// The instructions of a positioning axis beyond a speed axis' (also those of a synchronous axis).
 template <typename Axis>
-std::unique_ptr<Instance> make_profile_motion_in(std::string_view instruction) {
+std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
+  if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<Axis>);
+  if (instruction == "MC_MoveRelative") return make(kMoveRelative<Axis>);
+  if (instruction == "MC_MoveSuperimposed") return make(kMoveSuperimposed<Axis>);
+  if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
+  if (instruction == "MC_Home") return make(kHome<Axis>);
   if (instruction == "MC_PositionProfile") return make(kPositionProfile<Axis>);
   if (instruction == "MC_MotionInVelocity") return make(kMotionInVelocity<Axis>);
   if (instruction == "MC_MotionInPosition") return make(kMotionInPosition<Axis>);
-  return nullptr;
+  return make_motion<Axis>(instruction);
 }
 
 }  // namespace
@@ -725,23 +766,15 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
     case TechnologyObjectKind::kSpeedAxis:
       return make_motion<SpeedAxis>(instruction);
     case TechnologyObjectKind::kPositioningAxis:
-      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<PositioningAxis>);
-      if (instruction == "MC_MoveRelative") return make(kMoveRelative<PositioningAxis>);
-      if (instruction == "MC_Home") return make(kHome<PositioningAxis>);
-      if (auto fb = make_profile_motion_in<PositioningAxis>(instruction)) return fb;
-      return make_motion<PositioningAxis>(instruction);
+      return make_positioning<PositioningAxis>(instruction);
     case TechnologyObjectKind::kSynchronousAxis:
-      if (instruction == "MC_MoveAbsolute") return make(kMoveAbsolute<SynchronousAxis>);
-      if (instruction == "MC_MoveRelative") return make(kMoveRelative<SynchronousAxis>);
-      if (instruction == "MC_Home") return make(kHome<SynchronousAxis>);
       if (instruction == "MC_GearIn") return make(kGearIn);
       if (instruction == "MC_GearInPos") return make(kGearInPos);
       if (instruction == "MC_GearInVelocity") return make(kGearInVelocity);
       if (instruction == "MC_GearOut") return make(kSyncOut<false>);
       if (instruction == "MC_CamIn") return make(kCamIn);
       if (instruction == "MC_CamOut") return make(kSyncOut<true>);
-      if (auto fb = make_profile_motion_in<SynchronousAxis>(instruction)) return fb;
-      return make_motion<SynchronousAxis>(instruction);
+      return make_positioning<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);
       return make_common<ExternalEncoder>(instruction);
