@@ -48,6 +48,14 @@ class MotionInHandshake {
     last_enable_ = enable;
     Busy = job_ != 0;
   }
+  // The outputs on the instruction (Busy, CommandAborted, Error, ErrorID).
+  template <typename FB>
+  void show(FB& fb) const noexcept {
+    fb.Busy = Busy;
+    fb.CommandAborted = CommandAborted;
+    fb.Error = Error;
+    fb.ErrorID = ErrorID;
+  }
 
  private:
   void take(const techobjects::Submission& s) noexcept {
@@ -79,10 +87,7 @@ struct MC_MotionInVelocity {
       return axis.motion_in_velocity(
           running, techobjects::MotionInVelocityInputs{Velocity, Acceleration, PositionControlled});
     });
-    Busy = handshake_.Busy;
-    CommandAborted = handshake_.CommandAborted;
-    Error = handshake_.Error;
-    ErrorID = handshake_.ErrorID;
+    handshake_.show(*this);
   }
 
  private:
@@ -105,10 +110,7 @@ struct MC_MotionInPosition {
       return axis.motion_in_position(running,
                                      techobjects::MotionInPositionInputs{Position, Velocity, Acceleration});
     });
-    Busy = handshake_.Busy;
-    CommandAborted = handshake_.CommandAborted;
-    Error = handshake_.Error;
-    ErrorID = handshake_.ErrorID;
+    handshake_.show(*this);
   }
 
  private:
