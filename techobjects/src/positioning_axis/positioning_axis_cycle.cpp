@@ -674,7 +674,7 @@ void PositioningAxis::complete_jobs() noexcept {
     }
   }
   if (limit_stop_ && settled && at_zero) limit_stop_ = false;
-  settle_superimposed();
+  if (superimposed_.distance() != 0.0) settle_superimposed();
   if (core_.phase == PowerPhase::kDisabling) {
     const bool drive_off = virtual_axis() || !drive_.in_operation();
     // A virtual or simulated axis' actual value lags its setpoint (spec 01 §2.5): it is disabled once the

@@ -8,12 +8,6 @@
 
 namespace tomc::techobjects {
 
-MotionState PositioningAxis::base_setpoint() const noexcept {
-  const MotionState& s = superimposed_.state();
-  return MotionState{setpoint_.position - s.position, setpoint_.velocity - s.velocity,
-                     setpoint_.acceleration - s.acceleration};
-}
-
 Submission PositioningAxis::move_superimposed(const MoveSuperimposedInputs& in) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
   if (!std::isfinite(in.Distance)) return Submission::reject(error_id::kInvalidPosition);
@@ -57,7 +51,7 @@ void PositioningAxis::abort_superimposed(std::uint16_t error_id, bool fold) noex
   }
 }
 
-void PositioningAxis::run_superimposed() noexcept {
+void PositioningAxis::advance_superimposed() noexcept {
   // The headroom the base motion leaves (spec 01 §8.14): a following axis' synchronous motion is not limited
   // by its own dynamic limits, so there only VelocityDiff applies.
   const double inf = std::numeric_limits<double>::infinity();
@@ -71,12 +65,6 @@ void PositioningAxis::run_superimposed() noexcept {
     core_.jobs.set(id, JobState::kDone);  // MoveSuperimposed: the distance is travelled; Halt: standing
     superimposed_.end_job();
   }
-  const MotionState& s = superimposed_.state();
-  setpoint_.position += s.position;
-  setpoint_.velocity += s.velocity;
-  setpoint_.acceleration += s.acceleration;
-  // A positioning check that waits for the superimposed motion checks the total position.
-  if (positioning_start_pending_) positioning_target_ = setpoint_.position;
 }
 
 // Both motions finished: the superimposed part becomes part of the base motion and SuperimposedDistance

@@ -252,9 +252,25 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // The running superimposed job ends (CommandAborted, or Error with error_id). fold: its velocity and
   // acceleration go over into the base motion (every abort but a new superimposed job's, §9.19.1 R6 x C7).
   void abort_superimposed(std::uint16_t error_id, bool fold = true) noexcept;
-  void run_superimposed() noexcept;  // MC_Interpolator, after the base setpoint: total = base + superimposed
+  // MC_Interpolator, after the base setpoint: total = base + superimposed. Inline: an axis without
+  // superimposed motion pays two tests per cycle.
+  void run_superimposed() noexcept {
+    if (superimposed_.moving()) advance_superimposed();
+    const MotionState& s = superimposed_.state();
+    if (s.position == 0.0 && s.velocity == 0.0 && s.acceleration == 0.0) return;
+    setpoint_.position += s.position;
+    setpoint_.velocity += s.velocity;
+    setpoint_.acceleration += s.acceleration;
+    // A positioning check that waits for the superimposed motion checks the total position.
+    if (positioning_start_pending_) positioning_target_ = setpoint_.position;
+  }
+  void advance_superimposed() noexcept;
   void settle_superimposed() noexcept;  // both motions finished: the superimposed part joins the base
-  MotionState base_setpoint() const noexcept;
+  MotionState base_setpoint() const noexcept {
+    const MotionState& s = superimposed_.state();
+    return MotionState{setpoint_.position - s.position, setpoint_.velocity - s.velocity,
+                       setpoint_.acceleration - s.acceleration};
+  }
   std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
   void start_positioning(Motion motion) noexcept;
   // MC_PositionProfile (position_profile_job.cpp)

@@ -28,6 +28,8 @@ class SuperimposedMotion {
   double distance() const noexcept { return folded_distance_ + state_.position; }
   JobId job_id() const noexcept { return id_; }
   Job job() const noexcept { return job_; }
+  // advance() has work: a job, or a profile still running.
+  bool moving() const noexcept { return job_ != Job::kNone || planned_; }
   // No job and no superimposed velocity or acceleration left.
   bool settled() const noexcept {
     return job_ == Job::kNone && !planned_ && state_.velocity == 0.0 && state_.acceleration == 0.0;
