@@ -5,16 +5,24 @@
 //   BM_PositioningServoInterpolator/...     — of the same cycle only MC_Servo + MC_Interpolator (the TO with
 //       its telegram codec; no drive model, no user program), timed around the group of axes;
 //   BM_SteadyClockPair                      — the cost of the two clock reads per phase that timing adds;
-//   BM_PositioningMemory                    — sizeof(PositioningAxis) and the heap it and its drive take.
+//   BM_PositioningMemory                    — sizeof(PositioningAxis) and the heap it and its drive take;
+//   BM_TimePositionEvaluate                 — one evaluation of a 128-point MC_PositionProfile profile;
+//   BM_PositionProfileAndMotionInStep/job   — one Runtime::step() of a virtual axis on a 128-point profile
+//       (job 0) or fed by MC_MotionInPosition every cycle (job 1), instruction calls included (issue 18).
 // Figures and commands: docs/performance.md.
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "positioning_machine.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
+#include "tomc/instructions/mc_position_profile.hpp"
+#include "tomc/instructions/mc_power.hpp"
+#include "tomc/techobjects/motion/time_position_profile.hpp"
 
 namespace {
 
@@ -108,6 +116,58 @@ void BM_PositioningMemory(benchmark::State& state) {
   state.counters["heap_bytes_per_axis"] = per_axis;  // TO, its program, and with drive = 1 its drive
 }
 
+// 128 points over 12.7 s: a sine of 50 mm amplitude, the densest profile the structure holds.
+tomc::techobjects::TimePositionProfile dense_profile() {
+  tomc::techobjects::TimePositionProfile p;
+  p.NumberOfPoints = static_cast<std::int32_t>(tomc::techobjects::kMaxTimePositionPoints);
+  for (std::size_t i = 0; i < tomc::techobjects::kMaxTimePositionPoints; ++i)
+    p.Point[i] = {0.1 * static_cast<double>(i), 50.0 * std::sin(0.05 * static_cast<double>(i))};
+  return p;
+}
+
+void BM_TimePositionEvaluate(benchmark::State& state) {
+  const auto p = dense_profile();
+  double t = 0.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(tomc::techobjects::evaluate(p, t));
+    t = t < 12.6 ? t + 0.001 : 0.0;
+  }
+}
+
+void BM_PositionProfileAndMotionInStep(benchmark::State& state) {
+  namespace to = tomc::techobjects;
+  const bool motion_in = state.range(0) != 0;
+  to::Runtime runtime(to::RuntimeConfig{0.001, 1, 1});
+  auto data = to::PositioningAxisData{};
+  data.VirtualAxis.Mode = to::kModeOn;
+  auto& axis = runtime.emplace<to::PositioningAxis>("Axis", nullptr, data);
+  const auto profile = dense_profile();
+  tomc::instructions::MC_Power<to::PositioningAxis> power;
+  tomc::instructions::MC_PositionProfile<to::PositioningAxis> follow;
+  tomc::instructions::MC_MotionInPosition<to::PositioningAxis> feed;
+  power.Enable = true;
+  follow.TimePosition = &profile;
+  std::int64_t k = 0;
+  runtime.set_user_program([&](to::Runtime&) {
+    power(axis);
+    if (motion_in) {
+      feed.Enable = power.Status;
+      feed.Position = 50.0 * std::sin(0.0005 * static_cast<double>(k));
+      feed(axis);
+    } else {
+      follow.Execute = power.Status && !follow.Done;  // a new job once the last one is Done
+      follow(axis);
+    }
+    ++k;
+  });
+  runtime.start();
+  for (int i = 0; i < 50; ++i)
+    runtime.step();
+  for (auto _ : state)
+    runtime.step();
+  state.counters["on_job"] = motion_in ? static_cast<double>(feed.Busy) : static_cast<double>(follow.Busy);
+}
+
 void axes_args(benchmark::internal::Benchmark* b) {
   for (int drive : {1, 0}) {
     for (int axes : {1, 64, 1024, 4096})
@@ -125,3 +185,5 @@ BENCHMARK(BM_PositioningCycle)->Apply(axes_args);
 BENCHMARK(BM_PositioningServoInterpolator)->Apply(axes_args)->UseManualTime();
 BENCHMARK(BM_SteadyClockPair);
 BENCHMARK(BM_PositioningMemory)->Arg(0)->Arg(1)->Iterations(1);
+BENCHMARK(BM_TimePositionEvaluate);
+BENCHMARK(BM_PositionProfileAndMotionInStep)->Arg(0)->Arg(1)->ArgName("job");

@@ -98,6 +98,16 @@ TABLE = [
     fb("MC_TorqueRange", "spec 03 §4.18.2", "SPY",
        [("Enable", "BOOL", "FALSE"), ("UpperLimit", "LREAL", "1.0E12"), ("LowerLimit", "LREAL", "-1.0E12")],
        [("Busy", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    # MotionIn (spec 03 §4.17): the host controller's door — called every cycle with its setpoints while
+    # Enable = TRUE, they act in the next MC_Interpolator without profile or dynamic limits.
+    fb("MC_MotionInVelocity", "spec 03 §4.17.1", "PY",
+       [("Enable", "BOOL", "FALSE"), ("Velocity", "LREAL", "0.0"), ("Acceleration", "LREAL", "0.0"),
+        ("PositionControlled", "BOOL", "TRUE")],
+       [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    fb("MC_MotionInPosition", "spec 03 §4.17.2", "PY",
+       [("Enable", "BOOL", "FALSE"), ("Position", "LREAL", "0.0"), ("Velocity", "LREAL", "0.0"),
+        ("Acceleration", "LREAL", "0.0")],
+       [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
     fb("MC_GearIn", "spec 07 §2.1", "Y",
        [("Execute", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"), ("RatioDenominator", "DINT", "1")] + DYN,
        [("InGear", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],

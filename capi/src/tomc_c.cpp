@@ -37,6 +37,7 @@
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_phasing.hpp"

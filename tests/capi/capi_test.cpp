@@ -103,6 +103,98 @@ TEST(CApi, PositioningMoveThroughTheGeneratedStructs) {
   EXPECT_EQ(count, static_cast<uint64_t>(cycles));
 }
 
+// The host controller's door (spec 03 §4.17, decision L5): a CNC that interpolates itself feeds the axis its
+// setpoints every cycle through MC_MotionInPosition; each is the TO's setpoint (Position, Velocity) in the
+// next MC_Interpolator, without profile and without dynamic limits. Here a sine of 2 mm amplitude at 2 Hz
+// (peak 25.1 mm/s, 316 mm/s²) after enabling; the falling edge of Enable keeps the last position with
+// velocity 0. A step beyond the permitted following error is the host's mistake: alarm 521.
+TEST(CApi, MotionInPositionFeedsTheHostsSetpointsEveryCycle) {
+  Machine m;
+  tomc_MC_Power power;
+  tomc_MC_Home home;
+  tomc_MC_MotionInPosition feed;
+  tomc_MC_Power_init(&power);
+  tomc_MC_Home_init(&home);
+  tomc_MC_MotionInPosition_init(&feed);
+  EXPECT_FALSE(feed.Enable);  // the manual's defaults (generate.py's table)
+  EXPECT_EQ(feed.Position, 0.0);
+  power.Enable = true;
+  for (int k = 0; k < 200 && !home.Done; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
+    home.Execute = power.Status;
+    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
+  }
+  ASSERT_TRUE(home.Done);
+  const double pi = std::acos(-1.0);
+  const auto x = [&](int k) { return 2.0 * std::sin(2.0 * pi * 2.0 * k * 0.001); };
+  const auto v = [&](int k) { return 2.0 * 2.0 * pi * 2.0 * std::cos(2.0 * pi * 2.0 * k * 0.001); };
+  feed.Enable = true;
+  for (int k = 0; k <= 1000; ++k) {
+    feed.Position = x(k);
+    feed.Velocity = v(k);
+    ASSERT_EQ(tomc_MC_MotionInPosition_call(m.slide, &feed), TOMC_OK) << last_error();
+    ASSERT_TRUE(feed.Busy) << k;
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_NEAR(read(m.slide, "Position"), x(k), 1e-12) << k;  // written before the cycle: its setpoint
+    ASSERT_NEAR(read(m.slide, "Velocity"), v(k), 1e-12) << k;
+  }
+  int64_t function_state = 0;
+  EXPECT_EQ(tomc_read_int(m.slide, "StatusMotionIn.FunctionState", &function_state), TOMC_OK) << last_error();
+  EXPECT_EQ(function_state, 2);
+  EXPECT_NEAR(read(m.slide, "ActualPosition"), x(1000), 0.1);  // the drive follows (Kv lag only)
+  feed.Enable = false;
+  ASSERT_EQ(tomc_MC_MotionInPosition_call(m.slide, &feed), TOMC_OK);
+  EXPECT_FALSE(feed.Busy);
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+  EXPECT_NEAR(read(m.slide, "Position"), x(1000), 1e-12);
+  EXPECT_EQ(read(m.slide, "Velocity"), 0.0);
+  // A setpoint that is not a number is refused with an ErrorID, never taken.
+  feed.Enable = true;
+  feed.Position = std::nan("");
+  ASSERT_EQ(tomc_MC_MotionInPosition_call(m.slide, &feed), TOMC_OK);
+  EXPECT_TRUE(feed.Error);
+  EXPECT_NE(feed.ErrorID, 0);
+  feed.Enable = false;
+  ASSERT_EQ(tomc_MC_MotionInPosition_call(m.slide, &feed), TOMC_OK);
+  // A 50 mm step: alarm 521 (following error), the TO disabled, the job ended with Error.
+  feed.Enable = true;
+  feed.Position = 50.0;
+  feed.Velocity = 0.0;
+  for (int k = 0; k < 100; ++k) {
+    ASSERT_EQ(tomc_MC_MotionInPosition_call(m.slide, &feed), TOMC_OK);
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK);
+  }
+  EXPECT_TRUE(feed.Error);
+  EXPECT_FALSE(power.Status);
+  int64_t alarm = 0;
+  EXPECT_EQ(tomc_read_int(m.slide, "ErrorDetail.Number", &alarm), TOMC_OK) << last_error();
+  EXPECT_EQ(alarm, 521);
+}
+
+// MC_MotionInVelocity is not an instruction of TO_SpeedAxis in tomc yet (issue 18, listed as left).
+TEST(CApi, MotionInVelocityOnThePositioningAxis) {
+  Machine m;
+  tomc_MC_Power power;
+  tomc_MC_MotionInVelocity feed;
+  tomc_MC_Power_init(&power);
+  tomc_MC_MotionInVelocity_init(&feed);
+  EXPECT_TRUE(feed.PositionControlled);
+  power.Enable = true;
+  for (int k = 0; k < 200 && !power.Status; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK);
+  }
+  ASSERT_TRUE(power.Status);
+  feed.Enable = true;
+  feed.Velocity = 30.0;
+  ASSERT_EQ(tomc_MC_MotionInVelocity_call(m.slide, &feed), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+  EXPECT_EQ(read(m.slide, "Velocity"), 30.0);
+  EXPECT_EQ(tomc_MC_MotionInVelocity_call(m.conveyor, &feed), TOMC_ERROR_WRONG_OBJECT_TYPE);
+}
+
 // MC_MoveSuperimposed through the C ABI (spec 03 §4.10): 20 mm superimposed on the 200 mm base move end at
 // 220 mm, both Done; then MC_HaltSuperimposed without a superimposed motion is Done at once (spec 01 §8.14).
 TEST(CApi, SuperimposedMoveThroughTheGeneratedStructs) {

@@ -323,6 +323,42 @@ typedef struct tomc_MC_TorqueRange {
 TOMC_API void tomc_MC_TorqueRange_init(tomc_MC_TorqueRange* fb);
 TOMC_API tomc_status tomc_MC_TorqueRange_call(tomc_object* axis, tomc_MC_TorqueRange* fb);
 
+/* MC_MotionInVelocity (spec 03 §4.17.1) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_MotionInVelocity {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Velocity;
+  double Acceleration;
+  bool PositionControlled;
+  /* outputs */
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_MotionInVelocity;
+TOMC_API void tomc_MC_MotionInVelocity_init(tomc_MC_MotionInVelocity* fb);
+TOMC_API tomc_status tomc_MC_MotionInVelocity_call(tomc_object* axis, tomc_MC_MotionInVelocity* fb);
+
+/* MC_MotionInPosition (spec 03 §4.17.2) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_MotionInPosition {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Position;
+  double Velocity;
+  double Acceleration;
+  /* outputs */
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_MotionInPosition;
+TOMC_API void tomc_MC_MotionInPosition_init(tomc_MC_MotionInPosition* fb);
+TOMC_API tomc_status tomc_MC_MotionInPosition_call(tomc_object* axis, tomc_MC_MotionInPosition* fb);
+
 /* MC_GearIn (spec 07 §2.1) on TO_SynchronousAxis. */
 typedef struct tomc_MC_GearIn {
   tomc_struct_header header; /* set by the init function */

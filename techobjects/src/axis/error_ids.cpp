@@ -55,6 +55,22 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "the cam is not interpolated (MC_InterpolateCam)";
     case kInvalidCamElementRange:
       return "MC_CopyCamData: element range outside the cam or the source array";
+    case kInvalidTimePositionProfile:
+      return "MC_PositionProfile: no time-position profile, or fewer than 2 or more than 128 points";
+    case kTimePositionOutOfOrder:
+      return "MC_PositionProfile: the times of the profile points are not strictly increasing";
+    case kTimePositionNotFinite:
+      return "MC_PositionProfile: a time or position of the profile is not finite";
+    case kInvalidStartTime:
+      return "MC_PositionProfile: StartTime is not within the profile's time range";
+    case kInvalidPositionProfileReference:
+      return "MC_PositionProfile: ProfileReference must be 0 (relative) or 1 (absolute)";
+    case kProfileStartNotReachable:
+      return "MC_PositionProfile: an absolute profile moving at StartTime can only be joined by an axis "
+             "already "
+             "on it";
+    case kInvalidMotionInSetpoint:
+      return "MotionIn: a setpoint input is not finite";
     case kNoGearing:
       return "no MC_GearIn / MC_GearInPos pending or active";
     case kNoCamming:

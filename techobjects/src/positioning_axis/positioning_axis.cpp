@@ -240,7 +240,9 @@ std::array<RunningJob, 5> PositioningAxis::running_jobs(std::size_t& n) const no
     const bool halt_all = motion_.kind == JobKind::kHalt && !motion_.halt_base_only;
     running[n++] = halt_all                         ? RunningJob::kHaltAll
                    : motion_.kind == JobKind::kHome ? RunningJob::kActiveHoming
-                                                    : RunningJob::kBaseMotionActive;
+                   : motion_.kind == JobKind::kMotionInVelocity || motion_.kind == JobKind::kMotionInPosition
+                       ? RunningJob::kMotionIn
+                       : RunningJob::kBaseMotionActive;
   }
   if (pending_.id != 0) running[n++] = RunningJob::kBaseMotionPending;
   if (passive_.id != 0) running[n++] = RunningJob::kPassiveHoming;
@@ -256,7 +258,8 @@ std::uint16_t PositioningAxis::arbitrate_motion(NewJob row, bool& queue) noexcep
   ArbitrationContext ctx;
   // C3 "-/N": positioning and MC_Halt end by themselves, MoveVelocity/Jog do not (spec 03 §6.1 [AMB-11]).
   ctx.running_job_ends_by_itself = motion_.kind == JobKind::kMoveAbsolute ||
-                                   motion_.kind == JobKind::kMoveRelative || motion_.kind == JobKind::kHalt;
+                                   motion_.kind == JobKind::kMoveRelative || motion_.kind == JobKind::kHalt ||
+                                   motion_.kind == JobKind::kPositionProfile;
   ctx.virtual_or_simulated_axis = virtual_axis();
   ctx.running_stop_weight = core_.stop.weight;
   const Decision d = arbitrate(row, std::span<const RunningJob>(running.data(), n), ctx);

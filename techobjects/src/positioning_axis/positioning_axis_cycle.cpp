@@ -255,6 +255,8 @@ void PositioningAxis::shift_position(double delta) noexcept {
   actual_position_ += delta;
   profile_offset_ += delta;
   motion_.target += delta;
+  // MC_PositionProfile: the profile's positions move with the axis too (its transition moved above).
+  if (motion_.kind == JobKind::kPositionProfile) motion_.absolute_position += delta;
   if (pending_.kind == JobKind::kMoveAbsolute && !modulo()) pending_.target = pending_.absolute_position;
   positioning_target_ += delta;
   limit_stop_position_ += delta;
@@ -453,6 +455,9 @@ void PositioningAxis::generate_setpoint() noexcept {
             end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
             end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
+        if (motion_.kind == JobKind::kPositionProfile) {  // the relative transition ended within this cycle
+          enter_time_profile(setpoint_.position, profile_time_ - velocity_profile().duration());
+        }
       } else {
         setpoint_ = velocity_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
@@ -474,6 +479,9 @@ void PositioningAxis::generate_setpoint() noexcept {
             positioning_start_pending_ = true;
           }
         }
+        if (motion_.kind == JobKind::kPositionProfile) {  // the absolute transition ended
+          enter_time_profile(setpoint_.position);
+        }
       } else {
         setpoint_ = position_profile().at(profile_time_);
         setpoint_.position += profile_offset_;
@@ -486,6 +494,12 @@ void PositioningAxis::generate_setpoint() noexcept {
       break;
     case Generator::kSynchronous:
       setpoint_ = synchronous_setpoint();
+      break;
+    case Generator::kTimeProfile:
+      follow_time_profile();
+      break;
+    case Generator::kMotionIn:
+      follow_motion_in();
       break;
   }
   run_superimposed();
@@ -517,6 +531,9 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
       s = position_profile().at(t);
       s.position += profile_offset_;
     }
+  } else if (generator_ == Generator::kTimeProfile && motion_.kind == JobKind::kPositionProfile) {
+    s = evaluate(*motion_.time_profile, motion_.distance + dt);
+    s.position += motion_.absolute_position;
   }
   const MotionState sup = superimposed_.predicted(dt);
   return MotionState{s.position + sup.position, s.velocity + sup.velocity, s.acceleration + sup.acceleration};
@@ -608,6 +625,7 @@ void PositioningAxis::complete_jobs() noexcept {
       case JobKind::kHome:  // active homing: Done after the travel to the home position (spec 02 §5.5)
       case JobKind::kMoveAbsolute:
       case JobKind::kMoveRelative:
+      case JobKind::kPositionProfile:
         // Done when the target is reached and the dwell time has passed (spec 03 §3.5, spec 02 §6.1).
         if (motion_.interpolation_done && !positioning_start_pending_ &&
             outcome == PositioningOutcome::kDone) {
@@ -617,7 +635,7 @@ void PositioningAxis::complete_jobs() noexcept {
           if (pending_.id != 0) {
             const Motion next = pending_;
             pending_ = Motion{};
-            start_positioning(next);
+            start_motion(next);
           }
         }
         break;
@@ -736,6 +754,13 @@ void PositioningAxis::update_status() noexcept {
   assign(sw, StatusWordBit::kHomingCommand, motion_.kind == JobKind::kHome || passive_.id != 0);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
+  // MotionIn (spec 04 §5.1 X31, §4.8 StatusMotionIn.FunctionState)
+  const auto motion_in = motion_.kind == JobKind::kMotionInVelocity ? MotionInFunctionState::kMotionInVelocity
+                         : motion_.kind == JobKind::kMotionInPosition
+                             ? MotionInFunctionState::kMotionInPosition
+                             : MotionInFunctionState::kNone;
+  assign(sw, StatusWordBit::kMotionInCommand, motion_in != MotionInFunctionState::kNone);
+  db_.StatusMotionIn.FunctionState = static_cast<std::int32_t>(motion_in);
   assign(sw, StatusWordBit::kMoveSuperimposedCommand, superimposed_.job() == SuperimposedMotion::Job::kMove);
   assign(sw2, StatusWord2Bit::kHaltSuperimposedCommand,
          superimposed_.job() == SuperimposedMotion::Job::kHalt);
@@ -752,6 +777,12 @@ void PositioningAxis::update_status() noexcept {
   sw |= limit_bits.status_word();
   db_.StatusWord = sw;
   assign(sw2, StatusWord2Bit::kPassingBacklash, backlash_.passing());
+  // MC_PositionProfile (seed 004 §6.8.4): X9 while the job is active, X10 while the setpoint is the
+  // profile's.
+  const bool profile_job = motion_.kind == JobKind::kPositionProfile;
+  assign(sw2, StatusWord2Bit::kPositionProfileCommand, profile_job);
+  assign(sw2, StatusWord2Bit::kOnProfile,
+         profile_job && generator_ == Generator::kTimeProfile && !motion_.profile_limited);
   db_.StatusWord2 = sw2;
   db_.ErrorWord = ew;
   db_.WarningWord = ww;

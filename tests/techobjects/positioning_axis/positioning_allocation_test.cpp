@@ -11,6 +11,7 @@
 
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <memory>
@@ -20,6 +21,7 @@
 
 #include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
+#include "profile_motion_in_fixture.hpp"
 
 namespace {
 
@@ -472,6 +474,79 @@ TEST(PositioningAllocation, EveryJobKindRunsWithoutAllocating) {
     EXPECT_TRUE(saw401);
     EXPECT_FALSE(a.m->axis->alarms().pending(techobjects::kAlarmFollowingError));
   }
+}
+
+// MC_PositionProfile and MotionIn (issue 18) allocate nothing either: a loop of 1,500-cycle phases — a
+// relative profile, an absolute profile too fast for MaxVelocity (transition, limited following) with a
+// profile appended by BufferMode 1, MotionInVelocity with a changing velocity, MotionInPosition following a
+// sine, MotionInVelocity replaced by MC_MoveVelocity and stopped by MC_Halt.
+TEST(PositioningAllocation, PositionProfileAndMotionInRunWithoutAllocating) {
+  tomc::testing::ProfileMachine m;
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  const techobjects::TimePositionProfile slow = tomc::testing::ramp_profile();
+  techobjects::TimePositionProfile fast = slow;
+  for (auto& p : fast.Point)
+    p.Position *= 5.0;  // peak near 590 mm/s, MaxVelocity 500
+  m.profile.TimePosition = &slow;
+  m.profile2.TimePosition = &slow;
+  constexpr int kPhase = 1500;
+  long profiles_done = 0, limited = 0, on_profile = 0, motion_in_cycles = 0, replaced = 0;
+  const auto before = tomc::testing::allocation_count();
+  for (int cycle = 0; cycle < kCycles / 4; ++cycle) {
+    const int phase = (cycle / kPhase) % 5;
+    const int t = cycle % kPhase;
+    m.profile.Execute = false;
+    m.profile2.Execute = false;
+    m.move_velocity.Execute = false;
+    m.halt.Execute = false;
+    switch (phase) {
+      case 0:
+        m.profile.TimePosition = &slow;
+        m.profile.ProfileReference = 0;
+        m.profile.Execute = t < 5;
+        break;
+      case 1:
+        m.profile.TimePosition = &fast;
+        m.profile.ProfileReference = 1;
+        m.profile.Execute = t < 5;
+        m.profile2.BufferMode = 1;
+        m.profile2.Execute = t >= 10 && t < 15;
+        break;
+      case 2:
+        m.motion_in_velocity.Enable = t < kPhase - 100;
+        m.motion_in_velocity.Velocity = 50.0 * std::sin(t * 0.01);
+        m.motion_in_velocity.Acceleration = 0.5 * std::cos(t * 0.01);
+        break;
+      case 3:
+        if (t == 0) m.motion_in_position.Position = m.db().Position;
+        m.motion_in_position.Enable = t < kPhase - 100;
+        m.motion_in_position.Velocity = 5.0 * std::cos(t * 0.001);
+        m.motion_in_position.Position += m.motion_in_position.Velocity * 0.001;
+        break;
+      default:
+        m.motion_in_velocity.Enable = t < 500;
+        m.motion_in_velocity.Velocity = 30.0;
+        m.move_velocity.Velocity = 10.0;
+        m.move_velocity.Execute = t >= 200 && t < 205;
+        m.halt.Execute = t >= 600 && t < 605;
+        break;
+    }
+    m.run(1);
+    if (m.profile.Done || m.profile2.Done) ++profiles_done;
+    if (m.x9() && !m.x10()) ++limited;
+    if (m.x10()) ++on_profile;
+    if (m.motion_in_velocity.Busy || m.motion_in_position.Busy) ++motion_in_cycles;
+    if (m.motion_in_velocity.CommandAborted) ++replaced;
+  }
+  const auto allocated = tomc::testing::allocation_count() - before;
+  EXPECT_EQ(allocated, 0u);
+  // The loop reached what it is about.
+  EXPECT_GT(profiles_done, 0);
+  EXPECT_GT(limited, 0);
+  EXPECT_GT(on_profile, 0);
+  EXPECT_GT(motion_in_cycles, 0);
+  EXPECT_GT(replaced, 0);
 }
 
 }  // namespace

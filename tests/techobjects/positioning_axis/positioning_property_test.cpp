@@ -4,7 +4,11 @@
 // random BufferMode 0/1, velocities, accelerations, jerks incl. 0 and "default"), MC_MoveVelocity,
 // MC_MoveJog, MC_Halt, MC_Stop (Modes 0/1/2), MC_MoveSuperimposed and MC_HaltSuperimposed (issue 18),
 // override changes, direct homing, MC_Power off/on with every StopMode, injected technology alarms with
-// reactions 1..5 and MC_Reset (with and without Restart) after alarms.
+// reactions 1..5 and MC_Reset (with and without Restart) after alarms; and MC_PositionProfile (two
+// instances, random profiles within the dynamic limits, relative, and absolute on the linear axis, random
+// StartTime and BufferMode) and MC_MotionInVelocity fed by an application that keeps its own setpoints within
+// the limits (spec 03 §4.17: "respect the dynamic limits yourself") and brings the velocity to 0 before
+// Enable falls — the limits hold for the total motion.
 //
 // Checked in every cycle, each property against the spec section it comes from:
 //  P1 spec 02 §4.5    the setpoint never passes an active software limit on a homed axis (except after direct
@@ -45,6 +49,7 @@
 
 #include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
+#include "profile_motion_in_fixture.hpp"
 
 namespace {
 
@@ -173,6 +178,8 @@ struct Stats {
   long modulo_turns = 0;            // modulo cycle counter changes
   long superimposed_cycles = 0;     // cycles with a superimposed motion moving
   long done_with_superimposed = 0;  // P2 checks of a target moved by a superimposed distance
+  long on_profile_cycles = 0;       // MC_PositionProfile on its profile (StatusWord2.X10)
+  long motion_in_cycles = 0;        // MC_MotionInVelocity Busy
   double worst_window = 0, worst_fe_ratio = 0, worst_velocity_ratio = 0, worst_acceleration_ratio = 0;
 };
 
@@ -345,6 +352,11 @@ class Run {
         }
       }
     }
+    release(m.profile);
+    release(m.profile2);
+    profile_job(m.profile, profiles_[0], p_job);
+    profile_job(m.profile2, profiles_[1], p_job);
+    motion_in_application();
     if (chance(p_job * 0.1) && !m.move_velocity.Execute) {
       m.move_velocity.Velocity = uniform(-s_.velocity, s_.velocity);
       m.move_velocity.Acceleration = dynamic(s_.acceleration);
@@ -447,6 +459,71 @@ class Run {
     }
   }
 
+  // MC_PositionProfile with a random profile of 2..6 points whose steepest chord is half the velocity
+  // limit (the cubic's peak is at most 1.5 times that), so that only the transition's dynamics vary.
+  template <typename FB>
+  void profile_job(FB& fb, techobjects::TimePositionProfile& p, double p_job) {
+    if (fb.Execute || fb.Busy || !chance(p_job * 0.1)) return;
+    const double v_limit = std::min(m_.db().DynamicLimits.MaxVelocity, m_.db().DynamicLimits.Velocity);
+    const double a_limit =
+        std::min(m_.db().DynamicLimits.MaxAcceleration, m_.db().DynamicLimits.MaxDeceleration);
+    p.NumberOfPoints = 2 + static_cast<std::int32_t>(rng_() % 5);
+    const bool absolute = !s_.modulo && chance(0.4);
+    double t = 0.0;
+    double y = absolute ? uniform(s_.home_low, s_.home_high) : 0.0;
+    for (std::int32_t i = 0; i < p.NumberOfPoints; ++i) {
+      if (i > 0) {
+        // Long enough that the cubic's acceleration (about 6·Δy/h² from rest) stays within half the limit.
+        const double dy = uniform(-0.5, 0.5) * s_.distance * 0.2;
+        const double h = std::max(
+            {uniform(0.05, 0.5), 2.0 * std::fabs(dy) / v_limit, std::sqrt(12.0 * std::fabs(dy) / a_limit)});
+        t += h;
+        y += dy;
+      }
+      p.Point[static_cast<std::size_t>(i)] = {t, y};
+    }
+    fb.TimePosition = &p;
+    fb.ProfileReference = absolute ? 1 : 0;
+    fb.StartTime = chance(0.5) ? 0.0 : uniform(0.0, t * 0.9);
+    fb.Velocity = dynamic(s_.velocity);
+    fb.Acceleration = dynamic(s_.acceleration);
+    fb.Deceleration = dynamic(s_.acceleration);
+    fb.Jerk = jerk();
+    fb.BufferMode = chance(0.3) ? 1 : 0;
+    fb.Execute = true;
+    note("MC_PositionProfile (points, ProfileReference, StartTime)", p.NumberOfPoints, fb.ProfileReference,
+         fb.StartTime);
+    if (fb.BufferMode == 0) note_replan();
+  }
+
+  // MC_MotionInVelocity as a host controller uses it: it starts from the present setpoint velocity, moves
+  // its velocity towards a target with a third of the acceleration limit, and ends with velocity 0.
+  void motion_in_application() {
+    auto& fb = m_.motion_in_velocity;
+    const auto& l = m_.db().DynamicLimits;
+    if (fb.Enable && (fb.Error || fb.CommandAborted || (motion_in_target_ == 0.0 && fb.Velocity == 0.0))) {
+      fb.Enable = false;
+      note("MC_MotionInVelocity Enable FALSE (Error, CommandAborted)", fb.Error, fb.CommandAborted);
+      return;
+    }
+    if (!fb.Enable) {
+      if (!chance(0.0002) || !m_.power.Status) return;
+      fb.Velocity = m_.db().Velocity;
+      fb.Acceleration = 0.0;
+      fb.PositionControlled = true;
+      motion_in_target_ = uniform(-0.3, 0.3) * std::min(l.MaxVelocity, l.Velocity);
+      fb.Enable = true;
+      note("MC_MotionInVelocity (from, to)", fb.Velocity, motion_in_target_);
+      return;
+    }
+    if (chance(0.002))
+      motion_in_target_ = chance(0.3) ? 0.0 : uniform(-0.3, 0.3) * std::min(l.MaxVelocity, l.Velocity);
+    const double step = std::min(l.MaxAcceleration, l.MaxDeceleration) / 3.0 * kCycle;
+    const double dv = std::clamp(motion_in_target_ - fb.Velocity, -step, step);
+    fb.Velocity += dv;
+    fb.Acceleration = dv / kCycle;
+  }
+
   Snapshot snapshot() const {
     const auto& d = m_.db();
     Snapshot s;
@@ -491,6 +568,8 @@ class Run {
       ASSERT_TRUE(std::isfinite(x)) << where();
     }
     if (now.modulo_cycle != prev_.modulo_cycle) ++stats_.modulo_turns;
+    if (m_.x10()) ++stats_.on_profile_cycles;
+    if (m_.motion_in_velocity.Busy) ++stats_.motion_in_cycles;
 
     // P1 (spec 02 §4.5): from inside the software limits, a generated setpoint stays inside.
     if (homing_now && std::fabs(prev_.velocity) > 0.0) rebased_ = true;
@@ -634,8 +713,10 @@ class Run {
 
   Scenario s_;
   std::mt19937 rng_;
-  PositioningAxisMachine m_;
+  tomc::testing::ProfileMachine m_;
   std::array<Tracked, 4> tracked_{};
+  std::array<techobjects::TimePositionProfile, 2> profiles_{};  // one per instance, unchanged while it runs
+  double motion_in_target_ = 0.0;
   Snapshot prev_{};
   double prev_superimposed_ = 0.0;  // the superimposed part of the setpoint in the last cycle
   Stats stats_{};
@@ -686,6 +767,10 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
   total.controlled_cycles += st.controlled_cycles;
   total.emergency_cycles += st.emergency_cycles;
   total.modulo_turns += st.modulo_turns;
+  total.on_profile_cycles += st.on_profile_cycles;
+  total.motion_in_cycles += st.motion_in_cycles;
+  std::printf("  %ld cycles on a time-position profile, %ld with MotionInVelocity\n", st.on_profile_cycles,
+              st.motion_in_cycles);
 }
 
 TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
@@ -702,6 +787,8 @@ TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
   EXPECT_GT(total.controlled_cycles, kSeeds * kCycles / 2);
   EXPECT_GT(total.emergency_cycles, 0);
   EXPECT_GT(total.superimposed_cycles, kSeeds * kCycles / 200);
+  EXPECT_GT(total.on_profile_cycles, kSeeds * 100);
+  EXPECT_GT(total.motion_in_cycles, kSeeds * 100);
 }
 
 TEST(PositioningProperty, RotaryModuloAxis) {
@@ -714,6 +801,8 @@ TEST(PositioningProperty, RotaryModuloAxis) {
   EXPECT_GT(total.moving_cycles, kSeeds * kCycles / 4);
   EXPECT_GT(total.controlled_cycles, kSeeds * kCycles / 2);
   EXPECT_GT(total.modulo_turns, kSeeds * 10);
+  EXPECT_GT(total.on_profile_cycles, kSeeds * 100);
+  EXPECT_GT(total.motion_in_cycles, kSeeds * 100);
 }
 
 }  // namespace

@@ -18,12 +18,14 @@
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_interpolate_cam.hpp"
 #include "tomc/instructions/mc_leading_value_additive.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
+#include "tomc/instructions/mc_position_profile.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
@@ -44,6 +46,7 @@ using techobjects::SpeedAxis;
 using techobjects::SynchronousAxis;
 using Source = const techobjects::LeadingValueSource*;
 using CamReference = techobjects::Cam*;
+using ProfileReference = const techobjects::TimePositionProfile*;
 
 // The axis type an instruction class works on: MC_Power<SpeedAxis> -> SpeedAxis.
 template <typename FB>
@@ -73,7 +76,7 @@ struct axis_of<instructions::MC_GetCamLeadingValue> {
 
 template <typename FB>
 using Member = std::variant<bool FB::*, std::int16_t FB::*, std::int32_t FB::*, std::uint16_t FB::*,
-                            double FB::*, Source FB::*, CamReference FB::*>;
+                            double FB::*, Source FB::*, CamReference FB::*, ProfileReference FB::*>;
 
 template <typename FB>
 struct Parameter {
@@ -95,6 +98,8 @@ constexpr ParameterType type_of() {
     return ParameterType::kTechnologyObject;
   } else if constexpr (std::is_same_v<T, CamReference>) {
     return ParameterType::kCam;
+  } else if constexpr (std::is_same_v<T, ProfileReference>) {
+    return ParameterType::kTimePosition;
   } else {
     static_assert(std::is_same_v<T, double>);
     return ParameterType::kLreal;
@@ -125,8 +130,9 @@ class InstanceOf final : public Instance {
           using T = std::remove_reference_t<decltype(fb_.*member)>;
           if constexpr (std::is_same_v<T, bool>) {
             fb_.*member = value != 0.0;
-          } else if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference>) {
-            // set_object() sets these
+          } else if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference> ||
+                               std::is_same_v<T, ProfileReference>) {
+            // set_object() / set_profile() set these
           } else {
             fb_.*member = static_cast<T>(value);
           }
@@ -137,7 +143,8 @@ class InstanceOf final : public Instance {
     return std::visit(
         [&](auto member) {
           using T = std::remove_cv_t<std::remove_reference_t<decltype(fb_.*member)>>;
-          if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference>) {
+          if constexpr (std::is_same_v<T, Source> || std::is_same_v<T, CamReference> ||
+                        std::is_same_v<T, ProfileReference>) {
             return std::numeric_limits<double>::quiet_NaN();
           } else {
             return static_cast<double>(fb_.*member);
@@ -149,6 +156,10 @@ class InstanceOf final : public Instance {
     if (auto* member = std::get_if<Source FB::*>(&table_[parameter].member))
       fb_.** member = object.leading_value_source();
     if (auto* member = std::get_if<CamReference FB::*>(&table_[parameter].member)) fb_.** member = object.cam;
+  }
+  void set_profile(std::size_t parameter, ProfileReference profile) noexcept override {
+    if (auto* member = std::get_if<ProfileReference FB::*>(&table_[parameter].member))
+      fb_.*(*member) = profile;
   }
   // The loader creates an instance only for a TO of the instruction's axis type.
   void call(techobjects::TechnologyObject& object) noexcept override {
@@ -641,19 +652,69 @@ const auto kGetCamLeadingValue = std::to_array<Parameter<GetCamLeadingValue>>({
     out("Value", &GetCamLeadingValue::Value),
 });
 
+template <typename Axis>
+using PositionProfile = instructions::MC_PositionProfile<Axis>;
+template <typename Axis>
+const auto kPositionProfile = std::to_array<Parameter<PositionProfile<Axis>>>({
+    in("TimePosition", &PositionProfile<Axis>::TimePosition),
+    in("Execute", &PositionProfile<Axis>::Execute),
+    in("BufferMode", &PositionProfile<Axis>::BufferMode),
+    in("StartTime", &PositionProfile<Axis>::StartTime),
+    in("ProfileReference", &PositionProfile<Axis>::ProfileReference),
+    in("Velocity", &PositionProfile<Axis>::Velocity),
+    in("Acceleration", &PositionProfile<Axis>::Acceleration),
+    in("Deceleration", &PositionProfile<Axis>::Deceleration),
+    in("Jerk", &PositionProfile<Axis>::Jerk),
+    out("Done", &PositionProfile<Axis>::Done),
+    out("Busy", &PositionProfile<Axis>::Busy),
+    out("Active", &PositionProfile<Axis>::Active),
+    out("CommandAborted", &PositionProfile<Axis>::CommandAborted),
+    out("Error", &PositionProfile<Axis>::Error),
+    out("ErrorID", &PositionProfile<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using MotionInVelocity = instructions::MC_MotionInVelocity<Axis>;
+template <typename Axis>
+const auto kMotionInVelocity = std::to_array<Parameter<MotionInVelocity<Axis>>>({
+    in("Enable", &MotionInVelocity<Axis>::Enable),
+    in("Velocity", &MotionInVelocity<Axis>::Velocity),
+    in("Acceleration", &MotionInVelocity<Axis>::Acceleration),
+    in("PositionControlled", &MotionInVelocity<Axis>::PositionControlled),
+    out("Busy", &MotionInVelocity<Axis>::Busy),
+    out("CommandAborted", &MotionInVelocity<Axis>::CommandAborted),
+    out("Error", &MotionInVelocity<Axis>::Error),
+    out("ErrorID", &MotionInVelocity<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using MotionInPosition = instructions::MC_MotionInPosition<Axis>;
+template <typename Axis>
+const auto kMotionInPosition = std::to_array<Parameter<MotionInPosition<Axis>>>({
+    in("Enable", &MotionInPosition<Axis>::Enable),
+    in("Position", &MotionInPosition<Axis>::Position),
+    in("Velocity", &MotionInPosition<Axis>::Velocity),
+    in("Acceleration", &MotionInPosition<Axis>::Acceleration),
+    out("Busy", &MotionInPosition<Axis>::Busy),
+    out("CommandAborted", &MotionInPosition<Axis>::CommandAborted),
+    out("Error", &MotionInPosition<Axis>::Error),
+    out("ErrorID", &MotionInPosition<Axis>::ErrorID),
+});
+
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
 constexpr std::array<std::string_view, 11> kSpeedAxisInstructions{
     "MC_Power",          "MC_Reset",          "MC_MoveVelocity", "MC_MoveJog",
     "MC_Halt",           "MC_Stop",           "MC_SetAxisSTW",   "MC_WriteParameter",
     "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 16> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 19> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
     "MC_Halt",
     "MC_MoveAbsolute",
     "MC_MoveRelative",
+    "MC_PositionProfile",
     "MC_MoveVelocity",
     "MC_MoveJog",
     "MC_MoveSuperimposed",
@@ -661,17 +722,20 @@ constexpr std::array<std::string_view, 16> kPositioningAxisInstructions{
     "MC_Stop",
     "MC_SetAxisSTW",
     "MC_WriteParameter",
+    "MC_MotionInVelocity",
+    "MC_MotionInPosition",
     "MC_TorqueLimiting",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 27> kSynchronousAxisInstructions{
+constexpr std::array<std::string_view, 30> kSynchronousAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
     "MC_Halt",
     "MC_MoveAbsolute",
     "MC_MoveRelative",
+    "MC_PositionProfile",
     "MC_MoveVelocity",
     "MC_MoveJog",
     "MC_MoveSuperimposed",
@@ -690,6 +754,8 @@ constexpr std::array<std::string_view, 27> kSynchronousAxisInstructions{
     "MC_OffsetAbsolute",
     "MC_OffsetRelative",
     "MC_LeadingValueAdditive",
+    "MC_MotionInVelocity",
+    "MC_MotionInPosition",
     "MC_TorqueLimiting",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
@@ -701,9 +767,15 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
 constexpr std::array<std::string_view, 9> kPlannedInstructions{
-    "MC_CopyCamData",         "MC_MeasuringInput",   "MC_MeasuringInputCyclic",
-    "MC_AbortMeasuringInput", "MC_OutputCam",        "MC_CamTrack",
-    "MC_ReadParameter",       "MC_MotionInVelocity", "MC_MotionInPosition",
+    "MC_CopyCamData",
+    "MC_MeasuringInput",
+    "MC_MeasuringInputCyclic",
+    "MC_AbortMeasuringInput",
+    "MC_OutputCam",
+    "MC_CamTrack",
+    "MC_ReadParameter",
+    "MC_MotionInSuperimposed",
+    "MC_MotionInSuperimposedAxes",
 };
 
 }  // namespace
@@ -724,6 +796,8 @@ std::string_view to_string(ParameterType type) noexcept {
       return "TO";
     case ParameterType::kCam:
       return "TO_Cam";
+    case ParameterType::kTimePosition:
+      return "time-position profile";
   }
   return "?";
 }
@@ -788,6 +862,9 @@ std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
   if (instruction == "MC_MoveSuperimposed") return make(kMoveSuperimposed<Axis>);
   if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
   if (instruction == "MC_Home") return make(kHome<Axis>);
+  if (instruction == "MC_PositionProfile") return make(kPositionProfile<Axis>);
+  if (instruction == "MC_MotionInVelocity") return make(kMotionInVelocity<Axis>);
+  if (instruction == "MC_MotionInPosition") return make(kMotionInPosition<Axis>);
   return make_motion<Axis>(instruction);
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tomc/scenario/machine.hpp"
+#include "tomc/techobjects/motion/time_position_profile.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/synchronous/leading_value.hpp"
 
@@ -21,7 +22,18 @@ namespace tomc::scenario::detail {
 // The PLC data types of instruction parameters.
 // kTechnologyObject: an input naming a leading value (MC_GearIn.Master), kCam one naming a cam
 // (MC_CamIn.Cam), both given in JSON as the TO's name.
-enum class ParameterType : std::uint8_t { kBool, kInt, kDint, kWord, kLreal, kTechnologyObject, kCam };
+// kTimePosition: MC_PositionProfile.TimePosition, given in JSON as an array of [time, position] pairs that
+// the scenario keeps as the user's profile structure (decision L1).
+enum class ParameterType : std::uint8_t {
+  kBool,
+  kInt,
+  kDint,
+  kWord,
+  kLreal,
+  kTechnologyObject,
+  kCam,
+  kTimePosition
+};
 std::string_view to_string(ParameterType type) noexcept;
 
 struct ParameterInfo {
@@ -39,6 +51,9 @@ class Instance {
   virtual double get(std::size_t parameter) const noexcept = 0;  // NaN for a TO parameter
   // A kTechnologyObject or kCam parameter: the object as a leading value or as a cam.
   virtual void set_object(std::size_t parameter, const MachineObject& object) noexcept = 0;
+  // A kTimePosition parameter: the profile (kept by the scenario for as long as it runs).
+  virtual void set_profile(std::size_t parameter,
+                           const techobjects::TimePositionProfile* profile) noexcept = 0;
   // `object` is of the TO type the instance was made for (make_instance).
   virtual void call(techobjects::TechnologyObject& object) noexcept = 0;
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -80,6 +81,7 @@ Format format_of(detail::ParameterType type) {
     case detail::ParameterType::kWord:
     case detail::ParameterType::kTechnologyObject:
     case detail::ParameterType::kCam:
+    case detail::ParameterType::kTimePosition:
       break;
   }
   return Format::kInteger;
@@ -270,7 +272,8 @@ struct Event {
   // kInstance
   std::size_t instance = 0;
   std::vector<std::pair<std::size_t, double>> inputs;
-  std::vector<std::pair<std::size_t, std::size_t>> object_inputs;  // (parameter, technology object index)
+  std::vector<std::pair<std::size_t, std::size_t>> object_inputs;   // (parameter, technology object index)
+  std::vector<std::pair<std::size_t, std::size_t>> profile_inputs;  // (parameter, index into profiles)
   // kSet
   std::vector<SetItem> sets;
   // kInject, kClear
@@ -309,6 +312,9 @@ struct Scenario::Impl {
   std::vector<std::array<bool, 2>> tar_offs_inputs;  // per object: TarOffs En, Reset as last set
   std::vector<InstanceEntry> instances;
   std::vector<Event> events;
+  // MC_PositionProfile.TimePosition of the timeline: the user's profile structures (a deque: stable
+  // addresses).
+  std::deque<to::TimePositionProfile> profiles;
   std::vector<Column> trace;
   std::vector<Expectation> expectations;       // sorted by cycle
   std::unique_ptr<to::RetentiveStore> retain;  // "retain_file": absolute-encoder adjustments across runs
@@ -332,6 +338,8 @@ struct Scenario::Impl {
   // ---- loading ----
   void load(const Json& document);
   void load_technology_object(const Json& value, const std::string& path);
+  // MC_PositionProfile.TimePosition: [[time, position], ...] into a new profile; its index in `profiles`.
+  std::optional<std::size_t> read_time_position(const Json& value, const std::string& path);
   void load_event(const Json& value, const std::string& path, std::optional<std::uint64_t>& previous_cycle);
   void load_instance_event(ObjectReader& r, Event& event);
   void load_set_event(ObjectReader& r, Event& event);
@@ -490,6 +498,42 @@ void Scenario::Impl::load(const Json& document) {
     }
   }
   root.finish();
+}
+
+// The points as the user's program would fill the structure; their order, count >= 2 and finiteness are the
+// instruction's to check (its ErrorIDs), so only the shape and the capacity are the loader's.
+std::optional<std::size_t> Scenario::Impl::read_time_position(const Json& value, const std::string& path) {
+  if (!value.is_array()) {
+    problems.add(path, "expected an array of [time, position] pairs");
+    return std::nullopt;
+  }
+  if (value.size() > to::kMaxTimePositionPoints) {
+    problems.add(path, std::to_string(value.size()) + " points, at most " +
+                           std::to_string(to::kMaxTimePositionPoints) + " fit the profile structure");
+    return std::nullopt;
+  }
+  to::TimePositionProfile profile;
+  bool ok = true;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    const Json& p = value[i];
+    if (!p.is_array() || p.size() != 2) {
+      problems.add(at, "expected [time, position]");
+      ok = false;
+      continue;
+    }
+    const auto t = detail::read_number(p[0], at + "[0]", problems);
+    const auto y = detail::read_number(p[1], at + "[1]", problems);
+    if (!t || !y) {
+      ok = false;
+      continue;
+    }
+    profile.Point[i] = {*t, *y};
+  }
+  if (!ok) return std::nullopt;
+  profile.NumberOfPoints = static_cast<std::int32_t>(value.size());
+  profiles.push_back(profile);
+  return profiles.size() - 1;
 }
 
 void Scenario::Impl::load_technology_object(const Json& value, const std::string& path) {
@@ -678,6 +722,10 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
         break;
       case detail::ParameterType::kLreal:
         number = detail::read_number(value, path, problems);
+        break;
+      case detail::ParameterType::kTimePosition:
+        if (auto index = read_time_position(value, path))
+          event.profile_inputs.emplace_back(*parameter, *index);
         break;
       case detail::ParameterType::kTechnologyObject:
       case detail::ParameterType::kCam: {
@@ -975,7 +1023,8 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
     }
     const Instance* fb = entry.fb.get();
     if (fb->parameters()[*parameter].type == detail::ParameterType::kTechnologyObject ||
-        fb->parameters()[*parameter].type == detail::ParameterType::kCam) {
+        fb->parameters()[*parameter].type == detail::ParameterType::kCam ||
+        fb->parameters()[*parameter].type == detail::ParameterType::kTimePosition) {
       problems.add(path, "'" + std::string(rest) + "' names a technology object; it cannot be traced");
       return std::nullopt;
     }
@@ -1005,6 +1054,8 @@ void Scenario::Impl::apply(const Event& event) noexcept {
         fb.set(parameter, value);
       for (const auto& [parameter, object] : event.object_inputs)
         fb.set_object(parameter, objects[object]);
+      for (const auto& [parameter, profile] : event.profile_inputs)
+        fb.set_profile(parameter, &profiles[profile]);
       break;
     }
     case Event::Kind::kSet:

@@ -48,6 +48,9 @@ enum class AxisJobKind : std::uint8_t {
   kGearOut,           // MC_GearOut, once desynchronization started
   kCamIn,             // MC_CamIn
   kCamOut,            // MC_CamOut, once desynchronization started
+  kPositionProfile,   // MC_PositionProfile (spec 03 §4.7)
+  kMotionInVelocity,  // MC_MotionInVelocity (spec 03 §4.17.1)
+  kMotionInPosition,  // MC_MotionInPosition (spec 03 §4.17.2)
   kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
   kHaltSuperimposed,  // MC_HaltSuperimposed
   kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)

@@ -107,6 +107,19 @@ inline constexpr std::uint16_t kInvalidTorqueValue = 0x8146;
 inline constexpr std::uint16_t kCamNotInterpolated = 0x8150;
 // MC_CopyCamData: an element range outside the cam's Point/Segment arrays or outside the given source arrays
 inline constexpr std::uint16_t kInvalidCamElementRange = 0x8151;
+// MC_PositionProfile (spec 03 §4.7; tomc's profile structure, decision L1): no profile, fewer than 2 or more
+// than kMaxTimePositionPoints points
+inline constexpr std::uint16_t kInvalidTimePositionProfile = 0x8180;
+inline constexpr std::uint16_t kTimePositionOutOfOrder = 0x8181;  // the times are not strictly increasing
+inline constexpr std::uint16_t kTimePositionNotFinite = 0x8182;   // a time or position is NaN or infinite
+inline constexpr std::uint16_t kInvalidStartTime = 0x8183;  // StartTime not within [first time, last time)
+inline constexpr std::uint16_t kInvalidPositionProfileReference =
+    0x8184;  // MC_PositionProfile.ProfileReference not 0/1
+// ProfileReference 1: the profile moves at StartTime and the axis is not already on it (the transition
+// profile reaches an absolute start point only at rest, decision L3)
+inline constexpr std::uint16_t kProfileStartNotReachable = 0x8185;
+// MotionIn (spec 03 §4.17): a setpoint input is NaN or infinite
+inline constexpr std::uint16_t kInvalidMotionInSetpoint = 0x8186;
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

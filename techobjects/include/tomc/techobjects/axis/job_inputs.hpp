@@ -77,6 +77,29 @@ struct MoveRelativeInputs {
   double Jerk = -1.0;
   std::int32_t BufferMode = 0;
 };
+// Inputs of MC_PositionProfile (spec 03 §4.7): the dynamics are those of the transition profile.
+struct TimePositionProfile;
+struct PositionProfileInputs {
+  const TimePositionProfile* TimePosition = nullptr;  // the user's profile; must outlive the job, unchanged
+  double StartTime = 0.0;
+  std::int32_t ProfileReference = 0;  // 0 relative, 1 absolute
+  double Velocity = -1.0;
+  double Acceleration = -1.0;
+  double Deceleration = -1.0;
+  double Jerk = -1.0;
+  std::int32_t BufferMode = 0;
+};
+// Inputs of MC_MotionInVelocity / MC_MotionInPosition (spec 03 §4.17), taken every cycle while Enable = TRUE.
+struct MotionInVelocityInputs {
+  double Velocity = 0.0;
+  double Acceleration = 0.0;
+  bool PositionControlled = true;
+};
+struct MotionInPositionInputs {
+  double Position = 0.0;
+  double Velocity = 0.0;
+  double Acceleration = 0.0;
+};
 // Inputs of MC_MoveSuperimposed (spec 03 §4.10).
 struct MoveSuperimposedInputs {
   double Distance = 0.0;

@@ -4,7 +4,7 @@
 // modulo), position controller (Kv, precontrol, DSC), following-error / positioning / standstill monitors,
 // software and hardware limit switches — around the job machinery the speed axis has: MC_Power, MC_Reset,
 // alarm reactions, the §9.19.1 matrix, MC_Stop and MC_Halt. Motion jobs: MC_MoveAbsolute, MC_MoveRelative
-// (BufferMode 0/1), MC_MoveVelocity, MC_MoveJog, MC_Home (direct modes 0, 1, 11, 12).
+// (BufferMode 0/1), MC_PositionProfile, MC_MoveVelocity, MC_MoveJog, MC_MotionInVelocity/Position, MC_Home.
 //
 // Units: the data block holds positions in Units.LengthUnit, velocities in Units.VelocityUnit; internally the
 // axis computes in position units per second (axis_units.hpp). Positions are kept continuous internally; the
@@ -37,6 +37,7 @@
 #include "tomc/techobjects/drive/encoder_channel.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/motion/time_position_profile.hpp"
 #include "tomc/techobjects/position/actual_value_chain.hpp"
 #include "tomc/techobjects/position/backlash.hpp"
 #include "tomc/techobjects/position/dynamic_filter.hpp"
@@ -83,6 +84,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   Submission halt(const HaltInputs& in) noexcept;                                           // 9.4
   Submission move_absolute(const MoveAbsoluteInputs& in) noexcept;                          // 9.5
   Submission move_relative(const MoveRelativeInputs& in) noexcept;                          // 9.6
+  Submission position_profile(const PositionProfileInputs& in) noexcept;                    // 9.7
   Submission move_velocity(const MoveVelocityInputs& in) noexcept;                          // 9.8
   Submission jog(JobId running, const JogInputs& in) noexcept;                              // 9.9
   Submission move_superimposed(const MoveSuperimposedInputs& in) noexcept;                  // 9.10
@@ -91,6 +93,12 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // 9.15: 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart),
   // 1020 Actor.RemoveEnableReaction (immediately).
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // 9.17.1, 9.17.2 MotionIn, called on every user-program cycle while Enable = TRUE: `running` = 0 (the
+  // rising edge) submits the job, the job's id takes the inputs over as the setpoints of the next
+  // MC_Interpolator (motion_in.cpp). end_motion_in(): the falling edge of Enable.
+  Submission motion_in_velocity(JobId running, const MotionInVelocityInputs& in) noexcept;
+  Submission motion_in_position(JobId running, const MotionInPositionInputs& in) noexcept;
+  void end_motion_in(JobId running) noexcept;
   // 9.18.3 MC_TorqueLimiting, called on every user-program cycle: Mode 0 limits the drive's torque/force
   // through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
@@ -140,23 +148,34 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   friend class FollowingAxis;  // the synchronous operation's port (synchronous/following_axis.hpp)
   using JobKind = AxisJobKind;
   // What drives the setpoint this cycle.
-  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous };
+  // kTimeProfile: MC_PositionProfile on its profile; kMotionIn: the MotionIn inputs act directly.
+  enum class Generator : std::uint8_t { kIdle, kVelocity, kPosition, kSynchronous, kTimeProfile, kMotionIn };
 
-  struct Motion {            // a base motion job (running or appended); members ordered to leave no padding
-    ProfileLimits limits{};  // resolved (position units), velocity before override
-    double command_velocity = 0;   // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp
-    double target = 0;             // positioning: continuous target position
-    double distance = 0;           // appended positioning: target relative to the end of the running job
-    double absolute_position = 0;  // appended MoveAbsolute: the requested position
+  // A base motion job (running or appended); members ordered to leave no padding. MC_PositionProfile and
+  // MotionIn reuse the fields named for them below instead of adding their own (the 8 KiB budget, decision
+  // L2).
+  struct Motion {
+    ProfileLimits limits{};       // resolved (position units), velocity before override
+    double command_velocity = 0;  // MoveVelocity/Jog: signed; positioning: v_cmd; before override and clamp;
+                                  // MotionIn: Velocity
+    double target = 0;            // positioning: continuous target position; MotionInPosition: Position
+    double distance =
+        0;  // appended positioning: target relative to the end of the running job; PositionProfile:
+            // the time on the profile (StartTime until it follows it); MotionIn: Acceleration
+    double absolute_position = 0;  // appended MoveAbsolute: the requested position; PositionProfile: the
+                                   // shift from profile positions to the continuous position
     double planned_velocity = 0;   // the velocity limit the profile was planned with (override changes)
+    const TimePositionProfile* time_profile = nullptr;  // PositionProfile: the user's profile
     JobId id = 0;
-    std::int32_t direction = 1;  // appended MoveAbsolute on a modulo axis
+    std::int32_t direction = 1;  // appended MoveAbsolute on a modulo axis; PositionProfile: ProfileReference
     JobKind kind = JobKind::kNone;
     bool relative_to_end = false;  // appended MoveRelative: Distance counts from the running job's target
     bool jog_stopping = false;
     bool position_controlled = true;
-    bool interpolation_done = false;  // positioning: the setpoint has reached the target
-    bool halt_base_only = false;      // MC_Halt Mode 1: a §9.19.1 C3 job, the superimposed motion goes on
+    bool interpolation_done =
+        false;                     // positioning: the setpoint has reached the target (PositionProfile: end)
+    bool halt_base_only = false;   // MC_Halt Mode 1: a §9.19.1 C3 job, the superimposed motion goes on
+    bool profile_limited = false;  // PositionProfile: DynamicLimits hold the setpoint off the profile
   };
 
   // homing (positioning_axis_homing.cpp)
@@ -169,15 +188,15 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     kSearchMark,     // zero mark armed, in the homing direction at ReferencingVelocity
     kToHome,         // homed: to the home position at ApproachVelocity
   };
-  struct ActiveHomingJob {
-    HomingPhase phase = HomingPhase::kIdle;
-    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+  struct ActiveHomingJob {          // members ordered to leave no padding (8 KiB per axis TO)
     double home_position = 0.0;     // MC_Home.Position (3) or Homing.HomePosition (5)
     double mark_value = 0.0;        // home position - HomePositionOffset
     double direction = 1.0;         // homing direction (ActiveHoming.Direction)
     double travel_direction = 1.0;  // the direction of the present search motion
+    std::int32_t method = 0;        // Sensor[n].ActiveHoming.Mode
+    std::int16_t limit_reversals = 0;
+    HomingPhase phase = HomingPhase::kIdle;
     bool mark_on_entering = false;  // digital input: the mark is the edge onto the input
-    int limit_reversals = 0;
   };
   struct PassiveHomingJob {
     JobId id = 0;
@@ -260,6 +279,18 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   }
   std::optional<double> absolute_target(double position, std::int32_t direction, double from) const noexcept;
   void start_positioning(Motion motion) noexcept;
+  // MC_PositionProfile (position_profile_job.cpp)
+  void start_motion(const Motion& motion) noexcept;  // an appended job becomes active
+  void start_time_profile(Motion motion) noexcept;   // transition profile, or on the profile at once
+  // The transition ended `elapsed` s ago (within this cycle) with the base setpoint at `base_position`:
+  // follow the profile from StartTime + elapsed.
+  void enter_time_profile(double base_position, double elapsed = 0.0) noexcept;
+  void follow_time_profile() noexcept;  // Generator::kTimeProfile, one interpolator cycle
+  void check_profile_limits(const Motion& motion) noexcept;  // alarms 501/502 (seed 004 §6.8.4)
+  // MotionIn (motion_in.cpp)
+  Submission motion_in(JobKind kind, JobId running, const MotionState& setpoint,
+                       bool position_controlled) noexcept;
+  void follow_motion_in() noexcept;  // Generator::kMotionIn
   // setpoint generation
   void plan_velocity(double target, const ProfileLimits& limits, bool abort_acceleration) noexcept;
   void plan_position(double target, const ProfileLimits& limits) noexcept;

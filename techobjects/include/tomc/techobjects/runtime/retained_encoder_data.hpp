@@ -7,12 +7,12 @@
 
 namespace tomc::techobjects {
 
-struct RetainedEncoderData {
-  bool valid = false;  // an adjustment exists (StatusSensor.Adjusted of an absolute encoder)
+struct RetainedEncoderData {  // members ordered to leave no padding (8 KiB per axis TO)
   double AbsEncoderOffset = 0.0;
   std::int64_t MeasuringRangeCount = 0;  // cyclic absolute encoder
-  std::uint32_t LastAbsoluteValue = 0;   // Gx_XIST2 format, within the measuring range
   std::uint64_t sequence = 0;            // increases with every new adjustment (a save is due)
+  std::uint32_t LastAbsoluteValue = 0;   // Gx_XIST2 format, within the measuring range
+  bool valid = false;  // an adjustment exists (StatusSensor.Adjusted of an absolute encoder)
   // A new adjustment of the operative encoder (MC_Home 6/7, the first homing of an absolute encoder).
   void adopt(double offset, std::int64_t ranges, std::uint32_t last_absolute) noexcept {
     valid = true;
