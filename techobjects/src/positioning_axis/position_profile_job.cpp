@@ -27,6 +27,7 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
   if (in.ProfileReference != kRelative && in.ProfileReference != kAbsolute)
     return Submission::reject(error_id::kInvalidPositionProfileReference);
   if (const auto e = validate(in.TimePosition, in.StartTime)) return Submission::reject(e);
+  if (std::isnan(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);  // as MoveAbsolute
   ProfileLimits limits;
   if (const auto e = resolve_dynamics(in.Velocity, in.Acceleration, in.Deceleration, in.Jerk, limits))
     return Submission::reject(*e);
@@ -66,6 +67,11 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
 // BufferMode 1: the appended job starts in the cycle the running one is Done (spec 03 §3.7 T-E).
 void PositioningAxis::start_motion(const Motion& motion) noexcept {
   if (motion.kind == JobKind::kPositionProfile) {
+    // The user's structure may have changed while the job waited: checked again before it is read.
+    if (const auto e = validate(motion.time_profile, motion.distance)) {
+      core_.jobs.set(motion.id, JobState::kError, e);
+      return;
+    }
     start_time_profile(motion);
   } else {
     start_positioning(motion);
@@ -156,16 +162,26 @@ void PositioningAxis::follow_time_profile() noexcept {
     return;
   }
   const TimePositionProfile& profile = *motion_.time_profile;
+  // The user changed the profile while the job ran: stop with the job's deceleration, never a wild step and
+  // never a read outside the points (the count is checked every cycle: end_time() and evaluate() index by
+  // it).
+  const auto fail = [this](std::uint16_t error) noexcept {
+    core_.jobs.set(motion_.id, JobState::kError, error);
+    const ProfileLimits stop = motion_.limits;
+    motion_ = Motion{};
+    plan_velocity(0.0, stop, false);
+  };
+  if (profile.NumberOfPoints < 2 ||
+      profile.NumberOfPoints > static_cast<std::int32_t>(kMaxTimePositionPoints)) {
+    fail(error_id::kInvalidTimePositionProfile);
+    return;
+  }
   const double dt = core_.ipo_cycle_s;
   motion_.distance = std::min(motion_.distance + dt, end_time(profile));
   MotionState wanted = evaluate(profile, motion_.distance);
   wanted.position += motion_.absolute_position;
   if (!std::isfinite(wanted.position) || !std::isfinite(wanted.velocity)) {
-    // The user changed the profile while the job ran: stop with the job's deceleration, never a wild step.
-    core_.jobs.set(motion_.id, JobState::kError, error_id::kTimePositionNotFinite);
-    const ProfileLimits stop = motion_.limits;
-    motion_ = Motion{};
-    plan_velocity(0.0, stop, false);
+    fail(error_id::kTimePositionNotFinite);
     return;
   }
   const double v_max = db_.DynamicLimits.MaxVelocity / units_.velocity;
@@ -175,7 +191,9 @@ void PositioningAxis::follow_time_profile() noexcept {
     return a * v > 0.0 ? accel_max : decel_max;  // |v| grows: acceleration; shrinks: deceleration
   };
   const MotionState now = setpoint_;
-  const bool wanted_within = std::fabs(wanted.velocity) <= v_max * (1.0 + 1e-9) &&
+  // A point edited while the job runs can move the profile by more than a cycle at v_max: chased, no step.
+  const bool wanted_within = std::fabs(wanted.position - now.position) <= v_max * dt * (1.0 + 1e-9) &&
+                             std::fabs(wanted.velocity) <= v_max * (1.0 + 1e-9) &&
                              std::fabs(wanted.acceleration) <=
                                  acceleration_limit(wanted.acceleration, wanted.velocity) * (1.0 + 1e-9);
   if (!motion_.profile_limited && wanted_within) {

@@ -369,6 +369,8 @@ Submission PositioningAxis::reset(bool restart) noexcept {
 Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
+  // NaN is resolve_dynamics' internal "no velocity" (MoveVelocity, Halt): a user's NaN is an invalid input.
+  if (std::isnan(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);
   if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
   if (modulo() && (in.Direction < 1 || in.Direction > 3))
     return Submission::reject(error_id::kInvalidDirection);
@@ -404,6 +406,7 @@ Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept
 Submission PositioningAxis::move_relative(const MoveRelativeInputs& in) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
   if (!finite(in.Distance)) return Submission::reject(error_id::kInvalidPosition);
+  if (std::isnan(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);  // as MoveAbsolute
   if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
   ProfileLimits limits;
   if (const auto e = resolve_dynamics(in.Velocity, in.Acceleration, in.Deceleration, in.Jerk, limits))

@@ -440,7 +440,7 @@ void PositioningAxis::plan_positioning(double v) noexcept {
 
 void PositioningAxis::generate_setpoint() noexcept {
   if (follows_actual()) {
-    superimposed_.fold();
+    abort_superimposed(error_id::kAbortedByAlarmReaction);  // its reaction has normally ended it already
     setpoint_ = MotionState{actual_position_, actual_velocity_, 0.0};  // follow-up (spec 02 §3.2)
     generator_ = Generator::kIdle;
     return;
@@ -601,7 +601,8 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
   }
   const auto r = software_limits_.update(in);
   if (!std::isnan(crossed)) {
-    superimposed_.fold();  // the setpoint stops at the limit, base and superimposed alike
+    // The setpoint stops at the limit, base and superimposed alike; 533's reaction follows in this cycle.
+    abort_superimposed(error_id::kAbortedByAlarmReaction);
     setpoint_ = MotionState{crossed + shift, 0.0, 0.0};
   }
   if (r.stop_now) {

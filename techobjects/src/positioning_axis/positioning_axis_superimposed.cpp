@@ -11,6 +11,8 @@ namespace tomc::techobjects {
 Submission PositioningAxis::move_superimposed(const MoveSuperimposedInputs& in) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
   if (!std::isfinite(in.Distance)) return Submission::reject(error_id::kInvalidPosition);
+  // NaN is resolve_dynamics' internal "no velocity": a user's NaN is an invalid input.
+  if (std::isnan(in.VelocityDiff)) return Submission::reject(error_id::kInvalidVelocity);
   ProfileLimits limits;  // VelocityDiff < 0: DynamicDefaults.Velocity, = 0 invalid (spec 03 §2.1)
   if (const auto e = resolve_dynamics(in.VelocityDiff, in.Acceleration, in.Deceleration, in.Jerk, limits))
     return Submission::reject(*e);

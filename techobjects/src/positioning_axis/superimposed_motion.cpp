@@ -37,25 +37,23 @@ void SuperimposedMotion::halt(JobId id, const ProfileLimits& limits, bool abort_
   }
 }
 
+// Planned into a temporary and taken over only when the plan succeeds: a running profile is never restarted.
 void SuperimposedMotion::replan(double velocity_limit) noexcept {
-  planned_velocity_ = velocity_limit;
-  time_ = 0.0;
   if (velocity_limit > 0.0) {
     ProfileLimits l = limits_;
     l.velocity = velocity_limit;
     PositionProfile to_target;
-    if (to_target.plan(state_, target_, l)) {
-      profile_ = to_target;
-      planned_ = true;
-    }
-    return;
-  }
-  // No headroom in the direction of travel: the superimposed part stops and waits (as an override of 0 %).
-  VelocityProfile stop;
-  if (stop.plan(state_, 0.0, limits_)) {
+    if (!to_target.plan(state_, target_, l)) return;
+    profile_ = to_target;
+  } else {
+    // No headroom in the direction of travel: the superimposed part stops and waits (as an override of 0 %).
+    VelocityProfile stop;
+    if (!stop.plan(state_, 0.0, limits_)) return;
     profile_ = stop;
-    planned_ = true;
   }
+  planned_velocity_ = velocity_limit;
+  time_ = 0.0;
+  planned_ = true;
 }
 
 bool SuperimposedMotion::advance(double dt, double headroom_positive, double headroom_negative) noexcept {

@@ -667,8 +667,12 @@ class Run {
       now.elevated = worst > normal + tol && (emergency_ramp || superimposed_moving || carried);
       double bound = normal + superimposed_extra;
       if (now.elevated) {
-        bound = std::max(
-            {bound, d.DynamicDefaults.EmergencyDeceleration, carried ? std::fabs(prev_.acceleration) : 0.0});
+        // A carried acceleration comes from an emergency ramp or a superimposed hand-over: never above
+        // either.
+        const double carried_cap = std::max(2.0 * std::max(l.MaxAcceleration, l.MaxDeceleration),
+                                            d.DynamicDefaults.EmergencyDeceleration);
+        bound = std::max({bound, d.DynamicDefaults.EmergencyDeceleration,
+                          carried ? std::min(std::fabs(prev_.acceleration), carried_cap) : 0.0});
       }
       if (now.elevated) ++stats_.emergency_cycles;
       stats_.worst_acceleration_ratio = std::max(stats_.worst_acceleration_ratio, worst / bound);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_halt_superimposed.hpp"
@@ -403,6 +404,8 @@ TEST(MoveSuperimposed, RejectsWithoutPositionControlAndInvalidParameters) {
   const Case cases[] = {
       {std::nan(""), -1.0, -1.0, -1.0, -1.0, error_id::kInvalidPosition},
       {5.0, 0.0, -1.0, -1.0, -1.0, error_id::kInvalidVelocity},
+      {5.0, std::nan(""), -1.0, -1.0, -1.0, error_id::kInvalidVelocity},  // NaN is not "the default"
+      {5.0, std::numeric_limits<double>::infinity(), -1.0, -1.0, -1.0, error_id::kInvalidVelocity},
       {5.0, -1.0, 0.0, -1.0, -1.0, error_id::kInvalidAcceleration},
       {5.0, -1.0, -1.0, 0.0, -1.0, error_id::kInvalidDeceleration},
       {5.0, -1.0, -1.0, -1.0, std::nan(""), error_id::kInvalidJerk},

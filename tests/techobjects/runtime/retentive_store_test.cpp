@@ -44,9 +44,16 @@ std::string read_text(const fs::path& p) {
 
 TEST_F(RetentiveStoreTest, RoundTripIsExact) {
   const fs::path file = dir_ / "retain.dat";
-  std::vector<RetainedRecord> records{{"Slide", {true, -1234.5678901234567, 0, 123456, 3}},
-                                      {"Table", {true, 1.0e-17, -42, 4294967295u, 9}},
-                                      {"Spare", {false, 0.0, 0, 0, 0}}};
+  std::vector<RetainedRecord> records{
+      {"Slide",
+       {.AbsEncoderOffset = -1234.5678901234567, .sequence = 3, .LastAbsoluteValue = 123456, .valid = true}},
+      {"Table",
+       {.AbsEncoderOffset = 1.0e-17,
+        .MeasuringRangeCount = -42,
+        .sequence = 9,
+        .LastAbsoluteValue = 4294967295u,
+        .valid = true}},
+      {"Spare", {}}};
   std::string error;
   ASSERT_TRUE(techobjects::write_retain_file(file, records, error)) << error;
   EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
@@ -64,7 +71,8 @@ TEST_F(RetentiveStoreTest, AnInterruptedWriteLeavesTheOldFile) {
   const fs::path file = dir_ / "retain.dat";
   std::string error;
   ASSERT_TRUE(techobjects::write_retain_file(
-      file, std::vector<RetainedRecord>{{"Slide", {true, 5.0, 0, 0, 1}}}, error));
+      file, std::vector<RetainedRecord>{{"Slide", {.AbsEncoderOffset = 5.0, .sequence = 1, .valid = true}}},
+      error));
   std::ofstream(file.string() + ".tmp") << "tomc-retain 1\nSlide 1 7.0 0";  // half-written, never renamed
   const auto read = techobjects::read_retain_file(file);
   ASSERT_EQ(read.status, RetainFileStatus::kOk);
@@ -76,7 +84,8 @@ TEST_F(RetentiveStoreTest, DamagedFilesAreReportedNotTrusted) {
   EXPECT_EQ(techobjects::read_retain_file(file).status, RetainFileStatus::kMissing);
   std::string error;
   ASSERT_TRUE(techobjects::write_retain_file(
-      file, std::vector<RetainedRecord>{{"Slide", {true, 5.0, 0, 0, 1}}}, error));
+      file, std::vector<RetainedRecord>{{"Slide", {.AbsEncoderOffset = 5.0, .sequence = 1, .valid = true}}},
+      error));
   const std::string good = read_text(file);
   // One changed digit of the offset: the checksum catches it.
   std::string altered = good;
@@ -159,7 +168,8 @@ TEST_F(RetentiveStoreTest, LostAdjustmentsRaiseAlarm432) {
   check(2);  // corrupt
   std::string error;
   ASSERT_TRUE(techobjects::write_retain_file(
-      file, std::vector<RetainedRecord>{{"Other", {true, 1.0, 0, 0, 1}}}, error));
+      file, std::vector<RetainedRecord>{{"Other", {.AbsEncoderOffset = 1.0, .sequence = 1, .valid = true}}},
+      error));
   check(3);  // no record for Axis1
 }
 
