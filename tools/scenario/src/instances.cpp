@@ -728,38 +728,24 @@ constexpr std::array<std::string_view, 19> kPositioningAxisInstructions{
     "MC_TorqueAdditive",
     "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 30> kSynchronousAxisInstructions{
-    "MC_Power",
-    "MC_Reset",
-    "MC_Home",
-    "MC_Halt",
-    "MC_MoveAbsolute",
-    "MC_MoveRelative",
-    "MC_PositionProfile",
-    "MC_MoveVelocity",
-    "MC_MoveJog",
-    "MC_MoveSuperimposed",
-    "MC_HaltSuperimposed",
-    "MC_Stop",
-    "MC_SetAxisSTW",
-    "MC_WriteParameter",
-    "MC_GearIn",
-    "MC_GearInPos",
-    "MC_GearInVelocity",
-    "MC_GearOut",
-    "MC_CamIn",
-    "MC_CamOut",
-    "MC_PhasingAbsolute",
-    "MC_PhasingRelative",
-    "MC_OffsetAbsolute",
-    "MC_OffsetRelative",
-    "MC_LeadingValueAdditive",
-    "MC_MotionInVelocity",
-    "MC_MotionInPosition",
-    "MC_TorqueLimiting",
-    "MC_TorqueAdditive",
-    "MC_TorqueRange",
+// A synchronous axis accepts every instruction of a positioning axis (spec 01 §1.3) and these.
+constexpr std::array<std::string_view, 11> kSynchronousOnlyInstructions{
+    "MC_GearIn",         "MC_GearInPos",      "MC_GearInVelocity",       "MC_GearOut",
+    "MC_CamIn",          "MC_CamOut",         "MC_PhasingAbsolute",      "MC_PhasingRelative",
+    "MC_OffsetAbsolute", "MC_OffsetRelative", "MC_LeadingValueAdditive",
 };
+template <std::size_t A, std::size_t B>
+constexpr std::array<std::string_view, A + B> joined(const std::array<std::string_view, A>& a,
+                                                     const std::array<std::string_view, B>& b) {
+  std::array<std::string_view, A + B> all{};
+  for (std::size_t i = 0; i < A; ++i)
+    all[i] = a[i];
+  for (std::size_t i = 0; i < B; ++i)
+    all[A + i] = b[i];
+  return all;
+}
+constexpr auto kSynchronousAxisInstructions =
+    joined(kPositioningAxisInstructions, kSynchronousOnlyInstructions);
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
 constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", "MC_GetCamFollowingValue",
