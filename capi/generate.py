@@ -19,6 +19,8 @@ TYPES = {
     "DINT": "int32_t",
     "WORD": "uint16_t",
     "LREAL": "double",
+    # MC_PositionProfile.TimePosition: tomc's time-position point structure (decision L1), by pointer.
+    "PROFILE": "const tomc_time_position_profile*",
 }
 
 # TO kinds: S TO_SpeedAxis, P TO_PositioningAxis, Y TO_SynchronousAxis, E TO_ExternalEncoder
@@ -119,6 +121,11 @@ TABLE = [
        [("Enable", "BOOL", "FALSE")],
        [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
        master="SuperimposingAxis"),
+    fb("MC_PositionProfile", "spec 03 §4.7", "PY",
+       [("TimePosition", "PROFILE", "NULL"), ("Execute", "BOOL", "FALSE"), ("BufferMode", "DINT", "0"),
+        ("StartTime", "LREAL", "0.0"), ("ProfileReference", "DINT", "0"), ("Velocity", "LREAL", "-1.0")] + DYN,
+       [("Done", "BOOL"), ("Busy", "BOOL"), ("Active", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD")]),
     fb("MC_GearIn", "spec 07 §2.1", "Y",
        [("Execute", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"), ("RatioDenominator", "DINT", "1")] + DYN,
        [("InGear", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
@@ -168,6 +175,8 @@ def c_default(iec_type, value):
 def cpp_literal(iec_type, value):
     if iec_type == "BOOL":
         return "true" if value == "TRUE" else "false"
+    if iec_type == "PROFILE":
+        return "nullptr"
     return value
 
 
@@ -183,6 +192,18 @@ def c_header():
            "#ifdef __cplusplus",
            'extern "C" {',
            "#endif",
+           "",
+           "/* MC_PositionProfile.TimePosition (spec 03 §4.7): x = time in s, y = position in the axis' position unit,",
+           " * Time strictly increasing; the structure must stay unchanged while a job follows it (decision L1). */",
+           "#define TOMC_MAX_TIME_POSITION_POINTS 128",
+           "typedef struct tomc_time_position_point {",
+           "  double Time;",
+           "  double Position;",
+           "} tomc_time_position_point;",
+           "typedef struct tomc_time_position_profile {",
+           "  int32_t NumberOfPoints; /* 2 ... TOMC_MAX_TIME_POSITION_POINTS */",
+           "  tomc_time_position_point Point[TOMC_MAX_TIME_POSITION_POINTS];",
+           "} tomc_time_position_profile;",
            ""]
     for f in TABLE:
         kinds = ", ".join(KIND_NAMES[k] for k in f["kinds"])
@@ -209,7 +230,15 @@ def c_header():
 
 
 def cpp_glue():
-    out = [f"// {HEADER_NOTE}", "// Included by capi/src/tomc_c.cpp inside its namespace; see generate.py.", ""]
+    out = [f"// {HEADER_NOTE}", "// Included by capi/src/tomc_c.cpp inside its namespace; see generate.py.", "",
+           "// tomc_time_position_profile is techobjects::TimePositionProfile, field by field.",
+           "static_assert(sizeof(tomc_time_position_profile) == sizeof(techobjects::TimePositionProfile));",
+           "static_assert(offsetof(tomc_time_position_profile, NumberOfPoints) == offsetof(techobjects::TimePositionProfile, NumberOfPoints));",
+           "static_assert(std::is_same_v<decltype(tomc_time_position_profile::NumberOfPoints), decltype(techobjects::TimePositionProfile::NumberOfPoints)>);",
+           "static_assert(offsetof(tomc_time_position_profile, Point) == offsetof(techobjects::TimePositionProfile, Point));",
+           "static_assert(sizeof(tomc_time_position_point) == sizeof(techobjects::TimePositionPoint));",
+           "static_assert(TOMC_MAX_TIME_POSITION_POINTS == techobjects::kMaxTimePositionPoints);",
+           ""]
     for f in TABLE:
         n = f["name"]
         kinds = " | ".join({"S": "kSpeed", "P": "kPositioning", "Y": "kSynchronous", "E": "kEncoder"}[k]
@@ -227,6 +256,9 @@ def cpp_glue():
             out.append(f"  template <typename T> static void set_master(T& t, const techobjects::LeadingValueSource* s) noexcept {{ t.{m} = s; }}")
         out.append("  template <typename T> static void in(const C& c, T& t) noexcept {")
         for name, t, _ in f["inputs"]:
+            if t == "PROFILE":  # the same layout (static_asserts below the table)
+                out.append(f"    t.{name} = reinterpret_cast<const techobjects::TimePositionProfile*>(c.{name});")
+                continue
             cast = "static_cast<bool>" if t == "BOOL" else ""
             out.append(f"    t.{name} = {cast}(c.{name});")
         out.append("  }")
@@ -245,6 +277,8 @@ def cpp_glue():
         out.append("};")
         first = {"S": "SpeedAxis", "P": "PositioningAxis", "Y": "SynchronousAxis", "E": "ExternalEncoder"}[f["kinds"][0]]
         for name, t, d in f["inputs"]:
+            if t == "PROFILE":
+                continue  # no profile by default (a TimePositionSource, not comparable in a constant)
             out.append(f"static_assert(instructions::{n}<techobjects::{first}>{{}}.{name} == {cpp_literal(t, d)},")
             out.append(f'              "{n}.{name}: the table\'s default differs from the C++ class");')
         out.append(f"extern \"C\" void tomc_{n}_init(tomc_{n}* fb) {{ init_fb<Fb_{n}>(fb); }}")
@@ -275,6 +309,9 @@ def st_declarations():
         if f["master"]:
             out.append(f"  {f['master']} : TO_Object;")
         for name, t, d in f["inputs"]:
+            if t == "PROFILE":
+                out.append(f"  {name} : LWORD; (* a tomc_time_position_profile* *)")
+                continue
             out.append(f"  {name} : {t} := {d};")
         out.append("END_VAR")
         out.append("VAR_OUTPUT")

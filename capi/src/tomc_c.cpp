@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <deque>
@@ -41,6 +42,7 @@
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
+#include "tomc/instructions/mc_position_profile.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"

@@ -768,4 +768,56 @@ TEST(CApi, StatusNamesAndVersion) {
   EXPECT_STREQ(tomc_version(), "0.1.0");
 }
 
+// MC_PositionProfile through the C ABI (spec 03 §4.7): the host fills tomc_time_position_profile (the layout
+// of tomc's point structure, decision L1) and the Slide follows it relatively: 40 mm in 0.5 s, Done at the
+// end, StatusWord2.X9 while the job runs. A profile with one point is refused with 16#8180.
+TEST(CApi, PositionProfileFollowsTheHostsTimePositionPoints) {
+  Machine m;
+  tomc_MC_Power power;
+  tomc_MC_Home home;
+  tomc_MC_Power_init(&power);
+  tomc_MC_Home_init(&home);
+  power.Enable = true;
+  for (int k = 0; k < 200 && !home.Done; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
+    home.Execute = power.Status;
+    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
+  }
+  ASSERT_TRUE(home.Done);
+  tomc_time_position_profile points;
+  std::memset(&points, 0, sizeof(points));
+  points.NumberOfPoints = 4;
+  points.Point[0] = {0.0, 0.0};
+  points.Point[1] = {0.1, 5.0};
+  points.Point[2] = {0.4, 35.0};
+  points.Point[3] = {0.5, 40.0};
+  tomc_MC_PositionProfile profile;
+  tomc_MC_PositionProfile_init(&profile);
+  EXPECT_EQ(profile.TimePosition, nullptr);  // the manual's defaults (generate.py's table)
+  EXPECT_EQ(profile.ProfileReference, 0);
+  const double x0 = read(m.slide, "Position");
+  profile.TimePosition = &points;
+  profile.Execute = true;
+  bool x9 = false;
+  for (int k = 0; k < 1000 && !profile.Done; ++k) {
+    ASSERT_EQ(tomc_MC_PositionProfile_call(m.slide, &profile), TOMC_OK) << last_error();
+    ASSERT_FALSE(profile.Error) << profile.ErrorID;
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    int64_t sw2 = 0;
+    ASSERT_EQ(tomc_read_int(m.slide, "StatusWord2", &sw2), TOMC_OK);
+    x9 = x9 || ((sw2 >> 9) & 1) != 0;
+  }
+  EXPECT_TRUE(profile.Done);
+  EXPECT_TRUE(x9);
+  EXPECT_NEAR(read(m.slide, "Position"), x0 + 40.0, 1e-9);
+  points.NumberOfPoints = 1;
+  profile.Execute = false;
+  ASSERT_EQ(tomc_MC_PositionProfile_call(m.slide, &profile), TOMC_OK);
+  profile.Execute = true;
+  ASSERT_EQ(tomc_MC_PositionProfile_call(m.slide, &profile), TOMC_OK);
+  EXPECT_TRUE(profile.Error);
+  EXPECT_EQ(profile.ErrorID, 0x8180);
+}
+
 }  // namespace

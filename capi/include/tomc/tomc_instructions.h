@@ -10,6 +10,18 @@
 extern "C" {
 #endif
 
+/* MC_PositionProfile.TimePosition (spec 03 §4.7): x = time in s, y = position in the axis' position unit,
+ * Time strictly increasing; the structure must stay unchanged while a job follows it (decision L1). */
+#define TOMC_MAX_TIME_POSITION_POINTS 128
+typedef struct tomc_time_position_point {
+  double Time;
+  double Position;
+} tomc_time_position_point;
+typedef struct tomc_time_position_profile {
+  int32_t NumberOfPoints; /* 2 ... TOMC_MAX_TIME_POSITION_POINTS */
+  tomc_time_position_point Point[TOMC_MAX_TIME_POSITION_POINTS];
+} tomc_time_position_profile;
+
 /* MC_Power (spec 03 §4.1) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder. */
 typedef struct tomc_MC_Power {
   tomc_struct_header header; /* set by the init function */
@@ -392,6 +404,31 @@ typedef struct tomc_MC_MotionInSuperimposedAxes {
 } tomc_MC_MotionInSuperimposedAxes;
 TOMC_API void tomc_MC_MotionInSuperimposedAxes_init(tomc_MC_MotionInSuperimposedAxes* fb);
 TOMC_API tomc_status tomc_MC_MotionInSuperimposedAxes_call(tomc_object* axis, tomc_MC_MotionInSuperimposedAxes* fb);
+
+/* MC_PositionProfile (spec 03 §4.7) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_PositionProfile {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  const tomc_time_position_profile* TimePosition;
+  bool Execute;
+  int32_t BufferMode;
+  double StartTime;
+  int32_t ProfileReference;
+  double Velocity;
+  double Acceleration;
+  double Deceleration;
+  double Jerk;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool Active;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_PositionProfile;
+TOMC_API void tomc_MC_PositionProfile_init(tomc_MC_PositionProfile* fb);
+TOMC_API tomc_status tomc_MC_PositionProfile_call(tomc_object* axis, tomc_MC_PositionProfile* fb);
 
 /* MC_GearIn (spec 07 §2.1) on TO_SynchronousAxis. */
 typedef struct tomc_MC_GearIn {

@@ -71,8 +71,13 @@ std::string_view describe(std::uint16_t id) noexcept {
              "on it";
     case kInvalidMotionInSetpoint:
       return "MotionIn: a setpoint input is not finite";
+    case kProfileNotAtRestAtEnd:
+      return "MC_PositionProfile: the TO_Cam does not end at rest (its velocity at the last time is not 0)";
     case kSuperimposingAxisNotConfigured:
       return "MC_MotionInSuperimposedAxes: SuperimposingAxis is not a possible superimposing axis of Axis";
+    case kSuperimposingAxisNotAtSuperimposition:
+      return "MC_MotionInSuperimposedAxes: SuperimposingAxis does not stand at "
+             "StatusPositioning.SuperimposedDistance";
     case kSuperimposingAxisNotReady:
       return "MC_MotionInSuperimposedAxes: SuperimposingAxis is not enabled, not position-controlled or "
              "homing";

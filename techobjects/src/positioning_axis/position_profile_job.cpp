@@ -26,7 +26,7 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
   if (in.BufferMode != 0 && in.BufferMode != 1) return Submission::reject(error_id::kInvalidBufferMode);
   if (in.ProfileReference != kRelative && in.ProfileReference != kAbsolute)
     return Submission::reject(error_id::kInvalidPositionProfileReference);
-  if (const auto e = validate(in.TimePosition, in.StartTime)) return Submission::reject(e);
+  if (const auto e = in.TimePosition.validate(in.StartTime)) return Submission::reject(e);
   if (std::isnan(in.Velocity)) return Submission::reject(error_id::kInvalidVelocity);  // as MoveAbsolute
   ProfileLimits limits;
   if (const auto e = resolve_dynamics(in.Velocity, in.Acceleration, in.Deceleration, in.Jerk, limits))
@@ -38,12 +38,12 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
   m.kind = JobKind::kPositionProfile;
   m.limits = limits;
   m.command_velocity = (in.Velocity < 0.0 ? db_.DynamicDefaults.Velocity : in.Velocity) / units_.velocity;
-  m.time_profile = in.TimePosition;
+  m.set_time_source(in.TimePosition);
   m.distance = in.StartTime;
   m.direction = in.ProfileReference;
   // An absolute profile that moves at StartTime can be joined only by an axis already on it (decision L3);
   // checked before the matrix aborts anything. An appended job is checked when it becomes active.
-  const MotionState start = evaluate(*in.TimePosition, in.StartTime);
+  const MotionState start = in.TimePosition.evaluate(in.StartTime);
   const MotionState base = base_setpoint();  // the profile is a base motion (a superimposed one goes on)
   if (in.BufferMode == 0 && in.ProfileReference == kAbsolute && start.velocity != 0.0 &&
       !(std::fabs(base.position - start.position) <= 1e-9 * std::max(1.0, std::fabs(start.position)) &&
@@ -68,7 +68,7 @@ Submission PositioningAxis::position_profile(const PositionProfileInputs& in) no
 void PositioningAxis::start_motion(const Motion& motion) noexcept {
   if (motion.kind == JobKind::kPositionProfile) {
     // The user's structure may have changed while the job waited: checked again before it is read.
-    if (const auto e = validate(motion.time_profile, motion.distance)) {
+    if (const auto e = motion.time_source().validate(motion.distance)) {
       core_.jobs.set(motion.id, JobState::kError, e);
       return;
     }
@@ -84,7 +84,7 @@ void PositioningAxis::start_motion(const Motion& motion) noexcept {
 // and hence the start position of the profile"). Absolute: a positioning to the profile's start point
 // (shortest path on a modulo axis), which ends at rest.
 void PositioningAxis::start_time_profile(Motion motion) noexcept {
-  const MotionState start = evaluate(*motion.time_profile, motion.distance);
+  const MotionState start = motion.time_source().evaluate(motion.distance);
   const MotionState base = base_setpoint();
   motion.interpolation_done = false;
   motion.profile_limited = false;
@@ -130,19 +130,19 @@ void PositioningAxis::start_time_profile(Motion motion) noexcept {
 }
 
 void PositioningAxis::enter_time_profile(double base_position, double elapsed) noexcept {
-  motion_.distance = std::min(motion_.distance + elapsed, end_time(*motion_.time_profile));
+  motion_.distance = std::min(motion_.distance + elapsed, motion_.time_source().end_time());
   if (motion_.direction == kRelative) {
-    motion_.absolute_position = base_position - evaluate(*motion_.time_profile, motion_.distance).position;
+    motion_.absolute_position = base_position - motion_.time_source().evaluate(motion_.distance).position;
   }
   motion_.target =
-      evaluate(*motion_.time_profile, end_time(*motion_.time_profile)).position + motion_.absolute_position;
+      motion_.time_source().evaluate(motion_.time_source().end_time()).position + motion_.absolute_position;
   generator_ = Generator::kTimeProfile;
 }
 
 // seed 004 §6.8.4 "dynamic limits while following the profile": a profile asking more than
 // DynamicLimits.MaxVelocity / MaxAcceleration raises 501 / 502 when the job starts.
 void PositioningAxis::check_profile_limits(const Motion& motion) noexcept {
-  const ProfileDynamics d = max_dynamics(*motion.time_profile, motion.distance);
+  const ProfileDynamics d = motion.time_source().max_dynamics(motion.distance);
   const double v_max = db_.DynamicLimits.MaxVelocity / units_.velocity;
   const double a_max =
       std::min(db_.DynamicLimits.MaxAcceleration, db_.DynamicLimits.MaxDeceleration) / units_.acceleration;
@@ -161,7 +161,7 @@ void PositioningAxis::follow_time_profile() noexcept {
     setpoint_.acceleration = 0.0;
     return;
   }
-  const TimePositionProfile& profile = *motion_.time_profile;
+  const TimePositionSource profile = motion_.time_source();
   // The user changed the profile while the job ran: stop with the job's deceleration, never a wild step and
   // never a read outside the points (the count is checked every cycle: end_time() and evaluate() index by
   // it).
@@ -171,14 +171,13 @@ void PositioningAxis::follow_time_profile() noexcept {
     motion_ = Motion{};
     plan_velocity(0.0, stop, false);
   };
-  if (profile.NumberOfPoints < 2 ||
-      profile.NumberOfPoints > static_cast<std::int32_t>(kMaxTimePositionPoints)) {
-    fail(error_id::kInvalidTimePositionProfile);
+  if (const std::uint16_t e = profile.still_valid()) {
+    fail(e);
     return;
   }
   const double dt = core_.ipo_cycle_s;
-  motion_.distance = std::min(motion_.distance + dt, end_time(profile));
-  MotionState wanted = evaluate(profile, motion_.distance);
+  motion_.distance = std::min(motion_.distance + dt, profile.end_time());
+  MotionState wanted = profile.evaluate(motion_.distance);
   wanted.position += motion_.absolute_position;
   if (!std::isfinite(wanted.position) || !std::isfinite(wanted.velocity)) {
     fail(error_id::kTimePositionNotFinite);
@@ -196,6 +195,13 @@ void PositioningAxis::follow_time_profile() noexcept {
                              std::fabs(wanted.velocity) <= v_max * (1.0 + 1e-9) &&
                              std::fabs(wanted.acceleration) <=
                                  acceleration_limit(wanted.acceleration, wanted.velocity) * (1.0 + 1e-9);
+  if (profile.cam() != nullptr) {
+    // A cam's polynomials have no closed-form extremes: 501/502 when the profile asks for more (L8).
+    if (std::fabs(wanted.velocity) > v_max * (1.0 + 1e-9)) raise(kAlarmDynamicsLimitedVelocity);
+    if (std::fabs(wanted.acceleration) >
+        acceleration_limit(wanted.acceleration, wanted.velocity) * (1.0 + 1e-9))
+      raise(kAlarmDynamicsLimitedAcceleration);
+  }
   if (!motion_.profile_limited && wanted_within) {
     setpoint_ = wanted;
   } else {
@@ -214,7 +220,7 @@ void PositioningAxis::follow_time_profile() noexcept {
     if (rejoin) setpoint_ = wanted;
     motion_.profile_limited = !rejoin;
   }
-  if (motion_.distance >= end_time(profile) && !motion_.profile_limited) {
+  if (motion_.distance >= profile.end_time() && !motion_.profile_limited) {
     // The end of the profile, at rest: Done after the positioning window (spec 03 §3.5).
     setpoint_ = MotionState{wanted.position, 0.0, 0.0};
     generator_ = Generator::kIdle;

@@ -536,7 +536,7 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kTimeProfile && motion_.kind == JobKind::kPositionProfile) {
-    s = evaluate(*motion_.time_profile, motion_.distance + dt);
+    s = motion_.time_source().evaluate(motion_.distance + dt);
     s.position += motion_.absolute_position;
   }
   const MotionState sup = superimposed_.predicted(dt);

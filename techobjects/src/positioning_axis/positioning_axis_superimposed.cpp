@@ -52,6 +52,8 @@ Submission PositioningAxis::halt_superimposed(const HaltSuperimposedInputs& in) 
 
 namespace {
 
+constexpr double kStandstillEpsilon = 1e-9;  // position units / s, as the cycle's standstill test
+
 bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.position) && std::isfinite(s.velocity) && std::isfinite(s.acceleration);
 }
@@ -119,6 +121,11 @@ Submission PositioningAxis::motion_in_superimposed_axes(JobId running,
   if (other.core_.phase != PowerPhase::kEnabled || !other.position_controlled_ ||
       other.motion_.kind == JobKind::kHome || other.passive_.id != 0)
     return Submission::reject(error_id::kSuperimposingAxisNotReady);
+  // Its setpoint becomes the superimposition at once: it must stand where the superimposition is (seed 004
+  // §6.14.3.2 warning), or the axis would jump (decision U10).
+  if (std::fabs(other.setpoint_.position - superimposed_.distance()) > db_.PositioningMonitoring.Window ||
+      std::fabs(other.setpoint_.velocity) >= kStandstillEpsilon)
+    return Submission::reject(error_id::kSuperimposingAxisNotAtSuperimposition);
   bool queue = false;
   if (const auto e = arbitrate_motion(NewJob::kSuperimposed, queue)) return Submission::reject(e);
   const JobId id = core_.jobs.create(JobKind::kMotionInSuperimposedAxes, JobState::kActive);
@@ -174,9 +181,21 @@ void PositioningAxis::advance_superimposed() noexcept {
   if (superimposed_.job() == SuperimposedMotion::Job::kMotionInAxes) {
     // The superimposing axis ran first in this cycle (Runtime orders by superimposing_axes()): its setpoint
     // of this cycle is the superimposition, without a cycle offset (seed 004 §6.14.3.2).
-    const auto index = db_.StatusMotionIn.ActualSuperimposingAxis;
-    superimposed_.follow(
-        static_cast<const PositioningAxis*>(superimposing_axes_->axes[index - 1])->setpoint_);
+    const std::size_t index = db_.StatusMotionIn.ActualSuperimposingAxis;  // set by the job's start
+    const PositioningAxis* other =
+        superimposing_axes_ && index >= 1 && index <= superimposing_axes_->count
+            ? static_cast<const PositioningAxis*>(superimposing_axes_->axes[index - 1])
+            : nullptr;
+    if (other != nullptr && other->core_.phase == PowerPhase::kEnabled && other->position_controlled_) {
+      superimposed_.follow(other->setpoint_);
+    } else {
+      // The superimposing axis left enabled, position-controlled operation (or the job's table entry is
+      // gone): the job ends with an error, the superimposition stays where it is (decision U10).
+      core_.jobs.set(id, JobState::kError, error_id::kSuperimposingAxisNotReady);
+      superimposed_.end_motion_in();
+      db_.StatusMotionIn.ActualSuperimposingAxis = 0;
+      return;
+    }
   }
   if (superimposed_.advance(core_.ipo_cycle_s, limited ? v_limit - v_base : inf,
                             limited ? v_limit + v_base : inf)) {

@@ -506,6 +506,47 @@ TEST(MotionInSuperimposedAxes, TheSuperimposingAxisMustBeEnabled) {
   EXPECT_EQ(m.axes.ErrorID, eid::kSuperimposingAxisNotReady);
 }
 
+// seed 004 §6.14.3.2 warning: the superimposing TO must stand at the superimposition the axis shows
+// (SuperimposedDistance) before Enable, or its setpoint would be a step: TO_2 homed at 5 mm, TO_1's
+// superimposition 0: refused with 16#8192. Disabling TO_2 while the job runs ends it with 16#8191; TO_1 keeps
+// the superimposition it had (decision U10).
+TEST(MotionInSuperimposedAxes, TheSuperimposingAxisMustStandAtTheSuperimpositionAndStayEnabled) {
+  TwoAxes m;
+  m.enable_and_home();
+  m.home2.Mode = 0;
+  m.home2.Position = 5.0;
+  m.home2.Execute = true;
+  m.run(2);
+  ASSERT_EQ(m.to2->data().Position, 5.0);
+  m.axes.SuperimposingAxis = m.to2;
+  m.axes.Enable = true;
+  m.run(1);
+  EXPECT_TRUE(m.axes.Error);
+  EXPECT_EQ(m.axes.ErrorID, eid::kSuperimposingAxisNotAtSuperimposition);
+  m.axes.Enable = false;
+  m.home2.Execute = false;
+  m.run(1);
+  m.home2.Position = 0.0;
+  m.home2.Execute = true;
+  m.run(2);
+  m.axes.Enable = true;
+  m.run(1);
+  ASSERT_TRUE(m.axes.Busy) << m.axes.ErrorID;
+  m.move_superimposing(20.0);
+  m.run(300);
+  const double superimposed = m.db1().StatusPositioning.SuperimposedDistance;
+  ASSERT_GT(superimposed, 1.0);
+  m.power2.Enable = false;
+  m.run(2);
+  EXPECT_TRUE(m.axes.Error);
+  EXPECT_EQ(m.axes.ErrorID, eid::kSuperimposingAxisNotReady);
+  EXPECT_FALSE(x8(m.db1()));
+  m.run(100);
+  EXPECT_EQ(m.db1().Velocity, 0.0);
+  EXPECT_GE(m.db1().Position, superimposed);  // kept where it was, nothing more
+  EXPECT_LE(m.db1().Position, superimposed + 100.0 * 0.002);
+}
+
 // The configuration: not the axis itself, not twice, at most kCapacity axes; a superimposition loop is a
 // configuration error at Runtime::start() as a leading-value loop is (spec 07 §1.2).
 TEST(MotionInSuperimposedAxes, ConfigurationErrors) {

@@ -12,6 +12,7 @@
 
 #include "profile_motion_in_fixture.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/techobjects/cam/cam.hpp"
 
 namespace {
 
@@ -322,6 +323,108 @@ TEST(PositionProfile, DirectHomingDuringTheTransitionMovesTheProfileWithTheAxis)
   }
   EXPECT_TRUE(m.profile.Done);
   EXPECT_NEAR(m.db().Position, 70.0 + 10.0, 1e-9);
+}
+
+// ---- TimePosition as the manual has it: a TO_Cam, x = time in s, y = position (spec 03 §4.7, decision L8)
+// ----
+
+// One polynomial segment y(t) = h (3t² − 2t³) on [0, 1] s: at rest at both ends, peak 1.5 h mm/s at 0.5 s.
+void cubic_cam(techobjects::Cam& cam, double height) {
+  techobjects::TO_Cam_Struct_SegmentData s;
+  s.xmin = 0.0;
+  s.xmax = 1.0;
+  s.a2 = 3.0 * height;
+  s.a3 = -2.0 * height;
+  ASSERT_TRUE(cam.write_segment(1, s, true));
+}
+double cubic(double height, double t) {
+  return height * (3.0 * t * t - 2.0 * t * t * t);
+}
+double cubic_velocity(double height, double t) {
+  return height * (6.0 * t - 6.0 * t * t);
+}
+
+// The relative job on an interpolated cam from rest follows it at once: the setpoint is the cam's polynomial,
+// cycle by cycle, shifted to the start position; OnProfile while it does; Done at the end (40 mm).
+TEST(PositionProfile, FollowsATimePositionCamCycleByCycle) {
+  ProfileMachine m;
+  ASSERT_GT(m.enable(), 0);
+  m.run(5);
+  const double x0 = m.db().Position;
+  techobjects::Cam cam("Cam_1");
+  cubic_cam(cam, 40.0);
+  ASSERT_TRUE(cam.interpolate_cam().accepted());
+  m.profile.TimePosition = &cam;
+  m.profile.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(m.profile.Busy) << m.profile.ErrorID;
+  for (int n = 1; n <= 999; ++n) {  // cycle 1+n: cam time n ms
+    m.run(1);
+    const double t = n * 0.001;
+    ASSERT_NEAR(m.db().Position, x0 + cubic(40.0, t), 1e-9) << n;
+    ASSERT_NEAR(m.db().Velocity, cubic_velocity(40.0, t), 1e-9) << n;
+    ASSERT_TRUE(m.x9() && m.x10()) << n;
+  }
+  m.run(1);
+  EXPECT_NEAR(m.db().Position, x0 + 40.0, 1e-9);
+  EXPECT_EQ(m.db().Velocity, 0.0);
+  EXPECT_GT(m.run_until([&] { return m.profile.Done; }, 200), 0);
+  EXPECT_FALSE(m.axis->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity));
+}
+
+// A cam not interpolated: 16#8150 (as MC_CamIn); StartTime outside [first, last) of the cam: 16#8183; a cam
+// that does not end at rest: 16#8187. A cam
+// faster than DynamicLimits.MaxVelocity (peak 60 mm/s, limit 50): 501 once the axis reaches the excess, the
+// setpoint within the limit, and the job still ends at the cam's end position.
+TEST(PositionProfile, TimePositionCamErrorsAndLimits) {
+  auto data = tomc::testing::linear_axis_data();
+  data.DynamicLimits.MaxVelocity = 50.0;
+  data.DynamicLimits.Velocity = 50.0;
+  data.DynamicDefaults.Velocity = 50.0;
+  ProfileMachine m(data);
+  ASSERT_GT(m.enable(), 0);
+  techobjects::Cam raw("Raw");
+  cubic_cam(raw, 40.0);
+  const auto submit = [&](const techobjects::Cam& cam, double start_time) {
+    m.profile.Execute = false;
+    m.run(1);
+    m.profile.TimePosition = &cam;
+    m.profile.StartTime = start_time;
+    m.profile.Execute = true;
+    m.run(1);
+  };
+  submit(raw, 0.0);
+  EXPECT_TRUE(m.profile.Error);
+  EXPECT_EQ(m.profile.ErrorID, eid::kCamNotInterpolated);
+  ASSERT_TRUE(raw.interpolate_cam().accepted());
+  for (const double outside : {-0.1, 1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    submit(raw, outside);
+    EXPECT_TRUE(m.profile.Error) << outside;
+    EXPECT_EQ(m.profile.ErrorID, eid::kInvalidStartTime) << outside;
+  }
+  // A cam still moving at its end (y = 10 t): the axis would stop with a step of 10 mm/s: 16#8187.
+  techobjects::Cam moving("Moving");
+  techobjects::TO_Cam_Struct_SegmentData ramp;
+  ramp.xmin = 0.0;
+  ramp.xmax = 1.0;
+  ramp.a1 = 10.0;
+  ASSERT_TRUE(moving.write_segment(1, ramp, true));
+  ASSERT_TRUE(moving.interpolate_cam().accepted());
+  submit(moving, 0.0);
+  EXPECT_TRUE(m.profile.Error);
+  EXPECT_EQ(m.profile.ErrorID, eid::kProfileNotAtRestAtEnd);
+  const double x0 = m.db().Position;
+  submit(raw, 0.0);
+  ASSERT_TRUE(m.profile.Busy) << m.profile.ErrorID;
+  bool saw501 = false;
+  for (int k = 0; k < 3000 && !m.profile.Done; ++k) {
+    m.run(1);
+    ASSERT_LE(std::fabs(m.db().Velocity), 50.0 + 1e-9) << k;
+    saw501 = saw501 || m.axis->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity);
+  }
+  EXPECT_TRUE(m.profile.Done);
+  EXPECT_TRUE(saw501);
+  EXPECT_NEAR(m.db().Position, x0 + 40.0, 1e-9);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ using techobjects::SpeedAxis;
 using techobjects::SynchronousAxis;
 using Source = const techobjects::LeadingValueSource*;
 using CamReference = techobjects::Cam*;
-using ProfileReference = const techobjects::TimePositionProfile*;
+using ProfileReference = techobjects::TimePositionSource;
 
 // The axis type an instruction class works on: MC_Power<SpeedAxis> -> SpeedAxis.
 template <typename FB>
@@ -158,8 +158,11 @@ class InstanceOf final : public Instance {
     if (auto* member = std::get_if<Source FB::*>(&table_[parameter].member))
       fb_.** member = object.leading_value_source();
     if (auto* member = std::get_if<CamReference FB::*>(&table_[parameter].member)) fb_.** member = object.cam;
+    // MC_PositionProfile.TimePosition naming a TO_Cam (spec 03 §4.7).
+    if (auto* member = std::get_if<ProfileReference FB::*>(&table_[parameter].member))
+      fb_.** member = object.cam;
   }
-  void set_profile(std::size_t parameter, ProfileReference profile) noexcept override {
+  void set_profile(std::size_t parameter, const techobjects::TimePositionProfile* profile) noexcept override {
     if (auto* member = std::get_if<ProfileReference FB::*>(&table_[parameter].member))
       fb_.*(*member) = profile;
   }

@@ -50,7 +50,8 @@ class Instance {
   // Index into parameters(); already validated values only (the loader checked type and range).
   virtual void set(std::size_t parameter, double value) noexcept = 0;
   virtual double get(std::size_t parameter) const noexcept = 0;  // NaN for a TO parameter
-  // A kTechnologyObject or kCam parameter: the object as a leading value or as a cam.
+  // A kTechnologyObject or kCam parameter: the object as a leading value or as a cam; a kTimePosition
+  // parameter: the cam as the profile.
   virtual void set_object(std::size_t parameter, const MachineObject& object) noexcept = 0;
   // A kTimePosition parameter: the profile (kept by the scenario for as long as it runs).
   virtual void set_profile(std::size_t parameter,

@@ -746,8 +746,21 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
         number = detail::read_number(value, path, problems);
         break;
       case detail::ParameterType::kTimePosition:
-        if (auto index = read_time_position(value, path))
+        if (value.is_string()) {
+          // The manual's form: a TO_Cam of the scenario, x = time (spec 03 §4.7, decision L8).
+          const std::string target = value.get<std::string>();
+          const auto index = find_object(target);
+          if (!index) {
+            if (!objects_broken) problems.add(path, "unknown technology object '" + target + "'");
+          } else if (objects[*index].built && objects[*index].cam == nullptr) {
+            problems.add(path, "'" + target + "' is a " + std::string(objects[*index].type_name()) +
+                                   ", not a cam (TimePosition is a TO_Cam or [[time, position], ...])");
+          } else {
+            event.object_inputs.emplace_back(*parameter, *index);
+          }
+        } else if (auto index = read_time_position(value, path)) {
           event.profile_inputs.emplace_back(*parameter, *index);
+        }
         break;
       case detail::ParameterType::kTechnologyObject:
       case detail::ParameterType::kCam: {

@@ -1,19 +1,19 @@
 #pragma once
 // MC_PositionProfile (spec 03 §4.7, seed 004 §9.7): moves the axis along a time-position profile, relative
 // (ProfileReference 0) or absolute (1), after a transition profile with the given dynamics where the axis is
-// not ready to follow it. TimePosition points to the user's profile (tomc's TO_Cam-free structure, decision
-// L1); it must stay unchanged while the job uses it.
+// not ready to follow it. TimePosition is the profile, x = time: a TO_Cam as in the manual, or tomc's point
+// structure (decision L1): `fb.TimePosition = &cam;` or `= &points;`. It must outlive the job.
 #include <cstdint>
 
 #include "tomc/instructions/execute_handshake.hpp"
-#include "tomc/techobjects/motion/time_position_profile.hpp"
+#include "tomc/techobjects/motion/time_position_source.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 
 namespace tomc::instructions {
 
 template <typename Axis>
 struct MC_PositionProfile {
-  const techobjects::TimePositionProfile* TimePosition = nullptr;
+  techobjects::TimePositionSource TimePosition{};
   bool Execute = false;
   std::int32_t BufferMode = 0;
   double StartTime = 0.0;

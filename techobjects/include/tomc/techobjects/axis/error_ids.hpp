@@ -120,12 +120,19 @@ inline constexpr std::uint16_t kInvalidPositionProfileReference =
 inline constexpr std::uint16_t kProfileStartNotReachable = 0x8185;
 // MotionIn (spec 03 §4.17): a setpoint input is NaN or infinite
 inline constexpr std::uint16_t kInvalidMotionInSetpoint = 0x8186;
+// MC_PositionProfile on a TO_Cam that does not end at rest: the axis stops at the profile's end (seed 004
+// §9.7.1), which would be a velocity step (decision L8).
+inline constexpr std::uint16_t kProfileNotAtRestAtEnd = 0x8187;
 // MC_MotionInSuperimposedAxes: SuperimposingAxis is not configured as a possible superimposing axis of Axis
 // (ErrorWord.X16 SuperimposingError, seed 004 §6.14.3.2).
 inline constexpr std::uint16_t kSuperimposingAxisNotConfigured = 0x8190;
 // MC_MotionInSuperimposedAxes: SuperimposingAxis is not enabled, not position-controlled, or homing (spec 03
 // §4.17.4 prerequisites).
 inline constexpr std::uint16_t kSuperimposingAxisNotReady = 0x8191;
+// MC_MotionInSuperimposedAxes: SuperimposingAxis is not at standstill at the superimposition the axis shows
+// (StatusPositioning.SuperimposedDistance, within PositioningMonitoring.Window): its setpoint would be a step
+// (seed 004 §6.14.3.2 warning).
+inline constexpr std::uint16_t kSuperimposingAxisNotAtSuperimposition = 0x8192;
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

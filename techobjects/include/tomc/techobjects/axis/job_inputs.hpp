@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "tomc/techobjects/datablocks/variables.hpp"
+#include "tomc/techobjects/motion/time_position_source.hpp"
 
 namespace tomc::techobjects {
 
@@ -78,9 +79,8 @@ struct MoveRelativeInputs {
   std::int32_t BufferMode = 0;
 };
 // Inputs of MC_PositionProfile (spec 03 §4.7): the dynamics are those of the transition profile.
-struct TimePositionProfile;
 struct PositionProfileInputs {
-  const TimePositionProfile* TimePosition = nullptr;  // the user's profile; must outlive the job, unchanged
+  TimePositionSource TimePosition{};  // a TO_Cam or the user's points; must outlive the job
   double StartTime = 0.0;
   std::int32_t ProfileReference = 0;  // 0 relative, 1 absolute
   double Velocity = -1.0;

@@ -181,7 +181,12 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     double absolute_position = 0;  // appended MoveAbsolute: the requested position; PositionProfile: the
                                    // shift from profile positions to the continuous position
     double planned_velocity = 0;   // the velocity limit the profile was planned with (override changes)
-    const TimePositionProfile* time_profile = nullptr;  // PositionProfile: the user's profile
+    // PositionProfile: the user's profile, a point structure or a TO_Cam by time_from_cam (one pointer for
+    // either: the 8 KiB budget); time_source() reads it.
+    union {
+      const TimePositionProfile* time_points = nullptr;
+      const Cam* time_cam;
+    };  // PositionProfile: the user's profile
     JobId id = 0;
     std::int32_t direction = 1;  // appended MoveAbsolute on a modulo axis; PositionProfile: ProfileReference
     JobKind kind = JobKind::kNone;
@@ -192,6 +197,19 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
         false;                     // positioning: the setpoint has reached the target (PositionProfile: end)
     bool halt_base_only = false;   // MC_Halt Mode 1: a §9.19.1 C3 job, the superimposed motion goes on
     bool profile_limited = false;  // PositionProfile: DynamicLimits hold the setpoint off the profile
+    bool time_from_cam = false;    // PositionProfile: time_cam, else time_points
+
+    TimePositionSource time_source() const noexcept {
+      return time_from_cam ? TimePositionSource{time_cam} : TimePositionSource{time_points};
+    }
+    void set_time_source(const TimePositionSource& source) noexcept {
+      time_from_cam = source.cam() != nullptr;
+      if (time_from_cam) {
+        time_cam = source.cam();
+      } else {
+        time_points = source.points();
+      }
+    }
   };
 
   // homing (positioning_axis_homing.cpp)
