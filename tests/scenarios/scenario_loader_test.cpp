@@ -1010,3 +1010,78 @@ TEST(LegacyParameters, JointRangeErrors) {
 }
 
 }  // namespace
+
+// ---- "analog": {"comedi": {...}}: the analog actor on a real DAQ card (docs/analog-drives.md, decision A21)
+// ----
+
+Json comedi_axis(const char* comedi, bool enable = true, bool ready = true) {
+  Json d = base();
+  auto& to = d["technology_objects"][0];
+  to["config"] =
+      Json{{"Actor.Interface.EnableDriveOutput", enable}, {"Actor.Interface.DriveReadyInput", ready}};
+  to["drive"] = Json{{"adapter", "analog"}, {"telegram", 3}, {"analog", {{"comedi", Json::parse(comedi)}}}};
+  return d;
+}
+
+constexpr const char* kComediCard = R"({"device": "/dev/comedi_tomc_test_missing",
+    "analog_output": {"subdevice": 1, "channel": 0}, "enable_output": {"subdevice": 2, "channel": 0},
+    "ready_input": {"subdevice": 2, "channel": 8}, "counter": {"subdevice": 4, "channel": 0},
+    "counter_width_bits": 24})";
+
+// issue 20 "a missing device at start is a configuration error naming the device": from a scenario or
+// machine file the card is opened while the file is loaded; without the comedi build the loader says so.
+TEST(ComediDrive, MissingCardIsAConfigurationErrorNamingTheDevice) {
+  const std::string problem = problem_of(comedi_axis(kComediCard));
+#if TOMC_WITH_COMEDI
+  EXPECT_EQ(problem.rfind("technology_objects[0].drive.analog.comedi.device: comedi: cannot open "
+                          "/dev/comedi_tomc_test_missing: ",
+                          0),
+            0u)
+      << problem;
+  EXPECT_NE(problem.find("driver loaded"), std::string::npos) << problem;
+  // A file that is there but no comedi device.
+  Json d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["analog"]["comedi"]["device"] = "/dev/null";
+  EXPECT_EQ(problem_of(d).rfind(
+                "technology_objects[0].drive.analog.comedi.device: comedi: cannot open /dev/null: ", 0),
+            0u);
+#else
+  EXPECT_EQ(
+      problem,
+      "technology_objects[0].drive.analog.comedi: this tomc is built without the comedi backend (configure "
+      "with -DTOMC_WITH_COMEDI=ON, which needs Debian's libcomedi-dev)");
+#endif
+}
+
+// The card's keys: device file and channels named by path; the wiring must match Actor.Interface (spec 01
+// §3.12: enable output and ready input each optional); the simulated amplifier's keys do not apply.
+TEST(ComediDrive, CardKeysAndWiringAreChecked) {
+  EXPECT_EQ(problems_of(comedi_axis(R"({"analog_output": {"subdevice": 1}, "counter": {"subdevice": 4,
+      "channel": 0}, "counter_width_bits": 40})",
+                                    false, false)),
+            (std::vector<std::string>{
+                "technology_objects[0].drive.analog.comedi.device: missing",
+                "technology_objects[0].drive.analog.comedi.analog_output.channel: missing",
+                "technology_objects[0].drive.analog.comedi.counter_width_bits: 40 out of range 8..32"}));
+  EXPECT_EQ(
+      problems_of(comedi_axis(R"({"device": "/dev/comedi0", "analog_output": {"subdevice": 1, "channel": 0},
+      "counter": {"subdevice": 4, "channel": 0}, "ready_input": {"subdevice": 2, "channel": 8}})",
+                              true, false)),
+      (std::vector<std::string>{
+          "technology_objects[0].drive.analog.comedi.enable_output: missing: the TO's "
+          "Actor.Interface.EnableDriveOutput is TRUE",
+          "technology_objects[0].drive.analog.comedi.ready_input: the TO's Actor.Interface.DriveReadyInput "
+          "is FALSE (set it TRUE or remove the channel)"}));
+  Json d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["analog"]["amplifier_offset_volts"] = 0.1;
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].drive.analog.amplifier_offset_volts: a key of the simulated servo amplifier: "
+      "with \"comedi\" the amplifier is the real one");
+  d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["encoder_telegram"] = 83;
+  d["technology_objects"][0]["drive"]["telegram"] = 2;
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].drive.encoder_telegram: a separate 81/83 encoder is simulated: with "
+            "\"comedi\" the position is the card's counter");
+}
