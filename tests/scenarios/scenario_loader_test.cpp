@@ -1003,13 +1003,81 @@ TEST(LegacyParameters, JointRangeErrors) {
             "technology_objects[0].legacy.setvel: 150 exceeds maxvel 100");
   EXPECT_EQ(problem_of(joint_with("maxpos", 50)),
             "technology_objects[0].legacy.minpos: missing: give both software limits or neither");
-  EXPECT_NE(problem_of(joint_with("prsmode", 1)).find("technology_objects[0].legacy.prsmode"),
-            std::string::npos);
+  EXPECT_EQ(problem_of(joint_with("prsmode", 3)),
+            "technology_objects[0].legacy.prsmode: 3 out of range 0..2");
+  EXPECT_EQ(problem_of(joint_with("sprsvel", 101)),
+            "technology_objects[0].legacy.sprsvel: 101 exceeds maxvel 100");
   EXPECT_EQ(problem_of(joint_with("system", "EANPOS")),
             "technology_objects[0].legacy.system: 'EANPOS' is not one of JOINT, H3");
 }
 
 }  // namespace
+
+// spec 05b Part D 1: the JOINT INTDEVICE declaration, 21 tokens on one line (A.1.1), TCamp 1..255,
+// NAxis 2..3, Buffer 3..30000; the line gives TCamp (= the MC_Servo cycle) and the axis' resources (decision
+// A23).
+constexpr const char* kDeclaration =
+    "AX JOINT 10 3 500 2.1 1 3.1 4.1 2.2 2 3.2 4.2 2.3 X X.X 4.3 5.1 5.2 5.3 5.4";
+
+Json declared(const std::string& line, const char* axis = "X") {
+  Json d = with_legacy(R"({"system": "JOINT", "measure": 1, "pulse": 100, "maxvel": 100})", 0.01);
+  d["technology_objects"][0]["legacy"]["INTDEVICE"] = line;
+  d["technology_objects"][0]["legacy"]["axis"] = axis;
+  return d;
+}
+
+std::string replaced(std::string line, const std::string& from, const std::string& to) {
+  return line.replace(line.find(from), from.size(), to);
+}
+
+TEST(LegacyParameters, JointDeclarationPartD1) {
+  EXPECT_TRUE(problems_of(declared(kDeclaration)).empty());
+  // The spec's own line (TCamp 2 ms) parses; its TCamp must then be the cycle time.
+  Json d = declared("AX JOINT 2 3 500 2.1 1 3.1 4.1 2.2 2 3.2 4.2 2.3 X X.X 4.3 5.1 5.2 5.3 5.4");
+  d["cycle_time"] = 0.002;
+  EXPECT_TRUE(problems_of(d).empty());
+  const std::string at = "technology_objects[0].legacy.INTDEVICE: ";
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "JOINT 10", "JOINT 0"))),
+            at + "TCamp '0' out of range 1..255");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "JOINT 10", "JOINT 256"))),
+            at + "TCamp '256' out of range 1..255");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 1 500"))),
+            at + "NAxis '1' out of range 2..3");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 4 500"))),
+            at + "NAxis '4' out of range 2..3");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 3 2"))),
+            at + "Buffer '2' out of range 3..30000");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 3 30001"))),
+            at + "Buffer '30001' out of range 3..30000");
+  EXPECT_EQ(
+      problem_of(declared(replaced(kDeclaration, " 5.4", ""))),
+      at +
+          "20 tokens: expected 21 on one line, '<name> JOINT TCamp NAxis Buffer', ICont IntL IAZero IoutA of "
+          "X, Y, Z, IOut1 ... IOut4 (X.X / X for an unused one; spec 05b A.1.1)");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "2.1 1", "2.1 a"))),
+            at + "IntLX 'a' is no input number (or X)");
+  // The axis: Z of a 2-axis device; an axis without its counter or DAC.
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 2 500"), "Z")),
+            "technology_objects[0].legacy.axis: axis Z is beyond NAxis 2");
+  EXPECT_EQ(
+      problem_of(declared(replaced(kDeclaration, "2.1 1 3.1 4.1", "2.1 1 3.1 X.X"))),
+      at + "axis X needs its counter (IContX) and its DAC (IoutAX): at least one bidirectional counter and "
+           "one 16-bit DAC (spec 05b A.1)");
+  // TCamp once only; homing needs IAZero (and IntL for mode 1): axis Z has neither.
+  d = declared(kDeclaration);
+  d["technology_objects"][0]["legacy"]["TCamp"] = 10;
+  EXPECT_EQ(problem_of(d), "technology_objects[0].legacy.TCamp: given by the INTDEVICE line");
+  d = declared(kDeclaration, "Z");
+  d["technology_objects"][0]["legacy"]["prsmode"] = 0;
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].legacy.prsmode: homing needs the enable input IAZero, X.X in the "
+            "INTDEVICE line");
+  d = declared(replaced(kDeclaration, "2.3 X X.X", "2.3 X 3.3"), "Z");
+  d["technology_objects"][0]["legacy"]["prsmode"] = 1;
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].legacy.prsmode: 1 needs the zero-pulse input IntL, X in the INTDEVICE line");
+}
 
 // ---- "analog": {"comedi": {...}}: the analog actor on a real DAQ card (docs/analog-drives.md, decision A21)
 // ----
