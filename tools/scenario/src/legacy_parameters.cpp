@@ -417,6 +417,14 @@ void expand_h3(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Problem
   const double a = static_cast<double>(accel) * unit_mm;
   put_dynamics(static_cast<double>(veloc) * unit_mm, a, a, e);
   put_following_error(static_cast<double>(poser) / counts_per_mm, e);
+  // MCW 1BH, "flag only" (B.9, C.5: ExcPEr → 522, the regulator stays on): the warning at PosEr as 1 % of a
+  // limit 100 × PosEr, so 521 (remove enable) is only a far backstop; 1AH keeps 522 at 90 % and 521 at PosEr.
+  if (reaction == 0x1B && poser > 0) {
+    const double limit = 100.0 * static_cast<double>(poser) / counts_per_mm;
+    e.config["FollowingError.MaxValue"] = limit;
+    e.config["FollowingError.MinValue"] = limit;
+    e.config["FollowingError.WarningLevel"] = 1.0;
+  }
 }
 
 void merge_into(Json& target, const Json& patch) {
