@@ -543,7 +543,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       if (drive.analog->comedi) {
-        // A real DAQ card (comedi_drive.cpp): opened now, so a missing card is a configuration error.
+        // A real DAQ card (add_comedi_drive): opened now, so a missing card is a configuration error.
         io = add_comedi_drive(drive, itf.EnableDriveOutput, itf.DriveReadyInput, r.path_of("drive"), runtime,
                               problems);
         if (io == nullptr)
