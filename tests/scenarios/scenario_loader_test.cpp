@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tomc/scenario/config.hpp"
@@ -1037,18 +1038,17 @@ TEST(LegacyParameters, JointDeclarationPartD1) {
   d["cycle_time"] = 0.002;
   EXPECT_TRUE(problems_of(d).empty());
   const std::string at = "technology_objects[0].legacy.INTDEVICE: ";
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "JOINT 10", "JOINT 0"))),
-            at + "TCamp '0' out of range 1..255");
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "JOINT 10", "JOINT 256"))),
-            at + "TCamp '256' out of range 1..255");
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 1 500"))),
-            at + "NAxis '1' out of range 2..3");
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 4 500"))),
-            at + "NAxis '4' out of range 2..3");
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 3 2"))),
-            at + "Buffer '2' out of range 3..30000");
-  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 3 30001"))),
-            at + "Buffer '30001' out of range 3..30000");
+  // The ranges of TCamp, NAxis and Buffer, as a table: (text replaced in the line, by, the problem).
+  for (const auto& [from, to, message] :
+       std::initializer_list<std::tuple<const char*, const char*, const char*>>{
+           {"JOINT 10", "JOINT 0", "TCamp '0' out of range 1..255"},
+           {"JOINT 10", "JOINT 256", "TCamp '256' out of range 1..255"},
+           {"10 3 500", "10 1 500", "NAxis '1' out of range 2..3"},
+           {"10 3 500", "10 4 500", "NAxis '4' out of range 2..3"},
+           {"10 3 500", "10 3 2", "Buffer '2' out of range 3..30000"},
+           {"10 3 500", "10 3 30001", "Buffer '30001' out of range 3..30000"}}) {
+    EXPECT_EQ(problem_of(declared(replaced(kDeclaration, from, to))), at + message) << from << " -> " << to;
+  }
   EXPECT_EQ(
       problem_of(declared(replaced(kDeclaration, " 5.4", ""))),
       at +
