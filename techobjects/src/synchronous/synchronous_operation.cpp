@@ -207,8 +207,7 @@ void SynchronousOperation::end_desync(JobState state, std::uint16_t error_id) no
 
 void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
   const JobState state = error_id == 0 ? JobState::kAborted : JobState::kError;
-  end_shift(phasing_, phase_shift_, phasing_finished_, state, error_id);
-  end_shift(offset_job_, offset_, offset_finished_, state, error_id);
+  end_shift(state, error_id);
   end_active(state, error_id);
   end_pending(state, error_id);
   end_desync(state, error_id);
@@ -258,7 +257,7 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
 std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
   struct Running {
     RunningSyncJob column;
-    int which;  // 0 active, 1 pending sync-in, 2 desync, 3 phasing, 4 offset
+    int which;  // 0 active, 1 pending sync-in, 2 desync, 3 phasing or offset
     SyncFamily family;
   };
   std::array<Running, 5> running{};
@@ -292,8 +291,10 @@ std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
     const auto* p = place(desync_.kind);
     running[n++] = Running{desync_.active ? p->active_column : p->pending_column, 2, p->family};
   }
-  if (phasing_.id != 0) running[n++] = Running{RunningSyncJob::kPhasing, 3, SyncFamily::kGearing};
-  if (offset_job_.id != 0) running[n++] = Running{RunningSyncJob::kOffset, 4, SyncFamily::kGearing};
+  if (shift_job_.id != 0) {
+    running[n++] = Running{shift_job_.phasing ? RunningSyncJob::kPhasing : RunningSyncJob::kOffset, 3,
+                           SyncFamily::kGearing};
+  }
   SyncContext ctx;
   ctx.follower_position_controlled = axis_.position_controlled();
   ctx.virtual_or_simulated_axis = axis_.virtual_axis();
@@ -321,8 +322,7 @@ std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
     if (running[i].which == 0) end_active(JobState::kAborted, 0);
     if (running[i].which == 1) end_pending(JobState::kAborted, 0);
     if (running[i].which == 2) end_desync(JobState::kAborted, 0);
-    if (running[i].which == 3) end_shift(phasing_, phase_shift_, phasing_finished_, JobState::kAborted, 0);
-    if (running[i].which == 4) end_shift(offset_job_, offset_, offset_finished_, JobState::kAborted, 0);
+    if (running[i].which == 3) end_shift(JobState::kAborted, 0);
   }
   return 0;
 }
@@ -790,7 +790,7 @@ void SynchronousOperation::run() noexcept {
     // synchronous function -> (+ offset) the follower's setpoint. The offsets act only while Synchronous.
     LeadingValue function_leader = active_.source == source ? leader : sample(active_.source);
     if (active_.phase == Phase::kSynchronous) {
-      step_shifts(function_leader);
+      step_shift(function_leader);
       function_leader.position += phase_shift_.value;
       function_leader.velocity += phase_shift_.velocity;
       function_leader.acceleration += phase_shift_.acceleration;
@@ -878,10 +878,11 @@ void SynchronousOperation::update_status() noexcept {
   axis_.set_status(StatusWordBit::kSynchronizing, active_.id != 0 && active_.phase != Phase::kSynchronous);
   axis_.set_status(StatusWordBit::kSynchronous, active_.id != 0 && active_.phase == Phase::kSynchronous);
   axis_.set_status(StatusWord2Bit::kDesynchronizingCommand, desync_.active);
-  axis_.set_status(StatusWordBit::kPhasingCommand, phasing_.id != 0 && !phasing_.waiting);
-  axis_.set_status(StatusWord2Bit::kPhasingCommandWaiting, phasing_.id != 0 && phasing_.waiting);
-  axis_.set_status(StatusWord2Bit::kOffsetCommand, offset_job_.id != 0 && !offset_job_.waiting);
-  axis_.set_status(StatusWord2Bit::kOffsetCommandWaiting, offset_job_.id != 0 && offset_job_.waiting);
+  const ShiftJob& k = shift_job_;
+  axis_.set_status(StatusWordBit::kPhasingCommand, k.id != 0 && k.phasing && !k.waiting);
+  axis_.set_status(StatusWord2Bit::kPhasingCommandWaiting, k.id != 0 && k.phasing && k.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommand, k.id != 0 && !k.phasing && !k.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommandWaiting, k.id != 0 && !k.phasing && k.waiting);
   cycle_leader_source_ = -1;  // a status update from a job call (user program) samples afresh
 }
 

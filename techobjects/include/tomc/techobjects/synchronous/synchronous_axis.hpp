@@ -29,6 +29,12 @@ class SynchronousAxis final : public PositioningAxis {
   SynchronousAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
                   std::vector<LeadingValueInterconnection> leaders, const DriveConnectionConfig& drive = {});
 
+  // The object plus the heap it owns: the positioning axis' heap and the interconnection lists.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) - sizeof(PositioningAxis) + PositioningAxis::memory_footprint() +
+           operation_.heap_bytes();
+  }
+
   std::span<TechnologyObject* const> leaders() const noexcept override { return operation_.leaders(); }
   std::span<const LeadingValueInterconnection> interconnections() const noexcept {
     return operation_.interconnections();
