@@ -16,8 +16,8 @@ bool finite(const LeadingValueAdditiveValues& v) noexcept {
 }  // namespace
 
 Submission SynchronousOperation::additive_start(const LeadingValueAdditiveValues& values) noexcept {
-  // Requirement: the follower is enabled (or its synchronous operation simulated, spec 07 §4.4 [not yet]).
-  if (!axis_.enabled()) return Submission::reject(error_id::kAxisNotEnabled);
+  // Requirement: the follower is enabled, or its synchronous operation simulated (spec 07 §4.3).
+  if (!axis_.enabled() && simulation_ == 0) return Submission::reject(error_id::kAxisNotEnabled);
   if (!finite(values)) return Submission::reject(error_id::kInvalidPosition);
   if (additive_.id != 0) axis_.jobs().set(additive_.id, JobState::kAborted);  // S7 "A"
   additive_ = Additive{};

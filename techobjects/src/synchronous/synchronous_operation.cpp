@@ -206,6 +206,9 @@ void SynchronousOperation::end_desync(JobState state, std::uint16_t error_id) no
 }
 
 void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
+  // A simulated synchronous operation survives disabling, alarms and MC_Stop (spec 07 §4.4); a restart ends
+  // it (restart()).
+  if (simulation_ != 0) return;
   const JobState state = error_id == 0 ? JobState::kAborted : JobState::kError;
   end_shift(state, error_id);
   end_active(state, error_id);
@@ -215,6 +218,9 @@ void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
 
 // §9.19.2: a new job against the running synchronous jobs (spec 07 §5.1). Decide first, then abort.
 std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
+  // Simulated: single-axis jobs move the follower and abort nothing synchronous (spec 07 §4.4); the new
+  // synchronous jobs were refused with 16#8076 before they got here.
+  if (simulation_ != 0) return 0;
   NewSyncRow r{};
   switch (row) {
     case NewJob::kActiveHoming:
@@ -364,7 +370,7 @@ Submission SynchronousOperation::start_gearing(JobKind kind, const LeadingValueS
 }
 
 Submission SynchronousOperation::gear_in(const GearInInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearIn, in.Master, in.RatioNumerator, in.RatioDenominator,
                                      in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -374,7 +380,7 @@ Submission SynchronousOperation::gear_in(const GearInInputs& in) noexcept {
 }
 
 Submission SynchronousOperation::gear_in_velocity(const GearInVelocityInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearInVelocity, in.Master, in.RatioNumerator,
                                      in.RatioDenominator, in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -387,7 +393,7 @@ Submission SynchronousOperation::gear_in_velocity(const GearInVelocityInputs& in
 }
 
 Submission SynchronousOperation::gear_in_pos(const GearInPosInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   if (in.RatioNumerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
   if (in.RatioDenominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 3) {
@@ -441,7 +447,7 @@ Submission SynchronousOperation::gear_out(const GearOutInputs& in) noexcept {
 
 // MC_GearOut and MC_CamOut (spec 07 §2.4, §3.5): the same parameters and behaviour, each for its own family.
 Submission SynchronousOperation::desynchronize(const GearOutInputs& in, JobKind kind) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 5) {
     return Submission::reject(error_id::kInvalidSyncProfileReference);
   }
@@ -663,8 +669,10 @@ void SynchronousOperation::step_active(const LeadingValue& leader) noexcept {
       if (a.kind == JobKind::kGearInVelocity) {
         // v = r·v_leader, the position integrated (spec 07 §6.2).
         const double v = r * leader.velocity;
-        sync_setpoint_ = MotionState{axis_.setpoint().position + 0.5 * (axis_.setpoint().velocity + v) * T, v,
-                                     r * leader.acceleration};
+        // Simulated, the axis' setpoint is not the synchronous one: integrate the synchronous setpoint.
+        const MotionState& last = simulation_ != 0 ? sync_setpoint_ : axis_.setpoint();
+        sync_setpoint_ =
+            MotionState{last.position + 0.5 * (last.velocity + v) * T, v, r * leader.acceleration};
       } else {
         sync_setpoint_ =
             MotionState{gear_line(a, leader.position), r * leader.velocity, r * leader.acceleration};
@@ -763,6 +771,10 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
 
 void SynchronousOperation::run() noexcept {
   cycle_leader_source_ = -1;
+  if (simulation_ != 0) {
+    run_simulated();
+    return;
+  }
   if (active_.id == 0 && pending_sync_.id == 0 && desync_.id == 0) return;
   if (!axis_.enabled() || axis_.blocked()) return;  // the alarm/disable paths end the jobs
   const int source = active_.id != 0  ? active_.source
@@ -863,7 +875,7 @@ void SynchronousOperation::update_status() noexcept {
   // X0..X2: the follower's configured limits exceeded in synchronous operation (indication only, spec 07
   // §6.8).
   std::uint32_t w = 0;
-  if (active_.id != 0) {
+  if (active_.id != 0 && simulation_ == 0) {
     const auto& l = axis_.data().DynamicLimits;
     const double v = axis_.setpoint().velocity * axis_.units().velocity;
     const double a = axis_.setpoint().acceleration * axis_.units().acceleration;
@@ -874,9 +886,12 @@ void SynchronousOperation::update_status() noexcept {
            a * v < 0.0 && std::fabs(a) > l.MaxDeceleration);
   }
   assign(w, StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand, additive_.id != 0);
+  assign(w, StatusSynchronizedMotionBit::kInSimulation, simulation_ != 0);
   s.StatusWord = w;
-  axis_.set_status(StatusWordBit::kSynchronizing, active_.id != 0 && active_.phase != Phase::kSynchronous);
-  axis_.set_status(StatusWordBit::kSynchronous, active_.id != 0 && active_.phase == Phase::kSynchronous);
+  // Simulated, the follower is not synchronous (X22 FALSE) while InGear/InSync stay TRUE (spec 07 §4.4).
+  const bool driving = active_.id != 0 && simulation_ == 0;
+  axis_.set_status(StatusWordBit::kSynchronizing, driving && active_.phase != Phase::kSynchronous);
+  axis_.set_status(StatusWordBit::kSynchronous, driving && active_.phase == Phase::kSynchronous);
   axis_.set_status(StatusWord2Bit::kDesynchronizingCommand, desync_.active);
   const ShiftJob& k = shift_job_;
   axis_.set_status(StatusWordBit::kPhasingCommand, k.id != 0 && k.phasing && !k.waiting);

@@ -75,6 +75,10 @@ class SynchronousAxis final : public PositioningAxis {
     operation_.update_ratio(job, numerator, denominator);
   }
   SyncJobOutputs sync_outputs(JobId job) const noexcept { return operation_.sync_outputs(job); }
+  // ---- MC_SynchronizedMotionSimulation (spec 07 §4.4) ----
+  Submission simulation_start() noexcept { return operation_.simulation_start(); }
+  std::uint16_t simulation_end(JobId job) noexcept { return operation_.simulation_end(job); }
+  bool in_simulation(JobId job) const noexcept { return operation_.in_simulation(job); }
 
   // ---- the data block's synchronous part ----
   const StatusSynchronizedMotion& synchronized_motion() const noexcept { return operation_.status(); }

@@ -214,6 +214,12 @@ class SynchronousOperation final : public SynchronousSlot {
   bool additive_busy(JobId job) const noexcept { return job != 0 && job == additive_.id; }
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
+  // MC_SynchronizedMotionSimulation (synchronized_motion_simulation.cpp, spec 07 §4.4): simulation_start() on
+  // Enable's rising edge, simulation_end() on every call with Enable = FALSE while the simulation runs (it
+  // ends once the follower can take the synchronous setpoint over). in_simulation(): InSimulation.
+  Submission simulation_start() noexcept;
+  std::uint16_t simulation_end(JobId job) noexcept;  // 0: ended (or not running), else the ErrorID
+  bool in_simulation(JobId job) const noexcept { return job != 0 && job == simulation_; }
 
   const StatusSynchronizedMotion& status() const noexcept { return status_; }
   // "StatusSynchronizedMotion.<member>" without the prefix; NaN for an unknown member.
@@ -222,9 +228,10 @@ class SynchronousOperation final : public SynchronousSlot {
   // ---- SynchronousSlot ----
   std::uint16_t arbitrate(NewJob row) noexcept override;
   void abort(std::uint16_t error_id) noexcept override;
+  void restart() noexcept override;
   void run() noexcept override;
   MotionState setpoint() const noexcept override { return sync_setpoint_; }
-  bool following() const noexcept override { return active_.id != 0; }
+  bool following() const noexcept override { return active_.id != 0 && simulation_ == 0; }
   void update_status() noexcept override;
 
  private:
@@ -338,6 +345,9 @@ class SynchronousOperation final : public SynchronousSlot {
     int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
   };
 
+  // A new gearing, camming or desynchronization job: refused by the program state, or 16#8076 while the
+  // synchronous operation is simulated (spec 07 §4.4). 0: none.
+  std::uint16_t synchronous_job_rejection() const noexcept;
   int find_source(const LeadingValueSource* master) const noexcept;
   LeadingValue sample(int source) const noexcept;
   std::optional<std::uint16_t> check_master(const LeadingValueSource* master, int& source) noexcept;
@@ -375,6 +385,9 @@ class SynchronousOperation final : public SynchronousSlot {
   void end_shifts() noexcept;  // the synchronous operation ended: the job ends, both shifts are 0 again
   Shift& shift_of(bool phasing) noexcept { return phasing ? phase_shift_ : offset_; }
   FinishedShift& finished_of(bool phasing) noexcept { return phasing ? phasing_finished_ : offset_finished_; }
+  // ---- simulation (synchronized_motion_simulation.cpp) ----
+  void run_simulated() noexcept;  // the synchronous operation goes on without the axis
+  void end_simulation(JobState state) noexcept;
   // ---- camming (camming.cpp) ----
   bool start_pending_cam(const LeadingValue& leader) noexcept;
   void step_cam(const LeadingValue& leader) noexcept;
@@ -400,6 +413,7 @@ class SynchronousOperation final : public SynchronousSlot {
   FinishedShift phasing_finished_{};
   FinishedShift offset_finished_{};
   Additive additive_{};
+  JobId simulation_ = 0;   // the running MC_SynchronizedMotionSimulation
   int shown_source_ = -1;  // the leading value EffectiveLeadingValue shows (the last one used)
 
   FollowingAxis axis_;
