@@ -61,6 +61,7 @@ void SynchronousOperation::end_simulation(JobState state) noexcept {
 void SynchronousOperation::restart() noexcept {
   end_simulation(JobState::kAborted);  // a TO restart ends the simulation and the synchronous operation
   abort(0);
+  additive_end(additive_.id, JobState::kAborted);  // and the additive leading value (spec 07 §4.3, C19)
 }
 
 // One MC_Interpolator cycle of a simulated synchronous operation: the chain of spec 07 §1.8 as in run(), but

@@ -548,8 +548,8 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 
 }  // namespace
 
-// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted, the
-// cam free again) and is Done; against an active camming it is Done and the camming goes on.
+// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted,
+// the cam free again) and is Done; against an active camming it is Done and the camming goes on.
 TEST(Camming, CamOutProfileFiveCancelsOnlyAPendingCamIn) {
   CammingMachine m;
   auto& c = m.cam_in;

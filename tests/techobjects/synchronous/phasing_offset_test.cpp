@@ -12,6 +12,7 @@
 #include "gearing_fixture.hpp"
 #include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
+#include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/cam/cam.hpp"
 
@@ -555,6 +556,40 @@ TEST(PhasingOffset, LV1AdditiveLeadingValue) {
   m.run(1);
   EXPECT_TRUE(second.Error);
   EXPECT_FALSE(second.Busy);
+}
+
+// Spec 07 §4.3, decision C19: a Position that is not finite answers with Error/16#8118 while it lasts and
+// keeps the last value (no step, no silent NaN: MotionIn ends its job instead, which here would drop the
+// additive value, itself a step); a finite value again clears the error. MC_Reset with Restart = TRUE ends
+// the job (§4.3 "aborted only by another MC_LeadingValueAdditive and by MC_Reset with Restart = TRUE").
+TEST(PhasingOffset, AdditiveNotFiniteAnswersWithAnErrorAndRestartEndsIt) {
+  ShiftMachine m;
+  instructions::MC_Reset<SynchronousAxis> reset;
+  m.extra = [&] { reset(*m.F); };
+  m.geared(1);
+  m.additive.Enable = true;
+  m.additive.Position = 0.5;
+  m.run(2);
+  EXPECT_NEAR(m.f().Position, 0.5, 1e-12);
+  m.additive.Position = std::nan("");
+  m.run(3);
+  EXPECT_TRUE(m.additive.Busy);
+  EXPECT_TRUE(m.additive.Error);
+  EXPECT_EQ(m.additive.ErrorID, eid::kInvalidPosition);  // 16#8118
+  EXPECT_NEAR(m.f().Position, 0.5, 1e-12);
+  m.additive.Position = 0.25;
+  m.run(2);
+  EXPECT_FALSE(m.additive.Error);
+  EXPECT_NEAR(m.f().Position, 0.25, 1e-12);
+  m.power_F.Enable = false;
+  m.run(3);
+  EXPECT_TRUE(m.additive.Busy);  // disabling does not end it
+  reset.Restart = true;
+  reset.Execute = true;
+  ASSERT_GT(m.run_until([&] { return reset.Done; }, 10), 0);
+  m.run(1);
+  EXPECT_FALSE(m.additive.Busy);
+  EXPECT_FALSE(m.additive.Error);
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ class SynchronousAxis final : public PositioningAxis {
   Submission additive_start(const LeadingValueAdditiveValues& values) noexcept {
     return operation_.additive_start(values);
   }
-  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
-    operation_.additive_update(job, values);
+  std::uint16_t additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
+    return operation_.additive_update(job, values);
   }
   void additive_end(JobId job) noexcept { operation_.additive_end(job); }
   bool additive_busy(JobId job) const noexcept { return operation_.additive_busy(job); }

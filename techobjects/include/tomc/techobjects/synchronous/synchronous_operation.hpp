@@ -209,8 +209,10 @@ class SynchronousOperation final : public SynchronousSlot {
   // another instance ends, §9.19.2 S7 "A"), its values taken on every call while Enable holds, ended by
   // Enable = FALSE. additive_busy(): the job's values are in the effective leading value.
   Submission additive_start(const LeadingValueAdditiveValues& values) noexcept;
-  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
-  void additive_end(JobId job) noexcept;
+  // 0, or 16#8118 for values that are not finite (the last ones stay).
+  std::uint16_t additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
+  // Enable = FALSE (Done); MC_Reset Restart ends it as CommandAborted (spec 07 §4.3).
+  void additive_end(JobId job, JobState state = JobState::kDone) noexcept;
   bool additive_busy(JobId job) const noexcept { return job != 0 && job == additive_.id; }
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
