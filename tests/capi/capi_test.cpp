@@ -537,7 +537,8 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
 }
 
 TEST(CApi, TheExamplesMachineFilesLoad) {
-  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "demo_machine.json"}) {
+  for (const char* file :
+       {"positioning_machine.json", "gearing_machine.json", "demo_machine.json", "flying_saw.json"}) {
     tomc_runtime* r = nullptr;
     // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
     // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false
