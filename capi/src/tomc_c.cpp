@@ -45,6 +45,7 @@
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_synchronized_motion_simulation.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
 #include "tomc/instructions/mc_torque_range.hpp"

@@ -612,6 +612,21 @@ typedef struct tomc_MC_LeadingValueAdditive {
 TOMC_API void tomc_MC_LeadingValueAdditive_init(tomc_MC_LeadingValueAdditive* fb);
 TOMC_API tomc_status tomc_MC_LeadingValueAdditive_call(tomc_object* axis, tomc_MC_LeadingValueAdditive* fb);
 
+/* MC_SynchronizedMotionSimulation (spec 07 §4.4) on TO_SynchronousAxis. */
+typedef struct tomc_MC_SynchronizedMotionSimulation {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  /* outputs */
+  bool InSimulation;
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_SynchronizedMotionSimulation;
+TOMC_API void tomc_MC_SynchronizedMotionSimulation_init(tomc_MC_SynchronizedMotionSimulation* fb);
+TOMC_API tomc_status tomc_MC_SynchronizedMotionSimulation_call(tomc_object* axis, tomc_MC_SynchronizedMotionSimulation* fb);
+
 #ifdef __cplusplus
 }
 #endif

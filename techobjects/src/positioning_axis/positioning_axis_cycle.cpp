@@ -811,7 +811,7 @@ void PositioningAxis::restart() noexcept {
   // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
-  abort_synchronous(0);
+  restart_synchronous();
   // An adjusted absolute encoder stays adjusted until new encoder settings are downloaded, and a restart is
   // not such a download: its retained offset is restored below (spec 02 §5.1, §5.12).
   std::array<std::int32_t, 4> adjusted{};  // StatusSensor[1..4]

@@ -13,6 +13,7 @@
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace {
 
@@ -22,6 +23,10 @@ using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
 
 constexpr std::size_t kAxisBudget = 8192;
+// What TO_SynchronousAxis adds to a positioning axis (its SynchronousOperation): 1,760 bytes before the job
+// slots were shared (decision C17), 1,504 since. The 8,192 of a positioning axis cannot hold it as long as
+// the positioning axis alone fills them (docs/performance.md "Memory per axis").
+constexpr std::size_t kSynchronousOperationBudget = 1504;
 
 // A runtime with one positioning axis on a simulated drive (telegram 3) and one virtual one.
 struct Machine {
@@ -44,6 +49,13 @@ struct Machine {
     auto& enc_io = runtime.add_device(
         std::make_unique<drives::SimulatedDrive>(encoder_device, drives::SimulatedDriveParameters{}));
     encoder = &runtime.emplace<ExternalEncoder>("LineEncoder", &enc_io, techobjects::ExternalEncoderData{});
+    auto& follower_io =
+        runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+    follower = &runtime.emplace<techobjects::SynchronousAxis>(
+        "Knife", &follower_io, tomc::testing::linear_axis_data(),
+        std::vector<techobjects::LeadingValueInterconnection>{
+            {driven, driven, techobjects::LeadingValueCoupling::kSetpoint},
+            {encoder, encoder, techobjects::LeadingValueCoupling::kActualValue}});
     runtime.start();
   }
   techobjects::Runtime runtime;
@@ -51,6 +63,7 @@ struct Machine {
   PositioningAxis* virtual_axis = nullptr;
   SpeedAxis* speed = nullptr;
   ExternalEncoder* encoder = nullptr;
+  techobjects::SynchronousAxis* follower = nullptr;
 };
 
 TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
@@ -59,9 +72,22 @@ TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
   EXPECT_LE(m.virtual_axis->memory_footprint(), kAxisBudget);
   // The start values went to the runtime's load memory when the axes were added.
   EXPECT_EQ(m.driven->memory_footprint(), sizeof(PositioningAxis));
-  EXPECT_EQ(m.runtime.start_values().size(), 4u);
+  EXPECT_EQ(m.runtime.start_values().size(), 5u);  // the five TOs of Machine
   m.runtime.step();
   EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
+}
+
+// The synchronous axis: the positioning axis plus its synchronous operation, whose job states share their
+// storage (decision C17); it fails if the synchronous part grows back.
+TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
+  Machine m;
+  m.runtime.step();
+  const std::size_t footprint = m.follower->memory_footprint();
+  EXPECT_EQ(footprint - m.driven->memory_footprint(),
+            sizeof(techobjects::SynchronousOperation) + 2 * sizeof(techobjects::LeadingValueInterconnection) +
+                2 * sizeof(techobjects::TechnologyObject*));
+  EXPECT_LE(sizeof(techobjects::SynchronousOperation), kSynchronousOperationBudget);
+  EXPECT_LE(footprint, kAxisBudget + kSynchronousOperationBudget + 2 * 32);
 }
 
 TEST(MemoryPerAxis, SpeedAxisAndExternalEncoderSmallerStill) {

@@ -31,6 +31,7 @@
 #include "tomc/instructions/mc_save_absolute_encoder_data.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_synchronized_motion_simulation.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
 #include "tomc/instructions/mc_torque_range.hpp"
@@ -617,6 +618,15 @@ const auto kLeadingValueAdditive = std::to_array<Parameter<LeadingValueAdditive>
     out("ErrorID", &LeadingValueAdditive::ErrorID),
 });
 
+using SynchronizedMotionSimulation = instructions::MC_SynchronizedMotionSimulation<SynchronousAxis>;
+const auto kSynchronizedMotionSimulation = std::to_array<Parameter<SynchronizedMotionSimulation>>({
+    in("Enable", &SynchronizedMotionSimulation::Enable),
+    out("InSimulation", &SynchronizedMotionSimulation::InSimulation),
+    out("Busy", &SynchronizedMotionSimulation::Busy),
+    out("Error", &SynchronizedMotionSimulation::Error),
+    out("ErrorID", &SynchronizedMotionSimulation::ErrorID),
+});
+
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
 // a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
 using InterpolateCam = instructions::MC_InterpolateCam;
@@ -775,10 +785,10 @@ constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
     "MC_TorqueRange",
 };
 // A synchronous axis accepts every instruction of a positioning axis (spec 01 §1.3) and these.
-constexpr std::array<std::string_view, 11> kSynchronousOnlyInstructions{
+constexpr std::array<std::string_view, 12> kSynchronousOnlyInstructions{
     "MC_GearIn",         "MC_GearInPos",      "MC_GearInVelocity",       "MC_GearOut",
     "MC_CamIn",          "MC_CamOut",         "MC_PhasingAbsolute",      "MC_PhasingRelative",
-    "MC_OffsetAbsolute", "MC_OffsetRelative", "MC_LeadingValueAdditive",
+    "MC_OffsetAbsolute", "MC_OffsetRelative", "MC_LeadingValueAdditive", "MC_SynchronizedMotionSimulation",
 };
 template <std::size_t A, std::size_t B>
 constexpr std::array<std::string_view, A + B> joined(const std::array<std::string_view, A>& a,
@@ -920,6 +930,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_OffsetAbsolute") return make(kOffsetAbsolute);
       if (instruction == "MC_OffsetRelative") return make(kOffsetRelative);
       if (instruction == "MC_LeadingValueAdditive") return make(kLeadingValueAdditive);
+      if (instruction == "MC_SynchronizedMotionSimulation") return make(kSynchronizedMotionSimulation);
       return make_positioning<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -58,6 +58,7 @@ enum class AxisJobKind : std::uint8_t {
   kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
   kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
   kLeadingValueAdditive,  // MC_LeadingValueAdditive
+  kSynchronizedMotionSimulation,  // MC_SynchronizedMotionSimulation
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).

@@ -241,6 +241,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void abort_synchronous(std::uint16_t error_id) noexcept {
     if (synchronous_ != nullptr) synchronous_->abort(error_id);
   }
+  void restart_synchronous() noexcept {
+    if (synchronous_ != nullptr) synchronous_->restart();
+  }
   void run_synchronous() noexcept {
     if (synchronous_ != nullptr) synchronous_->run();
   }
