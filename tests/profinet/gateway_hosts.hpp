@@ -66,6 +66,9 @@ struct DeviceOptions {
   std::string interface = "pn-e";
   std::string name_of_station = "drive-1";
   pn::Ipv4Address ip = kDeviceIp;
+  // The device announces no IP suite (0.0.0.0, as from the factory): the controller sets `ip` by DCP. Its
+  // RPC socket listens on `ip` from the start (the namespace's address; the emulator does not rebind).
+  bool factory_ip = false;
 };
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
@@ -137,7 +140,7 @@ class DeviceHost {
     pn::DeviceIdentity identity;
     identity.name_of_station = options_.name_of_station;
     identity.mac = raw.mac();
-    identity.ip = {options_.ip, {255, 255, 255, 0}, {}};
+    if (!options_.factory_ip) identity.ip = {options_.ip, {255, 255, 255, 0}, {}};
     identity.vendor_id = 0x002A;
     identity.device_id = 0x0C01;
     identity.vendor = "tomc emulated drive";

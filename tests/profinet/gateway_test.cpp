@@ -515,3 +515,124 @@ TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
   }
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
+
+namespace {
+
+// One PROFINET frame of a capture as tshark's dissectors read it (tshark -T fields, in kTsharkFields order).
+struct DissectedFrame {
+  std::string number, source, frame_id, dcp_service, dcp_type, dcp_ip, opnum, rpc_type, blocks, index,
+      control, rta_type;
+};
+constexpr const char* kTsharkFields =
+    " -e frame.number -e eth.src -e pn_rt.frame_id -e pn_dcp.service_id -e pn_dcp.service_type"
+    " -e pn_dcp.suboption_ip_ip -e pn_io.opnum -e dcerpc.pkt_type -e pn_io.block_type -e pn_io.index"
+    " -e pn_io.control_command -e pn_io.pdu_type.type";
+
+std::vector<DissectedFrame> dissect(const std::filesystem::path& pcap, const std::string& filter) {
+  std::vector<DissectedFrame> frames;
+  std::istringstream lines(pn::testing::output_of(
+      "tshark -n -r " + pcap.string() + " -Y '" + filter +
+      "' -T fields -E separator='|' -E occurrence=a -E aggregator=, " + kTsharkFields + " 2>/dev/null"));
+  for (std::string line; std::getline(lines, line);) {
+    std::array<std::string, 12> cells;
+    std::istringstream in(line);
+    for (auto& cell : cells)
+      std::getline(in, cell, '|');
+    const auto& [n, s, f, ds, dt, di, op, rt, b, i, c, r] = cells;
+    frames.push_back({n, s, f, ds, dt, di, op, rt, b, i, c, r});
+  }
+  return frames;
+}
+
+// What a frame the controller sends is (IEC 61158-6-10 as Wireshark names it), or "" for none of these.
+std::string kind_of(const DissectedFrame& f) {
+  constexpr const char* kRequest = "0";
+  constexpr const char* kResponse = "2";
+  if (f.dcp_service == "5" && f.dcp_type == "0") return "DCP Identify request";
+  if (f.dcp_service == "4" && f.dcp_type == "0" && !f.dcp_ip.empty()) return "DCP Set IP request " + f.dcp_ip;
+  if (f.frame_id == "32769") return "RT_CLASS_1 output 0x8001";
+  if (f.frame_id == "65025" && f.rta_type == "0x03") return "RTA ACK (low)";
+  if (f.frame_id == "65025" && f.rta_type == "0x01") return "RTA DATA (low) " + f.blocks;
+  if (f.rpc_type == kRequest && f.opnum == "0") return "Connect request " + f.blocks;
+  if (f.rpc_type == kRequest && f.opnum == "3") return "Write request " + f.blocks + " index " + f.index;
+  if (f.rpc_type == kRequest && f.opnum == "2") return "Read request " + f.blocks + " index " + f.index;
+  if (f.rpc_type == kRequest && f.opnum == "4") return "Control request " + f.blocks + " " + f.control;
+  if (f.rpc_type == kResponse && f.opnum == "4") return "Control response " + f.blocks + " " + f.control;
+  if (f.rpc_type == kRequest && f.opnum == "1") return "Release request " + f.blocks + " " + f.control;
+  return {};
+}
+
+std::string mac_of(const std::string& ns, const std::string& interface) {
+  const std::string link = pn::testing::output_of("ip -n " + ns + " -o link show dev " + interface);
+  const auto at = link.find("link/ether ");
+  return at == std::string::npos ? std::string{} : link.substr(at + 11, 17);
+}
+
+}  // namespace
+
+// issue 17 "Done when": tshark finds every frame the gateway sends well-formed. dumpcap captures the
+// gateway's interface while `tomc gateway` (configured from the emulated drive's GSDML file) names a
+// factory-fresh device by DCP (Identify, Set IP), connects (AR, two IOCRs, AlarmCR, ExpectedSubmodule
+// blocks), checks p0922 (record write and read of index 0xB02E), ends the parameterisation (PrmEnd), answers
+// the device's ApplicationReady, exchanges cyclic frames, acknowledges a diagnosis alarm (RTA ACK and
+// AlarmAckLow) and releases the AR when it is stopped. Wireshark's dissectors (tshark, an independent
+// implementation) must find no malformed frame and no error-level expert item in the whole capture, and every
+// frame the gateway sends must be one of these with exactly these blocks, every one of them present.
+TEST(GatewayNetns, TsharkDissectsEveryFrameTypeTheGatewaySends) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  if (!pn::testing::Capture::available()) GTEST_SKIP() << "tshark/dumpcap are not installed (scripts/setup)";
+  pn::testing::Capture capture(
+      hosts.first, "pn-g",
+      std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()) + ".pcap"));
+  DeviceOptions fresh;
+  fresh.factory_ip = true;
+  DeviceHost device(hosts.second, fresh);
+  {
+    GatewayHost gateway(hosts, one_device(kGsdmlModules));
+    // Conditions, not times: the AR runs (ApplicationReady answered), then the alarm is acknowledged.
+    for (int i = 0; i < 500 && device.ars() == 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(device.ars(), 1) << gateway.log();
+    device.send_alarm(pn::alarm_type::kDiagnosis);
+    for (int i = 0; i < 500 && device.alarm_acks() == 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(device.alarm_acks(), 1) << gateway.log();
+    EXPECT_EQ(gateway.terminate(), 0) << gateway.log();  // SIGTERM: the gateway releases its ARs
+  }
+  capture.stop();
+  EXPECT_EQ(device.error(), "");
+
+  const std::string pcap = capture.file().string();
+  EXPECT_EQ(pn::testing::output_of("tshark -n -r " + pcap +
+                                   " -Y '_ws.malformed || _ws.expert.severity >= \"Error\"' 2>/dev/null"),
+            "");
+  const std::string gateway_mac = mac_of(hosts.first, "pn-g");
+  ASSERT_FALSE(gateway_mac.empty());
+  std::map<std::string, int> seen;
+  for (const DissectedFrame& f :
+       dissect(capture.file(), "eth.src == " + gateway_mac + " && (pn_dcp || pn_rt || pn_io || dcerpc)")) {
+    const std::string kind = kind_of(f);
+    EXPECT_NE(kind, "") << "frame " << f.number << ": an unexpected frame from the gateway (frame ID "
+                        << f.frame_id << ", opnum " << f.opnum << ", blocks " << f.blocks << ")";
+    ++seen[kind];
+  }
+  // Block types (IEC 61158-6-10): 0x0101 ARBlockReq, 0x0102 IOCRBlockReq (input, output), 0x0103
+  // AlarmCRBlockReq, 0x0104 ExpectedSubmoduleBlockReq (two: the DAP in slot 0, the drive object in slot 1),
+  // 0x0008 IODWriteReqHeader, 0x0009 IODReadReqHeader, 0x0110 IODControlReq (ControlCommand 0x0001 PrmEnd),
+  // 0x8112 IOXBlockRes (0x0008 Done: the answer to the device's ApplicationReady), 0x0114 IODReleaseReq
+  // (0x0004 Release), 0x8002 AlarmAckLow; RTA PDU type 1 DATA, 3 ACK.
+  for (const std::string expected :
+       {"DCP Identify request", "DCP Set IP request 10.218.0.2",
+        "Connect request 0x0101,0x0102,0x0102,0x0103,0x0104,0x0104", "Write request 0x0008 index 0xb02e",
+        "Read request 0x0009 index 0xb02e", "Control request 0x0110 0x0001", "Control response 0x8112 0x0008",
+        "RT_CLASS_1 output 0x8001", "RTA ACK (low)", "RTA DATA (low) 0x8002",
+        "Release request 0x0114 0x0004"}) {
+    EXPECT_GE(seen[expected], 1) << "not in the capture: " << expected;
+  }
+  std::string summary;
+  for (const auto& [kind, count] : seen)
+    summary += "  " + std::to_string(count) + " × " + kind + "\n";
+  std::printf("frames the gateway sent, as tshark dissects them:\n%s", summary.c_str());
+}

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -115,21 +116,12 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   ASSERT_EQ(hosts.interfaces(hosts.second), (std::set<std::string>{"lo", "pn-d"}));
   ASSERT_TRUE(hosts.carrier(hosts.first, "pn-c"));
 
-  const bool capture = !output_of("command -v tshark").empty();
-  const auto pcap =
-      std::filesystem::temp_directory_path() / ("tomc17-" + std::to_string(::getpid()) + ".pcap");
-  pid_t tshark = -1;
+  const bool capture = pn::testing::Capture::available();
+  std::optional<pn::testing::Capture> dumpcap;
   if (capture) {
-    tshark = ::fork();
-    if (tshark == 0) {
-      // dumpcap (tshark's capture engine, same package) starts much faster than tshark.
-      ::execlp("ip", "ip", "netns", "exec", hosts.first.c_str(), "dumpcap", "-q", "-i", "pn-c", "-w",
-               pcap.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    for (int i = 0; i < 100 && !std::filesystem::exists(pcap); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    dumpcap.emplace(
+        hosts.first, "pn-c",
+        std::filesystem::temp_directory_path() / ("tomc17-" + std::to_string(::getpid()) + ".pcap"));
   }
   std::atomic<bool> stop{false};
   std::atomic<int> device_ars{0};
@@ -253,11 +245,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   controller_host.join();
   stop = true;
   device_host.join();
-  if (tshark > 0) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    ::kill(tshark, SIGINT);
-    ::waitpid(tshark, nullptr, 0);
-  }
+  if (dumpcap) dumpcap->stop();
 
   ASSERT_EQ(device_error, "");
   ASSERT_EQ(failure, "");
@@ -272,8 +260,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   EXPECT_EQ(ar_count, 2u);
   EXPECT_EQ(device_ars, 2);
   if (!capture) GTEST_SKIP() << "tshark is not installed: the capture was not checked";
-  const std::string tree = output_of("tshark -n -P -V -r " + pcap.string() + " 2>&1");
-  if (std::getenv("TOMC_KEEP_PCAP") == nullptr) std::filesystem::remove(pcap);
+  const std::string tree = output_of("tshark -n -P -V -r " + dumpcap->file().string() + " 2>&1");
   EXPECT_EQ(tree.find("Malformed"), std::string::npos);
   EXPECT_EQ(tree.find("Expert Info (Error"), std::string::npos);
   EXPECT_EQ(tree.find("greater than remaining"), std::string::npos);
