@@ -336,6 +336,99 @@ inline std::vector<std::vector<double>> run(const Json& doc, const std::string& 
 inline std::string make_hosts(pn::testing::Namespaces& hosts) {
   return hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
 }
+// `drives` device veth pairs whose gateway ends (pn-g0, pn-g1, ...) are ports of a bridge pn-g (10.218.0.1,
+// the gateway's interface) and whose device ends pn-e<k> (10.218.0.<10+k>) are in the device namespace; ""
+// or why not. Nothing is sent unless bridged_interfaces_only() holds.
+inline std::string make_bridged_hosts(pn::testing::Namespaces& hosts, int drives) {
+  if (::geteuid() != 0) return "not root: ip netns needs CAP_SYS_ADMIN";
+  if (quiet("ip netns add " + hosts.first) != 0 || quiet("ip netns add " + hosts.second) != 0)
+    return "'ip netns add' failed (no permission or no iproute2)";
+  const std::string g = "ip -n " + hosts.first + " ";
+  const std::string d = "ip -n " + hosts.second + " ";
+  std::string script = g + "link add pn-g type bridge && " + g + "addr add 10.218.0.1/24 dev pn-g && " + g +
+                       "link set lo up && " + d + "link set lo up";
+  for (int k = 0; k < drives; ++k) {
+    const std::string n = std::to_string(k);
+    script += " && " + g + "link add pn-g" + n + " type veth peer name pn-e" + n + " && " + g +
+              "link set pn-e" + n + " netns " + hosts.second + " && " + g + "link set pn-g" + n +
+              " master pn-g && " + g + "link set pn-g" + n + " up && " + d + "addr add 10.218.0." +
+              std::to_string(10 + k) + "/24 dev pn-e" + n + " && " + d + "link set pn-e" + n + " up";
+  }
+  script += " && " + g + "link set pn-g up";
+  return quiet("sh -c '" + script + "'") == 0 ? std::string{} : "could not set up the bridge and veth pairs";
+}
+inline bool bridged_interfaces_only(const pn::testing::Namespaces& hosts, int drives) {
+  std::set<std::string> gateway_side{"lo", "pn-g"};
+  std::set<std::string> device_side{"lo"};
+  for (int k = 0; k < drives; ++k) {
+    gateway_side.insert("pn-g" + std::to_string(k));
+    device_side.insert("pn-e" + std::to_string(k));
+  }
+  return hosts.interfaces(hosts.first) == gateway_side && hosts.interfaces(hosts.second) == device_side &&
+         hosts.carrier(hosts.first, "pn-g");
+}
+// The emulated device on pn-e<k> of make_bridged_hosts(): drive-<k+1> at 10.218.0.<10+k>.
+inline DeviceOptions bridged_device(int k) {
+  DeviceOptions options;
+  options.interface = "pn-e" + std::to_string(k);
+  options.name_of_station = "drive-" + std::to_string(k + 1);
+  options.ip = {10, 218, 0, static_cast<std::uint8_t>(10 + k)};
+  return options;
+}
+
+// The gateway file's "devices" for the bridged_device()s 0..drives-1: axis<k+1> on telegram 3.
+inline std::string bridged_devices(int drives) {
+  std::string devices = "[";
+  for (int k = 0; k < drives; ++k) {
+    const std::string n = std::to_string(k + 1);
+    devices += std::string(k == 0 ? "" : ", ") + R"({ "name": "axis)" + n +
+               R"(", "name_of_station": "drive-)" + n + R"(", "ip": "10.218.0.)" + std::to_string(10 + k) +
+               R"(", "telegram": 3 })";
+  }
+  return devices + "]";
+}
+
+// Positioning axes Axis1..AxisN, each through the gateway's device axis<k>: MC_Power at cycle 0,
+// MC_MoveVelocity 20 mm/s at cycle 20; traced: ActualVelocity, ErrorDetail.Number, CommunicationOK per axis.
+inline Json velocity_scenario(int drives, int cycles) {
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] = Json::array();
+  doc["timeline"] = Json::array();
+  doc["trace"] = Json::array();
+  Json moves = Json::array();  // after every MC_Power: the timeline is in time order
+  for (int k = 1; k <= drives; ++k) {
+    const std::string axis = "Axis" + std::to_string(k);
+    doc["technology_objects"].push_back({{"name", axis},
+                                         {"type", "TO_PositioningAxis"},
+                                         {"drive",
+                                          {{"telegram", 3},
+                                           {"adapter",
+                                            {{"type", "dds_gateway"},
+                                             {"domain", kDomain},
+                                             {"partition", "tomc-test-" + std::to_string(::getpid())},
+                                             {"device", "axis" + std::to_string(k)},
+                                             {"connect_timeout_s", 10.0},
+                                             {"answer_timeout_s", 0.02}}}}}});
+    doc["timeline"].push_back({{"cycle", 0},
+                               {"instance", "power" + std::to_string(k)},
+                               {"instruction", "MC_Power"},
+                               {"axis", axis},
+                               {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
+    moves.push_back({{"cycle", 20},
+                     {"instance", "move" + std::to_string(k)},
+                     {"instruction", "MC_MoveVelocity"},
+                     {"axis", axis},
+                     {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
+    for (const char* variable : {".ActualVelocity", ".ErrorDetail.Number", ".StatusDrive.CommunicationOK"})
+      doc["trace"].push_back(axis + variable);
+  }
+  for (const auto& move : moves)
+    doc["timeline"].push_back(move);
+  return doc;
+}
+
 inline bool own_interfaces_only(const pn::testing::Namespaces& hosts) {
   return hosts.interfaces(hosts.first) == std::set<std::string>{"lo", "pn-g"} &&
          hosts.interfaces(hosts.second) == std::set<std::string>{"lo", "pn-e"} &&
