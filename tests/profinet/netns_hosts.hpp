@@ -3,6 +3,7 @@
 // machine's own namespace, deleted with the object. Shared by the namespace tests of tests/profinet: nothing
 // is sent unless each namespace is checked to hold only lo and its own veth end.
 #include <fcntl.h>
+#include <pthread.h>
 #include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -52,6 +53,15 @@ inline bool enter(const std::string& ns) {
   const bool ok = ::setns(fd, CLONE_NEWNET) == 0;
   ::close(fd);
   return ok;
+}
+
+// Makes the calling thread SCHED_FIFO at `priority`, as a gateway's cyclic thread runs (`fifo_priority`),
+// so that other processes' load cannot starve it for a watchdog time; children it forks start as normal
+// processes again (SCHED_RESET_ON_FORK). False where the host refuses (no CAP_SYS_NICE).
+inline bool real_time(int priority) {
+  sched_param param{};
+  param.sched_priority = priority;
+  return ::pthread_setschedparam(::pthread_self(), SCHED_FIFO | SCHED_RESET_ON_FORK, &param) == 0;
 }
 
 // A device host's RPC side, once per loop: answers a pending request and sends the ApplicationReady when due.
