@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "gateway_hosts.hpp"
+#include "in_process_gateway.hpp"
 #include "netns_hosts.hpp"
 #include "tomc/gateway/profinet_gateway.hpp"
 
@@ -112,16 +113,8 @@ int main(int argc, char** argv) {
     device.telegram = 3;
     config.devices.push_back(device);
   }
-  std::unique_ptr<tomc::profinet_gateway::ProfinetGateway> gateway;
   std::string error;
-  std::thread([&] {
-    if (!gh::enter(hosts.first)) return void(error = "setns failed");
-    try {
-      gateway = std::make_unique<tomc::profinet_gateway::ProfinetGateway>(config);
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }).join();
+  auto gateway = pn::testing::gateway_in(hosts.first, config, error);
   if (!error.empty()) {
     std::fprintf(stderr, "gateway: %s\n", error.c_str());
     return 1;
