@@ -196,8 +196,16 @@ class DeviceHost {
       const std::uint64_t now = now_us();
       if (now >= next_send) {
         next_send = now + 1000;
-        // Without the controller's clock (no AR, or no setpoints for 50 ms) the drive runs on its own.
-        if (now - last_step > 50'000) host.cycle();
+        // The drive's clock is the controller's while the AR runs and the controller's outputs are valid
+        // (IOPS GOOD: the gateway has a controller, G6): it waits for the controller however late a loaded
+        // machine runs the lock-step scenario (after 50 ms it used to go on alone, and under load 14 the
+        // drive moved ahead of tomc and faulted). Without it (no AR, IOPS BAD before the first setpoint or
+        // after the gateway's watchdog) the drive runs on its own 1 ms clock and ends in F08501 like a real
+        // one.
+        const bool controller_clock = device.state() == pn::ArState::kRunning &&
+                                      device.output_iops(tomc::drives::kDriveObjectSlot,
+                                                         tomc::drives::kTelegramSubslot) == pn::kIoxsGood;
+        if (!controller_clock) host.cycle();
         // While following the controller, every input frame answers a drive cycle; after 5 ms without one
         // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
         if (device.state() != pn::ArState::kNone && now - last_step > 5'000) send_input();
