@@ -56,6 +56,7 @@ enum class AxisJobKind : std::uint8_t {
   kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
   kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
   kLeadingValueAdditive,  // MC_LeadingValueAdditive
+  kSetSensor,             // MC_SetSensor (positioning_axis_encoders.cpp)
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).
@@ -103,6 +104,8 @@ class AxisCore {
   // finish_reset().
   std::optional<bool> begin_reset(std::uint64_t cycle) noexcept;
   void finish_reset() noexcept { jobs.set(reset_job_, JobState::kDone); }
+  // An MC_Reset with Restart = TRUE waits for its interpolator cycle (MC_SetSensor's prerequisite).
+  bool restart_pending() const noexcept { return reset_pending_ && restart_requested_; }
   // ---- MC_Stop (spec 03 §4.13) ----
   // Whether a stop reaction of an alarm with a higher weight is in force: the MC_Stop ends with
   // CommandAborted, not Error (seed §6.9.4, spec 02 §3.8).
