@@ -150,6 +150,15 @@ Submission PositioningAxis::set_sensor(const SetSensorInputs& in) noexcept {
     return Submission::reject(error_id::kSensorSwitchBlocked);
   }
   const auto n = static_cast<std::uint32_t>(in.Sensor);
+  // An encoder outside the loop with an error or no value yet can neither close the loop nor take or give a
+  // position (never a silently wrong motion; decision B4).
+  const auto valid = [&](std::uint32_t k) {
+    const AdditionalEncoder* e = additional_.find(k);
+    return k == db_.OperativeSensor || (e != nullptr && e->channel.valid());
+  };
+  if (!valid(n) || (in.Mode == 3 && !valid(static_cast<std::uint32_t>(in.ReferenceSensor)))) {
+    return Submission::reject(error_id::kEncoderNotValid);
+  }
   const double axis_position = encoder_.chain().continuous_position();
   const bool axis_adjusted = db_.StatusSensor[db_.OperativeSensor - 1].Adjusted ==
                              static_cast<std::int32_t>(SensorAdjusted::kAdjusted);

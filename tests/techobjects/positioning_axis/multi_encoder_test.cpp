@@ -129,6 +129,10 @@ TEST(MultipleEncoders, AnErrorOfAnEncoderOutsideTheLoopDoesNotStopTheAxis) {
   EXPECT_TRUE(m.db().StatusSensor[1].Error);
   EXPECT_EQ(m.db().StatusSensor[1].State, static_cast<std::int32_t>(tt::SensorState::WAITING_FOR_VALID));
   EXPECT_FALSE(m.db().StatusSensor[0].Error);
+  // Encoder 2 cannot become operative nor give its position while it fails (decision B4).
+  EXPECT_EQ(m.switch_to(2, 0), error_id::kEncoderNotValid);
+  EXPECT_EQ(m.switch_to(1, 3, 2), error_id::kEncoderNotValid);
+  EXPECT_EQ(m.db().OperativeSensor, 1u);
   m.run(100);
   EXPECT_TRUE(m.power.Status);
   EXPECT_TRUE(m.move_velocity.InVelocity);
