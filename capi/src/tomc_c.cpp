@@ -44,6 +44,7 @@
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
+#include "tomc/instructions/mc_set_sensor.hpp"
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/instructions/mc_synchronized_motion_simulation.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"

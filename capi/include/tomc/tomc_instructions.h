@@ -216,6 +216,25 @@ typedef struct tomc_MC_HaltSuperimposed {
 TOMC_API void tomc_MC_HaltSuperimposed_init(tomc_MC_HaltSuperimposed* fb);
 TOMC_API tomc_status tomc_MC_HaltSuperimposed_call(tomc_object* axis, tomc_MC_HaltSuperimposed* fb);
 
+/* MC_SetSensor (spec 03 §4.12) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_SetSensor {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  int16_t Sensor;
+  int32_t Mode;
+  int16_t ReferenceSensor;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_SetSensor;
+TOMC_API void tomc_MC_SetSensor_init(tomc_MC_SetSensor* fb);
+TOMC_API tomc_status tomc_MC_SetSensor_call(tomc_object* axis, tomc_MC_SetSensor* fb);
+
 /* MC_Stop (spec 03 §4.13) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
 typedef struct tomc_MC_Stop {
   tomc_struct_header header; /* set by the init function */

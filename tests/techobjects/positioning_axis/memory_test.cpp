@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <malloc.h>
 
+#include <cstdio>
 #include <memory>
 
 #include "positioning_axis_fixture.hpp"
@@ -136,6 +137,68 @@ TEST(MemoryPerAxis, FootprintAccountsForTheHeap) {
   const std::size_t footprint = axis->memory_footprint();
   EXPECT_GE(taken, footprint);
   EXPECT_LE(taken, footprint + 3 * 32);  // three blocks: the object, its start values, the filter histories
+#endif
+}
+
+// Several encoders (spec 01 §3.8, decision B1): the storage of Sensor[2..4] exists only for the encoders
+// that exist, reserved at construction and counted in memory_footprint(). Telegram 4 (G1, G2) plus two
+// separate encoder telegrams 81: up to four encoders on one device (decision B3).
+std::unique_ptr<PositioningAxis> axis_with_encoders(techobjects::DeviceIo& io, std::size_t encoders) {
+  auto data = tomc::testing::linear_axis_data();
+  for (std::size_t n = 1; n < encoders; ++n) {
+    data.Sensor[n].Existent = true;
+    data.Sensor[n].Interface.Number = n == 1 ? 2 : 1;
+  }
+  return std::make_unique<PositioningAxis>("A", &io, data);
+}
+
+struct FourEncoderDevice {
+  FourEncoderDevice() {
+    drives::DeviceConfig device;
+    device.drive_telegram = 4;
+    device.encoder_telegrams = {81, 81};
+    runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+  }
+  techobjects::DeviceIo& io() { return runtime.device(0); }
+  techobjects::Runtime runtime{techobjects::RuntimeConfig{0.001, 1, 1}};
+};
+
+TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
+  FourEncoderDevice d;
+  const auto one = axis_with_encoders(d.io(), 1);
+  const auto two = axis_with_encoders(d.io(), 2);
+  const auto four = axis_with_encoders(d.io(), 4);
+  const std::size_t per_encoder = sizeof(techobjects::AdditionalEncoder);
+  EXPECT_EQ(one->additional_encoders().heap_bytes(), 0u);
+  EXPECT_EQ(two->memory_footprint() - one->memory_footprint(), per_encoder);
+  EXPECT_EQ(four->memory_footprint() - one->memory_footprint(), 3 * per_encoder);
+  EXPECT_LE(sizeof(PositioningAxis), kAxisBudget);  // a one-encoder axis (its start values go to the runtime)
+  std::printf(
+      "sizeof(PositioningAxis) %zu, AdditionalEncoder %zu; footprint without start values: 1 encoder "
+      "%zu, 2 encoders %zu, 4 encoders %zu\n",
+      sizeof(PositioningAxis), per_encoder, sizeof(PositioningAxis),
+      sizeof(PositioningAxis) + two->additional_encoders().heap_bytes(),
+      sizeof(PositioningAxis) + four->additional_encoders().heap_bytes());
+}
+
+// The heap an additional encoder really takes is what memory_footprint() counts for it.
+TEST(MemoryPerAxis, AdditionalEncoderFootprintAccountsForTheHeap) {
+#ifdef TOMC_SANITIZED_BUILD
+  GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
+#else
+  FourEncoderDevice d;
+  auto heap_of = [&](std::size_t encoders, std::size_t& footprint) {
+    const auto before = mallinfo2().uordblks;
+    const auto axis = axis_with_encoders(d.io(), encoders);
+    footprint = axis->memory_footprint();
+    return mallinfo2().uordblks - before;
+  };
+  std::size_t f1 = 0;
+  std::size_t f4 = 0;
+  const auto h1 = heap_of(1, f1);
+  const auto h4 = heap_of(4, f4);
+  EXPECT_GE(h4 - h1, f4 - f1);
+  EXPECT_LE(h4 - h1, f4 - f1 + 32);  // one block, the allocator's overhead
 #endif
 }
 

@@ -30,6 +30,7 @@
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_save_absolute_encoder_data.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
+#include "tomc/instructions/mc_set_sensor.hpp"
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/instructions/mc_synchronized_motion_simulation.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"
@@ -421,6 +422,21 @@ const auto kHaltSuperimposed = std::to_array<Parameter<HaltSuperimposed<Axis>>>(
 });
 
 template <typename Axis>
+using SetSensor = instructions::MC_SetSensor<Axis>;
+template <typename Axis>
+const auto kSetSensor = std::to_array<Parameter<SetSensor<Axis>>>({
+    in("Execute", &SetSensor<Axis>::Execute),
+    in("Sensor", &SetSensor<Axis>::Sensor),
+    in("Mode", &SetSensor<Axis>::Mode),
+    in("ReferenceSensor", &SetSensor<Axis>::ReferenceSensor),
+    out("Done", &SetSensor<Axis>::Done),
+    out("Busy", &SetSensor<Axis>::Busy),
+    out("CommandAborted", &SetSensor<Axis>::CommandAborted),
+    out("Error", &SetSensor<Axis>::Error),
+    out("ErrorID", &SetSensor<Axis>::ErrorID),
+});
+
+template <typename Axis>
 using Home = instructions::MC_Home<Axis>;
 template <typename Axis>
 const auto kHome = std::to_array<Parameter<Home<Axis>>>({
@@ -761,7 +777,7 @@ constexpr std::array<std::string_view, 12> kSpeedAxisInstructions{
     "MC_Stop",           "MC_SetAxisSTW",  "MC_WriteParameter", "MC_MotionInVelocity", "MC_TorqueLimiting",
     "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 22> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -773,6 +789,7 @@ constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
     "MC_MoveJog",
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
+    "MC_SetSensor",
     "MC_Stop",
     "MC_SetAxisSTW",
     "MC_WriteParameter",
@@ -898,6 +915,7 @@ std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
   if (instruction == "MC_MoveSuperimposed") return make(kMoveSuperimposed<Axis>);
   if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
   if (instruction == "MC_Home") return make(kHome<Axis>);
+  if (instruction == "MC_SetSensor") return make(kSetSensor<Axis>);
   if (instruction == "MC_PositionProfile") return make(kPositionProfile<Axis>);
   if (instruction == "MC_MotionInPosition") return make(kMotionInPosition<Axis>);
   if (instruction == "MC_MotionInSuperimposed") return make(kMotionInSuperimposed<Axis>);

@@ -81,8 +81,11 @@ inline constexpr std::uint16_t kInvalidStartMode = 0x8116;     // MC_Power.Start
 inline constexpr std::uint16_t kInvalidStopMode = 0x8117;      // MC_Power.StopMode not 0..3
 inline constexpr std::uint16_t kInvalidPosition =
     0x8118;  // Position/Distance not finite, or outside the modulo range
-inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;         // BufferMode not 0/1
-inline constexpr std::uint16_t kInvalidSensor = 0x811A;             // MC_Home.Sensor names no usable encoder
+inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;  // BufferMode not 0/1
+inline constexpr std::uint16_t kInvalidSensor = 0x811A;      // MC_Home.Sensor names no usable encoder
+// MC_SetSensor (decision B4): Sensor/ReferenceSensor not 1...4 or no configured encoder of the axis
+inline constexpr std::uint16_t kSensorNotConfigured = 0x811B;
+inline constexpr std::uint16_t kSensorSwitchBlocked = 0x811C;  // MC_SetSensor while MC_Home or a restart runs
 inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.Restart while enabled or busy
 inline constexpr std::uint16_t kInvalidParameterNumber =
     0x8130;  // MC_WriteParameter: index not writable on this TO
