@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "tomc/diagnostics/positioning_panel.hpp"
+#include "tomc/diagnostics/synchronous_view.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
@@ -120,6 +121,14 @@ void Diagnostics::add(to::PositioningAxis& axis) {
       std::make_unique<PositioningAxisPanel>(axis));
 }
 
+void Diagnostics::add(to::SynchronousAxis& axis) {
+  add(std::make_unique<SynchronousAxisView>(axis), std::make_unique<PositioningAxisPanel>(axis));
+}
+
+void Diagnostics::add(const to::Cam& cam) {
+  add(std::make_unique<CamView>(cam), nullptr);
+}
+
 void Diagnostics::add(to::ExternalEncoder& encoder) {
   add(std::make_unique<TechnologyObjectView<to::ExternalEncoder>>(encoder), nullptr);
 }
@@ -222,10 +231,10 @@ void Diagnostics::publish(Object& object, std::uint64_t cycle) noexcept {
   ObjectSnapshot& s = object.buffer.back();
   const ObjectView& view = *object.view;
   s.cycle = cycle;
+  s.revision = view.revision();
   const auto table = view.variables();
-  const void* data = view.data_block();
   for (std::size_t i = 0; i < table.size(); ++i)
-    s.values[i] = table[i].read_fn(data);
+    s.values[i] = table[i].read_fn(view.source_of(table[i]));
   for (std::size_t i = 0; i < s.words.size(); ++i)
     s.words[i] = view.telegram_word(i);
   s.alarm_count = 0;

@@ -40,7 +40,9 @@
 namespace tomc::techobjects {
 class SpeedAxis;
 class PositioningAxis;
+class SynchronousAxis;
 class ExternalEncoder;
+class Cam;
 }  // namespace tomc::techobjects
 
 namespace tomc::diagnostics {
@@ -50,6 +52,7 @@ inline constexpr std::size_t kEventsPerSnapshot = 32;
 // What the cycle publishes of one technology object.
 struct ObjectSnapshot {
   std::uint64_t cycle = 0;
+  std::uint64_t revision = 0;        // ObjectView::revision() when the snapshot was taken
   std::vector<double> values;        // one per row of the object's reflection table (sized at set-up)
   std::vector<std::uint32_t> words;  // one per telegram channel
   std::array<techobjects::PendingAlarm, techobjects::AlarmList::kCapacity> alarms{};
@@ -94,6 +97,10 @@ class Diagnostics {
   void add(techobjects::SpeedAxis& axis);  // view + control panel
   // View + control panel with homing and positioning (PositioningAxisPanel); also a SynchronousAxis.
   void add(techobjects::PositioningAxis& axis);
+  // Its own view (the positioning axis' areas plus synchronous operation, StatusSynchronizedMotion in the
+  // trace) and the positioning axis' panel.
+  void add(techobjects::SynchronousAxis& axis);
+  void add(const techobjects::Cam& cam);            // view and cam plot (no panel)
   void add(techobjects::ExternalEncoder& encoder);  // view (no panel: an encoder is not moved)
   // Any technology object: its view and, for an axis, its panel (nullptr: none).
   void add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPanel> panel);
