@@ -7,6 +7,7 @@
 #include "tomc/diagnostics/api.hpp"
 #include "tomc/diagnostics/synchronous_view.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/telegrams/drive_state.hpp"
 #include "tomc/telegrams/word_fields.hpp"
 
 namespace tomc::diagnostics::api {
@@ -150,6 +151,26 @@ Json synchronous_json(const Diagnostics& diagnostics, const ObjectView& view, co
       {"cam", std::move(cam)}};
 }
 
+// The terminals of an analog or stepper actor (issue 20), shown instead of telegram words.
+Json actor_json(const ActorSnapshot& a) {
+  Json j{{"kind", to_string(a.kind)},
+         {"enable_output", a.enable_output},
+         {"ready_input", a.ready_input},
+         {"counter", a.counter},
+         {"measured_speed_rpm", number(a.measured_speed_rpm)},
+         {"drive_state", tg::to_string(static_cast<tg::DriveState>(a.drive_state))},
+         {"fault", a.fault},
+         {"encoder_fault", a.encoder_fault}};
+  if (a.kind == ActorKind::kAnalog) {
+    j["output_percent"] = number(a.output_percent);
+    j["output_volts"] = number(a.output_volts);
+    j["output_code"] = a.output_code;
+  } else {
+    j["pulse_frequency_hz"] = number(a.pulse_frequency_hz);
+  }
+  return j;
+}
+
 }  // namespace
 
 Json cam_plot(const CamPlot& plot) {
@@ -220,6 +241,7 @@ Json describe_objects(const Diagnostics& diagnostics) {
              {"reference_speed", diagnostics.reference_speed(i)},
              {"variable_count", view.variables().size()},
              // A synchronous axis: its leading values, StatusSynchronizedMotion.ActualMaster n is the n-th.
+             {"actor", to_string(diagnostics.actor_kind(i))},
              {"leading_values", view.leading_value_names()},
              // A cam: the number a follower's StatusSynchronizedMotion.ActualCam shows (decision C8).
              {"cam_number", view.cam() != nullptr ? Json(view.cam()->number()) : Json(nullptr)}});
@@ -287,6 +309,7 @@ Json status(const Diagnostics& diagnostics, const Diagnostics::State& state, std
     if (view.type() == to::TechnologyObjectType::kSynchronousAxis && o.valid)
       object["synchronous"] = synchronous_json(diagnostics, view, s);
     if (view.cam() != nullptr) object["revision"] = s.revision;
+    if (s.actor.kind != ActorKind::kNone && o.valid) object["actor"] = actor_json(s.actor);
     objects.push_back(std::move(object));
   }
   Json switches = Json::array();

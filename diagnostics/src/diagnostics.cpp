@@ -161,6 +161,13 @@ void Diagnostics::add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPane
   objects_.push_back(std::move(object));
 }
 
+void Diagnostics::set_actor(std::string_view object, ActorSource actor) {
+  if (attached_) throw std::logic_error("Diagnostics::set_actor: already attached to the runtime");
+  const auto i = find_object(object);
+  if (!i) throw std::invalid_argument("Diagnostics::set_actor: no object '" + std::string(object) + "'");
+  objects_[*i]->actor = actor;
+}
+
 void Diagnostics::add_switch(std::string name, std::string description, std::atomic<bool>& flag) {
   if (attached_) throw std::logic_error("Diagnostics::add_switch: already attached to the runtime");
   switches_.push_back(ProgramSwitch{std::move(name), std::move(description), &flag});
@@ -232,6 +239,7 @@ void Diagnostics::publish(Object& object, std::uint64_t cycle) noexcept {
   const ObjectView& view = *object.view;
   s.cycle = cycle;
   s.revision = view.revision();
+  object.actor.read(s.actor);
   const auto table = view.variables();
   for (std::size_t i = 0; i < table.size(); ++i)
     s.values[i] = table[i].read_fn(view.source_of(table[i]));

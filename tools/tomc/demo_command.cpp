@@ -586,6 +586,13 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
                              *automatic);
     }
   }
+  // Axes on analog or stepper actors: the page shows the actor's terminals instead of telegram words.
+  for (const scenario::MachineObject& object : config.objects) {
+    if (object.analog_drive != nullptr)
+      diagnostics.set_actor(object.name, diagnostics::ActorSource(object.analog_drive->actor()));
+    if (object.stepper_drive != nullptr)
+      diagnostics.set_actor(object.name, diagnostics::ActorSource(object.stepper_drive->actor()));
+  }
   runtime->set_user_program([&programs](techobjects::Runtime& rt) {
     for (auto& p : programs)
       (*p)(rt.clock());

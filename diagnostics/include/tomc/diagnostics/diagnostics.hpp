@@ -27,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tomc/diagnostics/actor_view.hpp"
 #include "tomc/diagnostics/bounded_queue.hpp"
 #include "tomc/diagnostics/layout.hpp"
 #include "tomc/diagnostics/object_view.hpp"
@@ -60,6 +61,7 @@ struct ObjectSnapshot {
   std::array<techobjects::AlarmEvent, kEventsPerSnapshot> events{};  // the newest alarm events, oldest first
   std::uint32_t event_count = 0;
   PanelStatus panel{};
+  ActorSnapshot actor{};  // an axis on an analog or stepper actor (set_actor); kind kNone otherwise
 };
 
 struct DiagnosticsConfig {
@@ -104,6 +106,10 @@ class Diagnostics {
   void add(techobjects::ExternalEncoder& encoder);  // view (no panel: an encoder is not moved)
   // Any technology object: its view and, for an axis, its panel (nullptr: none).
   void add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPanel> panel);
+  // The analog or stepper actor of an added axis (issue 20): the page shows its terminals instead of
+  // telegram words. Throws std::invalid_argument for an unknown name.
+  void set_actor(std::string_view object, ActorSource actor);
+  ActorKind actor_kind(std::size_t object) const noexcept { return objects_[object]->actor.kind(); }
   void add_switch(std::string name, std::string description, std::atomic<bool>& flag);
   // Sets the runtime's post-interpolator hook to cycle(); the runtime must not have started.
   void attach(techobjects::Runtime& runtime);
@@ -175,6 +181,7 @@ class Diagnostics {
     std::uint64_t publish_slot = 0;  // published when servo_cycles % publish_period_cycles == publish_slot
     ObjectUnits units;
     double reference_speed = 0.0;
+    ActorSource actor;
   };
   void publish(Object& object, std::uint64_t cycle) noexcept;
   void answer(std::uint64_t request, PanelAnswer answer) noexcept;
