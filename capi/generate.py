@@ -26,7 +26,9 @@ KIND_NAMES = {"S": "TO_SpeedAxis", "P": "TO_PositioningAxis", "Y": "TO_Synchrono
 
 
 def fb(name, spec, kinds, inputs, outputs, master=False):
-    return dict(name=name, spec=spec, kinds=kinds, inputs=inputs, outputs=outputs, master=master)
+    """master: False, True (the input Master, the leading TO) or the name of another TO input."""
+    source = "Master" if master is True else (master or None)
+    return dict(name=name, spec=spec, kinds=kinds, inputs=inputs, outputs=outputs, master=source)
 
 
 HANDSHAKE = [("Done", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]
@@ -40,7 +42,8 @@ OFFSET_INPUTS = [("Execute", "BOOL", "FALSE"), ("Offset", "LREAL", "0.0"), ("Pro
                  ("OffsetDistance", "LREAL", "0.0"), ("StartPosition", "LREAL", "0.0"), ("Direction", "DINT", "3")]
 
 # The implemented instructions in the manual's order (spec 01 §1.3). Inputs: (name, IEC type, default);
-# outputs: (name, IEC type). A "master" instruction also has the input Master (the leading TO).
+# outputs: (name, IEC type). A "master" instruction also has the input Master (the leading TO), or the TO input
+# named by `master`.
 TABLE = [
     fb("MC_Power", "spec 03 §4.1", "SPYE",
        [("Enable", "BOOL", "FALSE"), ("StartMode", "DINT", "1"), ("StopMode", "INT", "0")],
@@ -100,7 +103,7 @@ TABLE = [
        [("Busy", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
     # MotionIn (spec 03 §4.17): the host controller's door — called every cycle with its setpoints while
     # Enable = TRUE, they act in the next MC_Interpolator without profile or dynamic limits.
-    fb("MC_MotionInVelocity", "spec 03 §4.17.1", "PY",
+    fb("MC_MotionInVelocity", "spec 03 §4.17.1", "SPY",
        [("Enable", "BOOL", "FALSE"), ("Velocity", "LREAL", "0.0"), ("Acceleration", "LREAL", "0.0"),
         ("PositionControlled", "BOOL", "TRUE")],
        [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
@@ -108,6 +111,14 @@ TABLE = [
        [("Enable", "BOOL", "FALSE"), ("Position", "LREAL", "0.0"), ("Velocity", "LREAL", "0.0"),
         ("Acceleration", "LREAL", "0.0")],
        [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    fb("MC_MotionInSuperimposed", "spec 03 §4.17.3", "PY",
+       [("Enable", "BOOL", "FALSE"), ("Distance", "LREAL", "0.0"), ("VelocityDiff", "LREAL", "0.0"),
+        ("AccelerationDiff", "LREAL", "0.0")],
+       [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    fb("MC_MotionInSuperimposedAxes", "spec 03 §4.17.4", "PY",
+       [("Enable", "BOOL", "FALSE")],
+       [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
+       master="SuperimposingAxis"),
     fb("MC_GearIn", "spec 07 §2.1", "Y",
        [("Execute", "BOOL", "FALSE"), ("RatioNumerator", "DINT", "1"), ("RatioDenominator", "DINT", "1")] + DYN,
        [("InGear", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
@@ -179,8 +190,10 @@ def c_header():
         out.append(f"typedef struct tomc_{f['name']} {{")
         out.append("  tomc_struct_header header; /* set by the init function */")
         out.append("  /* inputs */")
-        if f["master"]:
+        if f["master"] == "Master":
             out.append("  const tomc_object* Master; /* the leading axis or external encoder */")
+        elif f["master"]:
+            out.append(f"  const tomc_object* {f['master']}; /* a positioning or synchronous axis */")
         for name, t, _ in f["inputs"]:
             out.append(f"  {TYPES[t]} {name};")
         out.append("  /* outputs */")
@@ -207,6 +220,11 @@ def cpp_glue():
         out.append(f'  static constexpr const char* kName = "{n}";')
         out.append(f"  static constexpr unsigned kKinds = {kinds};")
         out.append(f"  static constexpr bool kMaster = {'true' if f['master'] else 'false'};")
+        if f["master"]:
+            m = f["master"]
+            out.append(f'  static constexpr const char* kMasterName = "{m}";')
+            out.append(f"  static const tomc_object* master(const C& c) noexcept {{ return c.{m}; }}")
+            out.append(f"  template <typename T> static void set_master(T& t, const techobjects::LeadingValueSource* s) noexcept {{ t.{m} = s; }}")
         out.append("  template <typename T> static void in(const C& c, T& t) noexcept {")
         for name, t, _ in f["inputs"]:
             cast = "static_cast<bool>" if t == "BOOL" else ""
@@ -255,7 +273,7 @@ def st_declarations():
         out.append("VAR_INPUT")
         out.append("  Axis : TO_Object;")
         if f["master"]:
-            out.append("  Master : TO_Object;")
+            out.append(f"  {f['master']} : TO_Object;")
         for name, t, d in f["inputs"]:
             out.append(f"  {name} : {t} := {d};")
         out.append("END_VAR")

@@ -34,10 +34,10 @@
 #include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_leading_value_additive.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
 #include "tomc/instructions/mc_move_jog.hpp"
 #include "tomc/instructions/mc_move_relative.hpp"
-#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/instructions/mc_move_velocity.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
@@ -382,7 +382,8 @@ template <typename Fb, typename Axis>
 void run(typename Fb::C& c, Axis& axis, Kind kind, const tomc_object* master) noexcept {
   auto& t = instance<Fb, Axis>(c.instance, kind);
   Fb::in(c, t);
-  if constexpr (Fb::kMaster) t.Master = master != nullptr ? master->machine.leading_value_source() : nullptr;
+  if constexpr (Fb::kMaster)
+    Fb::set_master(t, master != nullptr ? master->machine.leading_value_source() : nullptr);
   t(axis);
   Fb::out(t, c);
 }
@@ -392,7 +393,7 @@ void dispatch(tomc_object& axis, typename Fb::C& c) noexcept {
   const Kind kind = kind_of(axis);
   const auto& m = axis.machine;
   const tomc_object* master = nullptr;
-  if constexpr (Fb::kMaster) master = c.Master;
+  if constexpr (Fb::kMaster) master = Fb::master(c);
   if constexpr ((Fb::kKinds & kSpeed) != 0)
     if (kind == kSpeed) run<Fb>(c, *m.speed_axis, kind, master);
   if constexpr ((Fb::kKinds & kPositioning) != 0)
@@ -469,10 +470,10 @@ tomc_status call_fb(tomc_object* axis, typename Fb::C* c) noexcept {
                                                     axis->machine.name + ")");
     }
     if constexpr (Fb::kMaster) {
-      const tomc_object* master = c->Master;
+      const tomc_object* master = Fb::master(*c);
       if (master != nullptr && master->machine.leading_value_source() == nullptr) {
         return fail(TOMC_ERROR_WRONG_OBJECT_TYPE,
-                    std::string(Fb::kName) + ".Master: " + master->machine.name + " (" +
+                    std::string(Fb::kName) + "." + Fb::kMasterName + ": " + master->machine.name + " (" +
                         std::string(master->machine.type_name()) + ") is not a leading value");
       }
     }

@@ -173,8 +173,90 @@ TEST(CApi, MotionInPositionFeedsTheHostsSetpointsEveryCycle) {
   EXPECT_EQ(alarm, 521);
 }
 
-// MC_MotionInVelocity is not an instruction of TO_SpeedAxis in tomc yet (issue 18, listed as left).
-TEST(CApi, MotionInVelocityOnThePositioningAxis) {
+// A host that superimposes one axis on another (spec 03 §4.17.4, seed 004 §6.14.3.2): the machine file names
+// Feeder as a possible superimposing axis of Carriage ("SuperimposingAxes"), MC_MotionInSuperimposedAxes
+// adds Feeder's setpoint to Carriage's base motion in the same cycle, and an axis not configured so is
+// refused with 16#8190. MC_MotionInSuperimposed feeds a superimposition of the host's own.
+TEST(CApi, MotionInSuperimposedAxesAddsTheConfiguredAxisInTheSameCycle) {
+  constexpr const char* kTwoAxes = R"({
+    "cycle_time": 0.001,
+    "technology_objects": [
+      {"name": "Feeder", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1}},
+      {"name": "Other", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1}},
+      {"name": "Carriage", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1},
+       "SuperimposingAxes": ["Feeder"]}
+    ]
+  })";
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(kTwoAxes, &runtime), TOMC_OK) << last_error();
+  tomc_object* feeder = nullptr;
+  tomc_object* other = nullptr;
+  tomc_object* carriage = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Feeder", &feeder), TOMC_OK);
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Other", &other), TOMC_OK);
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Carriage", &carriage), TOMC_OK);
+  tomc_MC_Power p1, p2, p3;
+  tomc_MC_MoveVelocity jog;
+  tomc_MC_MotionInSuperimposedAxes axes;
+  tomc_MC_MotionInSuperimposed own;
+  for (auto* p : {&p1, &p2, &p3}) {
+    tomc_MC_Power_init(p);
+    p->Enable = true;
+  }
+  tomc_MC_MoveVelocity_init(&jog);
+  tomc_MC_MotionInSuperimposedAxes_init(&axes);
+  tomc_MC_MotionInSuperimposed_init(&own);
+  for (int k = 0; k < 5; ++k) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(feeder, &p1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(other, &p2), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(carriage, &p3), TOMC_OK);
+  }
+  ASSERT_TRUE(p1.Status && p2.Status && p3.Status);
+  // Not a configured superimposing axis: refused, ErrorWord.X16.
+  axes.SuperimposingAxis = other;
+  axes.Enable = true;
+  ASSERT_EQ(tomc_MC_MotionInSuperimposedAxes_call(carriage, &axes), TOMC_OK) << last_error();
+  EXPECT_TRUE(axes.Error);
+  EXPECT_EQ(axes.ErrorID, 0x8190);
+  axes.Enable = false;
+  ASSERT_EQ(tomc_MC_MotionInSuperimposedAxes_call(carriage, &axes), TOMC_OK);
+  // Feeder: superimposed on Carriage, then moved at 40 mm/s.
+  axes.SuperimposingAxis = feeder;
+  axes.Enable = true;
+  ASSERT_EQ(tomc_MC_MotionInSuperimposedAxes_call(carriage, &axes), TOMC_OK);
+  ASSERT_TRUE(axes.Busy) << axes.ErrorID;
+  jog.Velocity = 40.0;
+  jog.Execute = true;
+  ASSERT_EQ(tomc_MC_MoveVelocity_call(feeder, &jog), TOMC_OK);
+  for (int k = 0; k < 300; ++k) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_MotionInSuperimposedAxes_call(carriage, &axes), TOMC_OK);
+    ASSERT_NEAR(read(carriage, "Position"), read(feeder, "Position"), 1e-9) << k;  // no cycle offset
+  }
+  EXPECT_NEAR(read(carriage, "Velocity"), 40.0, 1e-9);
+  EXPECT_NEAR(read(carriage, "StatusPositioning.SuperimposedDistance"), read(feeder, "Position"), 1e-9);
+  // The falling edge keeps the superimposed position; Feeder goes on alone.
+  axes.Enable = false;
+  ASSERT_EQ(tomc_MC_MotionInSuperimposedAxes_call(carriage, &axes), TOMC_OK);
+  const double kept = read(carriage, "Position");
+  ASSERT_EQ(tomc_runtime_step(runtime, 10), TOMC_OK);
+  EXPECT_NEAR(read(carriage, "Position"), kept, 1e-9);
+  EXPECT_GT(read(feeder, "Position"), kept);
+  // Both motions finished: the superimposition joined the base (SuperimposedDistance 0). The host's own
+  // superimposition: Distance is absolute (x = x_base + Distance).
+  EXPECT_EQ(read(carriage, "StatusPositioning.SuperimposedDistance"), 0.0);
+  own.Enable = true;
+  own.Distance = 1.0;
+  ASSERT_EQ(tomc_MC_MotionInSuperimposed_call(carriage, &own), TOMC_OK) << last_error();
+  ASSERT_TRUE(own.Busy) << own.ErrorID;
+  ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK);
+  EXPECT_NEAR(read(carriage, "Position"), kept + 1.0, 1e-9);
+  tomc_runtime_destroy(runtime);
+}
+
+// MC_MotionInVelocity through the C ABI on a positioning and on a speed axis (spec 03 §4.17.1).
+TEST(CApi, MotionInVelocityOnPositioningAndSpeedAxes) {
   Machine m;
   tomc_MC_Power power;
   tomc_MC_MotionInVelocity feed;
@@ -192,7 +274,26 @@ TEST(CApi, MotionInVelocityOnThePositioningAxis) {
   ASSERT_EQ(tomc_MC_MotionInVelocity_call(m.slide, &feed), TOMC_OK) << last_error();
   ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
   EXPECT_EQ(read(m.slide, "Velocity"), 30.0);
-  EXPECT_EQ(tomc_MC_MotionInVelocity_call(m.conveyor, &feed), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  // spec 03 §4.17.1: also an instruction of the speed axis (decision U14); MC_MotionInPosition is not.
+  tomc_MC_Power conveyor_power;
+  tomc_MC_MotionInVelocity conveyor_feed;
+  tomc_MC_MotionInPosition position_feed;
+  tomc_MC_Power_init(&conveyor_power);
+  tomc_MC_MotionInVelocity_init(&conveyor_feed);
+  tomc_MC_MotionInPosition_init(&position_feed);
+  conveyor_power.Enable = true;
+  for (int k = 0; k < 200 && !conveyor_power.Status; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+    ASSERT_EQ(tomc_MC_Power_call(m.conveyor, &conveyor_power), TOMC_OK);
+  }
+  ASSERT_TRUE(conveyor_power.Status);
+  conveyor_feed.Enable = true;
+  conveyor_feed.Velocity = 120.0;
+  ASSERT_EQ(tomc_MC_MotionInVelocity_call(m.conveyor, &conveyor_feed), TOMC_OK) << last_error();
+  EXPECT_TRUE(conveyor_feed.Busy);
+  ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
+  EXPECT_EQ(read(m.conveyor, "Velocity"), 120.0);
+  EXPECT_EQ(tomc_MC_MotionInPosition_call(m.conveyor, &position_feed), TOMC_ERROR_WRONG_OBJECT_TYPE);
 }
 
 // MC_MoveSuperimposed through the C ABI (spec 03 §4.10): 20 mm superimposed on the 200 mm base move end at

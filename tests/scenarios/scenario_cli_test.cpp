@@ -222,4 +222,43 @@ TEST_F(ScenarioRetain, AdjustmentPersistsBetweenRuns) {
   EXPECT_EQ(sim("second_damaged.json", scenario("[]", not_homed)), 0);
 }
 
+// MC_SaveAbsoluteEncoderData (spec 03 §4.16, 9.16): no Axis input; it backs up the adjustment of every TO in
+// the scenario's retentive store and is Done once the file is written (16#0: no error). Without "retain_file"
+// or with an "axis" the scenario is refused with a message naming the problem.
+TEST_F(ScenarioRetain, SaveAbsoluteEncoderDataBacksUpEveryAdjustment) {
+  const std::string adjust_and_save =
+      R"([ { "cycle": 10, "instance": "home", "instruction": "MC_Home", "axis": "Slide",
+      "inputs": { "Execute": true, "Mode": 7, "Position": 250.0 } },
+      { "cycle": 12, "instance": "save", "instruction": "MC_SaveAbsoluteEncoderData",
+      "inputs": { "Execute": true } } ])";
+  EXPECT_EQ(
+      sim("save.json",
+          scenario(
+              adjust_and_save,
+              R"([ { "cycle": 25, "values": { "save.Done": true, "save.Error": false, "save.ErrorID": 0 } } ])")),
+      0)
+      << slurp(dir_ / "save.json.err");
+  ASSERT_TRUE(std::filesystem::exists(dir_ / "retain.dat"));
+  EXPECT_EQ(
+      sim("after_save.json",
+          scenario("[]", R"([ { "cycle": 25, "tolerance": 0.001, "values": { "Slide.StatusWord.X5": true,
+                               "Slide.ActualPosition": 250.0 } } ])")),
+      0)
+      << slurp(dir_ / "after_save.json.err");
+  const std::string with_axis =
+      R"([ { "cycle": 12, "instance": "save", "instruction": "MC_SaveAbsoluteEncoderData", "axis": "Slide",
+      "inputs": { "Execute": true } } ])";
+  EXPECT_NE(sim("with_axis.json", scenario(with_axis, "[]")), 0);
+  EXPECT_NE(slurp(dir_ / "with_axis.json.err").find("MC_SaveAbsoluteEncoderData has no Axis input"),
+            std::string::npos);
+  std::string no_file = scenario(R"([ { "cycle": 12, "instance": "save", "instruction":
+      "MC_SaveAbsoluteEncoderData", "inputs": { "Execute": true } } ])",
+                                 "[]");
+  const auto at = no_file.find("\"retain_file\"");
+  no_file.erase(at, no_file.find(',', at) - at + 1);
+  EXPECT_NE(sim("no_file.json", no_file), 0);
+  EXPECT_NE(slurp(dir_ / "no_file.json.err").find("needs \"retain_file\""), std::string::npos)
+      << slurp(dir_ / "no_file.json.err");
+}
+
 }  // namespace

@@ -323,7 +323,7 @@ typedef struct tomc_MC_TorqueRange {
 TOMC_API void tomc_MC_TorqueRange_init(tomc_MC_TorqueRange* fb);
 TOMC_API tomc_status tomc_MC_TorqueRange_call(tomc_object* axis, tomc_MC_TorqueRange* fb);
 
-/* MC_MotionInVelocity (spec 03 §4.17.1) on TO_PositioningAxis, TO_SynchronousAxis. */
+/* MC_MotionInVelocity (spec 03 §4.17.1) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
 typedef struct tomc_MC_MotionInVelocity {
   tomc_struct_header header; /* set by the init function */
   /* inputs */
@@ -358,6 +358,40 @@ typedef struct tomc_MC_MotionInPosition {
 } tomc_MC_MotionInPosition;
 TOMC_API void tomc_MC_MotionInPosition_init(tomc_MC_MotionInPosition* fb);
 TOMC_API tomc_status tomc_MC_MotionInPosition_call(tomc_object* axis, tomc_MC_MotionInPosition* fb);
+
+/* MC_MotionInSuperimposed (spec 03 §4.17.3) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_MotionInSuperimposed {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double Distance;
+  double VelocityDiff;
+  double AccelerationDiff;
+  /* outputs */
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_MotionInSuperimposed;
+TOMC_API void tomc_MC_MotionInSuperimposed_init(tomc_MC_MotionInSuperimposed* fb);
+TOMC_API tomc_status tomc_MC_MotionInSuperimposed_call(tomc_object* axis, tomc_MC_MotionInSuperimposed* fb);
+
+/* MC_MotionInSuperimposedAxes (spec 03 §4.17.4) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_MotionInSuperimposedAxes {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  const tomc_object* SuperimposingAxis; /* a positioning or synchronous axis */
+  bool Enable;
+  /* outputs */
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_MotionInSuperimposedAxes;
+TOMC_API void tomc_MC_MotionInSuperimposedAxes_init(tomc_MC_MotionInSuperimposedAxes* fb);
+TOMC_API tomc_status tomc_MC_MotionInSuperimposedAxes_call(tomc_object* axis, tomc_MC_MotionInSuperimposedAxes* fb);
 
 /* MC_GearIn (spec 07 §2.1) on TO_SynchronousAxis. */
 typedef struct tomc_MC_GearIn {

@@ -71,6 +71,11 @@ std::string_view describe(std::uint16_t id) noexcept {
              "on it";
     case kInvalidMotionInSetpoint:
       return "MotionIn: a setpoint input is not finite";
+    case kSuperimposingAxisNotConfigured:
+      return "MC_MotionInSuperimposedAxes: SuperimposingAxis is not a possible superimposing axis of Axis";
+    case kSuperimposingAxisNotReady:
+      return "MC_MotionInSuperimposedAxes: SuperimposingAxis is not enabled, not position-controlled or "
+             "homing";
     case kNoGearing:
       return "no MC_GearIn / MC_GearInPos pending or active";
     case kNoCamming:

@@ -63,6 +63,7 @@ Submission PositioningAxis::motion_in(JobKind kind, JobId running, const MotionS
   m.command_velocity = setpoint.velocity;
   m.distance = setpoint.acceleration;
   motion_ = m;
+  db_.StatusMotionIn.StatusWord = 0;  // MaxVelocityExceeded counts per MotionIn job
   position_controlled_ = position_controlled;
   positioning_.cancel();
   positioning_start_pending_ = false;
@@ -71,7 +72,19 @@ Submission PositioningAxis::motion_in(JobKind kind, JobId running, const MotionS
 }
 
 void PositioningAxis::end_motion_in(JobId running) noexcept {
-  if (running == 0 || running != motion_.id) return;
+  if (running == 0) return;
+  if (running == superimposed_.job_id() && superimposed_.motion_in()) {
+    // MotionInSuperimposed(Axes): the superimposed velocity and acceleration drop to 0.0, its position stays
+    // (spec 03 §4.17.3/4.17.4 Enable); the base motion goes on unchanged.
+    core_.jobs.set(running, JobState::kDone);
+    const MotionState& s = superimposed_.state();
+    setpoint_.velocity -= s.velocity;  // base_setpoint() = setpoint_ - superimposed stays the base
+    setpoint_.acceleration -= s.acceleration;
+    superimposed_.end_motion_in();
+    db_.StatusMotionIn.ActualSuperimposingAxis = 0;
+    return;
+  }
+  if (running != motion_.id) return;
   if (motion_.kind != JobKind::kMotionInVelocity && motion_.kind != JobKind::kMotionInPosition) return;
   core_.jobs.set(motion_.id, JobState::kDone);
   motion_ = Motion{};
@@ -82,7 +95,7 @@ void PositioningAxis::end_motion_in(JobId running) noexcept {
   setpoint_.acceleration -= base.acceleration;
   generator_ = Generator::kIdle;
   if (position_controlled_) {  // StatusWord.X6 Done after the positioning window (spec 04 §8 rule 2)
-    positioning_target_ = setpoint_.position;
+    positioning_target_ = positioning_reference();
     positioning_start_pending_ = true;
   }
 }

@@ -219,7 +219,7 @@ void PositioningAxis::follow_time_profile() noexcept {
     setpoint_ = MotionState{wanted.position, 0.0, 0.0};
     generator_ = Generator::kIdle;
     motion_.interpolation_done = true;
-    positioning_target_ = setpoint_.position;
+    positioning_target_ = positioning_reference();
     positioning_start_pending_ = true;
   }
 }

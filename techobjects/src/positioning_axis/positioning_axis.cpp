@@ -363,7 +363,9 @@ PowerState PositioningAxis::power(bool enable, std::int32_t start_mode, std::int
 }
 
 Submission PositioningAxis::reset(bool restart) noexcept {
-  return core_.reset(restart);
+  const Submission s = core_.reset(restart);
+  if (s.error_id == 0) superimposing_error_ = false;  // ErrorWord.X16 is acknowledged as the alarms are
+  return s;
 }
 
 Submission PositioningAxis::move_absolute(const MoveAbsoluteInputs& in) noexcept {

@@ -200,16 +200,20 @@ void PositioningAxis::servo_monitoring() noexcept {
   (void)standstill_.update(actual_velocity_);
 
   // Positioning monitoring (spec 02 §6.1): started in the servo cycle that uses the final setpoint.
-  // With a superimposed motion still moving the axis is not in position yet: the check waits for it.
-  if (positioning_start_pending_ && superimposed_.settled()) {
+  // With a superimposed motion still moving the axis is not in position yet: the check waits for it. A
+  // MotionIn superimposition has no end to wait for: the base job is checked on the base motion, the actual
+  // position less the superimposed setpoint (decision U13; seed 004 §9.17.4 section B: A1 Done, A2 active).
+  if (positioning_start_pending_ && (superimposed_.settled() || superimposed_.motion_in())) {
     positioning_start_pending_ = false;
+    positioning_on_base_ = superimposed_.motion_in();
     positioning_.start(positioning_target_);
   }
   if (positioning_.status().outcome == PositioningOutcome::kInProgress) {
     if (controlled && position_monitorings_suspended()) {
       positioning_.complete();
     } else if (controlled) {
-      const PositioningStatus st = positioning_.update(actual_position_);
+      const double superimposed = positioning_on_base_ ? superimposed_.state().position : 0.0;
+      const PositioningStatus st = positioning_.update(actual_position_ - superimposed);
       if (st.outcome == PositioningOutcome::kFault) raise(kAlarmPositioning, st.additional_value);
     } else {
       positioning_.cancel();
@@ -475,7 +479,7 @@ void PositioningAxis::generate_setpoint() noexcept {
             homing_to_home) {
           if (!motion_.interpolation_done && (motion_.planned_velocity > 0.0 || homing_to_home)) {
             motion_.interpolation_done = true;
-            positioning_target_ = setpoint_.position;
+            positioning_target_ = positioning_reference();
             positioning_start_pending_ = true;
           }
         }
@@ -645,7 +649,7 @@ void PositioningAxis::complete_jobs() noexcept {
           core_.jobs.set(motion_.id, JobState::kDone);
           motion_ = Motion{};
           if (position_controlled_) {  // X6 after a position-controlled stop (spec 04 §8 rule 2)
-            positioning_target_ = setpoint_.position;
+            positioning_target_ = positioning_reference();
             positioning_start_pending_ = true;
           }
         }
@@ -668,7 +672,7 @@ void PositioningAxis::complete_jobs() noexcept {
   if (core_.stop.id != 0 && !core_.stop.done && settled && at_zero) {
     core_.stop_reached_standstill();
     if (position_controlled_) {
-      positioning_target_ = setpoint_.position;
+      positioning_target_ = positioning_reference();
       positioning_start_pending_ = true;
     }
   }
@@ -762,14 +766,25 @@ void PositioningAxis::update_status() noexcept {
                              : MotionInFunctionState::kNone;
   assign(sw, StatusWordBit::kMotionInCommand, motion_in != MotionInFunctionState::kNone);
   db_.StatusMotionIn.FunctionState = static_cast<std::int32_t>(motion_in);
-  assign(sw, StatusWordBit::kMoveSuperimposedCommand, superimposed_.job() == SuperimposedMotion::Job::kMove);
+  // Superimposed jobs (spec 04 §5.1 X23, §5.2 X6/X7/X8); the braking after a MotionInSuperimposed setpoint
+  // that was not a number is no MC_HaltSuperimposed job (id 0).
+  const SuperimposedMotion::Job sup_job = superimposed_.job();
+  assign(sw, StatusWordBit::kMoveSuperimposedCommand, sup_job == SuperimposedMotion::Job::kMove);
   assign(sw2, StatusWord2Bit::kHaltSuperimposedCommand,
-         superimposed_.job() == SuperimposedMotion::Job::kHalt);
+         sup_job == SuperimposedMotion::Job::kHalt && superimposed_.job_id() != 0);
+  assign(sw2, StatusWord2Bit::kMotionInSuperimposedCommand, sup_job == SuperimposedMotion::Job::kMotionIn);
+  assign(sw2, StatusWord2Bit::kMotionInSuperimposedAxesCommand,
+         sup_job == SuperimposedMotion::Job::kMotionInAxes);
+  // StatusMotionIn.StatusWord.X0 MaxVelocityExceeded: the total velocity was above DynamicLimits.MaxVelocity
+  // during a MotionIn job — a flag, not a clamp (spec 02 §8); kept until the next MotionIn job starts.
+  if ((motion_in != MotionInFunctionState::kNone || superimposed_.motion_in()) &&
+      std::fabs(setpoint_.velocity) * units_.velocity > db_.DynamicLimits.MaxVelocity)
+    db_.StatusMotionIn.StatusWord |= 1u << static_cast<unsigned>(StatusMotionInBit::kMaxVelocityExceeded);
   // Constant velocity: the setpoint neither accelerates now nor did it in the cycle before (a jerk-limited
   // ramp passes a = 0 only for an instant).
-  const bool constant =
-      std::fabs(setpoint_.acceleration) < 1e-9 && std::fabs(last_setpoint_acceleration_) < 1e-9;
-  last_setpoint_acceleration_ = setpoint_.acceleration;
+  const bool acceleration_zero = std::fabs(setpoint_.acceleration) < 1e-9;
+  const bool constant = acceleration_zero && acceleration_was_zero_;
+  acceleration_was_zero_ = acceleration_zero;
   assign(sw, StatusWordBit::kConstantVelocity, enabled && constant);
   assign(sw, StatusWordBit::kAccelerating, setpoint_.acceleration * setpoint_.velocity > 0.0);
   assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
@@ -785,6 +800,7 @@ void PositioningAxis::update_status() noexcept {
   assign(sw2, StatusWord2Bit::kOnProfile,
          profile_job && generator_ == Generator::kTimeProfile && !motion_.profile_limited);
   db_.StatusWord2 = sw2;
+  if (superimposing_error_) ew |= 1u << static_cast<unsigned>(ErrorWordBit::kSuperimposingError);
   db_.ErrorWord = ew;
   db_.WarningWord = ww;
   update_synchronous_status();

@@ -1,7 +1,10 @@
-// MC_MoveSuperimposed and MC_HaltSuperimposed on the positioning axis (spec 03 §4.10–4.11, spec 01 §8.14,
-// seed 004 §6.7.10): the jobs, their §9.19.1 row R6 / column C7, and the superimposed part of the setpoint.
+// MC_MoveSuperimposed, MC_HaltSuperimposed (spec 03 §4.10–4.11, spec 01 §8.14, seed 004 §6.7.10) and the
+// superimposed MotionIn jobs MC_MotionInSuperimposed / MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4,
+// seed 004 §6.14.3) on the positioning axis: the jobs, their §9.19.1 row R6 / column C7, and the superimposed
+// part of the setpoint.
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
@@ -43,9 +46,116 @@ Submission PositioningAxis::halt_superimposed(const HaltSuperimposedInputs& in) 
   return Submission::accept(id);
 }
 
+// ---- MotionIn (spec 03 §4.17.3–4.17.4): no profile, no dynamic limits (seed 004 §6.14.3 "the dynamics of
+// the superimposed and of the total motion are not limited"); position control as for every superimposed
+// motion (spec 02 §2.3).
+
+namespace {
+
+bool finite(const MotionState& s) noexcept {
+  return std::isfinite(s.position) && std::isfinite(s.velocity) && std::isfinite(s.acceleration);
+}
+
+}  // namespace
+
+Submission PositioningAxis::motion_in_superimposed(JobId running,
+                                                   const MotionInSuperimposedInputs& in) noexcept {
+  const MotionState input{in.Distance, in.VelocityDiff / units_.velocity,
+                          in.AccelerationDiff / units_.acceleration};
+  if (running != 0) {
+    // While Enable = TRUE the inputs are taken every cycle; a job another one ended takes nothing.
+    if (running != superimposed_.job_id() || superimposed_.job() != SuperimposedMotion::Job::kMotionIn)
+      return Submission{};
+    if (!finite(input)) {
+      // The job ends with Error; the superimposed part brakes with DynamicDefaults instead of jumping (as
+      // MotionInPosition's base motion does, decision U11).
+      core_.jobs.set(running, JobState::kError, error_id::kInvalidMotionInSetpoint);
+      superimposed_.halt(0, AxisCore::default_ramp(db_.DynamicDefaults, dynamic_units()), false);
+      return Submission::reject(error_id::kInvalidMotionInSetpoint);
+    }
+    superimposed_.set_input(input);
+    return Submission::accept(running);
+  }
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  if (!finite(input)) return Submission::reject(error_id::kInvalidMotionInSetpoint);
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  if (!position_controlled_) return Submission::reject(error_id::kNotPositionControlled);
+  bool queue = false;
+  if (const auto e = arbitrate_motion(NewJob::kSuperimposed, queue)) return Submission::reject(e);
+  const JobId id = core_.jobs.create(JobKind::kMotionInSuperimposed, JobState::kActive);
+  superimposed_.start_motion_in(id, SuperimposedMotion::Job::kMotionIn);
+  superimposed_.set_input(input);
+  db_.StatusMotionIn.StatusWord = 0;  // MaxVelocityExceeded counts per MotionIn job
+  return Submission::accept(id);
+}
+
+Submission PositioningAxis::motion_in_superimposed_axes(JobId running,
+                                                        const LeadingValueSource* superimposing) noexcept {
+  if (running != 0) {
+    const bool ours =
+        running == superimposed_.job_id() && superimposed_.job() == SuperimposedMotion::Job::kMotionInAxes;
+    return ours ? Submission::accept(running) : Submission{};
+  }
+  if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
+  // SuperimposingAxis must be one of the configured possible superimposing axes (ErrorWord.X16).
+  std::uint16_t index = 0;
+  if (superimposing_axes_) {
+    for (std::size_t i = 0; i < superimposing_axes_->count; ++i) {
+      const auto* axis = static_cast<const PositioningAxis*>(superimposing_axes_->axes[i]);
+      if (static_cast<const LeadingValueSource*>(axis) == superimposing)
+        index = static_cast<std::uint16_t>(i + 1);
+    }
+  }
+  if (index == 0) {
+    superimposing_error_ = true;
+    return Submission::reject(error_id::kSuperimposingAxisNotConfigured);
+  }
+  if (const auto e = motion_prerequisites()) return Submission::reject(e);
+  // Both TOs position-controlled, neither homing (spec 03 §4.17.4 prerequisites).
+  if (!position_controlled_) return Submission::reject(error_id::kNotPositionControlled);
+  if (motion_.kind == JobKind::kHome || passive_.id != 0)
+    return Submission::reject(error_id::kRejectedByRunningJob);
+  const auto& other = *static_cast<const PositioningAxis*>(superimposing_axes_->axes[index - 1]);
+  if (other.core_.phase != PowerPhase::kEnabled || !other.position_controlled_ ||
+      other.motion_.kind == JobKind::kHome || other.passive_.id != 0)
+    return Submission::reject(error_id::kSuperimposingAxisNotReady);
+  bool queue = false;
+  if (const auto e = arbitrate_motion(NewJob::kSuperimposed, queue)) return Submission::reject(e);
+  const JobId id = core_.jobs.create(JobKind::kMotionInSuperimposedAxes, JobState::kActive);
+  superimposed_.start_motion_in(id, SuperimposedMotion::Job::kMotionInAxes);
+  db_.StatusMotionIn.ActualSuperimposingAxis = index;
+  db_.StatusMotionIn.StatusWord = 0;
+  superimposing_error_ = false;
+  return Submission::accept(id);
+}
+
+void PositioningAxis::add_possible_superimposing_axis(PositioningAxis& axis) {
+  if (&axis == this)
+    throw std::invalid_argument(std::string(name()) + ": an axis cannot be its own superimposing axis");
+  if (!superimposing_axes_) superimposing_axes_ = std::make_unique<SuperimposingAxisTable>();
+  auto& table = *superimposing_axes_;
+  for (std::size_t i = 0; i < table.count; ++i) {
+    if (table.axes[i] == &axis)
+      throw std::invalid_argument(std::string(name()) + ": " + std::string(axis.name()) +
+                                  " is already a possible superimposing axis");
+  }
+  if (table.count == SuperimposingAxisTable::kCapacity)
+    throw std::invalid_argument(std::string(name()) + ": more than " +
+                                std::to_string(SuperimposingAxisTable::kCapacity) +
+                                " possible superimposing axes");
+  table.axes[table.count++] = &axis;
+}
+
+std::span<TechnologyObject* const> PositioningAxis::superimposing_axes() const noexcept {
+  if (!superimposing_axes_) return {};
+  return {superimposing_axes_->axes.data(), superimposing_axes_->count};
+}
+
 void PositioningAxis::abort_superimposed(std::uint16_t error_id, bool fold) noexcept {
   const JobId id = superimposed_.job_id();
   if (id != 0) core_.jobs.set(id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
+  if (superimposed_.job() == SuperimposedMotion::Job::kMotionInAxes)
+    db_.StatusMotionIn.ActualSuperimposingAxis = 0;
   if (fold) {
     superimposed_.fold();
   } else {
@@ -61,10 +171,18 @@ void PositioningAxis::advance_superimposed() noexcept {
   const double v_limit = velocity_limit();
   const double v_base = setpoint_.velocity;
   const JobId id = superimposed_.job_id();
+  if (superimposed_.job() == SuperimposedMotion::Job::kMotionInAxes) {
+    // The superimposing axis ran first in this cycle (Runtime orders by superimposing_axes()): its setpoint
+    // of this cycle is the superimposition, without a cycle offset (seed 004 §6.14.3.2).
+    const auto index = db_.StatusMotionIn.ActualSuperimposingAxis;
+    superimposed_.follow(
+        static_cast<const PositioningAxis*>(superimposing_axes_->axes[index - 1])->setpoint_);
+  }
   if (superimposed_.advance(core_.ipo_cycle_s, limited ? v_limit - v_base : inf,
-                            limited ? v_limit + v_base : inf) &&
-      id != 0) {
-    core_.jobs.set(id, JobState::kDone);  // MoveSuperimposed: the distance is travelled; Halt: standing
+                            limited ? v_limit + v_base : inf)) {
+    // MoveSuperimposed: the distance is travelled; Halt: standing (id 0: the braking after a MotionIn
+    // setpoint that was not a number).
+    if (id != 0) core_.jobs.set(id, JobState::kDone);
     superimposed_.end_job();
   }
 }

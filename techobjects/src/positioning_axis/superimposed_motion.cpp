@@ -56,7 +56,32 @@ void SuperimposedMotion::replan(double velocity_limit) noexcept {
   planned_ = true;
 }
 
+void SuperimposedMotion::start_motion_in(JobId id, Job kind) noexcept {
+  id_ = id;
+  job_ = kind;
+  planned_ = false;
+  // Until the first setpoint: the present superimposition stays (absolute, as the inputs are).
+  profile_ = MotionState{distance(), state_.velocity, state_.acceleration};
+}
+
+void SuperimposedMotion::follow(const MotionState& superimposition) noexcept {
+  // state_ counts from the last fold(); the input is the whole superimposition (decision U9).
+  state_ = MotionState{superimposition.position - folded_distance_, superimposition.velocity,
+                       superimposition.acceleration};
+}
+
+void SuperimposedMotion::end_motion_in() noexcept {
+  state_.velocity = 0.0;
+  state_.acceleration = 0.0;
+  end_job();
+}
+
 bool SuperimposedMotion::advance(double dt, double headroom_positive, double headroom_negative) noexcept {
+  if (job_ == Job::kMotionIn) {
+    if (const auto* input = std::get_if<MotionState>(&profile_)) follow(*input);
+    return false;
+  }
+  if (job_ == Job::kMotionInAxes) return false;  // follow() took this cycle's setpoint
   if (job_ == Job::kMove) {
     const double direction = target_ - state_.position;
     const double headroom = direction >= 0.0 ? headroom_positive : headroom_negative;

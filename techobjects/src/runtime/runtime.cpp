@@ -69,8 +69,9 @@ void Runtime::start() {
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       if (objects_[i].get() == o) return i;
     }
-    throw std::logic_error("start: " + std::string(o != nullptr ? o->name() : "(null)") +
-                           " is a leading value of another technology object but not in this runtime");
+    throw std::logic_error(
+        "start: " + std::string(o != nullptr ? o->name() : "(null)") +
+        " is a leading value or superimposing axis of another technology object but not in this runtime");
   };
   std::vector<std::size_t> path;
   const auto visit = [&](auto&& self, std::size_t i) -> void {
@@ -80,13 +81,15 @@ void Runtime::start() {
       const auto from = std::find(path.begin(), path.end(), i);
       for (auto it = from; it != path.end(); ++it)
         chain += std::string(objects_[*it]->name()) + " -> ";
-      throw std::logic_error("start: the leading-value interconnections form a cycle: " + chain +
-                             std::string(objects_[i]->name()) + " (spec 07 §1.2)");
+      throw std::logic_error("start: the leading-value / superimposing-axis interconnections form a cycle: " +
+                             chain + std::string(objects_[i]->name()) + " (spec 07 §1.2)");
     }
     marks[i] = Mark::kVisiting;
     path.push_back(i);
     for (TechnologyObject* leader : objects_[i]->leaders())
       self(self, index_of(leader));
+    for (TechnologyObject* superimposing : objects_[i]->superimposing_axes())
+      self(self, index_of(superimposing));
     path.pop_back();
     marks[i] = Mark::kDone;
     order.push_back(objects_[i].get());

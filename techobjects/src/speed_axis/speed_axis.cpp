@@ -80,7 +80,9 @@ std::array<RunningJob, 2> SpeedAxis::running_jobs(std::size_t& n) const noexcept
   std::array<RunningJob, 2> running{};
   n = 0;
   if (motion_.id != 0) {
-    running[n++] = motion_.kind == JobKind::kHalt ? RunningJob::kHaltAll : RunningJob::kBaseMotionActive;
+    running[n++] = motion_.kind == JobKind::kHalt               ? RunningJob::kHaltAll
+                   : motion_.kind == JobKind::kMotionInVelocity ? RunningJob::kMotionIn  // C8
+                                                                : RunningJob::kBaseMotionActive;
   }
   if (core_.stop_running()) running[n++] = RunningJob::kStop;
   return running;
@@ -413,6 +415,9 @@ void SpeedAxis::generate_setpoint() noexcept {
       setpoint_ = profile_.at(profile_.duration() + 1.0);  // exact end state
       generator_active_ = false;
     }
+  } else if (motion_.kind == JobKind::kMotionInVelocity) {
+    // The inputs of the last call, as given (spec 03 §4.17.1: no profile, no dynamic limits).
+    setpoint_ = MotionState{0.0, motion_.command_velocity, motion_.planned_target};
   }
   const bool settled = !generator_active_;
   const bool at_zero = std::fabs(setpoint_.velocity) < kStandstillEpsilon;
@@ -448,11 +453,19 @@ void SpeedAxis::update_status() noexcept {
   db_.StatusTorqueData.CommandAdditiveTorqueActive = core_.torque_data.additive_active() ? 1 : 0;
   db_.StatusTorqueData.CommandTorqueRangeActive = core_.torque_data.range_active() ? 1 : 0;
   // SA: Done = motion finished and setpoint velocity 0 (spec 04 §8 rule 2).
-  assign(sw, StatusWordBit::kDone, !generator_active_ && std::fabs(setpoint_.velocity) < kStandstillEpsilon);
+  // A running MotionIn job is not finished even at velocity 0.
+  assign(sw, StatusWordBit::kDone,
+         !generator_active_ && motion_.kind != JobKind::kMotionInVelocity &&
+             std::fabs(setpoint_.velocity) < kStandstillEpsilon);
   assign(sw, StatusWordBit::kJogCommand, motion_.kind == JobKind::kJog);
   assign(sw, StatusWordBit::kVelocityCommand, motion_.kind == JobKind::kMoveVelocity);
+  // S: StatusMotionIn.FunctionState instead of StatusWord.X31 (spec 04 §4.8, §5.1).
+  db_.StatusMotionIn.FunctionState = static_cast<std::int32_t>(motion_.kind == JobKind::kMotionInVelocity
+                                                                   ? MotionInFunctionState::kMotionInVelocity
+                                                                   : MotionInFunctionState::kNone);
   assign(sw, StatusWordBit::kConstantVelocity,
-         enabled && !generator_active_ && std::fabs(setpoint_.velocity) >= kStandstillEpsilon);
+         enabled && !generator_active_ && std::fabs(setpoint_.velocity) >= kStandstillEpsilon &&
+             std::fabs(setpoint_.acceleration) < 1e-9);
   assign(sw, StatusWordBit::kAccelerating, setpoint_.acceleration * setpoint_.velocity > 0.0);
   assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
   db_.StatusWord = sw;

@@ -22,6 +22,7 @@
 #include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
 #include "profile_motion_in_fixture.hpp"
+#include "tomc/instructions/mc_move_velocity.hpp"
 
 namespace {
 
@@ -547,6 +548,78 @@ TEST(PositioningAllocation, PositionProfileAndMotionInRunWithoutAllocating) {
   EXPECT_GT(on_profile, 0);
   EXPECT_GT(motion_in_cycles, 0);
   EXPECT_GT(replaced, 0);
+}
+
+// The superimposed MotionIn jobs (issue 18) allocate nothing: two virtual axes, TO_2 a possible
+// superimposing axis of TO_1. In 2,000-cycle phases: TO_1's base velocity changes while MotionInSuperimposed
+// feeds a sine, which MC_MoveSuperimposed then replaces and MC_HaltSuperimposed stops; then TO_2 jogs back
+// and forth while MotionInSuperimposedAxes adds it to TO_1, and a base job aborts that.
+TEST(PositioningAllocation, SuperimposedMotionInRunsWithoutAllocating) {
+  techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
+  auto data = tomc::testing::linear_axis_data();
+  data.VirtualAxis.Mode = techobjects::kModeOn;
+  auto& to1 = runtime.emplace<techobjects::PositioningAxis>("TO_1", nullptr, data);
+  auto& to2 = runtime.emplace<techobjects::PositioningAxis>("TO_2", nullptr, data);
+  to1.add_possible_superimposing_axis(to2);
+  instructions::MC_Power<techobjects::PositioningAxis> power1, power2;
+  instructions::MC_MoveVelocity<techobjects::PositioningAxis> base, jog2;
+  instructions::MC_MoveSuperimposed<techobjects::PositioningAxis> move_sup;
+  instructions::MC_HaltSuperimposed<techobjects::PositioningAxis> halt_sup;
+  instructions::MC_MotionInSuperimposed<techobjects::PositioningAxis> feed;
+  instructions::MC_MotionInSuperimposedAxes<techobjects::PositioningAxis> axes;
+  axes.SuperimposingAxis = &to2;
+  runtime.set_user_program([&](techobjects::Runtime&) {
+    power1(to1);
+    power2(to2);
+    base(to1);
+    jog2(to2);
+    move_sup(to1);
+    halt_sup(to1);
+    feed(to1);
+    axes(to1);
+  });
+  runtime.start();
+  power1.Enable = power2.Enable = true;
+  for (int i = 0; i < 10; ++i)
+    runtime.step();
+  ASSERT_TRUE(power1.Status && power2.Status);
+  constexpr int kPhase = 2000;
+  long fed = 0, followed = 0, replaced = 0, halted = 0;
+  double sup = 0.0;
+  const auto before = tomc::testing::allocation_count();
+  for (int cycle = 0; cycle < kCycles / 4; ++cycle) {
+    const int t = cycle % kPhase;
+    const bool first = (cycle / kPhase) % 2 == 0;
+    base.Execute = t % 500 < 5;
+    base.Velocity = 20.0 + 10.0 * ((t / 500) % 3);
+    if (first) {
+      feed.Enable = t < 1000;
+      sup += 0.001 * 5.0 * std::cos(t * 0.005);
+      feed.Distance = sup;
+      feed.VelocityDiff = 5.0 * std::cos(t * 0.005);
+      move_sup.Distance = 2.0;
+      move_sup.Execute = t >= 800 && t < 805;
+      halt_sup.Execute = t >= 1200 && t < 1205;
+      axes.Enable = false;
+    } else {
+      feed.Enable = false;
+      move_sup.Execute = halt_sup.Execute = false;
+      axes.Enable = t < 1800;
+      jog2.Velocity = t < 1000 ? 15.0 : -15.0;
+      jog2.Execute = t % 1000 < 5;
+    }
+    runtime.step();
+    if (feed.Busy) ++fed;
+    if (axes.Busy) ++followed;
+    if (feed.CommandAborted || axes.CommandAborted) ++replaced;
+    if (halt_sup.Done) ++halted;
+  }
+  EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
+  // The loop reached what it is about.
+  EXPECT_GT(fed, 0);
+  EXPECT_GT(followed, 0);
+  EXPECT_GT(replaced, 0);
+  EXPECT_GT(halted, 0);
 }
 
 }  // namespace

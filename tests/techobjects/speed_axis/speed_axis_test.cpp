@@ -10,7 +10,10 @@
 
 #include <cmath>
 
+#include <limits>
+
 #include "speed_axis_fixture.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 
 namespace {
@@ -738,11 +741,86 @@ TEST(SpeedAxis, FollowSetpointReaction) {
   EXPECT_FALSE(m.axis->inject_alarm(999, 0, techobjects::AlarmReaction::kNone));
 }
 
+// MC_MotionInVelocity on the speed axis (spec 03 §4.17.1 "Speed, Positioning, Synchronous", §8.2 T22,
+// spec 02 §8): the velocity written in cycle k is the setpoint of cycle k+1 without a ramp and without the
+// dynamic limits (4000 1/min > MaxVelocity 3000 is taken as given); StatusMotionIn.FunctionState 1 while it
+// runs; MC_MoveVelocity replaces it (§9.19.1 R4 x C8 = A) from its velocity with the job's acceleration; the
+// falling edge makes velocity and acceleration 0; a NaN ends it with 16#8186 and the axis brakes with the
+// defaults.
+TEST(SpeedAxisMotionIn, VelocityActsDirectlyAndEndsAsTheManualSays) {
+  SpeedAxisMachine m;
+  instructions::MC_MotionInVelocity<techobjects::SpeedAxis> feed;
+  m.user = [&] { feed(*m.axis); };
+  ASSERT_GT(m.enable(), 0);
+  feed.Velocity = 600.0;
+  feed.Enable = true;
+  m.run(1);  // the rising edge
+  EXPECT_TRUE(feed.Busy);
+  EXPECT_FALSE(feed.Error);
+  m.run(1);
+  EXPECT_DOUBLE_EQ(m.axis->data().Velocity, 600.0);
+  EXPECT_EQ(m.axis->data().StatusMotionIn.FunctionState, 1);
+  EXPECT_FALSE(techobjects::test(m.axis->data().StatusWord, techobjects::StatusWordBit::kDone));
+  feed.Velocity = 4000.0;
+  feed.Acceleration = 10.0;
+  m.run(1);
+  EXPECT_DOUBLE_EQ(m.axis->data().Velocity, 600.0);
+  m.run(1);
+  EXPECT_DOUBLE_EQ(m.axis->data().Velocity, 4000.0);  // not limited to MaxVelocity 3000
+  EXPECT_DOUBLE_EQ(m.axis->data().Acceleration, 10.0);
+  // The falling edge: the setpoints become 0.0.
+  feed.Enable = false;
+  m.run(1);
+  EXPECT_FALSE(feed.Busy);
+  m.run(1);
+  EXPECT_EQ(m.axis->data().Velocity, 0.0);
+  EXPECT_EQ(m.axis->data().StatusMotionIn.FunctionState, 0);
+  // Replaced by MC_MoveVelocity (1500 1/min at 50/s²) from 600 1/min.
+  feed.Velocity = 600.0;
+  feed.Acceleration = 0.0;
+  feed.Enable = true;
+  m.run(3);
+  ASSERT_DOUBLE_EQ(m.axis->data().Velocity, 600.0);
+  m.move.Velocity = 1500.0;
+  m.move.Acceleration = 50.0;
+  m.move.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(m.move.Busy);
+  EXPECT_TRUE(feed.CommandAborted);
+  m.run(1);
+  // From 600 without a step: at most one cycle of 50/s² (3 1/min), less while the jerk (MaxJerk) builds it
+  // up.
+  EXPECT_GT(m.axis->data().Velocity, 600.0);
+  EXPECT_LE(m.axis->data().Velocity, 603.0 + 1e-9);
+  EXPECT_EQ(m.axis->data().StatusMotionIn.FunctionState, 0);
+  // A NaN while running: the job ends with Error 16#8186 and the axis brakes.
+  m.move.Execute = false;
+  feed.Enable = false;
+  m.run(1);
+  feed.Velocity = 300.0;
+  feed.Enable = true;
+  m.run(2);
+  ASSERT_TRUE(feed.Busy);
+  feed.Velocity = std::numeric_limits<double>::quiet_NaN();
+  m.run(1);
+  EXPECT_TRUE(feed.Error);
+  EXPECT_EQ(feed.ErrorID, eid::kInvalidMotionInSetpoint);
+  double last = m.axis->data().Velocity;
+  const int cycles = m.run_until(
+      [&] {
+        EXPECT_LE(m.axis->data().Velocity, last + 1e-9);
+        last = m.axis->data().Velocity;
+        return last == 0.0;
+      },
+      1000);
+  EXPECT_GT(cycles, 90);  // 300 1/min at the default 50/s²: 100 cycles
+}
+
 }  // namespace
 
-// spec 03 §4.14, decision K8: STW2 bit 8 is one of the user's MC_SetAxisSTW bits and also the "travel to fixed
-// stop" bit MC_TorqueLimiting sets. The one writer applies the torque limit's level only when it changes, so a
-// bit the user set stays in the telegram cycle after cycle while no torque limiting runs.
+// spec 03 §4.14, decision K8: STW2 bit 8 is one of the user's MC_SetAxisSTW bits and also the "travel to
+// fixed stop" bit MC_TorqueLimiting sets. The one writer applies the torque limit's level only when it
+// changes, so a bit the user set stays in the telegram cycle after cycle while no torque limiting runs.
 TEST(SpeedAxis, UsersStw2Bit8SurvivesTheServoCommand) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);

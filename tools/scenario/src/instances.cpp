@@ -28,6 +28,7 @@
 #include "tomc/instructions/mc_position_profile.hpp"
 #include "tomc/instructions/mc_power.hpp"
 #include "tomc/instructions/mc_reset.hpp"
+#include "tomc/instructions/mc_save_absolute_encoder_data.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
 #include "tomc/instructions/mc_stop.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"
@@ -119,7 +120,8 @@ constexpr Parameter<FB> out(std::string_view name, T FB::*member) {
 template <typename FB, std::size_t N>
 class InstanceOf final : public Instance {
  public:
-  explicit InstanceOf(const std::array<Parameter<FB>, N>& table) : table_(table) {
+  explicit InstanceOf(const std::array<Parameter<FB>, N>& table, techobjects::RetentiveStore* store = nullptr)
+      : table_(table), store_(store) {
     for (std::size_t i = 0; i < N; ++i)
       infos_[i] = table_[i].info;
   }
@@ -162,12 +164,18 @@ class InstanceOf final : public Instance {
       fb_.*(*member) = profile;
   }
   // The loader creates an instance only for a TO of the instruction's axis type.
-  void call(techobjects::TechnologyObject& object) noexcept override {
-    fb_(static_cast<typename axis_of<FB>::type&>(object));
+  void call(techobjects::TechnologyObject* object) noexcept override {
+    using Target = typename axis_of<FB>::type;
+    if constexpr (std::is_same_v<Target, techobjects::RetentiveStore>) {
+      fb_(*store_);
+    } else {
+      fb_(static_cast<Target&>(*object));
+    }
   }
 
  private:
   const std::array<Parameter<FB>, N>& table_;
+  techobjects::RetentiveStore* store_;  // MC_SaveAbsoluteEncoderData only
   std::array<ParameterInfo, N> infos_{};
   FB fb_{};
 };
@@ -701,13 +709,49 @@ const auto kMotionInPosition = std::to_array<Parameter<MotionInPosition<Axis>>>(
     out("ErrorID", &MotionInPosition<Axis>::ErrorID),
 });
 
+template <typename Axis>
+using MotionInSuperimposed = instructions::MC_MotionInSuperimposed<Axis>;
+template <typename Axis>
+const auto kMotionInSuperimposed = std::to_array<Parameter<MotionInSuperimposed<Axis>>>({
+    in("Enable", &MotionInSuperimposed<Axis>::Enable),
+    in("Distance", &MotionInSuperimposed<Axis>::Distance),
+    in("VelocityDiff", &MotionInSuperimposed<Axis>::VelocityDiff),
+    in("AccelerationDiff", &MotionInSuperimposed<Axis>::AccelerationDiff),
+    out("Busy", &MotionInSuperimposed<Axis>::Busy),
+    out("CommandAborted", &MotionInSuperimposed<Axis>::CommandAborted),
+    out("Error", &MotionInSuperimposed<Axis>::Error),
+    out("ErrorID", &MotionInSuperimposed<Axis>::ErrorID),
+});
+
+template <typename Axis>
+using MotionInSuperimposedAxes = instructions::MC_MotionInSuperimposedAxes<Axis>;
+template <typename Axis>
+const auto kMotionInSuperimposedAxes = std::to_array<Parameter<MotionInSuperimposedAxes<Axis>>>({
+    in("SuperimposingAxis", &MotionInSuperimposedAxes<Axis>::SuperimposingAxis),
+    in("Enable", &MotionInSuperimposedAxes<Axis>::Enable),
+    out("Busy", &MotionInSuperimposedAxes<Axis>::Busy),
+    out("CommandAborted", &MotionInSuperimposedAxes<Axis>::CommandAborted),
+    out("Error", &MotionInSuperimposedAxes<Axis>::Error),
+    out("ErrorID", &MotionInSuperimposedAxes<Axis>::ErrorID),
+});
+
+using SaveAbsoluteEncoderData = instructions::MC_SaveAbsoluteEncoderData<techobjects::RetentiveStore>;
+const auto kSaveAbsoluteEncoderDataTable = std::to_array<Parameter<SaveAbsoluteEncoderData>>({
+    in("Execute", &SaveAbsoluteEncoderData::Execute),
+    out("Done", &SaveAbsoluteEncoderData::Done),
+    out("Busy", &SaveAbsoluteEncoderData::Busy),
+    out("CommandAborted", &SaveAbsoluteEncoderData::CommandAborted),
+    out("Error", &SaveAbsoluteEncoderData::Error),
+    out("ErrorID", &SaveAbsoluteEncoderData::ErrorID),
+});
+
 // The instructions each TO type accepts (spec 01 §1.3), in the order of the manual.
-constexpr std::array<std::string_view, 11> kSpeedAxisInstructions{
-    "MC_Power",          "MC_Reset",          "MC_MoveVelocity", "MC_MoveJog",
-    "MC_Halt",           "MC_Stop",           "MC_SetAxisSTW",   "MC_WriteParameter",
-    "MC_TorqueLimiting", "MC_TorqueAdditive", "MC_TorqueRange",
+constexpr std::array<std::string_view, 12> kSpeedAxisInstructions{
+    "MC_Power",          "MC_Reset",       "MC_MoveVelocity",   "MC_MoveJog",          "MC_Halt",
+    "MC_Stop",           "MC_SetAxisSTW",  "MC_WriteParameter", "MC_MotionInVelocity", "MC_TorqueLimiting",
+    "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 19> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -724,6 +768,8 @@ constexpr std::array<std::string_view, 19> kPositioningAxisInstructions{
     "MC_WriteParameter",
     "MC_MotionInVelocity",
     "MC_MotionInPosition",
+    "MC_MotionInSuperimposed",
+    "MC_MotionInSuperimposedAxes",
     "MC_TorqueLimiting",
     "MC_TorqueAdditive",
     "MC_TorqueRange",
@@ -752,16 +798,9 @@ constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", 
                                                            "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
-constexpr std::array<std::string_view, 9> kPlannedInstructions{
-    "MC_CopyCamData",
-    "MC_MeasuringInput",
-    "MC_MeasuringInputCyclic",
-    "MC_AbortMeasuringInput",
-    "MC_OutputCam",
-    "MC_CamTrack",
-    "MC_ReadParameter",
-    "MC_MotionInSuperimposed",
-    "MC_MotionInSuperimposedAxes",
+constexpr std::array<std::string_view, 7> kPlannedInstructions{
+    "MC_CopyCamData", "MC_MeasuringInput", "MC_MeasuringInputCyclic", "MC_AbortMeasuringInput",
+    "MC_OutputCam",   "MC_CamTrack",       "MC_ReadParameter",
 };
 
 }  // namespace
@@ -837,6 +876,7 @@ std::unique_ptr<Instance> make_motion(std::string_view instruction) {
   if (instruction == "MC_TorqueLimiting") return make(kTorqueLimiting<Axis>);
   if (instruction == "MC_TorqueAdditive") return make(kTorqueAdditive<Axis>);
   if (instruction == "MC_TorqueRange") return make(kTorqueRange<Axis>);
+  if (instruction == "MC_MotionInVelocity") return make(kMotionInVelocity<Axis>);
   return nullptr;
 }
 
@@ -849,12 +889,18 @@ std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
   if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
   if (instruction == "MC_Home") return make(kHome<Axis>);
   if (instruction == "MC_PositionProfile") return make(kPositionProfile<Axis>);
-  if (instruction == "MC_MotionInVelocity") return make(kMotionInVelocity<Axis>);
   if (instruction == "MC_MotionInPosition") return make(kMotionInPosition<Axis>);
+  if (instruction == "MC_MotionInSuperimposed") return make(kMotionInSuperimposed<Axis>);
+  if (instruction == "MC_MotionInSuperimposedAxes") return make(kMotionInSuperimposedAxes<Axis>);
   return make_motion<Axis>(instruction);
 }
 
 }  // namespace
+
+std::unique_ptr<Instance> make_save_absolute_encoder_data(techobjects::RetentiveStore& store) {
+  return std::make_unique<InstanceOf<SaveAbsoluteEncoderData, kSaveAbsoluteEncoderDataTable.size()>>(
+      kSaveAbsoluteEncoderDataTable, &store);
+}
 
 std::unique_ptr<Instance> make_instance(std::string_view instruction, TechnologyObjectKind kind) {
   switch (kind) {

@@ -14,6 +14,7 @@
 
 #include "tomc/scenario/machine.hpp"
 #include "tomc/techobjects/motion/time_position_profile.hpp"
+#include "tomc/techobjects/runtime/retentive_store.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/synchronous/leading_value.hpp"
 
@@ -54,8 +55,9 @@ class Instance {
   // A kTimePosition parameter: the profile (kept by the scenario for as long as it runs).
   virtual void set_profile(std::size_t parameter,
                            const techobjects::TimePositionProfile* profile) noexcept = 0;
-  // `object` is of the TO type the instance was made for (make_instance).
-  virtual void call(techobjects::TechnologyObject& object) noexcept = 0;
+  // `object` is of the TO type the instance was made for (make_instance); nullptr for an instruction without
+  // an Axis input (make_save_absolute_encoder_data).
+  virtual void call(techobjects::TechnologyObject* object) noexcept = 0;
 
   std::optional<std::size_t> find(std::string_view name) const noexcept;
 };
@@ -68,5 +70,9 @@ std::span<const std::string_view> instructions_for(TechnologyObjectKind kind) no
 bool is_planned_instruction(std::string_view name) noexcept;
 // nullptr for a name not in instructions_for(kind).
 std::unique_ptr<Instance> make_instance(std::string_view instruction, TechnologyObjectKind kind);
+// MC_SaveAbsoluteEncoderData (spec 03 §4.16): no Axis input; it backs up every TO's absolute-encoder
+// adjustment in the scenario's retentive store ("retain_file").
+inline constexpr std::string_view kSaveAbsoluteEncoderData = "MC_SaveAbsoluteEncoderData";
+std::unique_ptr<Instance> make_save_absolute_encoder_data(techobjects::RetentiveStore& store);
 
 }  // namespace tomc::scenario::detail

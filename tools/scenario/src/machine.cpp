@@ -170,6 +170,44 @@ drives::StepperDriveParameters stepper_actor(const DriveSettings& drive, bool en
   return actor;
 }
 
+// "SuperimposingAxes": ["<axis defined before>", ...]: the possible superimposing axes of a positioning or
+// synchronous axis for MC_MotionInSuperimposedAxes (seed 004 §6.14.3.2, decision U10).
+std::vector<to::PositioningAxis*> load_superimposing_axes(ObjectReader& r,
+                                                          std::span<const MachineObject> existing,
+                                                          Problems& problems) {
+  std::vector<to::PositioningAxis*> out;
+  const Json* v = r.get("SuperimposingAxes");
+  if (v == nullptr) return out;
+  const std::string path = r.path_of("SuperimposingAxes");
+  if (!v->is_array()) {
+    problems.add(path, "expected an array of axis names");
+    return out;
+  }
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    const auto name = detail::read_string((*v)[i], at, problems);
+    if (!name) continue;
+    const auto it = std::find_if(existing.begin(), existing.end(),
+                                 [&](const MachineObject& o) { return o.name == *name; });
+    if (it == existing.end()) {
+      problems.add(at, "'" + *name +
+                           "' is not a technology object defined before this one (a superimposing axis must "
+                           "come first in technology_objects)");
+    } else if (it->built && it->positioning_axis == nullptr) {
+      problems.add(at, "'" + *name + "' is a " + std::string(it->type_name()) +
+                           ", which cannot be a superimposing axis (positioning or synchronous axes only)");
+    } else if (std::find(out.begin(), out.end(), it->positioning_axis) != out.end()) {
+      problems.add(at, "'" + *name + "' is named twice");
+    } else if (out.size() == to::SuperimposingAxisTable::kCapacity) {
+      problems.add(at, "more than " + std::to_string(to::SuperimposingAxisTable::kCapacity) +
+                           " possible superimposing axes");
+    } else if (it->built) {
+      out.push_back(it->positioning_axis);
+    }
+  }
+  return out;
+}
+
 // "LeadingValueInterconnections": [ {"Leader": "<TO defined before>", "Coupling": "Setpoint" | "ActualValue"}
 // ] (spec 07 §1.2, O-15).
 std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader& r,
@@ -387,6 +425,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
   to::PositioningAxisData positioning_data;
   to::ExternalEncoderData encoder_data;
   std::vector<to::LeadingValueInterconnection> interconnections;
+  std::vector<to::PositioningAxis*> superimposing_axes;
   std::unique_ptr<to::CamData> cam_settings;
   detail::CamElements cam_elements;
   DriveSettings drive;
@@ -409,6 +448,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         interconnections = load_interconnections(r, existing, problems);
         [[fallthrough]];
       case TechnologyObjectKind::kPositioningAxis:
+        superimposing_axes = load_superimposing_axes(r, existing, problems);
         if (config != nullptr)
           load_positioning_axis_config(
               *config, r.path_of("config"), positioning_data, problems,
@@ -459,8 +499,15 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
     r.get("config");
     r.get("drive");
     r.get("LeadingValueInterconnections");
+    r.get("SuperimposingAxes");
     for (const char* key : {"Points", "Segments", "MotionLaws", "Interpolate"})
       r.get(key);
+  }
+  if (kind && *kind != TechnologyObjectKind::kSynchronousAxis &&
+      *kind != TechnologyObjectKind::kPositioningAxis && r.has("SuperimposingAxes")) {
+    r.get("SuperimposingAxes");
+    problems.add(r.path_of("SuperimposingAxes"),
+                 "only a positioning or synchronous axis has superimposing axes (seed 004 §6.14.3.2)");
   }
   if (kind && *kind != TechnologyObjectKind::kSynchronousAxis && r.has("LeadingValueInterconnections")) {
     r.get("LeadingValueInterconnections");
@@ -558,6 +605,8 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
           detail::apply_cam_elements(cam_elements, *entry.cam, path, problems);
           break;
       }
+      for (to::PositioningAxis* superimposing : superimposing_axes)
+        entry.positioning_axis->add_possible_superimposing_axis(*superimposing);
       entry.drive = drive_ptr;
       entry.built = true;
     } catch (const std::invalid_argument& e) {

@@ -234,6 +234,7 @@ struct InstanceEntry {
   std::string defined_at;  // JSON path of the first event
   std::size_t axis = 0;
   std::string axis_name;
+  bool cpu_wide = false;         // no Axis input (MC_SaveAbsoluteEncoderData)
   std::unique_ptr<Instance> fb;  // nullptr: unknown instruction (already reported)
 };
 
@@ -415,6 +416,19 @@ void Scenario::Impl::load(const Json& document) {
     }
   }
 
+  // The retentive memory of absolute-encoder adjustments (spec 02 §5.9): restored before the first cycle,
+  // written whenever an adjustment changes (docs/scenarios.md "retain_file"). Before the timeline: its
+  // MC_SaveAbsoluteEncoderData works on it.
+  if (const Json* v = root.get("retain_file")) {
+    if (auto path = detail::read_string(*v, "retain_file", problems)) {
+      if (path->empty()) {
+        problems.add("retain_file", "expected a file name");
+      } else {
+        retain = std::make_unique<to::RetentiveStore>(*path);
+      }
+    }
+  }
+
   if (const Json* v = root.get("timeline")) {
     if (!v->is_array()) {
       problems.add("timeline", "expected an array of events, got " + std::string(detail::type_name(*v)));
@@ -442,18 +456,6 @@ void Scenario::Impl::load(const Json& document) {
           continue;
         }
         if (auto column = resolve(*name, path)) trace.push_back(std::move(*column));
-      }
-    }
-  }
-
-  // The retentive memory of absolute-encoder adjustments (spec 02 §5.9): restored before the first cycle,
-  // written whenever an adjustment changes (docs/scenarios.md "retain_file").
-  if (const Json* v = root.get("retain_file")) {
-    if (auto path = detail::read_string(*v, "retain_file", problems)) {
-      if (path->empty()) {
-        problems.add("retain_file", "expected a file name");
-      } else {
-        retain = std::make_unique<to::RetentiveStore>(*path);
       }
     }
   }
@@ -608,7 +610,27 @@ void Scenario::Impl::load_instance_event(ObjectReader& r, Event& event) {
     return;
   }
   auto index = find_instance(*name);
-  if (!index) {
+  if (!index && instruction && *instruction == detail::kSaveAbsoluteEncoderData) {
+    // No Axis input: it backs up every TO's adjustment in the retentive store (spec 03 §4.16).
+    InstanceEntry entry;
+    entry.name = *name;
+    entry.instruction = *instruction;
+    entry.defined_at = r.path();
+    entry.cpu_wide = true;
+    if (axis) {
+      problems.add(r.path_of("axis"),
+                   *instruction +
+                       " has no Axis input: it backs up the absolute-encoder adjustment of "
+                       "every technology object (spec 03 §4.16)");
+    } else if (!retain) {
+      problems.add(r.path_of("instruction"),
+                   *instruction + " needs \"retain_file\": the retentive store it writes (spec 02 §5.9)");
+    } else {
+      entry.fb = detail::make_save_absolute_encoder_data(*retain);
+    }
+    instances.push_back(std::move(entry));
+    index = instances.size() - 1;
+  } else if (!index) {
     // First mention: it creates the instance, so it must say what and on which axis.
     bool complete = true;
     if (!r.has("instruction")) {
@@ -1151,7 +1173,7 @@ void Scenario::Impl::user_program() noexcept {
   while (next_event < events.size() && events[next_event].cycle == cycle)
     apply(events[next_event++]);
   for (std::size_t i : created)
-    instances[i].fb->call(*objects[instances[i].axis].object);
+    instances[i].fb->call(instances[i].cpu_wide ? nullptr : objects[instances[i].axis].object);
 }
 
 // ---------------------------------------------------------------------------------------------------------

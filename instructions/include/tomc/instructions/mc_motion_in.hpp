@@ -1,12 +1,14 @@
 #pragma once
-// MC_MotionInVelocity and MC_MotionInPosition (spec 03 §4.17, class M of §3.1, §3.3 L4): the rising edge of
-// Enable starts the job, the inputs are the axis' setpoints on every call while Enable = TRUE (no profile, no
-// dynamic limits), the falling edge ends it. No Done output; CommandAborted or Error end the job and stay
+// The MotionIn instructions (spec 03 §4.17, class M of §3.1, §3.3 L4): MC_MotionInVelocity,
+// MC_MotionInPosition, MC_MotionInSuperimposed, MC_MotionInSuperimposedAxes. The rising edge of Enable starts
+// the job, the inputs are the axis' (superimposed) setpoints on every call while Enable = TRUE (no profile,
+// no dynamic limits), the falling edge ends it. No Done output; CommandAborted or Error end the job and stay
 // shown until Enable falls.
 #include <cstdint>
 
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/axis/job_inputs.hpp"
+#include "tomc/techobjects/synchronous/leading_value.hpp"
 
 namespace tomc::instructions {
 
@@ -109,6 +111,54 @@ struct MC_MotionInPosition {
     handshake_.call(axis, Enable, [&](techobjects::JobId running) {
       return axis.motion_in_position(running,
                                      techobjects::MotionInPositionInputs{Position, Velocity, Acceleration});
+    });
+    handshake_.show(*this);
+  }
+
+ private:
+  detail::MotionInHandshake handshake_;
+};
+
+// MC_MotionInSuperimposed (spec 03 §4.17.3): Distance is the absolute superimposition (x = x_base +
+// Distance), VelocityDiff and AccelerationDiff its velocity and acceleration; StatusWord2.X6 while active.
+template <typename Axis>
+struct MC_MotionInSuperimposed {
+  bool Enable = false;
+  double Distance = 0.0;
+  double VelocityDiff = 0.0;
+  double AccelerationDiff = 0.0;
+  bool Busy = false;
+  bool CommandAborted = false;
+  bool Error = false;
+  std::uint16_t ErrorID = 0;
+
+  void operator()(Axis& axis) noexcept {
+    handshake_.call(axis, Enable, [&](techobjects::JobId running) {
+      return axis.motion_in_superimposed(
+          running, techobjects::MotionInSuperimposedInputs{Distance, VelocityDiff, AccelerationDiff});
+    });
+    handshake_.show(*this);
+  }
+
+ private:
+  detail::MotionInHandshake handshake_;
+};
+
+// MC_MotionInSuperimposedAxes (spec 03 §4.17.4): adds the setpoints of SuperimposingAxis — one of Axis'
+// configured possible superimposing axes — to Axis' base motion in the same cycle; StatusWord2.X8 while
+// active. The instance is called with Axis; SuperimposingAxis is an input as in the manual.
+template <typename Axis>
+struct MC_MotionInSuperimposedAxes {
+  const techobjects::LeadingValueSource* SuperimposingAxis = nullptr;
+  bool Enable = false;
+  bool Busy = false;
+  bool CommandAborted = false;
+  bool Error = false;
+  std::uint16_t ErrorID = 0;
+
+  void operator()(Axis& axis) noexcept {
+    handshake_.call(axis, Enable, [&](techobjects::JobId running) {
+      return axis.motion_in_superimposed_axes(running, SuperimposingAxis);
     });
     handshake_.show(*this);
   }

@@ -53,6 +53,8 @@ enum class AxisJobKind : std::uint8_t {
   kMotionInPosition,  // MC_MotionInPosition (spec 03 §4.17.2)
   kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
   kHaltSuperimposed,  // MC_HaltSuperimposed
+  kMotionInSuperimposed,      // MC_MotionInSuperimposed (spec 03 §4.17.3)
+  kMotionInSuperimposedAxes,  // MC_MotionInSuperimposedAxes (spec 03 §4.17.4)
   kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
   kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
   kLeadingValueAdditive,  // MC_LeadingValueAdditive

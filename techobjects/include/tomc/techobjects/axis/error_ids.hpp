@@ -120,6 +120,12 @@ inline constexpr std::uint16_t kInvalidPositionProfileReference =
 inline constexpr std::uint16_t kProfileStartNotReachable = 0x8185;
 // MotionIn (spec 03 §4.17): a setpoint input is NaN or infinite
 inline constexpr std::uint16_t kInvalidMotionInSetpoint = 0x8186;
+// MC_MotionInSuperimposedAxes: SuperimposingAxis is not configured as a possible superimposing axis of Axis
+// (ErrorWord.X16 SuperimposingError, seed 004 §6.14.3.2).
+inline constexpr std::uint16_t kSuperimposingAxisNotConfigured = 0x8190;
+// MC_MotionInSuperimposedAxes: SuperimposingAxis is not enabled, not position-controlled, or homing (spec 03
+// §4.17.4 prerequisites).
+inline constexpr std::uint16_t kSuperimposingAxisNotReady = 0x8191;
 
 std::string_view describe(std::uint16_t error_id) noexcept;
 

@@ -100,6 +100,13 @@ struct MotionInPositionInputs {
   double Velocity = 0.0;
   double Acceleration = 0.0;
 };
+// Inputs of MC_MotionInSuperimposed (spec 03 §4.17.3), taken every cycle while Enable = TRUE: Distance is the
+// absolute value of the superimposition (seed 004 §6.14.3: x_set = x_base + Distance).
+struct MotionInSuperimposedInputs {
+  double Distance = 0.0;
+  double VelocityDiff = 0.0;
+  double AccelerationDiff = 0.0;
+};
 // Inputs of MC_MoveSuperimposed (spec 03 §4.10).
 struct MoveSuperimposedInputs {
   double Distance = 0.0;

@@ -17,7 +17,9 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -46,6 +48,7 @@
 #include "tomc/techobjects/position/position_control.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
 #include "tomc/techobjects/positioning_axis/superimposed_motion.hpp"
+#include "tomc/techobjects/positioning_axis/superimposing_axes.hpp"
 #include "tomc/techobjects/positioning_axis/synchronous_slot.hpp"
 #include "tomc/techobjects/runtime/retained_encoder_data.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
@@ -69,8 +72,17 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
 
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
   std::size_t memory_footprint() const noexcept {
-    return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes();
+    return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes() +
+           (superimposing_axes_ ? sizeof(SuperimposingAxisTable) : 0);
   }
+
+  // ---- configuration before Runtime::start() ----
+  // "Extended parameters > Superimposed axes" (seed 004 §6.14.3.2): `axis` becomes a possible superimposing
+  // axis of this one for MC_MotionInSuperimposedAxes, and runs before it in every cycle (its setpoint is
+  // added without a cycle offset). Throws std::invalid_argument for this axis itself, an axis given twice,
+  // or more than SuperimposingAxisTable::kCapacity axes.
+  void add_possible_superimposing_axis(PositioningAxis& axis);
+  std::span<TechnologyObject* const> superimposing_axes() const noexcept override;
 
   // ---- the data block (data_block_object.hpp), and its digital inputs ----
   AxisDigitalInputs& digital_inputs() noexcept { return inputs_; }
@@ -98,6 +110,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // MC_Interpolator (motion_in.cpp). end_motion_in(): the falling edge of Enable.
   Submission motion_in_velocity(JobId running, const MotionInVelocityInputs& in) noexcept;
   Submission motion_in_position(JobId running, const MotionInPositionInputs& in) noexcept;
+  // 9.17.3, 9.17.4 the superimposed MotionIn jobs, called the same way (positioning_axis_superimposed.cpp):
+  // MotionInSuperimposed's inputs, or the setpoints of `superimposing` (a possible superimposing axis).
+  Submission motion_in_superimposed(JobId running, const MotionInSuperimposedInputs& in) noexcept;
+  Submission motion_in_superimposed_axes(JobId running, const LeadingValueSource* superimposing) noexcept;
   void end_motion_in(JobId running) noexcept;
   // 9.18.3 MC_TorqueLimiting, called on every user-program cycle: Mode 0 limits the drive's torque/force
   // through MOMRED, Mode 1 adds fixed-stop detection (positioning_axis_torque.cpp).
@@ -267,8 +283,14 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     setpoint_.position += s.position;
     setpoint_.velocity += s.velocity;
     setpoint_.acceleration += s.acceleration;
-    // A positioning check that waits for the superimposed motion checks the total position.
-    if (positioning_start_pending_) positioning_target_ = setpoint_.position;
+    // A positioning check that waits for the superimposed motion checks the total position; beside a MotionIn
+    // superimposition, the base position (decision U13).
+    if (positioning_start_pending_) positioning_target_ = positioning_reference();
+  }
+  // The position a finished base job's positioning check holds the actual value to: the total setpoint, or
+  // beside a MotionIn superimposition the base setpoint (decision U13).
+  double positioning_reference() const noexcept {
+    return superimposed_.motion_in() ? base_setpoint().position : setpoint_.position;
   }
   void advance_superimposed() noexcept;
   void settle_superimposed() noexcept;  // both motions finished: the superimposed part joins the base
@@ -386,7 +408,6 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   double limit_stop_position_ = 0.0;
   double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
   double last_actual_velocity_ = 0.0;
-  double last_setpoint_acceleration_ = 0.0;
 
   // homing
   ActiveHomingJob homing_{};
@@ -423,7 +444,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool drive_has_momred_ = false;        // the drive telegram carries MOMRED (resolved at construction)
   bool drive_has_meldw_ = false;         // ... and MELDW
   bool possible_leading_value_ = false;  // interconnected as a leading value of a synchronous axis
+  bool acceleration_was_zero_ = true;    // the setpoint's acceleration in the last cycle (ConstantVelocity)
+  bool superimposing_error_ = false;     // ErrorWord.X16: a superimposing axis was not a possible one
+  bool positioning_on_base_ = false;     // the positioning check runs on actual - superimposed (U13)
   SynchronousSlot* synchronous_ = nullptr;
+  std::unique_ptr<SuperimposingAxisTable> superimposing_axes_;  // configured only when used
 };
 
 }  // namespace tomc::techobjects

@@ -9,6 +9,10 @@
 // the velocity limit, v_sup ∈ [−(v_limit + v_base), v_limit − v_base], and at most VelocityDiff. The profile
 // is replanned (from the present superimposed state, with the job's jerk) whenever that headroom falls below
 // the planned velocity or rises again (decision U4).
+//
+// MC_MotionInSuperimposed and MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4, seed 004 §6.14.3) set the
+// superimposed part directly: no profile, no limits; the distance they give is the absolute value of the
+// superimposition, x_set = x_base + Distance, so SuperimposedDistance shows it (decision U9).
 #include <cstdint>
 #include <variant>
 
@@ -19,7 +23,9 @@ namespace tomc::techobjects {
 
 class SuperimposedMotion {
  public:
-  enum class Job : std::uint8_t { kNone, kMove, kHalt };
+  // kMotionIn: MC_MotionInSuperimposed (the application's setpoints, set_input()); kMotionInAxes:
+  // MC_MotionInSuperimposedAxes (another axis' setpoints, follow()).
+  enum class Job : std::uint8_t { kNone, kMove, kHalt, kMotionIn, kMotionInAxes };
 
   // The superimposed part of the setpoint: position = distance since the last fold().
   const MotionState& state() const noexcept { return state_; }
@@ -40,6 +46,18 @@ class SuperimposedMotion {
   void move(JobId id, double distance, const ProfileLimits& limits) noexcept;
   // MC_HaltSuperimposed: brakes the superimposed velocity to 0 (AbortAcceleration: from a = 0 at once).
   void halt(JobId id, const ProfileLimits& limits, bool abort_acceleration) noexcept;
+  // MotionIn (kMotionIn / kMotionInAxes): the job starts from the present superimposed state, which stays
+  // until the first setpoint arrives. A profile still running (a replaced move or halt) ends here.
+  void start_motion_in(JobId id, Job kind) noexcept;
+  // MC_MotionInSuperimposed's inputs of the last call: taken over by the next advance().
+  void set_input(const MotionState& superimposition) noexcept { profile_ = superimposition; }
+  // MC_MotionInSuperimposedAxes: the superimposing axis' setpoint of this cycle, taken over at once.
+  void follow(const MotionState& superimposition) noexcept;
+  // The falling edge of Enable: velocity and acceleration become 0, the superimposed position is kept
+  // (spec 03 §4.17.3 Enable). The job ends (end_job()).
+  void end_motion_in() noexcept;
+  bool motion_in() const noexcept { return job_ == Job::kMotionIn || job_ == Job::kMotionInAxes; }
+
   // One interpolator cycle; `headroom_positive`/`headroom_negative` are the velocities the base motion
   // leaves in each direction (+inf: no limit, e.g. a following axis, spec 01 §8.14). Returns true in the
   // cycle the job's motion is complete (the job itself is ended by the caller: end_job()).
@@ -60,7 +78,9 @@ class SuperimposedMotion {
  private:
   void replan(double velocity_limit) noexcept;
 
-  std::variant<VelocityProfile, PositionProfile> profile_;
+  // The source of the superimposed part: a profile (kMove, kHalt), or MC_MotionInSuperimposed's inputs of the
+  // last call (kMotionIn: the absolute superimposition; no profile runs then, so they take no extra bytes).
+  std::variant<VelocityProfile, PositionProfile, MotionState> profile_;
   MotionState state_{};
   ProfileLimits limits_{};  // the job's: velocity = VelocityDiff
   double target_ = 0.0;     // kMove: the superimposed position to reach

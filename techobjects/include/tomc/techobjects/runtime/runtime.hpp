@@ -61,6 +61,9 @@ class TechnologyObject {
   // The TOs whose values this one reads in its cycle (a synchronous axis: its possible leading values). The
   // runtime evaluates them first (spec 07 §6.1); a cycle in this graph is a configuration error.
   virtual std::span<TechnologyObject* const> leaders() const noexcept { return {}; }
+  // The same for the axes whose setpoints an axis may add to its own without a cycle offset (its possible
+  // superimposing axes, MC_MotionInSuperimposedAxes, seed 004 §6.14.3.2).
+  virtual std::span<TechnologyObject* const> superimposing_axes() const noexcept { return {}; }
   // Called once when the object is added to a runtime (set-up; may allocate): attach the alarm list to the
   // runtime's alarm log, hand the start values to its load memory.
   virtual void attach(RuntimeServices& services) { (void)services; }
@@ -76,8 +79,9 @@ class Runtime {
   Runtime& operator=(const Runtime&) = delete;
 
   // ---- set-up (before start(); may allocate and throw std::logic_error) ----
-  // start() orders the TOs so that every leader runs before its followers (TechnologyObject::leaders()) and
-  // throws std::logic_error naming the TOs of a coupling cycle or a leader that is not in this runtime.
+  // start() orders the TOs so that every leader runs before its followers (TechnologyObject::leaders(), and
+  // every superimposing axis before the axis it superimposes) and throws std::logic_error naming the TOs of
+  // a coupling cycle or a leader that is not in this runtime.
   DeviceIo& add_device(std::unique_ptr<drives::DriveAdapter> adapter);
   void add_technology_object(std::unique_ptr<TechnologyObject> object);
   template <typename T, typename... Args>

@@ -54,6 +54,11 @@ class SpeedAxis final : public AxisObject<SpeedAxisData> {
   // 9.15 MC_WriteParameter: 1010/1011/1012 communication times (s, after restart), 1020
   // Actor.RemoveEnableReaction (immediately). 1000 belongs to positioning axes.
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
+  // 9.17.1 MC_MotionInVelocity (speed_axis_motion_in.cpp), called on every user-program cycle while Enable =
+  // TRUE: the Velocity (and Acceleration) act directly in the next MC_Interpolator; end_motion_in() is the
+  // falling edge. PositionControlled does not apply to a speed axis.
+  Submission motion_in_velocity(JobId running, const MotionInVelocityInputs& in) noexcept;
+  void end_motion_in(JobId running) noexcept;
   // 9.18.3 MC_TorqueLimiting: Mode 0 torque limiting through MOMRED (telegrams 10x); fixed-stop detection
   // (Mode 1) is for positioning and synchronous axes only.
   TorqueLimitingState torque_limiting(const TorqueLimitingInputs& in) noexcept;
@@ -63,12 +68,12 @@ class SpeedAxis final : public AxisObject<SpeedAxisData> {
 
  private:
   using JobKind = AxisJobKind;
-  struct Motion {  // the running base motion (MoveVelocity, Jog, Halt)
+  struct Motion {  // the running base motion (MoveVelocity, Jog, Halt, MotionInVelocity)
     JobId id = 0;
     JobKind kind = JobKind::kNone;
     ProfileLimits limits{};       // resolved, in revolutions/s, /s², /s³
-    double command_velocity = 0;  // before override (rev/s, signed); Halt: 0
-    double planned_target = 0;    // the target the profile was planned for
+    double command_velocity = 0;  // before override (rev/s, signed); Halt: 0; MotionIn: Velocity
+    double planned_target = 0;    // the target the profile was planned for; MotionIn: Acceleration
     bool jog_stopping = false;
     bool jog_error = false;
   };
