@@ -241,8 +241,13 @@ void Diagnostics::publish(Object& object, std::uint64_t cycle) noexcept {
   s.revision = view.revision();
   object.actor.read(s.actor);
   const auto table = view.variables();
-  for (std::size_t i = 0; i < table.size(); ++i)
-    s.values[i] = table[i].read_fn(view.source_of(table[i]));
+  // ObjectView::source_of() without its virtual calls per row (a positioning axis has ~610 rows).
+  const void* data = view.data_block();
+  const void* extension = view.extension_block();
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const to::VariableInfo& row = table[i];
+    s.values[i] = row.read_fn(row.owner == to::TechnologyObjectType::kSynchronousAxis ? extension : data);
+  }
   for (std::size_t i = 0; i < s.words.size(); ++i)
     s.words[i] = view.telegram_word(i);
   s.alarm_count = 0;

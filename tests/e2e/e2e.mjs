@@ -192,10 +192,13 @@ const cutCam = {  // examples/demo_machine.json: y = 3.6·x + 1e-5·x²·(100 �
   ddy: (x) => 1e-5 * (12 * x * x - 1200 * x + 20000),
 };
 async function shownText(page, item) { return page.locator(`[data-item="${item}"] .value`).textContent(); }
+async function selectObject(page, name, type) {
+  await page.click(`button.object[data-object="${name}"]`);
+  await until(name + ' selected', async () => (await page.locator('#object-title').textContent()) === `${name} (${type})`);
+}
 
 async function synchronousAxisView(page, base, token) {
-  await page.click('button.object[data-object="Knife"]');
-  await until('the knife selected', async () => (await page.locator('#object-title').textContent()) === 'Knife (TO_SynchronousAxis)');
+  await selectObject(page, 'Knife', 'TO_SynchronousAxis');
   await until('the knife synchronous and camming (spec 07 §1.9)', async () =>
     (await ledOn(page, 'Synchronous operation/Synchronous (StatusWord.X22)')) &&
     (await ledOn(page, 'Synchronous operation/Camming active')) && !(await ledOn(page, 'Synchronous operation/Gearing active')), 15000);
@@ -242,8 +245,7 @@ async function synchronousAxisView(page, base, token) {
 }
 
 async function camPlot(page, base) {
-  await page.click('button.object[data-object="CutCam"]');
-  await until('the cam selected', async () => (await page.locator('#object-title').textContent()) === 'CutCam (TO_Cam)');
+  await selectObject(page, 'CutCam', 'TO_Cam');
   check(await page.locator('#tabs button[data-tab="telegram"]').isHidden(), 'a cam has no telegram page');
   await page.click('#tabs button[data-tab="cam"]');
   await page.locator('#cam-plot[data-samples="501"]').waitFor({ timeout: 15000 });
@@ -275,8 +277,7 @@ async function camPlot(page, base) {
 }
 
 async function analogAxis(page, base) {
-  await page.click('button.object[data-object="Feeder"]');
-  await until('the feeder selected', async () => (await page.locator('#object-title').textContent()) === 'Feeder (TO_PositioningAxis)');
+  await selectObject(page, 'Feeder', 'TO_PositioningAxis');
   check(await page.locator('#tabs button[data-tab="telegram"]').isHidden(), 'no telegram words for an analog axis');
   await page.click('#tabs button[data-tab="actor"]');
   const cell = (label) => page.locator(`[data-actor="${label}"]`).textContent();
