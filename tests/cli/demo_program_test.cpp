@@ -12,6 +12,7 @@
 #include "demo_program.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/machine.hpp"
+#include "tomc/techobjects/cam/cam.hpp"
 
 namespace {
 
@@ -203,6 +204,57 @@ TEST(DemoProgram, BuiltInMachineRunsAnalogAndStepperAxes) {
   EXPECT_EQ(feeder.stepper_drive->hardware().lost_steps(), 0u);
   for (const auto& o : objects)
     EXPECT_TRUE(o.alarms().alarms().empty()) << o.name << " " << o.alarms().alarms().front().number;
+}
+
+}  // namespace
+
+namespace {
+
+// Decision W23: the demo's camming program powers a synchronous axis, sets it to 0 and cams it with MC_CamIn
+// (direct synchronous setting) to its first leading value; it then follows the cam (spec 07 §3.3).
+TEST(DemoProgram, SynchronousAxisCamsToItsLeader) {
+  using namespace tomc;
+  techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
+  auto virtual_axis = [] {
+    techobjects::PositioningAxisData d;
+    d.VirtualAxis.Mode = techobjects::kModeOn;
+    d.DynamicLimits.MaxJerk = 0.0;
+    return d;
+  }();
+  auto owned_leader = std::make_unique<techobjects::PositioningAxis>("L", nullptr, virtual_axis);
+  techobjects::PositioningAxis* leader = owned_leader.get();
+  auto& follower = runtime.emplace<techobjects::SynchronousAxis>(
+      "F", nullptr, virtual_axis,
+      std::vector<techobjects::LeadingValueInterconnection>{
+          {leader, leader, techobjects::LeadingValueCoupling::kSetpoint}});
+  runtime.add_technology_object(std::move(owned_leader));
+  auto& cam = runtime.emplace<techobjects::Cam>("C", techobjects::CamVariant::kCam, 3);
+  techobjects::TO_Cam_Struct_SegmentData s;  // y = 2x on [0, 100]: cyclic appending turns it into a gear 2:1
+  s.xmin = 0.0;
+  s.xmax = 100.0;
+  s.a1 = 2.0;
+  ASSERT_TRUE(cam.write_segment(1, s, true));
+  cli::DemoCammingProgram program(follower, cam, 2);
+  instructions::MC_Power<techobjects::PositioningAxis> power_leader;
+  instructions::MC_MoveVelocity<techobjects::PositioningAxis> move_leader;
+  power_leader.Enable = true;
+  move_leader.Velocity = 10.0;
+  runtime.set_user_program([&](techobjects::Runtime& rt) {
+    power_leader(*leader);
+    move_leader.Execute = power_leader.Status;
+    move_leader(*leader);
+    program(rt.clock());
+  });
+  runtime.start();
+  ASSERT_TRUE(cam.interpolate_cam().accepted());
+  for (int i = 0; i < 2000; ++i)
+    runtime.step();
+  EXPECT_EQ(program.step(), cli::DemoCammingProgram::Step::kCamming);
+  EXPECT_TRUE(techobjects::test(follower.data().StatusWord, techobjects::StatusWordBit::kSynchronous));
+  EXPECT_EQ(follower.synchronized_motion().FunctionState, 3);
+  EXPECT_EQ(follower.synchronized_motion().ActualCam, 3);
+  // Following the cam's slope 2 at the leader's 10 mm/s.
+  EXPECT_NEAR(follower.data().Velocity, 20.0, 1e-6);
 }
 
 }  // namespace
