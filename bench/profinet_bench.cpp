@@ -1,9 +1,11 @@
-// The controller's cyclic PROFINET frame handling per device and cycle (profinet_devices.hpp), for 1, 4 and
-// 16 devices; docs/performance.md "PROFINET frame codecs".
+// The controller's cyclic PROFINET frame handling per device and cycle, for 1, 4 and 16 devices: the bare
+// codecs (profinet_devices.hpp) and the IoController calls of the gateway's cyclic thread
+// (profinet_controllers.hpp); docs/performance.md "PROFINET frame codecs".
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
+#include "profinet_controllers.hpp"
 #include "profinet_devices.hpp"
 
 namespace {
@@ -22,6 +24,18 @@ void BM_ProfinetCyclicFrames(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));  // items: device-cycles
 }
 BENCHMARK(BM_ProfinetCyclicFrames)->Arg(1)->Arg(4)->Arg(16);
+
+void BM_GatewayCyclicControllers(benchmark::State& state) {
+  tomc::bench::ProfinetControllers controllers(static_cast<int>(state.range(0)));
+  if (!controllers.ready()) return state.SkipWithError("the in-memory start-up failed");
+  std::uint64_t now_us = 1'000'000;
+  for (auto _ : state) {
+    now_us += 1000;
+    benchmark::DoNotOptimize(controllers.cycle(now_us));
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));  // items: device-cycles
+}
+BENCHMARK(BM_GatewayCyclicControllers)->Arg(1)->Arg(4)->Arg(16);
 
 }  // namespace
 

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "tomc/diagnostics/api.hpp"
+#include "tomc/diagnostics/synchronous_view.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
+#include "tomc/telegrams/drive_state.hpp"
 #include "tomc/telegrams/word_fields.hpp"
 
 namespace tomc::diagnostics::api {
@@ -123,7 +125,60 @@ std::string_view trace_state(TraceCapture::State s) {
   return to_string(s);
 }
 
+// What the page names instead of numbers on a synchronous axis (issue 19 "Page"): the leading axis of
+// ActualMaster, the functions of FunctionState / WaitingFunctionState, the cam of ActualCam.
+Json synchronous_json(const Diagnostics& diagnostics, const ObjectView& view, const ObjectSnapshot& s) {
+  const auto table = view.variables();
+  auto value = [&](std::string_view path) {
+    const to::VariableInfo* v = to::find_variable(table, path);
+    return v == nullptr ? 0.0 : s.values[static_cast<std::size_t>(v - table.data())];
+  };
+  const auto master = static_cast<std::size_t>(value("StatusSynchronizedMotion.ActualMaster"));
+  const std::vector<std::string> leaders = view.leading_value_names();
+  Json leader = master >= 1 && master <= leaders.size() ? Json(leaders[master - 1]) : Json(nullptr);
+  const auto cam_number = static_cast<std::uint32_t>(value("StatusSynchronizedMotion.ActualCam"));
+  Json cam = nullptr;
+  for (std::size_t i = 0; cam_number != 0 && i < diagnostics.object_count(); ++i) {
+    const to::Cam* c = diagnostics.view(i).cam();
+    if (c != nullptr && c->number() == cam_number) cam = diagnostics.view(i).name();
+  }
+  return Json{
+      {"leader", std::move(leader)},
+      {"function",
+       function_state_name(static_cast<std::int32_t>(value("StatusSynchronizedMotion.FunctionState")))},
+      {"waiting", function_state_name(
+                      static_cast<std::int32_t>(value("StatusSynchronizedMotion.WaitingFunctionState")))},
+      {"cam", std::move(cam)}};
+}
+
+// The terminals of an analog or stepper actor (issue 20), shown instead of telegram words.
+Json actor_json(const ActorSnapshot& a) {
+  Json j{{"kind", to_string(a.kind)},
+         {"enable_output", a.enable_output},
+         {"ready_input", a.ready_input},
+         {"counter", a.counter},
+         {"measured_speed_rpm", number(a.measured_speed_rpm)},
+         {"drive_state", tg::to_string(static_cast<tg::DriveState>(a.drive_state))},
+         {"fault", a.fault},
+         {"encoder_fault", a.encoder_fault}};
+  if (a.kind == ActorKind::kAnalog) {
+    j["output_percent"] = number(a.output_percent);
+    j["output_volts"] = number(a.output_volts);
+    j["output_code"] = a.output_code;
+  } else {
+    j["pulse_frequency_hz"] = number(a.pulse_frequency_hz);
+  }
+  return j;
+}
+
 }  // namespace
+
+Json cam_plot(const CamPlot& plot) {
+  return Json{{"start", plot.start},       {"end", plot.end},
+              {"revision", plot.revision}, {"samples", plot.leading.size()},
+              {"leading", plot.leading},   {"position", plot.position},
+              {"velocity", plot.velocity}, {"acceleration", plot.acceleration}};
+}
 
 Json describe_objects(const Diagnostics& diagnostics) {
   Json objects = Json::array();
@@ -184,7 +239,12 @@ Json describe_objects(const Diagnostics& diagnostics) {
                {"acceleration", units.acceleration},
                {"jerk", units.jerk}}},
              {"reference_speed", diagnostics.reference_speed(i)},
-             {"variable_count", view.variables().size()}});
+             {"variable_count", view.variables().size()},
+             // A synchronous axis: its leading values, StatusSynchronizedMotion.ActualMaster n is the n-th.
+             {"actor", to_string(diagnostics.actor_kind(i))},
+             {"leading_values", view.leading_value_names()},
+             // A cam: the number a follower's StatusSynchronizedMotion.ActualCam shows (decision C8).
+             {"cam_number", view.cam() != nullptr ? Json(view.cam()->number()) : Json(nullptr)}});
   }
   Json switches = Json::array();
   for (const ProgramSwitch& s : diagnostics.switches())
@@ -227,25 +287,30 @@ Json status(const Diagnostics& diagnostics, const Diagnostics::State& state, std
     for (std::size_t e = first; e < o.history.size(); ++e)
       history.push_back(event_json(o.history[e], o.history_unix_s[e]));
     const AxisPanel* panel = diagnostics.panel(i);
-    objects.push_back(
-        Json{{"name", view.name()},
-             {"valid", o.valid},
-             {"cycle", s.cycle},
-             {"words", std::move(words)},
-             // The positions the TO derives from each encoder's XIST (telegram page: XIST as counts and
-             // position); null for a TO without them (a speed axis).
-             {"encoder_positions",
-              to::find_variable(table, "StatusSensor.Position") != nullptr
-                  ? Json::array({value_of("StatusSensor.Position"), nullptr})
-                  : Json::array({value_of("StatusSensor[1].Position"), value_of("StatusSensor[2].Position")})},
-             {"error_detail",
-              {{"number", value_of("ErrorDetail.Number")}, {"reaction", value_of("ErrorDetail.Reaction")}}},
-             {"items", std::move(items)},
-             {"telegram", o.valid ? Json(s.words) : Json::array()},
-             {"alarms", std::move(alarms)},
-             {"history", std::move(history)},
-             {"history_lost", o.history_lost},
-             {"panel", panel != nullptr && o.valid ? panel_json(*panel, s.panel) : Json(nullptr)}});
+    Json object = Json{
+        {"name", view.name()},
+        {"valid", o.valid},
+        {"cycle", s.cycle},
+        {"words", std::move(words)},
+        // The positions the TO derives from each encoder's XIST (telegram page: XIST as counts and
+        // position); null for a TO without them (a speed axis).
+        {"encoder_positions",
+         to::find_variable(table, "StatusSensor.Position") != nullptr
+             ? Json::array({value_of("StatusSensor.Position"), nullptr})
+             : Json::array({value_of("StatusSensor[1].Position"), value_of("StatusSensor[2].Position")})},
+        {"error_detail",
+         {{"number", value_of("ErrorDetail.Number")}, {"reaction", value_of("ErrorDetail.Reaction")}}},
+        {"items", std::move(items)},
+        {"telegram", o.valid ? Json(s.words) : Json::array()},
+        {"alarms", std::move(alarms)},
+        {"history", std::move(history)},
+        {"history_lost", o.history_lost},
+        {"panel", panel != nullptr && o.valid ? panel_json(*panel, s.panel) : Json(nullptr)}};
+    if (view.type() == to::TechnologyObjectType::kSynchronousAxis && o.valid)
+      object["synchronous"] = synchronous_json(diagnostics, view, s);
+    if (view.cam() != nullptr) object["revision"] = s.revision;
+    if (s.actor.kind != ActorKind::kNone && o.valid) object["actor"] = actor_json(s.actor);
+    objects.push_back(std::move(object));
   }
   Json switches = Json::array();
   for (const ProgramSwitch& sw : diagnostics.switches())

@@ -108,6 +108,28 @@ constexpr std::array<LayoutItem, 12> kPositioningMotion{{
     {"Stop job active", "StatusWord2.X0"},
     {"Superimposed motion", "StatusWord.X23 | StatusWord2.X6 | StatusWord2.X8 | StatusWord2.X7"},
 }};
+// The jobs of seed 004 ch. 9 that the manual's §8.2 page predates (issue 18): superimposed motion, torque on
+// telegram 750, MC_PositionProfile and MotionIn, each by the status bit or DINT the data block has for it
+// (spec 04 §5.1, §5.2, §4.7, §4.8).
+constexpr std::array<LayoutItem, 10> kPositioningJobs{{
+    {"MC_MoveSuperimposed (StatusWord.X23)", "StatusWord.X23"},
+    {"MC_HaltSuperimposed (StatusWord2.X7)", "StatusWord2.X7"},
+    {"MC_PositionProfile (StatusWord2.X9)", "StatusWord2.X9"},
+    {"On profile (StatusWord2.X10)", "StatusWord2.X10"},
+    {"MotionIn (StatusWord.X31)", "StatusWord.X31"},
+    {"MC_MotionInSuperimposed (StatusWord2.X6)", "StatusWord2.X6"},
+    {"MotionIn on several axes (StatusWord2.X8)", "StatusWord2.X8"},
+    {"Torque limiting job (StatusWord.X26)", "StatusWord.X26"},
+    {"Additive torque active", "StatusTorqueData.CommandAdditiveTorqueActive=1"},
+    {"Torque range active", "StatusTorqueData.CommandTorqueRangeActive=1"},
+}};
+constexpr std::array<LayoutItem, 5> kPositioningJobValues{{
+    {"Superimposed distance", "StatusPositioning.SuperimposedDistance", true},
+    {"Actual torque", "StatusTorqueData.ActualTorque", true},
+    {"Total additive torque", "StatusTorqueData.TotalTorqueAdditive", true},
+    {"MotionIn function state", "StatusMotionIn.FunctionState", true},
+    {"MotionIn status word", "StatusMotionIn.StatusWord", true},
+}};
 constexpr std::array<LayoutItem, 16> kPositioningErrors{{
     {"System", "ErrorWord.X0"},
     {"Configuration", "ErrorWord.X1"},
@@ -138,15 +160,100 @@ constexpr std::array<LayoutItem, 4> kPositioningActual{{
     {"Actual velocity", "ActualVelocity", true},
     {"Following error", "StatusPositioning.FollowingError", true},
 }};
-constexpr std::array<LayoutArea, 8> kPositioningLayout{{
+constexpr std::array<LayoutArea, 10> kPositioningLayout{{
     {"status", "Axis status", kPositioningStatus},
     {"status", "Limit switch status", kPositioningLimitSwitches},
     {"status", "Motion status", kPositioningMotion},
+    {"status", "Superimposed, torque, profile and MotionIn jobs", kPositioningJobs},
     {"status", "Warnings", kAxisWarnings},
     {"status", "Errors", kPositioningErrors},
     {"motion", "Setpoints", kPositioningSetpoints},
     {"motion", "Actual values", kPositioningActual},
+    {"motion", "Superimposed motion and torque", kPositioningJobValues},
     {"motion", "Dynamic limits", kDynamicLimits},
+}};
+
+// ---- TO_SynchronousAxis: the positioning axis' page plus synchronous operation (issue 19; spec 07 §1.9,
+// spec 04 §5.1/§5.2 bits of Y; the manual's §8.2 page shows these only in its synchronous-operation view)
+// ----
+constexpr std::array<LayoutItem, 14> kSynchronousStatus{{
+    {"Synchronizing (StatusWord.X21)", "StatusWord.X21"},
+    {"Synchronous (StatusWord.X22)", "StatusWord.X22"},
+    {"Desynchronizing (StatusWord2.X1)", "StatusWord2.X1"},
+    {"Gearing active",
+     "StatusSynchronizedMotion.FunctionState=1 | StatusSynchronizedMotion.FunctionState=2 | "
+     "StatusSynchronizedMotion.FunctionState=6 | StatusSynchronizedMotion.FunctionState=4"},
+    {"Camming active", "StatusSynchronizedMotion.FunctionState=3 | StatusSynchronizedMotion.FunctionState=5"},
+    {"Synchronous job waiting", "!StatusSynchronizedMotion.WaitingFunctionState=0"},
+    {"Phasing (StatusWord.X24)", "StatusWord.X24"},
+    {"Phasing waiting (StatusWord2.X3)", "StatusWord2.X3"},
+    {"Offset (StatusWord2.X4)", "StatusWord2.X4"},
+    {"Offset waiting (StatusWord2.X5)", "StatusWord2.X5"},
+    {"Leading value additive", "StatusSynchronizedMotion.StatusWord.X4"},
+    {"Synchronous motion simulation", "StatusSynchronizedMotion.StatusWord.X3"},
+    {"Dynamic limit exceeded (velocity, acceleration, deceleration)",
+     "StatusSynchronizedMotion.StatusWord.X0 | StatusSynchronizedMotion.StatusWord.X1 | "
+     "StatusSynchronizedMotion.StatusWord.X2"},
+    {"Synchronous operation error (ErrorWord.X14)", "ErrorWord.X14"},
+}};
+// Leader-side positions are in the leading axis' units (spec 07 §1.2: no conversion), so units.cpp gives
+// them none; velocities and accelerations of the leading value are the follower's (decision C16).
+constexpr std::array<LayoutItem, 6> kSynchronousLeading{{
+    {"Leading axis (ActualMaster)", "StatusSynchronizedMotion.ActualMaster", true},
+    {"Effective leading value position", "StatusSynchronizedMotion.EffectiveLeadingValue.Position", true},
+    {"Effective leading value velocity", "StatusSynchronizedMotion.EffectiveLeadingValue.Velocity", true},
+    {"Effective leading value acceleration", "StatusSynchronizedMotion.EffectiveLeadingValue.Acceleration",
+     true},
+    {"Phase shift", "StatusSynchronizedMotion.PhaseShift", true},
+    {"Function leading value position", "StatusSynchronizedMotion.FunctionLeadingValue.Position", true},
+}};
+constexpr std::array<LayoutItem, 10> kSynchronousFollowing{{
+    {"Active function (FunctionState)", "StatusSynchronizedMotion.FunctionState", true},
+    {"Waiting function (WaitingFunctionState)", "StatusSynchronizedMotion.WaitingFunctionState", true},
+    {"Active cam (ActualCam)", "StatusSynchronizedMotion.ActualCam", true},
+    {"Function following value position", "StatusSynchronizedMotion.FunctionFollowingValue.Position", true},
+    {"Function following value velocity", "StatusSynchronizedMotion.FunctionFollowingValue.Velocity", true},
+    {"Function following value acceleration", "StatusSynchronizedMotion.FunctionFollowingValue.Acceleration",
+     true},
+    {"Offset", "StatusSynchronizedMotion.Offset", true},
+    {"Master offset", "StatusSynchronizedMotion.MasterOffset", true},
+    {"Master scaling", "StatusSynchronizedMotion.MasterScaling", true},
+    {"Slave offset", "StatusSynchronizedMotion.SlaveOffset", true},
+}};
+constexpr std::array<LayoutArea, 13> kSynchronousLayout{{
+    {"status", "Axis status", kPositioningStatus},
+    {"status", "Limit switch status", kPositioningLimitSwitches},
+    {"status", "Motion status", kPositioningMotion},
+    {"status", "Synchronous operation", kSynchronousStatus},
+    {"status", "Superimposed, torque, profile and MotionIn jobs", kPositioningJobs},
+    {"status", "Warnings", kAxisWarnings},
+    {"status", "Errors", kPositioningErrors},
+    {"motion", "Leading value", kSynchronousLeading},
+    {"motion", "Following value", kSynchronousFollowing},
+    {"motion", "Setpoints", kPositioningSetpoints},
+    {"motion", "Actual values", kPositioningActual},
+    {"motion", "Superimposed motion and torque", kPositioningJobValues},
+    {"motion", "Dynamic limits", kDynamicLimits},
+}};
+
+// ---- TO_Cam (spec 07 §3.1): its status word and definition range; the plot is cam_plot.hpp ----
+constexpr std::array<LayoutItem, 6> kCamStatus{{
+    {"Interpolated (StatusWord.X5)", "StatusWord.X5"},
+    {"In use by camming (StatusWord.X0)", "StatusWord.X0"},
+    {"Cam data changed since interpolation (StatusWord.X4)", "StatusWord.X4"},
+    {"Error", "StatusWord.X1"},
+    {"Interpolation running (StatusWord.X6)", "StatusWord.X6"},
+    {"MC_CopyCamData active (StatusWord.X7)", "StatusWord.X7"},
+}};
+constexpr std::array<LayoutItem, 4> kCamRange{{
+    {"Start leading value", "StatusCam.StartLeadingValue", true},
+    {"End leading value", "StatusCam.EndLeadingValue", true},
+    {"Valid points", "StatusCam.NumberOfValidPoints", true},
+    {"Valid segments", "StatusCam.NumberOfValidSegments", true},
+}};
+constexpr std::array<LayoutArea, 2> kCamLayout{{
+    {"status", "Cam status", kCamStatus},
+    {"motion", "Definition range", kCamRange},
 }};
 
 // ---- spec 04 §9.3, TO_ExternalEncoder (no "Warnings" area) ----
@@ -223,12 +330,13 @@ std::span<const LayoutArea> diagnostics_layout(to::TechnologyObjectType type) no
     case to::TechnologyObjectType::kSpeedAxis:
       return kSpeedAxisLayout;
     case to::TechnologyObjectType::kPositioningAxis:
-    case to::TechnologyObjectType::kSynchronousAxis:
       return kPositioningLayout;
+    case to::TechnologyObjectType::kSynchronousAxis:
+      return kSynchronousLayout;
     case to::TechnologyObjectType::kExternalEncoder:
       return kEncoderLayout;
-    case to::TechnologyObjectType::kCam:  // no axis panel for a cam
-      return {};
+    case to::TechnologyObjectType::kCam:
+      return kCamLayout;
   }
   return {};
 }

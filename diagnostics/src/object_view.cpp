@@ -3,6 +3,7 @@
 
 #include <charconv>
 
+#include "tomc/diagnostics/synchronous_view.hpp"
 #include "tomc/techobjects/cam/cam_data.hpp"
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/telegrams/layout.hpp"
@@ -17,8 +18,9 @@ std::span<const to::VariableInfo> variables_of(to::TechnologyObjectType type) no
     case to::TechnologyObjectType::kSpeedAxis:
       return to::speed_axis_variables();
     case to::TechnologyObjectType::kPositioningAxis:
-    case to::TechnologyObjectType::kSynchronousAxis:
       return to::positioning_axis_variables();
+    case to::TechnologyObjectType::kSynchronousAxis:
+      return synchronous_axis_variables();
     case to::TechnologyObjectType::kExternalEncoder:
       return to::external_encoder_variables();
     case to::TechnologyObjectType::kCam:
@@ -133,10 +135,10 @@ std::optional<std::uint8_t> parse_bit_suffix(std::string_view text) {
 std::optional<Probe> ObjectView::probe(std::string_view path) const {
   const auto table = variables();
   if (const to::VariableInfo* v = to::find_variable(table, path)) {
-    return Probe{v->read_fn, data_block(), -1};
+    return Probe{v->read_fn, source_of(*v), -1};
   }
   if (const auto bit = to::find_bit(table, path)) {
-    return Probe{bit->word->read_fn, data_block(), static_cast<std::int8_t>(bit->bit)};
+    return Probe{bit->word->read_fn, source_of(*bit->word), static_cast<std::int8_t>(bit->bit)};
   }
   constexpr std::string_view kTelegram = "telegram.";
   if (!path.starts_with(kTelegram)) return std::nullopt;

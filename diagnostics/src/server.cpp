@@ -373,6 +373,18 @@ struct Server::Impl {
       return reply(200, diagnostics.read(
                             [&](const Diagnostics::State& s) { return api::alarms(diagnostics, s, *i); }));
     });
+    // The cam plot (issue 19): sampled here, on the read lane, never in the cycle (cam_plot.hpp).
+    http.route("GET", "/api/objects/{}/plot", Lane::kRead, [this](const Request& req) {
+      const auto i = object_of(req);
+      if (!i) return no_object(req);
+      if (diagnostics.view(*i).cam() == nullptr) return error(404, "'" + req.captures[0] + "' is not a cam");
+      const auto samples = int_param(req, "samples", static_cast<int>(kDefaultCamSamples),
+                                     static_cast<int>(kMinCamSamples), static_cast<int>(kMaxCamSamples));
+      if (!samples) return error(400, "samples: an integer 2 .. 2001");
+      auto plot = plot_cam(diagnostics, *i, static_cast<std::size_t>(*samples));
+      if (auto* problem = std::get_if<std::string>(&plot)) return error(409, *problem);
+      return reply(200, api::cam_plot(std::get<CamPlot>(plot)));
+    });
 
     http.route("POST", "/api/panel/{}", Lane::kControl, [this](const Request& req) {
       const auto i = object_of(req);

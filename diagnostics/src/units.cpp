@@ -41,6 +41,15 @@ Quantity quantity_of(const to::VariableInfo& variable) noexcept {
   if (path.starts_with("Override.")) return Quantity::kPercent;  // Override.Velocity (spec 04 §3.12)
   if (last == "T1" || last == "T2" || last == "Tt" || contains(last, "Time")) return Quantity::kTime;
   if (contains(last, "Speed")) return Quantity::kMotorSpeed;
+  // StatusSynchronizedMotion (spec 07 §1.9): the offset and SlaveOffset are following-axis positions; the
+  // leader-side positions (EffectiveLeadingValue/FunctionLeadingValue.Position, PhaseShift, MasterOffset) are
+  // in the leading axis' units (§1.2: no conversion), which this TO's Units do not name: no unit.
+  if (path.starts_with("StatusSynchronizedMotion.")) {
+    if (last == "Offset" || last == "SlaveOffset" ||
+        path == "StatusSynchronizedMotion.FunctionFollowingValue.Position")
+      return Quantity::kPosition;
+    if (last == "Position") return Quantity::kNone;
+  }
   if (contains(last, "Torque")) return Quantity::kTorque;
   if (contains(last, "Force")) return Quantity::kForce;
   if (contains(last, "Jerk")) return Quantity::kJerk;

@@ -574,6 +574,27 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
   EXPECT_NEAR(phasing.CoveredPhaseShift, 10.0, 1e-12);
   EXPECT_NEAR(read(follower, "Position"), 20.0, 1e-9);
   EXPECT_EQ(offset_error, 0x808A);
+  // MC_SynchronizedMotionSimulation through its generated struct (spec 07 §4.4): the gearing goes on while
+  // the follower is disabled; a new MC_GearIn meanwhile is refused with 16#8076.
+  tomc_MC_SynchronizedMotionSimulation simulation;
+  tomc_MC_SynchronizedMotionSimulation_init(&simulation);
+  simulation.Enable = true;
+  ASSERT_EQ(tomc_MC_SynchronizedMotionSimulation_call(follower, &simulation), TOMC_OK) << last_error();
+  EXPECT_TRUE(simulation.InSimulation) << simulation.ErrorID;
+  power_f.Enable = false;
+  for (int cycle = 0; cycle < 5; ++cycle) {
+    ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(follower, &power_f), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_GearIn_call(follower, &gear), TOMC_OK) << last_error();
+  }
+  EXPECT_FALSE(power_f.Status);
+  EXPECT_TRUE(gear.InGear);
+  tomc_MC_GearIn again;
+  tomc_MC_GearIn_init(&again);
+  again.Master = leader;
+  again.Execute = true;
+  ASSERT_EQ(tomc_MC_GearIn_call(follower, &again), TOMC_OK) << last_error();
+  EXPECT_EQ(again.ErrorID, 0x8076);
   tomc_runtime_destroy(runtime);
 }
 
@@ -617,7 +638,8 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
 }
 
 TEST(CApi, TheExamplesMachineFilesLoad) {
-  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "demo_machine.json"}) {
+  for (const char* file :
+       {"positioning_machine.json", "gearing_machine.json", "demo_machine.json", "flying_saw.json"}) {
     tomc_runtime* r = nullptr;
     // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
     // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false

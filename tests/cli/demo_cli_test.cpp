@@ -118,6 +118,28 @@ TEST(DemoCli, PositioningProgramProblemsAreNamed) {
   }
 }
 
+// program.<synchronous axis>.cam (decision W23): the cam must be a TO_Cam of the machine, the application
+// mode 0 .. 2, no other keys.
+TEST(DemoCli, CammingProgramProblemsAreNamed) {
+  const std::string path = write_file("bad_camming_program", R"({
+    "technology_objects": [
+      {"name": "L", "type": "TO_PositioningAxis", "drive": {"adapter": "simulated", "telegram": 3}},
+      {"name": "F", "type": "TO_SynchronousAxis", "drive": {"adapter": "simulated", "telegram": 3},
+       "LeadingValueInterconnections": [{"Leader": "L", "Coupling": "Setpoint"}]}
+    ],
+    "program": {
+      "F": {"cam": "L", "application_mode": 5, "master": "L"}
+    }
+  })");
+  const DemoRun r = tomc({"demo", "--config", path});
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* expected : {"program.F.cam: expected the name of a TO_Cam of this machine",
+                               "program.F.application_mode: expected 0 (not cyclic), 1 (cyclic) or 2",
+                               "program.F.master: unknown key"}) {
+    EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
+  }
+}
+
 // A machine of one's own, in the tomc sim format, read-only (no token), on any free port, for one second.
 TEST(DemoCli, RunsAConfigurationOfOnesOwn) {
   const std::string path = write_file("own_machine", R"({

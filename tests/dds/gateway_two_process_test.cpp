@@ -357,7 +357,7 @@ TEST(GatewayTwoProcess, GatewayRestartIsALinkLossEvenWhenQuick) {
 TEST(GatewayTwoProcess, HungGatewayAndResume) {
   const int domain = 146;
   GatewayProcess gateway(test_directory("stop"),
-                         gateway_config(domain, {{"axis1", 2}}, "gw1", "\"watchdog\": 0.02"));
+                         gateway_config(domain, {{"axis1", 2}}, "gw1", "\"watchdog\": 0.3"));
   gateway_sim::GatewayCommander commander(domain, test_partition());
   ASSERT_TRUE(commander.wait_matched(kConnectTimeout));
   GatewayAxis m(domain, "axis1", 2);
@@ -370,12 +370,27 @@ TEST(GatewayTwoProcess, HungGatewayAndResume) {
       m.run_for([&] { return m.pending(techobjects::kAlarmDriveCommunication); }, std::chrono::seconds(5)))
       << "alarm " << m.alarm() << ", stop applied " << commander.applied(stop) << ", missed "
       << m.adapter->link_health().missed_total << ", gateway: " << m.gateway_view();
-  // 20 ms watchdog + 20 setpoint-timeout cycles of 1 ms: the drive has faulted well within 200 ms.
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  // The gateway's watchdog (0.3 s: a 20 ms one released the lock-step controller whenever a load of 14
+  // stalled it, and the drive faulted before the axis was enabled) + 20 setpoint-timeout cycles of the
+  // gateway's clock: the drive faults (F08501). Waited for by the gateway's status, which the hung gateway
+  // still publishes, not by a time: a loaded machine may run the gateway's clock late (a fixed 200 ms once
+  // resumed before the fault). Bounded by 5 s.
+  const auto drive_faulted = [&] {
+    for (const auto& g : m.link->gateways()) {
+      for (const auto& d : g.devices) {
+        if (d.name == "axis1" && d.state == "faulted" && d.fault == 8501) return true;
+      }
+    }
+    return false;
+  };
+  for (int i = 0; i < 500 && !drive_faulted(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(drive_faulted()) << m.gateway_view();
   ASSERT_TRUE(commander.send("gw1", Command::kResume));  // the gateway is silent anyway: no need to cycle
   m.answer_timeout = kAnswerTimeout;
-  m.run(10);
-  EXPECT_TRUE(m.adapter->link_health().up);
+  // Answers again within a few exchanges (counted in cycles: each waits for its answer up to kAnswerTimeout).
+  EXPECT_GT(m.run_until([&] { return m.adapter->link_health().up; }, 50), 0) << m.gateway_view();
+  m.run(1);
   EXPECT_EQ(m.axis->drive()->drive_status().state, telegrams::DriveState::kFault);  // F08501 seen via ZSW1
   m.reset.Execute = true;
   m.run(2);

@@ -11,7 +11,9 @@
 
 #include "counting_allocator.hpp"
 #include "diagnostics_fixture.hpp"
+#include "gearing_fixture.hpp"
 #include "positioning_panel_fixture.hpp"
+#include "tomc/techobjects/cam/cam.hpp"
 
 namespace {
 
@@ -129,6 +131,55 @@ TEST(DiagnosticsAllocation, PositioningPanelDoesNotAllocate) {
   }
   EXPECT_EQ(in_cycle, 0u);
   EXPECT_TRUE(m.axis->control_priority().held());
+}
+
+// Issue 19: a camming follower's view (StatusSynchronizedMotion rows read from the synchronous operation) and
+// its cam's view (its interpolation count), published in every cycle and traced, allocate nothing either.
+struct SynchronousDiagnostics {
+  diagnostics::Diagnostics d{{1, 1024, 100}};
+  techobjects::Cam* cam = nullptr;
+};
+struct CammingDiagnosticsMachine : SynchronousDiagnostics, tomc::testing::GearingMachine {
+  CammingDiagnosticsMachine()
+      : GearingMachine(tomc::testing::virtual_linear(), tomc::testing::virtual_linear(), [this](auto& r) {
+          cam = &r.template emplace<techobjects::Cam>("C", techobjects::CamVariant::kCam, 7);
+          EXPECT_TRUE(cam->write_point(1, {0.0, 0.0}, true));
+          EXPECT_TRUE(cam->write_point(2, {100.0, 50.0}, true));
+          EXPECT_TRUE(cam->write_point(3, {200.0, 0.0}, true));
+          d.add(*F);
+          d.add(*cam);
+          d.attach(r);
+        }) {}
+};
+
+TEST(DiagnosticsAllocation, SynchronousViewAndCamDoNotAllocate) {
+  CammingDiagnosticsMachine m;
+  ASSERT_TRUE(m.cam->interpolate_cam().accepted());
+  diagnostics::TraceRequest trace;
+  for (const char* p : {"F.StatusSynchronizedMotion.EffectiveLeadingValue.Position",
+                        "F.StatusSynchronizedMotion.FunctionFollowingValue.Position",
+                        "F.StatusSynchronizedMotion.FunctionState",
+                        "F.StatusSynchronizedMotion.StatusWord.X4", "F.StatusWord.X22", "C.StatusWord.X0"})
+    trace.channels.emplace_back(p);
+  trace.post_samples = 1000;
+  ASSERT_TRUE(m.d.start_trace(trace).empty());
+  m.cam_in.Cam = m.cam;
+  m.cam_in.SyncProfileReference = 2;
+  m.cam_in.ApplicationMode = 1;
+  m.cam_in.Execute = true;
+  m.move_L.Velocity = 100.0;
+  m.move_L.Acceleration = m.move_L.Deceleration = 10000.0;
+  m.move_L.Execute = true;
+  std::uint64_t in_cycle = 0;
+  for (int i = 0; i < kCycles / 5; ++i) {
+    const auto before = tomc::testing::allocation_count();
+    m.runtime.step();
+    in_cycle += tomc::testing::allocation_count() - before;
+    if (i % 20 == 0) m.d.poll();
+  }
+  EXPECT_EQ(in_cycle, 0u);
+  EXPECT_TRUE(m.cam_in.InSync);
+  EXPECT_EQ(m.d.read([](const auto& s) { return s.objects[1].snapshot.revision; }), 1u);
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ INSTANTIATE_TEST_SUITE_P(Diagnostics, EveryType,
                          ::testing::Values(TechnologyObjectType::kSpeedAxis,
                                            TechnologyObjectType::kPositioningAxis,
                                            TechnologyObjectType::kSynchronousAxis,
-                                           TechnologyObjectType::kExternalEncoder));
+                                           TechnologyObjectType::kExternalEncoder,
+                                           TechnologyObjectType::kCam));
 
 std::vector<std::string_view> titles(TechnologyObjectType type) {
   std::vector<std::string_view> out;
@@ -51,9 +52,18 @@ TEST(DiagnosticsLayout, AreasPerType) {
   using V = std::vector<std::string_view>;
   EXPECT_EQ(titles(TechnologyObjectType::kSpeedAxis), (V{"Axis status", "Motion status", "Warnings", "Errors",
                                                          "Setpoints", "Actual values", "Dynamic limits"}));
+  // Issue 18's jobs in their own areas beside the manual's.
   EXPECT_EQ(titles(TechnologyObjectType::kPositioningAxis),
-            (V{"Axis status", "Limit switch status", "Motion status", "Warnings", "Errors", "Setpoints",
-               "Actual values", "Dynamic limits"}));
+            (V{"Axis status", "Limit switch status", "Motion status",
+               "Superimposed, torque, profile and MotionIn jobs", "Warnings", "Errors", "Setpoints",
+               "Actual values", "Superimposed motion and torque", "Dynamic limits"}));
+  // Issue 19: the synchronous axis has its own view (spec 07 §1.9), the cam its status and range.
+  EXPECT_EQ(titles(TechnologyObjectType::kSynchronousAxis),
+            (V{"Axis status", "Limit switch status", "Motion status", "Synchronous operation",
+               "Superimposed, torque, profile and MotionIn jobs", "Warnings", "Errors", "Leading value",
+               "Following value", "Setpoints", "Actual values", "Superimposed motion and torque",
+               "Dynamic limits"}));
+  EXPECT_EQ(titles(TechnologyObjectType::kCam), (V{"Cam status", "Definition range"}));
   EXPECT_EQ(titles(TechnologyObjectType::kExternalEncoder),
             (V{"Encoder status", "Motion status", "Errors", "Actual values"}));
 }

@@ -514,6 +514,9 @@ TEST(WebApi, BadRequestsGet4xxAndDoNotDisturbTheRuntime) {
   auto c = s.client();
   EXPECT_EQ(c.Get("/api/nothing")->status, 404);
   EXPECT_EQ(c.Get("/api/objects/Nobody/variables")->status, 404);
+  // The cam plot (decision W20) exists for cams only.
+  EXPECT_EQ(c.Get("/api/objects/Nobody/plot")->status, 404);
+  EXPECT_EQ(c.Get("/api/objects/Axis1/plot")->status, 404);
   EXPECT_EQ(c.Get("/api/trace?max_points=abc")->status, 400);
   httplib::Headers bearer{{"Authorization", std::string("Bearer ") + kToken}};
   EXPECT_EQ(c.Get("/api/trace.png?height=99999", bearer)->status, 400);

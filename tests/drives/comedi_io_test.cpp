@@ -9,6 +9,7 @@
 
 #include "drive_harness.hpp"
 #include "tomc/drives/analog_drive.hpp"
+#include "tomc/drives/comedi_analog_drive.hpp"
 #include "tomc/drives/io/comedi_io.hpp"
 
 namespace tomc::drives::test {
@@ -181,6 +182,30 @@ TEST(ComediIo, ReadAndWriteFailuresBecomeTheActorsIoFault) {
   h.stw1(0x04FE);              // acknowledge (STW1.7 edge)
   h.cycle();
   EXPECT_EQ(h.drive.active_fault(), 0u);
+}
+
+// The drive a scenario or machine file builds from "analog": {"comedi": {...}} (decision A21): the card
+// opened and owned with the actor, a telegram-3 drive to the TO; the card is closed with it.
+TEST(ComediIo, AnalogDriveOnTheCardIsATelegram3Drive) {
+  fake = {};
+  AnalogDriveParameters actor;
+  actor.analog_output = Channel{0, 1};
+  actor.enable_output = Channel{1, 0};
+  actor.ready_input = Channel{1, 1};
+  actor.counter = Channel{2, 0};
+  {
+    ComediAnalogDrive drive(fake_wiring(), actor, kFake);
+    EXPECT_TRUE(fake.open);
+    EXPECT_EQ(drive.config().drive_telegram, 3);
+    DeviceFrames frames = make_frames(drive.config(), tg::Direction::kSetpoint);
+    fake.count = 40;
+    fake.ao[1] = 7;
+    EXPECT_TRUE(drive.read_actual(frames));
+    drive.write_setpoint(make_frames(drive.config(), tg::Direction::kSetpoint));
+    EXPECT_EQ(fake.ao[1], 32768u);  // switched off: 0 V, offset binary of the 16-bit bipolar range
+    EXPECT_EQ(fake.dio[0], 0u);     // enable output off
+  }
+  EXPECT_FALSE(fake.open);
 }
 
 }  // namespace

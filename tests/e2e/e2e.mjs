@@ -183,6 +183,140 @@ async function alarmsAcrossAxes(page) {
   log('alarm 533: listed with its time, acknowledged from the list, found in the history');
 }
 
+// What issues 18, 19 and 20 added to the page, on the demo's knife (a synchronous axis camming with CutCam to
+// the line encoder at 100 mm/s), its cam and the analog feeder. Values are compared with the server's own
+// numbers and with closed forms, not only looked for.
+const cutCam = {  // examples/demo_machine.json: y = 3.6·x + 1e-5·x²·(100 − x)² on [0, 100]
+  y: (x) => 3.6 * x + 1e-5 * x * x * (100 - x) ** 2,
+  dy: (x) => 3.6 + 1e-5 * (2 * x * (100 - x) ** 2 - 2 * x * x * (100 - x)),
+  ddy: (x) => 1e-5 * (12 * x * x - 1200 * x + 20000),
+};
+async function shownText(page, item) { return page.locator(`[data-item="${item}"] .value`).textContent(); }
+async function selectObject(page, name, type) {
+  await page.click(`button.object[data-object="${name}"]`);
+  await until(name + ' selected', async () => (await page.locator('#object-title').textContent()) === `${name} (${type})`);
+}
+
+async function synchronousAxisView(page, base, token) {
+  await selectObject(page, 'Knife', 'TO_SynchronousAxis');
+  await until('the knife synchronous and camming (spec 07 §1.9)', async () =>
+    (await ledOn(page, 'Synchronous operation/Synchronous (StatusWord.X22)')) &&
+    (await ledOn(page, 'Synchronous operation/Camming active')) && !(await ledOn(page, 'Synchronous operation/Gearing active')), 15000);
+  await page.click('#tabs button[data-tab="motion"]');
+  await until('leader, function and cam named', async () =>
+    (await shownText(page, 'Leading value/Leading axis (ActualMaster)')) === 'LineEncoder (1)' &&
+    (await shownText(page, 'Following value/Active function (FunctionState)')) === 'camming (MC_CamIn) (3)' &&
+    (await shownText(page, 'Following value/Active cam (ActualCam)')) === 'CutCam (6)');
+  // The leading value is the line encoder's actual value: 100 mm/s (its external_speed).
+  await until('the effective leading velocity of the line', async () =>
+    Math.abs((await shownValue(page, 'Leading value/Effective leading value velocity')) - 100) < 2);
+  await page.screenshot({ path: join(artifacts, '08-knife-synchronous.png') });
+  // Its variables in the trace: the signal browser lists them, and a recording shows the leading value
+  // advancing 0.1 mm per 1 ms sample while the function following value follows the cam's slope.
+  await until('StatusSynchronizedMotion in the signal browser', () => page.evaluate(() =>
+    signalsOf(state.byName.Knife).some(x => x.path === 'StatusSynchronizedMotion.FunctionFollowingValue.Position')));
+  const channels = ['Knife.StatusSynchronizedMotion.EffectiveLeadingValue.Position',
+                    'Knife.StatusSynchronizedMotion.FunctionLeadingValue.Position',
+                    'Knife.StatusSynchronizedMotion.FunctionFollowingValue.Position',
+                    'Knife.StatusSynchronizedMotion.MasterOffset'];
+  const r = await fetch(base + 'api/trace', { method: 'POST', headers: { Authorization: 'Bearer ' + token, 'Content-Type': 'application/json' },
+                                              body: JSON.stringify({ channels, trigger: { kind: 'immediate' }, pre_samples: 0, post_samples: 300 }) });
+  check(r.status === 200, 'trace of the synchronous variables started: ' + r.status);
+  const t = await until('the synchronous trace', async () => {
+    const j = await (await fetch(base + 'api/trace?max_points=1000')).json();
+    return j.state === 'complete' && j.time_s.length === 300 ? j : null;
+  }, 15000);
+  const [lead, fun, follow, masterOffset] = t.values;
+  const step = (lead[299] - lead[0]) / 299;
+  check(Math.abs(step - 0.1) < 0.005, `the leading value advances 0.1 mm per sample (${step})`);
+  // While synchronous, the function following value moves along the cam (spec 07 §3.3): from one sample to the
+  // next by f(x1) − f(x0), x the function leading value less MasterOffset within the cam's period of 100.
+  let worst = 0, compared = 0;
+  for (let i = 1; i < 300; i++) {
+    const x0 = fun[i - 1] - masterOffset[i - 1], x1 = fun[i] - masterOffset[i];
+    const n = Math.floor(x0 / 100);
+    if (Math.floor(x1 / 100) !== n) continue;  // a join of the cyclic cam
+    worst = Math.max(worst, Math.abs((follow[i] - follow[i - 1]) - (cutCam.y(x1 - 100 * n) - cutCam.y(x0 - 100 * n))));
+    compared++;
+  }
+  check(compared > 250 && worst < 1e-6, `the function following value moves along CutCam (${compared} steps, worst ${worst})`);
+  await page.click('#tabs button[data-tab="status"]');
+  log('knife: synchronous view (leader, function, cam, leading velocity 100), StatusSynchronizedMotion traced along the cam');
+}
+
+async function camPlot(page, base) {
+  await selectObject(page, 'CutCam', 'TO_Cam');
+  check(await page.locator('#tabs button[data-tab="telegram"]').isHidden(), 'a cam has no telegram page');
+  await page.click('#tabs button[data-tab="cam"]');
+  await page.locator('#cam-plot[data-samples="501"]').waitFor({ timeout: 15000 });
+  const server = await (await fetch(base + 'api/objects/CutCam/plot?samples=501')).json();
+  check(server.start === 0 && server.end === 100 && server.samples === 501, "the cam's range and sample count");
+  let worst = 0;
+  server.leading.forEach((x, i) => {
+    worst = Math.max(worst, Math.abs(server.position[i] - cutCam.y(x)), Math.abs(server.velocity[i] - cutCam.dy(x)),
+                     Math.abs(server.acceleration[i] - cutCam.ddy(x)));
+  });
+  check(worst < 1e-9, `the server's samples are the polynomial cam and its derivatives (worst ${worst})`);
+  const plotted = await page.evaluate(() => state.camPlot.data);
+  check(JSON.stringify(plotted) === JSON.stringify([server.leading, server.position, server.velocity, server.acceleration]),
+        "the page plots the server's samples");
+  await page.fill('#cam-samples', '11');
+  await page.click('#cam-reload');
+  await page.locator('#cam-plot[data-samples="11"]').waitFor();
+  check(Math.abs((await page.evaluate(() => state.camPlot.data[1][5])) - cutCam.y(50)) < 1e-9, 'f(50) = 242.5 at the 6th of 11 samples');
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: 15000 }), page.click('#cam-png')]);
+  const file = join(artifacts, 'cam-plot.png');
+  await download.saveAs(file);
+  const png = readFileSync(file);
+  const canvas = await page.evaluate(() => [state.camPlot.ctx.canvas.width, state.camPlot.ctx.canvas.height]);
+  check(png.subarray(1, 4).toString() === 'PNG' && png.readUInt32BE(16) === canvas[0] && png.readUInt32BE(20) > canvas[1],
+        'the cam plot PNG is the plot with its legend under it');
+  await page.screenshot({ path: join(artifacts, '09-cam-plot.png') });
+  await page.click('#tabs button[data-tab="status"]');
+  log('cam plot: 501 samples = closed form to 1e-9, drawn as served, PNG');
+}
+
+async function analogAxis(page, base) {
+  await selectObject(page, 'Portal', 'TO_PositioningAxis');
+  check(await page.locator('#tabs button[data-tab="telegram"]').isHidden(), 'no telegram words for an analog axis');
+  await page.click('#tabs button[data-tab="actor"]');
+  const cell = (label) => page.locator(`[data-actor="${label}"]`).textContent();
+  await until('enable output and ready input TRUE while the program runs the portal', async () =>
+    (await cell('Enable output')) === 'TRUE' && (await cell('Ready input')) === 'TRUE' && (await cell('Drive state')) === 'S4', 15000);
+  // The ×4 counter of a 2500-line encoder on a 10 mm/rev screw: 1000 counts per mm, as ActualPosition shows.
+  await until('counter and actual position agree', async () => {
+    const o = await objectStatus(base, 'Portal');
+    const position = o.items[(await page.evaluate(() => state.byName.Portal.itemIndex['Actual values/Actual position']))];
+    return Math.abs(o.actor.counter / 1000 - position) < 0.01 && o.actor.counter > 5000;
+  });
+  // While it moves the output is the speed setpoint in % of U100 and volts (10 V = 100 %).
+  const shown = await until('the analog output while moving', async () => {
+    const m = /^(-?[0-9.]+) % of U₁₀₀ · (-?[0-9.]+) V · DAC code (-?\d+)$/.exec(await cell('Analog output'));
+    return m && Math.abs(Number(m[1])) > 1 ? m.slice(1).map(Number) : null;
+  }, 15000);
+  check(Math.abs(shown[1] - shown[0] / 10) < 0.01, `volts = percent/10 (${shown})`);
+  await page.screenshot({ path: join(artifacts, '10-analog-axis.png') });
+  await page.click('#tabs button[data-tab="status"]');
+  log('analog portal: enable, ready, S4, counter = 1000 × ActualPosition, output', shown[0], '%', shown[1], 'V');
+}
+
+// Issue 18's jobs on the positioning page: their area is there and shows what the server evaluates.
+async function issue18Jobs(page, base) {
+  await page.click('button.object[data-object="Slide"]');
+  for (const item of ['Superimposed, torque, profile and MotionIn jobs/MC_MoveSuperimposed (StatusWord.X23)',
+                      'Superimposed, torque, profile and MotionIn jobs/MC_PositionProfile (StatusWord2.X9)',
+                      'Superimposed, torque, profile and MotionIn jobs/Additive torque active'])
+    await page.locator(`[data-item="${item}"] .led`).waitFor({ state: 'attached' });
+  await page.click('#tabs button[data-tab="motion"]');
+  await until('superimposed distance and torque as the server evaluates them', async () => {
+    const o = await objectStatus(base, 'Slide');
+    const index = await page.evaluate(() => state.byName.Slide.itemIndex['Superimposed motion and torque/Superimposed distance']);
+    return (await shownValue(page, 'Superimposed motion and torque/Superimposed distance')) === o.items[index];
+  });
+  await page.click('#tabs button[data-tab="status"]');
+  log("issue 18 jobs: areas shown with the server's values");
+}
+
 // Stops exactly a process this test started, and waits for its clean exit.
 async function stopDemo(d) {
   if (d.child.exitCode !== null) return d.child.exitCode === 0;
@@ -496,7 +630,7 @@ try {
   for (const width of [1024, 800]) {
     await page2.setViewportSize({ width, height: 800 });
     await until(`one row of tabs and no sideways scrolling at ${width} px`, () => page2.evaluate(() => {
-      const tops = [...document.querySelectorAll('#tabs button')].map(b => b.offsetTop);
+      const tops = [...document.querySelectorAll('#tabs button')].filter(b => b.offsetParent !== null).map(b => b.offsetTop);
       const tabs = document.getElementById('tabs');
       return tops.every(t => t === tops[0]) && tabs.scrollWidth <= tabs.clientWidth &&
              document.documentElement.scrollWidth <= window.innerWidth;
@@ -504,6 +638,12 @@ try {
   }
   await page2.screenshot({ path: join(artifacts, '07-tablet.png') });
   log('one row of tabs at 1024 and 800 px');
+  // 8. Issues 18, 19 and 20 on the page: the knife's synchronous view, the cam plot, the analog feeder.
+  await page2.setViewportSize({ width: 1400, height: 1000 });
+  await synchronousAxisView(page2, demo.base, demo.token);
+  await camPlot(page2, demo.base);
+  await analogAxis(page2, demo.base);
+  await issue18Jobs(page2, demo.base);
   await readOnlyServer(context);
 
   // The refused take of step 2 (409) and the switch refused without the token (401) are logged by Chromium as

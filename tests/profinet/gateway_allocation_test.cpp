@@ -15,6 +15,7 @@
 #include <string>
 
 #include "gateway_hosts.hpp"
+#include "in_process_gateway.hpp"
 #include "selective_counting_new.hpp"
 #include "tomc/gateway/profinet_gateway.hpp"
 
@@ -96,16 +97,8 @@ TEST(ProfinetGatewayAllocation, TheCyclicThreadAllocatesNothing) {
   config.devices.push_back(device);
 
   gh::DeviceHost drive(hosts.second);
-  std::unique_ptr<tomc::profinet_gateway::ProfinetGateway> gateway;
   std::string error;
-  std::thread([&] {
-    if (!gh::enter(hosts.first)) return void(error = "setns failed");
-    try {
-      gateway = std::make_unique<tomc::profinet_gateway::ProfinetGateway>(config);
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }).join();
+  auto gateway = pn::testing::gateway_in(hosts.first, config, error);
   ASSERT_EQ(error, "");
   g_counted_thread = thread_named(tomc::profinet_gateway::kCyclicThreadName);
   ASSERT_NE(g_counted_thread.load(), 0) << "no thread named " << tomc::profinet_gateway::kCyclicThreadName;

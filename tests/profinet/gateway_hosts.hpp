@@ -43,6 +43,11 @@ inline constexpr int kDomain = 175;  // DDS tests use 140-174 (decision G13)
 inline constexpr pn::Ipv4Address kGatewayIp{10, 218, 0, 1};
 inline constexpr pn::Ipv4Address kDeviceIp{10, 218, 0, 2};
 inline constexpr double kTarget = 10.0;  // mm
+// How long a lock-step cycle of the scenario waits for the gateway's answer: generous, so that a loaded
+// machine cannot turn a slow answer (DDS threads are not real-time) into a missed cycle; a cycle waits only
+// until its answer is in (as tests/dds's kAnswerTimeout). Below the gateway's G6 watchdog (0.5 s).
+inline constexpr double kAnswerTimeout = 0.2;
+inline constexpr int kDevicePriority = 40;  // SCHED_FIFO of the emulated devices' threads
 
 using pn::testing::enter;
 using pn::testing::now_us;
@@ -66,6 +71,9 @@ struct DeviceOptions {
   std::string interface = "pn-e";
   std::string name_of_station = "drive-1";
   pn::Ipv4Address ip = kDeviceIp;
+  // The device announces no IP suite (0.0.0.0, as from the factory): the controller sets `ip` by DCP. Its
+  // RPC socket listens on `ip` from the start (the namespace's address; the emulator does not rebind).
+  bool factory_ip = false;
 };
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
@@ -93,6 +101,9 @@ class DeviceHost {
   void inject_fault() { fault_requested_ = true; }
   void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
   int alarm_acks() const { return alarm_acks_.load(); }
+  // The controller's output frames taken by the device so far (the gateway sends them from its cyclic thread,
+  // which owns the AR only after the start-up's p0922 check).
+  int output_frames() const { return output_frames_.load(); }
 
  private:
   // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
@@ -130,6 +141,8 @@ class DeviceHost {
   }
   void run(const std::string& ns) {
     if (!enter(ns)) return fail("setns into the device namespace failed");
+    // As a drive's firmware: not starved by other processes for the controller's watchdog (decision I22).
+    (void)pn::testing::real_time(kDevicePriority);
     pn::RawSocket raw;
     pn::UdpSocket udp;
     if (std::string e = raw.open(options_.interface); !e.empty()) return fail(e);
@@ -137,7 +150,7 @@ class DeviceHost {
     pn::DeviceIdentity identity;
     identity.name_of_station = options_.name_of_station;
     identity.mac = raw.mac();
-    identity.ip = {options_.ip, {255, 255, 255, 0}, {}};
+    if (!options_.factory_ip) identity.ip = {options_.ip, {255, 255, 255, 0}, {}};
     identity.vendor_id = 0x002A;
     identity.device_id = 0x0C01;
     identity.vendor = "tomc emulated drive";
@@ -164,7 +177,7 @@ class DeviceHost {
               rta.has_block && rta.block.is_ack) {
             ++alarm_acks_;
           }
-        } else if (device.on_cyclic(in, now_us()) && host.follow_controller()) {
+        } else if (device.on_cyclic(in, now_us()) && (++output_frames_, host.follow_controller())) {
           last_step = now_us();
           send_input();
         }
@@ -183,8 +196,16 @@ class DeviceHost {
       const std::uint64_t now = now_us();
       if (now >= next_send) {
         next_send = now + 1000;
-        // Without the controller's clock (no AR, or no setpoints for 50 ms) the drive runs on its own.
-        if (now - last_step > 50'000) host.cycle();
+        // The drive's clock is the controller's while the AR runs and the controller's outputs are valid
+        // (IOPS GOOD: the gateway has a controller, G6): it waits for the controller however late a loaded
+        // machine runs the lock-step scenario (after 50 ms it used to go on alone, and under load 14 the
+        // drive moved ahead of tomc and faulted). Without it (no AR, IOPS BAD before the first setpoint or
+        // after the gateway's watchdog) the drive runs on its own 1 ms clock and ends in F08501 like a real
+        // one.
+        const bool controller_clock = device.state() == pn::ArState::kRunning &&
+                                      device.output_iops(tomc::drives::kDriveObjectSlot,
+                                                         tomc::drives::kTelegramSubslot) == pn::kIoxsGood;
+        if (!controller_clock) host.cycle();
         // While following the controller, every input frame answers a drive cycle; after 5 ms without one
         // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
         if (device.state() != pn::ArState::kNone && now - last_step > 5'000) send_input();
@@ -200,6 +221,7 @@ class DeviceHost {
   std::atomic<bool> fault_requested_{false};
   std::atomic<std::uint16_t> alarm_requested_{0};
   std::atomic<int> alarm_acks_{0};
+  std::atomic<int> output_frames_{0};
   std::uint16_t alarm_sequence_ = 0;  // device thread only
   mutable std::mutex mutex_;
   std::string error_;
@@ -215,7 +237,7 @@ inline Json scenario(bool through_gateway, int cycles, int reset_every) {
                         {"partition", "tomc-test-" + std::to_string(::getpid())},
                         {"device", "axis1"},
                         {"connect_timeout_s", 10.0},
-                        {"answer_timeout_s", 0.02}};
+                        {"answer_timeout_s", kAnswerTimeout}};
   }
   Json doc;
   doc["cycle_time"] = 0.001;
@@ -333,6 +355,99 @@ inline std::vector<std::vector<double>> run(const Json& doc, const std::string& 
 inline std::string make_hosts(pn::testing::Namespaces& hosts) {
   return hosts.make({"pn-g", "", "10.218.0.1/24"}, {"pn-e", "", "10.218.0.2/24"});
 }
+// `drives` device veth pairs whose gateway ends (pn-g0, pn-g1, ...) are ports of a bridge pn-g (10.218.0.1,
+// the gateway's interface) and whose device ends pn-e<k> (10.218.0.<10+k>) are in the device namespace; ""
+// or why not. Nothing is sent unless bridged_interfaces_only() holds.
+inline std::string make_bridged_hosts(pn::testing::Namespaces& hosts, int drives) {
+  if (::geteuid() != 0) return "not root: ip netns needs CAP_SYS_ADMIN";
+  if (quiet("ip netns add " + hosts.first) != 0 || quiet("ip netns add " + hosts.second) != 0)
+    return "'ip netns add' failed (no permission or no iproute2)";
+  const std::string g = "ip -n " + hosts.first + " ";
+  const std::string d = "ip -n " + hosts.second + " ";
+  std::string script = g + "link add pn-g type bridge && " + g + "addr add 10.218.0.1/24 dev pn-g && " + g +
+                       "link set lo up && " + d + "link set lo up";
+  for (int k = 0; k < drives; ++k) {
+    const std::string n = std::to_string(k);
+    script += " && " + g + "link add pn-g" + n + " type veth peer name pn-e" + n + " && " + g +
+              "link set pn-e" + n + " netns " + hosts.second + " && " + g + "link set pn-g" + n +
+              " master pn-g && " + g + "link set pn-g" + n + " up && " + d + "addr add 10.218.0." +
+              std::to_string(10 + k) + "/24 dev pn-e" + n + " && " + d + "link set pn-e" + n + " up";
+  }
+  script += " && " + g + "link set pn-g up";
+  return quiet("sh -c '" + script + "'") == 0 ? std::string{} : "could not set up the bridge and veth pairs";
+}
+inline bool bridged_interfaces_only(const pn::testing::Namespaces& hosts, int drives) {
+  std::set<std::string> gateway_side{"lo", "pn-g"};
+  std::set<std::string> device_side{"lo"};
+  for (int k = 0; k < drives; ++k) {
+    gateway_side.insert("pn-g" + std::to_string(k));
+    device_side.insert("pn-e" + std::to_string(k));
+  }
+  return hosts.interfaces(hosts.first) == gateway_side && hosts.interfaces(hosts.second) == device_side &&
+         hosts.carrier(hosts.first, "pn-g");
+}
+// The emulated device on pn-e<k> of make_bridged_hosts(): drive-<k+1> at 10.218.0.<10+k>.
+inline DeviceOptions bridged_device(int k) {
+  DeviceOptions options;
+  options.interface = "pn-e" + std::to_string(k);
+  options.name_of_station = "drive-" + std::to_string(k + 1);
+  options.ip = {10, 218, 0, static_cast<std::uint8_t>(10 + k)};
+  return options;
+}
+
+// The gateway file's "devices" for the bridged_device()s 0..drives-1: axis<k+1> on telegram 3.
+inline std::string bridged_devices(int drives) {
+  std::string devices = "[";
+  for (int k = 0; k < drives; ++k) {
+    const std::string n = std::to_string(k + 1);
+    devices += std::string(k == 0 ? "" : ", ") + R"({ "name": "axis)" + n +
+               R"(", "name_of_station": "drive-)" + n + R"(", "ip": "10.218.0.)" + std::to_string(10 + k) +
+               R"(", "telegram": 3 })";
+  }
+  return devices + "]";
+}
+
+// Positioning axes Axis1..AxisN, each through the gateway's device axis<k>: MC_Power at cycle 0,
+// MC_MoveVelocity 20 mm/s at cycle 20; traced: ActualVelocity, ErrorDetail.Number, CommunicationOK per axis.
+inline Json velocity_scenario(int drives, int cycles) {
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] = Json::array();
+  doc["timeline"] = Json::array();
+  doc["trace"] = Json::array();
+  Json moves = Json::array();  // after every MC_Power: the timeline is in time order
+  for (int k = 1; k <= drives; ++k) {
+    const std::string axis = "Axis" + std::to_string(k);
+    doc["technology_objects"].push_back({{"name", axis},
+                                         {"type", "TO_PositioningAxis"},
+                                         {"drive",
+                                          {{"telegram", 3},
+                                           {"adapter",
+                                            {{"type", "dds_gateway"},
+                                             {"domain", kDomain},
+                                             {"partition", "tomc-test-" + std::to_string(::getpid())},
+                                             {"device", "axis" + std::to_string(k)},
+                                             {"connect_timeout_s", 10.0},
+                                             {"answer_timeout_s", kAnswerTimeout}}}}}});
+    doc["timeline"].push_back({{"cycle", 0},
+                               {"instance", "power" + std::to_string(k)},
+                               {"instruction", "MC_Power"},
+                               {"axis", axis},
+                               {"inputs", {{"Enable", true}, {"StartMode", 1}}}});
+    moves.push_back({{"cycle", 20},
+                     {"instance", "move" + std::to_string(k)},
+                     {"instruction", "MC_MoveVelocity"},
+                     {"axis", axis},
+                     {"inputs", {{"Execute", true}, {"Velocity", 20.0}}}});
+    for (const char* variable : {".ActualVelocity", ".ErrorDetail.Number", ".StatusDrive.CommunicationOK"})
+      doc["trace"].push_back(axis + variable);
+  }
+  for (const auto& move : moves)
+    doc["timeline"].push_back(move);
+  return doc;
+}
+
 inline bool own_interfaces_only(const pn::testing::Namespaces& hosts) {
   return hosts.interfaces(hosts.first) == std::set<std::string>{"lo", "pn-g"} &&
          hosts.interfaces(hosts.second) == std::set<std::string>{"lo", "pn-e"} &&

@@ -3,7 +3,9 @@
 // machine's own namespace, deleted with the object. Shared by the namespace tests of tests/profinet: nothing
 // is sent unless each namespace is checked to hold only lo and its own veth end.
 #include <fcntl.h>
+#include <pthread.h>
 #include <sched.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <string>
@@ -50,6 +53,15 @@ inline bool enter(const std::string& ns) {
   const bool ok = ::setns(fd, CLONE_NEWNET) == 0;
   ::close(fd);
   return ok;
+}
+
+// Makes the calling thread SCHED_FIFO at `priority`, as a gateway's cyclic thread runs (`fifo_priority`),
+// so that other processes' load cannot starve it for a watchdog time; children it forks start as normal
+// processes again (SCHED_RESET_ON_FORK). False where the host refuses (no CAP_SYS_NICE).
+inline bool real_time(int priority) {
+  sched_param param{};
+  param.sched_priority = priority;
+  return ::pthread_setschedparam(::pthread_self(), SCHED_FIFO | SCHED_RESET_ON_FORK, &param) == 0;
 }
 
 // A device host's RPC side, once per loop: answers a pending request and sends the ApplicationReady when due.
@@ -124,6 +136,46 @@ class Namespaces {
 
   std::string first;
   std::string second;
+};
+
+// A capture of one interface of a namespace into a pcap file by dumpcap (tshark's capture engine, same
+// Debian package; it starts much faster than tshark), from construction until stop(). `available()` is false
+// where tshark is not installed: the caller skips the check with that reason.
+class Capture {
+ public:
+  static bool available() { return !output_of("command -v tshark && command -v dumpcap").empty(); }
+  Capture(const std::string& ns, const std::string& interface, const std::filesystem::path& file)
+      : file_(file) {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::execlp("ip", "ip", "netns", "exec", ns.c_str(), "dumpcap", "-q", "-i", interface.c_str(), "-w",
+               file.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // dumpcap creates the file once it captures; a little more for the capture filter to be in place.
+    for (int i = 0; i < 100 && !std::filesystem::exists(file); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  ~Capture() {
+    stop();
+    if (std::getenv("TOMC_KEEP_PCAP") == nullptr) std::filesystem::remove(file_);
+  }
+  Capture(const Capture&) = delete;
+  Capture& operator=(const Capture&) = delete;
+  // Lets the last frames reach the file, then ends dumpcap (SIGINT: it closes the file properly).
+  void stop() {
+    if (pid_ <= 0) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ::kill(pid_, SIGINT);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+  pid_t pid_ = -1;
 };
 
 }  // namespace tomc::profinet::testing

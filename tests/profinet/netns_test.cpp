@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -36,6 +37,10 @@ namespace {
 
 constexpr pn::Ipv4Address kControllerIp{10, 217, 0, 1};
 constexpr pn::Ipv4Address kDeviceIp{10, 217, 0, 2};
+// Both host threads run SCHED_FIFO, as the gateway's cyclic thread does with `fifo_priority` (decision I22):
+// under a load of 12 on two cores, normal threads were starved for more than the 20 ms watchdog and the AR
+// ended in the middle of the 300 cycles (175 valid).
+constexpr int kHostPriority = 40;
 
 using pn::testing::enter;
 using pn::testing::now_us;
@@ -48,6 +53,7 @@ void run_device(const std::string& ns, std::atomic<bool>& stop, std::atomic<int>
     error = "setns into the device namespace failed";
     return;
   }
+  (void)pn::testing::real_time(kHostPriority);
   pn::RawSocket raw;
   pn::UdpSocket udp;
   error = raw.open("pn-d");
@@ -115,21 +121,12 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   ASSERT_EQ(hosts.interfaces(hosts.second), (std::set<std::string>{"lo", "pn-d"}));
   ASSERT_TRUE(hosts.carrier(hosts.first, "pn-c"));
 
-  const bool capture = !output_of("command -v tshark").empty();
-  const auto pcap =
-      std::filesystem::temp_directory_path() / ("tomc17-" + std::to_string(::getpid()) + ".pcap");
-  pid_t tshark = -1;
+  const bool capture = pn::testing::Capture::available();
+  std::optional<pn::testing::Capture> dumpcap;
   if (capture) {
-    tshark = ::fork();
-    if (tshark == 0) {
-      // dumpcap (tshark's capture engine, same package) starts much faster than tshark.
-      ::execlp("ip", "ip", "netns", "exec", hosts.first.c_str(), "dumpcap", "-q", "-i", "pn-c", "-w",
-               pcap.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    for (int i = 0; i < 100 && !std::filesystem::exists(pcap); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    dumpcap.emplace(
+        hosts.first, "pn-c",
+        std::filesystem::temp_directory_path() / ("tomc17-" + std::to_string(::getpid()) + ".pcap"));
   }
   std::atomic<bool> stop{false};
   std::atomic<int> device_ars{0};
@@ -140,10 +137,14 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   std::string failure;
   int cycles_valid = 0;
   int cycles_to_loss = 0;
-  std::uint64_t silence_us = 0;  // from the last input frame to the end of the AR
+  std::uint64_t silence_us = 0;                  // from the last input frame to the end of the AR
+  std::uint64_t silence_at_check_before_us = 0;  // ... to the watchdog check before that
   std::uint32_t ar_count = 0;
+  bool controller_real_time = false;
+  bool ran_through = false;  // the AR was still up after the 300 cycles
   std::thread controller_host([&] {
     if (!enter(hosts.first)) return void(failure = "setns into the controller namespace failed");
+    controller_real_time = pn::testing::real_time(kHostPriority);
     pn::RawSocket raw;
     pn::UdpSocket udp;
     if (failure = raw.open("pn-c"); !failure.empty()) return;
@@ -211,6 +212,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
     // One cycle: send the output frame, take every input frame that arrived, check the watchdog.
     std::uint8_t counter = 0;
     std::uint64_t last_input_us = 0;
+    std::uint64_t last_check_us = 0;
     const auto cycle = [&](std::uint64_t deadline) {
       controller.output_data(1, 2)[3] = ++counter;
       if (const std::size_t n = controller.next_output_frame(frame); n > 0)
@@ -222,7 +224,12 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
           last_input_us = now_us();
         }
       }
-      if (controller.watchdog_expired(now_us())) silence_us = now_us() - last_input_us;
+      const std::uint64_t check_us = now_us();
+      if (controller.watchdog_expired(check_us)) {
+        silence_us = check_us - last_input_us;
+        silence_at_check_before_us = last_check_us - last_input_us;
+      }
+      last_check_us = check_us;
     };
     if (!start_up(10))
       return void(failure = "start-up failed, PNIOStatus " + std::to_string(controller.last_error().value()));
@@ -231,6 +238,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
       cycle(deadline += 1000);
       cycles_valid += controller.input_valid(now_us()) ? 1 : 0;
     }
+    ran_through = controller.state() == pn::ControllerArState::kRunning;
     quiet("ip -n " + hosts.first + " link set pn-c down");  // named: never the host's namespace
     while (controller.state() == pn::ControllerArState::kRunning && cycles_to_loss < 200) {
       cycle(deadline += 1000);
@@ -253,27 +261,25 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
   controller_host.join();
   stop = true;
   device_host.join();
-  if (tshark > 0) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    ::kill(tshark, SIGINT);
-    ::waitpid(tshark, nullptr, 0);
-  }
+  if (dumpcap) dumpcap->stop();
 
   ASSERT_EQ(device_error, "");
   ASSERT_EQ(failure, "");
-  // Frames are sent from non-real-time threads on a shared machine: allow some cycles without a fresh frame
-  // (one run in ten under ASan with a parallel build fell below 290 of 300).
-  EXPECT_GE(cycles_valid, 270);
-  // The controller's watchdog (20 × 1 ms) ends the AR more than 20 ms after the last input frame and not much
-  // later (it is checked once a cycle, by a thread that is not real-time here).
+  // Allow some cycles without a fresh frame (one run in ten under ASan with a parallel build, normal threads,
+  // fell below 290 of 300); the AR itself must have run through all 300 (ar_count 2: this one and the
+  // reconnect).
+  EXPECT_TRUE(ran_through);
+  EXPECT_GE(cycles_valid, 270) << (controller_real_time ? "" : "(SCHED_FIFO refused: normal threads)");
+  // The controller's watchdog (20 × 1 ms) ends the AR more than 20 ms after the last input frame, at the
+  // first check after that: the check before it still saw at most 20 ms. (Not a wall-time bound: the cycle
+  // thread waits for the `ip link set down` child, which under load took 60 ms once.)
   EXPECT_GT(silence_us, 20000u);
-  EXPECT_LE(silence_us, 40000u);
+  EXPECT_LE(silence_at_check_before_us, 20000u);
   EXPECT_LE(cycles_to_loss, 40);
   EXPECT_EQ(ar_count, 2u);
   EXPECT_EQ(device_ars, 2);
   if (!capture) GTEST_SKIP() << "tshark is not installed: the capture was not checked";
-  const std::string tree = output_of("tshark -n -P -V -r " + pcap.string() + " 2>&1");
-  if (std::getenv("TOMC_KEEP_PCAP") == nullptr) std::filesystem::remove(pcap);
+  const std::string tree = output_of("tshark -n -P -V -r " + dumpcap->file().string() + " 2>&1");
   EXPECT_EQ(tree.find("Malformed"), std::string::npos);
   EXPECT_EQ(tree.find("Expert Info (Error"), std::string::npos);
   EXPECT_EQ(tree.find("greater than remaining"), std::string::npos);

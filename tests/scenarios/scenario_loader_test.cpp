@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tomc/scenario/config.hpp"
@@ -1003,10 +1004,152 @@ TEST(LegacyParameters, JointRangeErrors) {
             "technology_objects[0].legacy.setvel: 150 exceeds maxvel 100");
   EXPECT_EQ(problem_of(joint_with("maxpos", 50)),
             "technology_objects[0].legacy.minpos: missing: give both software limits or neither");
-  EXPECT_NE(problem_of(joint_with("prsmode", 1)).find("technology_objects[0].legacy.prsmode"),
-            std::string::npos);
+  EXPECT_EQ(problem_of(joint_with("prsmode", 3)),
+            "technology_objects[0].legacy.prsmode: 3 out of range 0..2");
+  EXPECT_EQ(problem_of(joint_with("sprsvel", 101)),
+            "technology_objects[0].legacy.sprsvel: 101 exceeds maxvel 100");
   EXPECT_EQ(problem_of(joint_with("system", "EANPOS")),
             "technology_objects[0].legacy.system: 'EANPOS' is not one of JOINT, H3");
 }
 
 }  // namespace
+
+// spec 05b Part D 1: the JOINT INTDEVICE declaration, 21 tokens on one line (A.1.1), TCamp 1..255,
+// NAxis 2..3, Buffer 3..30000; the line gives TCamp (= the MC_Servo cycle) and the axis' resources (decision
+// A23).
+constexpr const char* kDeclaration =
+    "AX JOINT 10 3 500 2.1 1 3.1 4.1 2.2 2 3.2 4.2 2.3 X X.X 4.3 5.1 5.2 5.3 5.4";
+
+Json declared(const std::string& line, const char* axis = "X") {
+  Json d = with_legacy(R"({"system": "JOINT", "measure": 1, "pulse": 100, "maxvel": 100})", 0.01);
+  d["technology_objects"][0]["legacy"]["INTDEVICE"] = line;
+  d["technology_objects"][0]["legacy"]["axis"] = axis;
+  return d;
+}
+
+std::string replaced(std::string line, const std::string& from, const std::string& to) {
+  return line.replace(line.find(from), from.size(), to);
+}
+
+TEST(LegacyParameters, JointDeclarationPartD1) {
+  EXPECT_TRUE(problems_of(declared(kDeclaration)).empty());
+  // The spec's own line (TCamp 2 ms) parses; its TCamp must then be the cycle time.
+  Json d = declared("AX JOINT 2 3 500 2.1 1 3.1 4.1 2.2 2 3.2 4.2 2.3 X X.X 4.3 5.1 5.2 5.3 5.4");
+  d["cycle_time"] = 0.002;
+  EXPECT_TRUE(problems_of(d).empty());
+  const std::string at = "technology_objects[0].legacy.INTDEVICE: ";
+  // The ranges of TCamp, NAxis and Buffer, as a table: (text replaced in the line, by, the problem).
+  for (const auto& [from, to, message] :
+       std::initializer_list<std::tuple<const char*, const char*, const char*>>{
+           {"JOINT 10", "JOINT 0", "TCamp '0' out of range 1..255"},
+           {"JOINT 10", "JOINT 256", "TCamp '256' out of range 1..255"},
+           {"10 3 500", "10 1 500", "NAxis '1' out of range 2..3"},
+           {"10 3 500", "10 4 500", "NAxis '4' out of range 2..3"},
+           {"10 3 500", "10 3 2", "Buffer '2' out of range 3..30000"},
+           {"10 3 500", "10 3 30001", "Buffer '30001' out of range 3..30000"}}) {
+    EXPECT_EQ(problem_of(declared(replaced(kDeclaration, from, to))), at + message) << from << " -> " << to;
+  }
+  EXPECT_EQ(
+      problem_of(declared(replaced(kDeclaration, " 5.4", ""))),
+      at +
+          "20 tokens: expected 21 on one line, '<name> JOINT TCamp NAxis Buffer', ICont IntL IAZero IoutA of "
+          "X, Y, Z, IOut1 ... IOut4 (X.X / X for an unused one; spec 05b A.1.1)");
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "2.1 1", "2.1 a"))),
+            at + "IntLX 'a' is no input number (or X)");
+  // The axis: Z of a 2-axis device; an axis without its counter or DAC.
+  EXPECT_EQ(problem_of(declared(replaced(kDeclaration, "10 3 500", "10 2 500"), "Z")),
+            "technology_objects[0].legacy.axis: axis Z is beyond NAxis 2");
+  EXPECT_EQ(
+      problem_of(declared(replaced(kDeclaration, "2.1 1 3.1 4.1", "2.1 1 3.1 X.X"))),
+      at + "axis X needs its counter (IContX) and its DAC (IoutAX): at least one bidirectional counter and "
+           "one 16-bit DAC (spec 05b A.1)");
+  // TCamp once only; homing needs IAZero (and IntL for mode 1): axis Z has neither.
+  d = declared(kDeclaration);
+  d["technology_objects"][0]["legacy"]["TCamp"] = 10;
+  EXPECT_EQ(problem_of(d), "technology_objects[0].legacy.TCamp: given by the INTDEVICE line");
+  d = declared(kDeclaration, "Z");
+  d["technology_objects"][0]["legacy"]["prsmode"] = 0;
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].legacy.prsmode: homing needs the enable input IAZero, X.X in the "
+            "INTDEVICE line");
+  d = declared(replaced(kDeclaration, "2.3 X X.X", "2.3 X 3.3"), "Z");
+  d["technology_objects"][0]["legacy"]["prsmode"] = 1;
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].legacy.prsmode: 1 needs the zero-pulse input IntL, X in the INTDEVICE line");
+}
+
+// ---- "analog": {"comedi": {...}}: the analog actor on a real DAQ card (docs/analog-drives.md, decision A21)
+// ----
+
+Json comedi_axis(const char* comedi, bool enable = true, bool ready = true) {
+  Json d = base();
+  auto& to = d["technology_objects"][0];
+  to["config"] =
+      Json{{"Actor.Interface.EnableDriveOutput", enable}, {"Actor.Interface.DriveReadyInput", ready}};
+  to["drive"] = Json{{"adapter", "analog"}, {"telegram", 3}, {"analog", {{"comedi", Json::parse(comedi)}}}};
+  return d;
+}
+
+constexpr const char* kComediCard = R"({"device": "/dev/comedi_tomc_test_missing",
+    "analog_output": {"subdevice": 1, "channel": 0}, "enable_output": {"subdevice": 2, "channel": 0},
+    "ready_input": {"subdevice": 2, "channel": 8}, "counter": {"subdevice": 4, "channel": 0},
+    "counter_width_bits": 24})";
+
+// issue 20 "a missing device at start is a configuration error naming the device": from a scenario or
+// machine file the card is opened while the file is loaded; without the comedi build the loader says so.
+TEST(ComediDrive, MissingCardIsAConfigurationErrorNamingTheDevice) {
+  const std::string problem = problem_of(comedi_axis(kComediCard));
+#if TOMC_WITH_COMEDI
+  EXPECT_EQ(problem.rfind("technology_objects[0].drive.analog.comedi.device: comedi: cannot open "
+                          "/dev/comedi_tomc_test_missing: ",
+                          0),
+            0u)
+      << problem;
+  EXPECT_NE(problem.find("driver loaded"), std::string::npos) << problem;
+  // A file that is there but no comedi device.
+  Json d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["analog"]["comedi"]["device"] = "/dev/null";
+  EXPECT_EQ(problem_of(d).rfind(
+                "technology_objects[0].drive.analog.comedi.device: comedi: cannot open /dev/null: ", 0),
+            0u);
+#else
+  EXPECT_EQ(
+      problem,
+      "technology_objects[0].drive.analog.comedi: this tomc is built without the comedi backend (configure "
+      "with -DTOMC_WITH_COMEDI=ON, which needs Debian's libcomedi-dev)");
+#endif
+}
+
+// The card's keys: device file and channels named by path; the wiring must match Actor.Interface (spec 01
+// §3.12: enable output and ready input each optional); the simulated amplifier's keys do not apply.
+TEST(ComediDrive, CardKeysAndWiringAreChecked) {
+  EXPECT_EQ(problems_of(comedi_axis(R"({"analog_output": {"subdevice": 1}, "counter": {"subdevice": 4,
+      "channel": 0}, "counter_width_bits": 40})",
+                                    false, false)),
+            (std::vector<std::string>{
+                "technology_objects[0].drive.analog.comedi.device: missing",
+                "technology_objects[0].drive.analog.comedi.analog_output.channel: missing",
+                "technology_objects[0].drive.analog.comedi.counter_width_bits: 40 out of range 8..32"}));
+  EXPECT_EQ(
+      problems_of(comedi_axis(R"({"device": "/dev/comedi0", "analog_output": {"subdevice": 1, "channel": 0},
+      "counter": {"subdevice": 4, "channel": 0}, "ready_input": {"subdevice": 2, "channel": 8}})",
+                              true, false)),
+      (std::vector<std::string>{
+          "technology_objects[0].drive.analog.comedi.enable_output: missing: the TO's "
+          "Actor.Interface.EnableDriveOutput is TRUE",
+          "technology_objects[0].drive.analog.comedi.ready_input: the TO's Actor.Interface.DriveReadyInput "
+          "is FALSE (set it TRUE or remove the channel)"}));
+  Json d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["analog"]["amplifier_offset_volts"] = 0.1;
+  EXPECT_EQ(
+      problem_of(d),
+      "technology_objects[0].drive.analog.amplifier_offset_volts: a key of the simulated servo amplifier: "
+      "with \"comedi\" the amplifier is the real one");
+  d = comedi_axis(kComediCard);
+  d["technology_objects"][0]["drive"]["encoder_telegram"] = 83;
+  d["technology_objects"][0]["drive"]["telegram"] = 2;
+  EXPECT_EQ(problem_of(d),
+            "technology_objects[0].drive.encoder_telegram: a separate 81/83 encoder is simulated: with "
+            "\"comedi\" the position is the card's counter");
+}

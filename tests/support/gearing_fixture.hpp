@@ -55,16 +55,19 @@ inline techobjects::PositioningAxisData virtual_rotary_modulo() {
 }
 
 struct GearingMachine {
-  // `add` adds further TOs (cams) before the runtime starts.
-  explicit GearingMachine(techobjects::PositioningAxisData leader = virtual_linear(),
-                          techobjects::PositioningAxisData follower = virtual_linear(),
-                          const std::function<void(techobjects::Runtime&)>& add = {})
+  // `add` adds further TOs (cams) before the runtime starts; `follower_device` gives F a drive (a real,
+  // non-virtual follower), nullptr by default.
+  explicit GearingMachine(
+      techobjects::PositioningAxisData leader = virtual_linear(),
+      techobjects::PositioningAxisData follower = virtual_linear(),
+      const std::function<void(techobjects::Runtime&)>& add = {},
+      const std::function<techobjects::DeviceIo*(techobjects::Runtime&)>& follower_device = {})
       : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
     // The follower is added first: the runtime still runs the leader first (leaders()).
     L = std::make_unique<PositioningAxis>("L", nullptr, leader);
     L2 = std::make_unique<PositioningAxis>("L2", nullptr, leader);
     F = &runtime.emplace<SynchronousAxis>(
-        "F", nullptr, follower,
+        "F", follower_device ? follower_device(runtime) : nullptr, follower,
         std::vector<techobjects::LeadingValueInterconnection>{
             {L.get(), L.get(), techobjects::LeadingValueCoupling::kSetpoint},
             {L2.get(), L2.get(), techobjects::LeadingValueCoupling::kSetpoint}});

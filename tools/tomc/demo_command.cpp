@@ -167,6 +167,8 @@ struct DemoConfig {
   std::vector<scenario::MachineObject> objects;
   std::vector<std::pair<std::string, DemoSequence>> sequences;       // speed axes, by object name
   std::vector<std::pair<std::string, DemoPositioning>> positioning;  // positioning axes, by object name
+  std::vector<std::pair<std::string, DemoCamming>> camming;          // synchronous axes with a cam
+
   diagnostics::ServerOptions server;
   diagnostics::DiagnosticsConfig diagnostics;
 };
@@ -244,6 +246,32 @@ DemoPositioning default_positioning(const techobjects::PositioningAxis& axis) {
     plan.positions = {0.0, 100.0};
   }
   return plan;
+}
+
+// program.<synchronous axis>: {"cam": "<TO_Cam>", "application_mode": 0|1|2}: MC_CamIn to its first leading
+// value instead of the positioning loop.
+void load_camming_program(const Json& entry, const std::string& path, const std::string& name,
+                          DemoConfig& config, scenario::Problems& problems) {
+  only_keys(entry, path, {"cam", "application_mode"}, problems);
+  DemoCamming plan;
+  const Json& cam = entry.at("cam");
+  const auto is_cam = [&](const scenario::MachineObject& o) {
+    return cam.is_string() && o.name == cam.get<std::string>() && o.cam != nullptr;
+  };
+  if (std::none_of(config.objects.begin(), config.objects.end(), is_cam)) {
+    problems.add(scenario::join_path(path, "cam"), "expected the name of a TO_Cam of this machine");
+  } else {
+    plan.cam = cam.get<std::string>();
+  }
+  if (const auto m = entry.find("application_mode"); m != entry.end()) {
+    if (!m->is_number_integer() || m->get<std::int64_t>() < 0 || m->get<std::int64_t>() > 2) {
+      problems.add(scenario::join_path(path, "application_mode"),
+                   "expected 0 (not cyclic), 1 (cyclic) or 2 (cyclic appending)");
+    } else {
+      plan.application_mode = static_cast<std::int32_t>(m->get<std::int64_t>());
+    }
+  }
+  config.camming.emplace_back(name, std::move(plan));
 }
 
 // program.<positioning axis>: {"home_mode": 0|3, "home_position": x, "positions": [...] | "distance": d,
@@ -368,6 +396,8 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
         using Kind = scenario::TechnologyObjectKind;
         if (object->kind == Kind::kSpeedAxis) {
           load_speed_program(entry, path, name, config, problems);
+        } else if (object->kind == Kind::kSynchronousAxis && entry.contains("cam")) {
+          load_camming_program(entry, path, name, config, problems);
         } else if (object->kind == Kind::kPositioningAxis || object->kind == Kind::kSynchronousAxis) {
           load_positioning_program(entry, path, name, object->positioning_axis, config, problems);
         } else if (object->kind == Kind::kCam) {
@@ -504,6 +534,12 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   // axis.
   diagnostics::Diagnostics diagnostics(config.diagnostics);
   std::vector<std::unique_ptr<DemoProgram>> programs;
+  const auto camming_of = [&config](const std::string& name) -> const DemoCamming* {
+    for (const auto& [axis, plan] : config.camming) {
+      if (axis == name) return &plan;
+    }
+    return nullptr;
+  };
   for (const scenario::MachineObject& object : config.objects) {
     if (object.speed_axis != nullptr) {
       diagnostics.add(*object.speed_axis);
@@ -514,8 +550,24 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
         sequence.dwell_s = s.dwell_s;
       }
       programs.push_back(std::make_unique<DemoAxisProgram>(*object.speed_axis, std::move(sequence)));
-    } else if (object.positioning_axis != nullptr) {  // also a synchronous axis
-      diagnostics.add(*object.positioning_axis);
+    } else if (object.cam != nullptr) {
+      diagnostics.add(*object.cam);  // the page's cam plot; read by its followers: no program
+      continue;
+    } else if (object.positioning_axis != nullptr && object.synchronous_axis != nullptr &&
+               camming_of(object.name) != nullptr) {
+      diagnostics.add(*object.synchronous_axis);
+      techobjects::Cam* cam = nullptr;
+      for (const scenario::MachineObject& o : config.objects) {
+        if (o.name == camming_of(object.name)->cam) cam = o.cam;
+      }
+      programs.push_back(std::make_unique<DemoCammingProgram>(*object.synchronous_axis, *cam,
+                                                              camming_of(object.name)->application_mode));
+    } else if (object.positioning_axis != nullptr) {  // also a synchronous axis: its own view
+      if (object.synchronous_axis != nullptr) {
+        diagnostics.add(*object.synchronous_axis);
+      } else {
+        diagnostics.add(*object.positioning_axis);
+      }
       DemoPositioning plan = default_positioning(*object.positioning_axis);
       for (const auto& [name, p] : config.positioning) {
         if (name == object.name) plan = p;
@@ -533,6 +585,13 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
                                  " in its loop; switch off to release the axis for the control panel",
                              *automatic);
     }
+  }
+  // Axes on analog or stepper actors: the page shows the actor's terminals instead of telegram words.
+  for (const scenario::MachineObject& object : config.objects) {
+    if (object.analog_drive != nullptr)
+      diagnostics.set_actor(object.name, diagnostics::ActorSource(object.analog_drive->actor()));
+    if (object.stepper_drive != nullptr)
+      diagnostics.set_actor(object.name, diagnostics::ActorSource(object.stepper_drive->actor()));
   }
   runtime->set_user_program([&programs](techobjects::Runtime& rt) {
     for (auto& p : programs)

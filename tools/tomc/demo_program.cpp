@@ -159,6 +159,70 @@ void DemoPositioningProgram::operator()(const techobjects::CycleClock& clock) no
   reset_(axis_);
 }
 
+// ---- synchronous axis camming ----
+
+DemoCammingProgram::DemoCammingProgram(techobjects::SynchronousAxis& axis, techobjects::Cam& cam,
+                                       std::int32_t application_mode)
+    : axis_(axis) {
+  power_.StartMode = 1;
+  power_.StopMode = 2;
+  home_.Mode = 0;
+  cam_in_.Master = axis.interconnections().empty() ? nullptr : axis.interconnections().front().source;
+  cam_in_.Cam = &cam;
+  cam_in_.SyncProfileReference = 2;  // direct synchronous setting (spec 07 §3.4): no travel to the cam
+  cam_in_.ApplicationMode = application_mode;
+}
+
+void DemoCammingProgram::operator()(const techobjects::CycleClock& clock) noexcept {
+  const double dt = clock.servo_cycle_s;
+  const bool automatic = automatic_.load(std::memory_order_relaxed);
+  power_.Enable = automatic;
+  power_(axis_);
+  const bool enabled = automatic && power_.Status;
+  step_time_s_ += dt;
+  if (!enabled) {
+    step_ = Step::kDisabled;
+    home_.Execute = cam_in_.Execute = false;
+  } else {
+    switch (step_) {
+      case Step::kDisabled:
+        home_.Execute = true;  // a rising edge: Execute was FALSE while disabled
+        step_ = Step::kHoming;
+        break;
+      case Step::kHoming:
+        if (home_.Done) {
+          home_.Execute = false;
+          cam_in_.Execute = true;
+          step_ = Step::kCamming;
+        } else if (home_.Error || home_.CommandAborted) {
+          step_ = Step::kFault;
+          step_time_s_ = 0.0;
+        }
+        break;
+      case Step::kCamming:
+        // The cam job runs for ever (cyclic); a refused or aborted one is started again.
+        if (cam_in_.Error || cam_in_.CommandAborted || !cam_in_.Busy) {
+          step_ = Step::kFault;
+          step_time_s_ = 0.0;
+        }
+        break;
+      case Step::kFault:
+        home_.Execute = cam_in_.Execute = false;
+        if (step_time_s_ >= 1.0 &&
+            !techobjects::test(axis_.data().StatusWord, techobjects::StatusWordBit::kError))
+          step_ = Step::kDisabled;
+        break;
+    }
+  }
+  home_(axis_);
+  cam_in_(axis_);
+  const bool error = techobjects::test(axis_.data().StatusWord, techobjects::StatusWordBit::kError);
+  error_time_s_ = automatic && error ? error_time_s_ + dt : 0.0;
+  reset_.Execute = error_time_s_ >= kAcknowledgeAfterS;
+  if (reset_.Execute) error_time_s_ = 0.0;
+  reset_(axis_);
+}
+
 // ---- external encoder ----
 
 DemoEncoderProgram::DemoEncoderProgram(techobjects::ExternalEncoder& encoder) : encoder_(encoder) {

@@ -5,6 +5,10 @@
 //     active homing), then positioned in a loop: MC_MoveAbsolute between a list of positions, or
 //     MC_MoveRelative steps of one distance (a modulo axis turns on and on); a dwell time after each move
 //     (DemoPositioningProgram).
+//   - A synchronous axis with a cam in its program entry is powered, set to 0 (MC_Home Mode 0) and cams to
+//   its
+//     first leading value with MC_CamIn (direct synchronous setting, the configured application mode), so
+//     that the page shows synchronous operation (DemoCammingProgram).
 //   - An external encoder is enabled (DemoEncoderProgram).
 // A program switch "<axis>.automatic" (shown on the page) takes an axis out of its loop: the program then
 // disables it (MC_Power.Enable = FALSE), which is what the axis control panel needs before it can take master
@@ -16,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "tomc/instructions/mc_cam_in.hpp"
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_home.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
@@ -27,6 +32,7 @@
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace tomc::cli {
 
@@ -105,6 +111,34 @@ class DemoPositioningProgram final : public DemoProgram {
   Step step_ = Step::kDisabled;
   std::size_t target_ = 0;
   std::size_t moves_ = 0;
+  double step_time_s_ = 0.0;
+  double error_time_s_ = 0.0;
+};
+
+struct DemoCamming {
+  std::string cam;                    // the TO_Cam's name
+  std::int32_t application_mode = 2;  // MC_CamIn.ApplicationMode: 0 not cyclic, 1 cyclic, 2 cyclic appending
+};
+
+class DemoCammingProgram final : public DemoProgram {
+ public:
+  enum class Step : std::uint8_t { kDisabled, kHoming, kCamming, kFault };
+
+  // The leading value is the axis' first interconnection (spec 07 §1.2).
+  DemoCammingProgram(techobjects::SynchronousAxis& axis, techobjects::Cam& cam,
+                     std::int32_t application_mode);
+  std::atomic<bool>* automatic() noexcept override { return &automatic_; }
+  Step step() const noexcept { return step_; }
+  void operator()(const techobjects::CycleClock& clock) noexcept override;
+
+ private:
+  techobjects::SynchronousAxis& axis_;
+  std::atomic<bool> automatic_{true};
+  instructions::MC_Power<techobjects::SynchronousAxis> power_;
+  instructions::MC_Home<techobjects::SynchronousAxis> home_;
+  instructions::MC_CamIn<techobjects::SynchronousAxis> cam_in_;
+  instructions::MC_Reset<techobjects::SynchronousAxis> reset_;
+  Step step_ = Step::kDisabled;
   double step_time_s_ = 0.0;
   double error_time_s_ = 0.0;
 };

@@ -228,6 +228,25 @@ typedef struct tomc_MC_HaltSuperimposed {
 TOMC_API void tomc_MC_HaltSuperimposed_init(tomc_MC_HaltSuperimposed* fb);
 TOMC_API tomc_status tomc_MC_HaltSuperimposed_call(tomc_object* axis, tomc_MC_HaltSuperimposed* fb);
 
+/* MC_SetSensor (spec 03 §4.12) on TO_PositioningAxis, TO_SynchronousAxis. */
+typedef struct tomc_MC_SetSensor {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  int16_t Sensor;
+  int32_t Mode;
+  int16_t ReferenceSensor;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_SetSensor;
+TOMC_API void tomc_MC_SetSensor_init(tomc_MC_SetSensor* fb);
+TOMC_API tomc_status tomc_MC_SetSensor_call(tomc_object* axis, tomc_MC_SetSensor* fb);
+
 /* MC_Stop (spec 03 §4.13) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis. */
 typedef struct tomc_MC_Stop {
   tomc_struct_header header; /* set by the init function */
@@ -648,6 +667,21 @@ typedef struct tomc_MC_LeadingValueAdditive {
 } tomc_MC_LeadingValueAdditive;
 TOMC_API void tomc_MC_LeadingValueAdditive_init(tomc_MC_LeadingValueAdditive* fb);
 TOMC_API tomc_status tomc_MC_LeadingValueAdditive_call(tomc_object* axis, tomc_MC_LeadingValueAdditive* fb);
+
+/* MC_SynchronizedMotionSimulation (spec 07 §4.4) on TO_SynchronousAxis. */
+typedef struct tomc_MC_SynchronizedMotionSimulation {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  /* outputs */
+  bool InSimulation;
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_SynchronizedMotionSimulation;
+TOMC_API void tomc_MC_SynchronizedMotionSimulation_init(tomc_MC_SynchronizedMotionSimulation* fb);
+TOMC_API tomc_status tomc_MC_SynchronizedMotionSimulation_call(tomc_object* axis, tomc_MC_SynchronizedMotionSimulation* fb);
 
 #ifdef __cplusplus
 }

@@ -51,6 +51,11 @@ std::string_view describe(std::uint16_t id) noexcept {
       return "the cam elements make no cam (a single point, points out of order, a segment with xmin >= "
              "xmax, "
              "a value that is not finite)";
+    case kSynchronousOperationSimulated:
+      return "the synchronous operation is simulated (MC_SynchronizedMotionSimulation): no new synchronous "
+             "job";
+    case kSimulationNeedsStandstill:
+      return "MC_SynchronizedMotionSimulation: the leading value and the follower must be at standstill";
     case kCamNotInterpolated:
       return "the cam is not interpolated (MC_InterpolateCam)";
     case kInvalidCamElementRange:

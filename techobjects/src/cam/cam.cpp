@@ -61,6 +61,7 @@ void Cam::count_valid_elements() noexcept {
 Submission Cam::interpolate_cam() noexcept {
   // spec 07 §3.2: not while a follower uses the cam; the profile in use stays as it is.
   if (users_ > 0) return Submission::reject(error_id::kCamInUse);
+  ++interpolation_count_;  // before the profile changes (diagnostics, cam plot)
   set_status(CamStatusWordBit::kInInterpolation, true);
   try {
     last_interpolation_ = ::tomc::techobjects::interpolate_cam(db_, profile_);

@@ -136,6 +136,23 @@ void DriveConnection::read() noexcept {
   }
 }
 
+void DriveConnection::set_encoder_control(EncoderSource source, tg::EncoderControlWord word) noexcept {
+  switch (source) {
+    case EncoderSource::kDriveG1:
+      drive_sp_.G1_STW = word;
+      break;
+    case EncoderSource::kDriveG2:
+      drive_sp_.G2_STW = word;
+      break;
+    case EncoderSource::kEncoderG1:
+      encoder_sp_[0].G1_STW = word;
+      break;
+    case EncoderSource::kEncoder2G1:
+      encoder_sp_[1].G1_STW = word;
+      break;
+  }
+}
+
 void DriveConnection::write(const ServoCommand& command) noexcept {
   if (device_ == nullptr) return;
   speed_setpoint_rpm_ = command.speed_rpm;
@@ -146,17 +163,7 @@ void DriveConnection::write(const ServoCommand& command) noexcept {
     drive_sp_.STW2.set(tg::Stw2Bit::kTravelToFixedStop, command.travel_to_fixed_stop);
     fixed_stop_sent_ = command.travel_to_fixed_stop;
   }
-  switch (command.encoder) {
-    case EncoderSource::kDriveG1:
-      drive_sp_.G1_STW = command.encoder_control;
-      break;
-    case EncoderSource::kDriveG2:
-      drive_sp_.G2_STW = command.encoder_control;
-      break;
-    case EncoderSource::kEncoderG1:
-      encoder_sp_[0].G1_STW = command.encoder_control;
-      break;
-  }
+  set_encoder_control(command.encoder, command.encoder_control);
   const auto& drive_codec = codecs_(tg::Direction::kSetpoint, Slot::kDrive);
   const std::uint8_t master = config_.isochronous ? master_.next() : 0;
   if (drive_codec.frame_size() != 0) {

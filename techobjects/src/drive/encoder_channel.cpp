@@ -1,5 +1,7 @@
 #include "tomc/techobjects/drive/encoder_channel.hpp"
 
+#include <algorithm>
+
 #include "tomc/telegrams/codec.hpp"
 #include "tomc/telegrams/encoder.hpp"
 
@@ -17,19 +19,29 @@ bool carries(std::uint16_t telegram, tg::Signal signal) {
 
 }  // namespace
 
-std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number) {
+std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number,
+                                                 std::span<const EncoderSource> taken) {
+  const auto free = [&](EncoderSource s) { return std::find(taken.begin(), taken.end(), s) == taken.end(); };
   if (number == 2) {
-    if (carries(device.drive_telegram, tg::Signal::G2_XIST1)) return EncoderSource::kDriveG2;
-  } else if (carries(device.drive_telegram, tg::Signal::G1_XIST1)) {
+    if (carries(device.drive_telegram, tg::Signal::G2_XIST1) && free(EncoderSource::kDriveG2)) {
+      return EncoderSource::kDriveG2;
+    }
+  } else if (carries(device.drive_telegram, tg::Signal::G1_XIST1) && free(EncoderSource::kDriveG1)) {
     return EncoderSource::kDriveG1;
   }
-  if (carries(device.encoder_telegrams[0], tg::Signal::G1_XIST1)) return EncoderSource::kEncoderG1;
+  if (carries(device.encoder_telegrams[0], tg::Signal::G1_XIST1) && free(EncoderSource::kEncoderG1)) {
+    return EncoderSource::kEncoderG1;
+  }
+  if (carries(device.encoder_telegrams[1], tg::Signal::G1_XIST1) && free(EncoderSource::kEncoder2G1)) {
+    return EncoderSource::kEncoder2G1;
+  }
   return std::nullopt;
 }
 
 void EncoderChannel::read(const DriveConnection& drive, bool fresh) noexcept {
-  const tg::ActualSignals& a =
-      source_ == EncoderSource::kEncoderG1 ? drive.encoder_actual(0) : drive.drive_actual();
+  const tg::ActualSignals& a = source_ == EncoderSource::kEncoderG1    ? drive.encoder_actual(0)
+                               : source_ == EncoderSource::kEncoder2G1 ? drive.encoder_actual(1)
+                                                                       : drive.drive_actual();
   const bool g2 = source_ == EncoderSource::kDriveG2;
   const tg::EncoderStatusWord zsw = g2 ? a.G2_ZSW : a.G1_ZSW;
   const std::uint32_t xist2 = g2 ? a.G2_XIST2 : a.G1_XIST2;

@@ -73,6 +73,7 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   if (op < 1 || op > 4 || !start_->Sensor[op - 1].Existent) {
     fail("PositionControl.InitialOperativeSensor", "names an encoder whose Sensor[n].Existent is FALSE");
   }
+  db_.OperativeSensor = op;
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
   if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
   if (device_ != nullptr) {
@@ -85,11 +86,40 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
                std::to_string(cfg.drive_telegram) + ", encoder telegram " +
                std::to_string(cfg.encoder_telegrams[0]) + ")");
     }
-    encoder_source_ = *source;
+    encoder_ = EncoderChannel(AxisMechanics{}, EncoderMechanics{}, 0.001, *source);
     drive_ = DriveConnection(*device_, with_reference_values(drive, start_->Actor));
+    // Every other existing encoder gets its storage now (decision B1) and its own telegram part.
+    std::size_t count = 0;
+    for (std::uint32_t n = 1; n <= 4; ++n)
+      count += n != op && start_->Sensor[n - 1].Existent ? 1 : 0;
+    additional_.reserve(count);
+    std::array<EncoderSource, 4> taken{*source};
+    std::size_t i = 0;
+    for (std::uint32_t n = 1; n <= 4; ++n) {
+      if (n == op || !start_->Sensor[n - 1].Existent) continue;
+      const auto s = find_encoder_source(cfg, start_->Sensor[n - 1].Interface.Number,
+                                         std::span<const EncoderSource>(taken.data(), i + 1));
+      if (!s) {
+        fail(
+            "Sensor[" + std::to_string(n) + "].Interface.Number",
+            "the device's telegrams carry no further encoder (the other encoders of the axis read them all)");
+      }
+      taken[i + 1] = *s;
+      AdditionalEncoder& e = additional_.all()[i++];
+      e.number = n;
+      e.channel = EncoderChannel(AxisMechanics{}, EncoderMechanics{}, 0.001, *s);
+    }
   }
   configure_components();
   if (const auto& p = encoder_.chain().config_problem()) fail(p->path, p->message);
+  for (const AdditionalEncoder& e : additional_.all()) {
+    if (const auto& p = e.channel.chain().config_problem()) {
+      const bool encoder_path = p->path.starts_with("Sensor.");
+      fail(encoder_path ? "Sensor[" + std::to_string(e.number) + "]" + std::string(p->path.substr(6))
+                        : std::string(p->path),
+           p->message);
+    }
+  }
   // Backlash compensation exists for motor-shaft encoders only (spec 01 §5.2, §5.9, spec 04 §3.6).
   if (start_->Sensor[op - 1].Backlash.Enable &&
       start_->Sensor[op - 1].MountingMode != static_cast<std::int32_t>(EncoderMounting::kMotorShaft)) {
@@ -108,7 +138,7 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
            "105 or 106, not " +
                std::to_string(telegram) + " (seed 004 §6.13.1)");
     }
-    if (encoder_source_ != EncoderSource::kDriveG1) {
+    if (encoder_.source() != EncoderSource::kDriveG1) {
       fail("PositionControl.EnableDSC",
            "DSC needs the drive's motor encoder (G1 of the drive telegram) as the operative encoder: set "
            "Sensor[" +
@@ -120,7 +150,6 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
     drive_has_momred_ = carries(telegram, tg::Signal::MOMRED, tg::Direction::kSetpoint);
     drive_has_meldw_ = carries(telegram, tg::Signal::MELDW);
   }
-  db_.OperativeSensor = op;
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
   position_controlled_ = true;
 }
@@ -128,7 +157,6 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
 // Everything derived from the data block and the cycle time. Runs at construction, on the first servo
 // cycle (when the cycle time is known) and after a restart; no allocation.
 void PositioningAxis::configure_components() noexcept {
-  const auto& s = db_.Sensor[db_.PositionControl.InitialOperativeSensor - 1];
   mechanics_.MotionType = static_cast<AxisMotionType>(db_.Properties.MotionType);
   mechanics_.LoadGear = GearRatio{db_.LoadGear.Numerator, db_.LoadGear.Denominator};
   mechanics_.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
@@ -136,12 +164,7 @@ void PositioningAxis::configure_components() noexcept {
   mechanics_.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
   mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
   mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
-  encoder_mechanics_ = sensor_encoder_mechanics(s);
-  encoder_mechanics_.MountingMode = static_cast<EncoderMounting>(s.MountingMode);
-  encoder_mechanics_.MeasuringGear = GearRatio{s.MeasuringGear.Numerator, s.MeasuringGear.Denominator};
-  encoder_mechanics_.Nist = encoder_source_ == EncoderSource::kEncoderG1 ? NistSource::kEncoderTelegram83
-                                                                         : NistSource::kDriveTelegram;
-  encoder_ = EncoderChannel(mechanics_, encoder_mechanics_, servo_cycle_s_, encoder_source_);
+  configure_encoders();
 
   PositionControlConfig pc;
   pc.Kv = db_.PositionControl.Kv;
@@ -606,7 +629,7 @@ void PositioningAxis::store_adjustment() noexcept {
 
 void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept {
   if (!absolute_encoder() || !data.valid) return;
-  retained_ = data;
+  retained_ = data;  // before start: the operative encoder is the start-up one
   retained_restored_ = true;
   homed_ = true;  // an adjusted absolute encoder is homed after power-up (spec 02 §5.12)
   db_.StatusSensor[db_.OperativeSensor - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);

@@ -41,6 +41,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
       r.MeasuringRangeCount = retained_.MeasuringRangeCount;
       r.LastAbsoluteValue = retained_.LastAbsoluteValue;
       encoder_.chain().power_up(&r);
+      power_up_additional_encoders();
       // The backlash was crossed in DirectionAbsoluteHoming before the adjustment (spec 02 §5.11 Mode 6/7).
       backlash_.assume_contact(
           db_.Sensor[db_.OperativeSensor - 1].Backlash.DirectionAbsoluteHoming == 0 ? 1 : -1);
@@ -73,6 +74,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   if (device_ != nullptr) {
     command_.encoder = encoder_.source();
     command_.encoder_control = encoder_.control_word();  // absolute value cyclically, error acknowledge
+    write_additional_encoder_controls();
     drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
     drive_.write(command_);
   }
@@ -104,7 +106,15 @@ void PositioningAxis::read_actual_values() noexcept {
   sensor.State =
       static_cast<std::int32_t>(actual_valid_ ? SensorState::VALID : SensorState::WAITING_FOR_VALID);
   actual_position_ = encoder_.chain().continuous_position();
+  if (sensor_switch_difference_ != 0.0) {
+    // MC_SetSensor Mode 1: D·exp(-t/T) on top of the new encoder (spec 01 §3.8); T = 0: at once.
+    const double t = db_.PositionControl.SmoothingTimeByChangeDifference;
+    sensor_switch_difference_ *= t > 0.0 ? std::exp(-servo_cycle_s_ / t) : 0.0;
+    if (std::fabs(sensor_switch_difference_) < 1e-12) sensor_switch_difference_ = 0.0;
+    actual_position_ += sensor_switch_difference_;
+  }
   actual_velocity_ = encoder_.chain().velocity();
+  read_additional_encoders();
   core_.supervise_drive(drive_);
 }
 
@@ -290,6 +300,8 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
     if (device_ != nullptr) {
       drive_.acknowledge();
       encoder_.acknowledge();
+      for (AdditionalEncoder& e : additional_.all())
+        e.channel.acknowledge();
     }
     if (*restart_requested) restart();
     core_.finish_reset();
@@ -721,6 +733,7 @@ void PositioningAxis::update_status() noexcept {
   sensor.Velocity = db_.ActualVelocity;
   sensor.ModuloCycle = db_.ActualModuloCycle;
   if (virtual_axis()) sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);  // §2.5 table
+  update_additional_encoder_status();
 
   const bool positioning = motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative;
   db_.StatusPositioning.TargetPosition =
@@ -811,18 +824,21 @@ void PositioningAxis::restart() noexcept {
   // its position and its reference (spec 01 §2.4.1, spec 04 §8 rule 8); HW-limit Active returns to its start
   // value (spec 02 §4.4).
   const auto changed = StatusWordBit::kOnlineStartValuesChanged;
-  abort_synchronous(0);
+  restart_synchronous();
   // An adjusted absolute encoder stays adjusted until new encoder settings are downloaded, and a restart is
   // not such a download: its retained offset is restored below (spec 02 §5.1, §5.12).
   std::array<std::int32_t, 4> adjusted{};  // StatusSensor[1..4]
   for (std::size_t n = 0; n < adjusted.size(); ++n)
     adjusted[n] = db_.StatusSensor[n].Adjusted;
+  // The start-up encoder closes the loop again (spec 04 PositionControl.InitialOperativeSensor).
+  const std::uint32_t operative = make_operative(start_->PositionControl.InitialOperativeSensor);
   db_ = *start_;
   core_.restart();
   assign(db_.StatusWord, changed, false);
-  db_.OperativeSensor = db_.PositionControl.InitialOperativeSensor;
+  db_.OperativeSensor = operative;
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
   superimposed_ = SuperimposedMotion{};
+  sensor_switch_difference_ = 0.0;
   motion_ = Motion{};
   pending_ = Motion{};
   generator_ = Generator::kIdle;
@@ -832,7 +848,14 @@ void PositioningAxis::restart() noexcept {
   clamp_abort_pending_ = false;
   units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
   const RetainedSensorState retained = encoder_.chain().retained_state();
+  std::array<RetainedSensorState, 3> additional_retained{};
+  for (std::size_t i = 0; i < additional_.all().size(); ++i)
+    additional_retained[i] = additional_.all()[i].channel.chain().retained_state();
   configure_components();
+  for (std::size_t i = 0; i < additional_.all().size(); ++i) {
+    ActualValueChain& chain = additional_.all()[i].channel.chain();
+    if (chain.absolute_type()) chain.power_up(&additional_retained[i]);
+  }
   if (encoder_.chain().absolute_type()) {
     encoder_.chain().power_up(&retained);
     for (std::size_t n = 0; n < adjusted.size(); ++n) {

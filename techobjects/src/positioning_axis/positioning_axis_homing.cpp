@@ -229,12 +229,31 @@ void PositioningAxis::run_passive_homing() noexcept {
   }
 }
 
+// MC_Home with Sensor = n, an encoder that is not the operative one (S7-1500T): only the incremental encoder
+// adjustment (Mode 13) addresses such an encoder (spec 02 §5.10); it sets that encoder's actual position, and
+// the axis' position and homing state stay as they are (decision B5). Other modes: 16#811A.
+Submission PositioningAxis::home_other_encoder(const HomeInputs& in) noexcept {
+  AdditionalEncoder* e =
+      in.Sensor >= 1 && in.Sensor <= 4 ? additional_.find(static_cast<std::uint32_t>(in.Sensor)) : nullptr;
+  if (e == nullptr || in.Mode != 13) return Submission::reject(error_id::kInvalidSensor);
+  if (e->channel.chain().absolute_type()) return Submission::reject(error_id::kHomingModeNotAvailable);
+  // Enabled with position control, or disabled; no alarm pending (spec 02 §5.10).
+  if (core_.alarms.any_error()) return Submission::reject(error_id::kAxisBlockedByAlarm);
+  if (core_.phase == PowerPhase::kEnabled && !position_controlled_) {
+    return Submission::reject(error_id::kNotPositionControlled);
+  }
+  if (!e->channel.valid()) return Submission::reject(error_id::kEncoderNotValid);
+  (void)e->channel.set_position(in.Position);
+  db_.StatusSensor[e->number - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+  return Submission::accept(core_.jobs.create(JobKind::kHome, JobState::kDone));
+}
+
 Submission PositioningAxis::home(const HomeInputs& in) noexcept {
   if (const auto e = core_.control.program_job_rejection()) return Submission::reject(e);
   if (!std::isfinite(in.Position)) return Submission::reject(error_id::kInvalidPosition);
   if (in.Mode < 0 || in.Mode > 13 || in.Mode == 4) return Submission::reject(error_id::kInvalidMode);
   if (in.Sensor != 0 && static_cast<std::uint32_t>(in.Sensor) != db_.OperativeSensor) {
-    return Submission::reject(error_id::kInvalidSensor);  // S7-1500: only the operative encoder
+    return home_other_encoder(in);  // [T] an encoder that does not close the loop
   }
   const auto& sensor_config = db_.Sensor[db_.OperativeSensor - 1];
   const bool absolute = sensor_config.Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
@@ -334,6 +353,12 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
     delta = wanted - shown_actual;
   }
   shift_position(delta);
+  // Direct homing moves every encoder of the axis by the same amount; only Mode 13 adjusts the one encoder
+  // (spec 02 §5.10: "unlike Mode 0, the shift is not applied to all encoders").
+  if (in.Mode != 13) {
+    for (AdditionalEncoder& e : additional_.all())
+      e.channel.chain().shift_offset(delta);
+  }
   double reference = wanted;
   if (in.Mode == 11) reference = in.Position;
   if (in.Mode == 12) reference = shown_setpoint + in.Position;

@@ -69,7 +69,7 @@ double shown_master_offset(double master_offset, double x_sync, const ModuloRang
 }  // namespace
 
 Submission SynchronousOperation::cam_in(const CamInInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   // Parameters (spec 07 §3.4, §1.10).
   if (!std::isfinite(in.MasterOffset)) return Submission::reject(error_id::kInvalidMasterOffset);
   if (!std::isfinite(in.SlaveOffset)) return Submission::reject(error_id::kInvalidSlaveOffset);
@@ -339,7 +339,7 @@ void SynchronousOperation::step_cam(const LeadingValue& leader) noexcept {
     // Not cyclic: the synchronous operation ends at the cam end, the follower holds it (spec 07 §6.2, O-10:
     // Busy and InSync FALSE, EndOfProfile TRUE).
     sync_setpoint_ = MotionState{f.position + offset_.value, 0.0, 0.0};
-    axis_.set_setpoint(sync_setpoint_);
+    if (simulation_ == 0) axis_.set_setpoint(sync_setpoint_);  // simulated, the axis is not following
     end_active(JobState::kDone, 0);
   }
 }

@@ -44,7 +44,7 @@ std::optional<std::uint16_t> SynchronousOperation::shift_requirements(bool phasi
   if (active_.id == 0) return error_id::kNoSynchronousOperation;
   if (active_.kind == JobKind::kGearInVelocity) return error_id::kVelocityGearingActive;
   if (active_.phase != Phase::kSynchronous) return error_id::kNotSynchronous;
-  if ((phasing ? offset_job_.id : phasing_.id) != 0) return error_id::kPhasingAndOffsetExclusive;
+  if (shift_job_.id != 0 && shift_job_.phasing != phasing) return error_id::kPhasingAndOffsetExclusive;
   return std::nullopt;
 }
 
@@ -53,9 +53,7 @@ Submission SynchronousOperation::phasing(const PhasingInputs& in, bool absolute)
   const std::int32_t p = in.ProfileReference;
   if (p != 0 && p != 1 && p != 2 && p != 5) return Submission::reject(error_id::kInvalidProfileReference);
   if (p == 5) {  // only cancel a waiting phasing job (spec 07 §4.1)
-    if (phasing_.id != 0 && phasing_.waiting) {
-      end_shift(phasing_, phase_shift_, phasing_finished_, JobState::kAborted, 0);
-    }
+    cancel_waiting_shift(true);
     return Submission::accept(axis_.jobs().create(JobKind::kPhasing, JobState::kDone));
   }
   if (!std::isfinite(in.PhaseShift)) return Submission::reject(error_id::kInvalidPhaseShift);
@@ -76,20 +74,23 @@ Submission SynchronousOperation::phasing(const PhasingInputs& in, bool absolute)
     return Submission::reject(error_id::kNoSynchronousOperation);  // [IMPL] another leader: none with it
   if (p == 0 && active_.kind == JobKind::kCamIn)
     return Submission::reject(error_id::kPhasingProfileNeedsGearing);
-  const double r = ratio(active_.numerator, active_.denominator);
-  PositionProfile travel;
+  ShiftJob job;
+  job.phasing = true;
+  job.profile = p;
+  job.length = in.PhasingDistance;
+  job.start_position = in.StartPosition;
+  job.committed = in.Direction;  // start_shift() turns the input into a direction
+  job.ratio = ratio(active_.numerator, active_.denominator);
   if (p == 0) {
     // A time-based positioning of the follower's extra travel r·Δφ (spec 07 §6.6); φ = travel / r. A new job
     // starts from the phase shift reached (a running one is aborted below, S5 "A").
     const double delta = absolute ? in.PhaseShift - phase_shift_.value : in.PhaseShift;
-    if (!travel.plan(MotionState{}, r * delta, limits)) return Submission::reject(error_id::kInvalidVelocity);
+    PositionProfile plan;
+    if (!plan.plan(MotionState{}, job.ratio * delta, limits) || !job.travel.take(plan, job.ratio * delta))
+      return Submission::reject(error_id::kInvalidVelocity);
   }
   if (const auto e = arbitrate_row(NewSyncRow::kPhasing)) return Submission::reject(e);  // S5 "A"
-  if (p == 0) phasing_profile_ = travel;
-  const Submission s = start_shift(phasing_, phase_shift_, JobKind::kPhasing, p, in.PhaseShift, absolute,
-                                   in.PhasingDistance, in.StartPosition, in.Direction);
-  phasing_.ratio = r;
-  return s;
+  return start_shift(job, in.PhaseShift, absolute);
 }
 
 Submission SynchronousOperation::offset(const OffsetInputs& in, bool absolute) noexcept {
@@ -97,9 +98,7 @@ Submission SynchronousOperation::offset(const OffsetInputs& in, bool absolute) n
   const std::int32_t p = in.ProfileReference;
   if (p != 1 && p != 2 && p != 5) return Submission::reject(error_id::kInvalidProfileReference);
   if (p == 5) {  // only cancel a waiting offset job (spec 07 §4.2)
-    if (offset_job_.id != 0 && offset_job_.waiting) {
-      end_shift(offset_job_, offset_, offset_finished_, JobState::kAborted, 0);
-    }
+    cancel_waiting_shift(false);
     return Submission::accept(axis_.jobs().create(JobKind::kOffset, JobState::kDone));
   }
   if (!std::isfinite(in.Offset)) return Submission::reject(error_id::kInvalidOffset);
@@ -109,29 +108,31 @@ Submission SynchronousOperation::offset(const OffsetInputs& in, bool absolute) n
   if (in.Direction < 1 || in.Direction > 3) return Submission::reject(error_id::kInvalidDirection);
   if (const auto e = shift_requirements(false)) return Submission::reject(*e);
   if (const auto e = arbitrate_row(NewSyncRow::kOffset)) return Submission::reject(e);  // S6 "A"
-  return start_shift(offset_job_, offset_, JobKind::kOffset, p, in.Offset, absolute, in.OffsetDistance,
-                     in.StartPosition, in.Direction);
+  ShiftJob job;
+  job.profile = p;
+  job.length = in.OffsetDistance;
+  job.start_position = in.StartPosition;
+  job.committed = in.Direction;
+  return start_shift(job, in.Offset, absolute);
 }
 
 // What phasing and offset jobs share at their start: Δ from the present shift (absolute: to the target;
 // relative: the increment, spec 07 §6.6), the leading value the distance starts from, the waiting state of
-// profile 2. Δ = 0 ends the job at once (Done, no motion).
-Submission SynchronousOperation::start_shift(ShiftJob& job, Shift& shift, AxisJobKind kind,
-                                             std::int32_t profile, double target, bool absolute,
-                                             double length, double start_position,
-                                             std::int32_t direction) noexcept {
+// profile 2. Δ = 0 ends the job at once (Done, no motion). `prepared.committed` holds the Direction input.
+Submission SynchronousOperation::start_shift(const ShiftJob& prepared, double target,
+                                             bool absolute) noexcept {
   const LeadingValue leader = sample(active_.source);
-  ShiftJob j;
-  j.profile = profile;
+  const Shift& shift = shift_of(prepared.phasing);
+  const AxisJobKind kind = prepared.phasing ? JobKind::kPhasing : JobKind::kOffset;
+  const auto direction = static_cast<std::int32_t>(prepared.committed);
+  ShiftJob j = prepared;
   j.from = shift.value;
   j.delta = absolute ? target - shift.value : target;
-  j.length = length;
-  j.start_position = start_position;
-  j.waiting = profile == 2;
+  j.waiting = j.profile == 2;
   j.committed = committed_direction(direction, leader.velocity);
   j.x_start = j.x_extreme = j.last_x = leader.position;
   if (j.delta == 0.0) {
-    FinishedShift& finished = kind == JobKind::kPhasing ? phasing_finished_ : offset_finished_;
+    FinishedShift& finished = finished_of(prepared.phasing);
     finished.id = axis_.jobs().create(kind, JobState::kDone);
     finished.outputs = ShiftJobOutputs{false, shift.value, 0.0};
     return Submission::accept(finished.id);
@@ -139,45 +140,69 @@ Submission SynchronousOperation::start_shift(ShiftJob& job, Shift& shift, AxisJo
   // Direction 1/2 fix the direction; 3 takes it from the leading value's motion (profile 2: at the crossing).
   if (direction == 3 && j.waiting) j.committed = 0.0;
   j.id = axis_.jobs().create(kind, JobState::kActive);
-  job = j;
+  shift_job_ = j;
   return Submission::accept(j.id);
 }
 
-void SynchronousOperation::end_shift(ShiftJob& job, const Shift& shift, FinishedShift& finished,
-                                     JobState state, std::uint16_t error_id) noexcept {
+void SynchronousOperation::end_shift(JobState state, std::uint16_t error_id) noexcept {
+  ShiftJob& job = shift_job_;
   if (job.id == 0) return;
   axis_.jobs().set(job.id, state, error_id);
+  const Shift& shift = shift_of(job.phasing);
+  FinishedShift& finished = finished_of(job.phasing);
   finished.id = job.id;
   finished.outputs = ShiftJobOutputs{false, shift.value, shift.value - job.from};
   job = ShiftJob{};
 }
 
+void SynchronousOperation::cancel_waiting_shift(bool phasing) noexcept {
+  if (shift_job_.id != 0 && shift_job_.phasing == phasing && shift_job_.waiting)
+    end_shift(JobState::kAborted, 0);
+}
+
 void SynchronousOperation::end_shifts() noexcept {
-  end_shift(phasing_, phase_shift_, phasing_finished_, JobState::kAborted, 0);
-  end_shift(offset_job_, offset_, offset_finished_, JobState::kAborted, 0);
+  end_shift(JobState::kAborted, 0);
   phase_shift_ = Shift{};
   offset_ = Shift{};
 }
 
-void SynchronousOperation::step_shifts(const LeadingValue& effective) noexcept {
-  step_shift(phasing_, phase_shift_, phasing_finished_, effective);
-  step_shift(offset_job_, offset_, offset_finished_, effective);
+bool SynchronousOperation::RestToRestTravel::take(const PositionProfile& plan, double to) noexcept {
+  const auto from = plan.segments();
+  if (from.size() > segments.size()) return false;
+  std::copy(from.begin(), from.end(), segments.begin());
+  count = static_cast<std::uint32_t>(from.size());
+  duration = plan.duration();
+  target = to;
+  return true;
+}
+
+MotionState SynchronousOperation::RestToRestTravel::at(double t) const noexcept {
+  if (count == 0 || !(t < duration)) return MotionState{target, 0.0, 0.0};
+  std::uint32_t i = count - 1;
+  while (i > 0 && segments[i].start_time > t)
+    --i;
+  const ProfileSegment& k = segments[i];
+  const double d = std::max(0.0, t - k.start_time);
+  const double a = k.acceleration + d * k.jerk;  // the cubic in the segment's local time
+  const double v = k.velocity + d * (k.acceleration + a) / 2.0;
+  return MotionState{k.position + d * k.velocity + d * d * (k.acceleration / 2.0 + d * k.jerk / 6.0), v, a};
 }
 
 // One MC_Interpolator cycle of a phasing or offset job (spec 07 §6.6).
-void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift& finished,
-                                      const LeadingValue& effective) noexcept {
-  shift.velocity = shift.acceleration = 0.0;
+void SynchronousOperation::step_shift(const LeadingValue& effective) noexcept {
+  phase_shift_.velocity = phase_shift_.acceleration = offset_.velocity = offset_.acceleration = 0.0;
+  ShiftJob& job = shift_job_;
   if (job.id == 0) return;
+  Shift& shift = shift_of(job.phasing);
   const double x = effective.position;
   if (job.profile == 0) {
     // Phasing with dynamic parameters: independent of the leading value; φ follows the follower's profile.
     const double t = static_cast<double>(++job.cycles) * axis_.ipo_cycle_s();  // no summed rounding
-    const MotionState z = phasing_profile_.at(t);
+    const MotionState z = job.travel.at(t);
     shift = Shift{job.from + z.position / job.ratio, z.velocity / job.ratio, z.acceleration / job.ratio};
-    if (t >= phasing_profile_.duration() - 1e-12) {
+    if (t >= job.travel.duration - 1e-12) {
       shift = Shift{job.from + job.delta, 0.0, 0.0};
-      end_shift(job, shift, finished, JobState::kDone, 0);
+      end_shift(JobState::kDone, 0);
     }
     return;
   }
@@ -210,7 +235,7 @@ void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift
   // §4.1, §6.6).
   const double back = job.committed * (job.x_extreme - x);
   if (back > 1e-9 * std::max(1.0, std::fabs(x))) {
-    end_shift(job, shift, finished, JobState::kError, error_id::kLeadingValueReversed);
+    end_shift(JobState::kError, error_id::kLeadingValueReversed);
     return;
   }
   if (back < 0.0) job.x_extreme = x;
@@ -223,17 +248,15 @@ void SynchronousOperation::step_shift(ShiftJob& job, Shift& shift, FinishedShift
                                     s.ds * per_x * effective.acceleration);
   if (xi >= 1.0 - 1e-12) {  // the summed leading value may end a rounding short of the distance
     shift = Shift{job.from + job.delta, 0.0, 0.0};
-    end_shift(job, shift, finished, JobState::kDone, 0);
+    end_shift(JobState::kDone, 0);
   }
 }
 
 ShiftJobOutputs SynchronousOperation::shift_outputs(JobId job) const noexcept {
   if (job == 0) return {};
-  for (const auto* k : {&phasing_, &offset_job_}) {
-    if (k->id == job) {
-      const Shift& shift = k == &phasing_ ? phase_shift_ : offset_;
-      return ShiftJobOutputs{!k->waiting, shift.value, shift.value - k->from};
-    }
+  if (shift_job_.id == job) {
+    const Shift& shift = shift_job_.phasing ? phase_shift_ : offset_;
+    return ShiftJobOutputs{!shift_job_.waiting, shift.value, shift.value - shift_job_.from};
   }
   if (phasing_finished_.id == job) return phasing_finished_.outputs;
   if (offset_finished_.id == job) return offset_finished_.outputs;

@@ -206,9 +206,11 @@ void SynchronousOperation::end_desync(JobState state, std::uint16_t error_id) no
 }
 
 void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
+  // A simulated synchronous operation survives disabling, alarms and MC_Stop (spec 07 §4.4); a restart ends
+  // it (restart()).
+  if (simulation_ != 0) return;
   const JobState state = error_id == 0 ? JobState::kAborted : JobState::kError;
-  end_shift(phasing_, phase_shift_, phasing_finished_, state, error_id);
-  end_shift(offset_job_, offset_, offset_finished_, state, error_id);
+  end_shift(state, error_id);
   end_active(state, error_id);
   end_pending(state, error_id);
   end_desync(state, error_id);
@@ -216,6 +218,9 @@ void SynchronousOperation::abort(std::uint16_t error_id) noexcept {
 
 // §9.19.2: a new job against the running synchronous jobs (spec 07 §5.1). Decide first, then abort.
 std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
+  // Simulated: single-axis jobs move the follower and abort nothing synchronous (spec 07 §4.4); the new
+  // synchronous jobs were refused with 16#8076 before they got here.
+  if (simulation_ != 0) return 0;
   NewSyncRow r{};
   switch (row) {
     case NewJob::kActiveHoming:
@@ -258,7 +263,7 @@ std::uint16_t SynchronousOperation::arbitrate(NewJob row) noexcept {
 std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
   struct Running {
     RunningSyncJob column;
-    int which;  // 0 active, 1 pending sync-in, 2 desync, 3 phasing, 4 offset
+    int which;  // 0 active, 1 pending sync-in, 2 desync, 3 phasing or offset
     SyncFamily family;
   };
   std::array<Running, 5> running{};
@@ -292,8 +297,10 @@ std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
     const auto* p = place(desync_.kind);
     running[n++] = Running{desync_.active ? p->active_column : p->pending_column, 2, p->family};
   }
-  if (phasing_.id != 0) running[n++] = Running{RunningSyncJob::kPhasing, 3, SyncFamily::kGearing};
-  if (offset_job_.id != 0) running[n++] = Running{RunningSyncJob::kOffset, 4, SyncFamily::kGearing};
+  if (shift_job_.id != 0) {
+    running[n++] = Running{shift_job_.phasing ? RunningSyncJob::kPhasing : RunningSyncJob::kOffset, 3,
+                           SyncFamily::kGearing};
+  }
   SyncContext ctx;
   ctx.follower_position_controlled = axis_.position_controlled();
   ctx.virtual_or_simulated_axis = axis_.virtual_axis();
@@ -321,8 +328,7 @@ std::uint16_t SynchronousOperation::arbitrate_row(NewSyncRow r) noexcept {
     if (running[i].which == 0) end_active(JobState::kAborted, 0);
     if (running[i].which == 1) end_pending(JobState::kAborted, 0);
     if (running[i].which == 2) end_desync(JobState::kAborted, 0);
-    if (running[i].which == 3) end_shift(phasing_, phase_shift_, phasing_finished_, JobState::kAborted, 0);
-    if (running[i].which == 4) end_shift(offset_job_, offset_, offset_finished_, JobState::kAborted, 0);
+    if (running[i].which == 3) end_shift(JobState::kAborted, 0);
   }
   return 0;
 }
@@ -364,7 +370,7 @@ Submission SynchronousOperation::start_gearing(JobKind kind, const LeadingValueS
 }
 
 Submission SynchronousOperation::gear_in(const GearInInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearIn, in.Master, in.RatioNumerator, in.RatioDenominator,
                                      in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -374,7 +380,7 @@ Submission SynchronousOperation::gear_in(const GearInInputs& in) noexcept {
 }
 
 Submission SynchronousOperation::gear_in_velocity(const GearInVelocityInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   const Submission s = start_gearing(JobKind::kGearInVelocity, in.Master, in.RatioNumerator,
                                      in.RatioDenominator, in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
@@ -387,7 +393,7 @@ Submission SynchronousOperation::gear_in_velocity(const GearInVelocityInputs& in
 }
 
 Submission SynchronousOperation::gear_in_pos(const GearInPosInputs& in) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   if (in.RatioNumerator == 0) return Submission::reject(error_id::kInvalidRatioNumerator);
   if (in.RatioDenominator < 1) return Submission::reject(error_id::kInvalidRatioDenominator);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 3) {
@@ -441,7 +447,7 @@ Submission SynchronousOperation::gear_out(const GearOutInputs& in) noexcept {
 
 // MC_GearOut and MC_CamOut (spec 07 §2.4, §3.5): the same parameters and behaviour, each for its own family.
 Submission SynchronousOperation::desynchronize(const GearOutInputs& in, JobKind kind) noexcept {
-  if (const auto e = axis_.program_job_rejection()) return Submission::reject(e);
+  if (const auto e = synchronous_job_rejection()) return Submission::reject(e);
   if (in.SyncProfileReference != 0 && in.SyncProfileReference != 1 && in.SyncProfileReference != 5) {
     return Submission::reject(error_id::kInvalidSyncProfileReference);
   }
@@ -663,8 +669,10 @@ void SynchronousOperation::step_active(const LeadingValue& leader) noexcept {
       if (a.kind == JobKind::kGearInVelocity) {
         // v = r·v_leader, the position integrated (spec 07 §6.2).
         const double v = r * leader.velocity;
-        sync_setpoint_ = MotionState{axis_.setpoint().position + 0.5 * (axis_.setpoint().velocity + v) * T, v,
-                                     r * leader.acceleration};
+        // Simulated, the axis' setpoint is not the synchronous one: integrate the synchronous setpoint.
+        const MotionState& last = simulation_ != 0 ? sync_setpoint_ : axis_.setpoint();
+        sync_setpoint_ =
+            MotionState{last.position + 0.5 * (last.velocity + v) * T, v, r * leader.acceleration};
       } else {
         sync_setpoint_ =
             MotionState{gear_line(a, leader.position), r * leader.velocity, r * leader.acceleration};
@@ -763,6 +771,10 @@ void SynchronousOperation::step_desync(const LeadingValue& leader) noexcept {
 
 void SynchronousOperation::run() noexcept {
   cycle_leader_source_ = -1;
+  if (simulation_ != 0) {
+    run_simulated();
+    return;
+  }
   if (active_.id == 0 && pending_sync_.id == 0 && desync_.id == 0) return;
   if (!axis_.enabled() || axis_.blocked()) return;  // the alarm/disable paths end the jobs
   const int source = active_.id != 0  ? active_.source
@@ -790,7 +802,7 @@ void SynchronousOperation::run() noexcept {
     // synchronous function -> (+ offset) the follower's setpoint. The offsets act only while Synchronous.
     LeadingValue function_leader = active_.source == source ? leader : sample(active_.source);
     if (active_.phase == Phase::kSynchronous) {
-      step_shifts(function_leader);
+      step_shift(function_leader);
       function_leader.position += phase_shift_.value;
       function_leader.velocity += phase_shift_.velocity;
       function_leader.acceleration += phase_shift_.acceleration;
@@ -863,7 +875,7 @@ void SynchronousOperation::update_status() noexcept {
   // X0..X2: the follower's configured limits exceeded in synchronous operation (indication only, spec 07
   // §6.8).
   std::uint32_t w = 0;
-  if (active_.id != 0) {
+  if (active_.id != 0 && simulation_ == 0) {
     const auto& l = axis_.data().DynamicLimits;
     const double v = axis_.setpoint().velocity * axis_.units().velocity;
     const double a = axis_.setpoint().acceleration * axis_.units().acceleration;
@@ -874,14 +886,18 @@ void SynchronousOperation::update_status() noexcept {
            a * v < 0.0 && std::fabs(a) > l.MaxDeceleration);
   }
   assign(w, StatusSynchronizedMotionBit::kLeadingValueAdditiveCommand, additive_.id != 0);
+  assign(w, StatusSynchronizedMotionBit::kInSimulation, simulation_ != 0);
   s.StatusWord = w;
-  axis_.set_status(StatusWordBit::kSynchronizing, active_.id != 0 && active_.phase != Phase::kSynchronous);
-  axis_.set_status(StatusWordBit::kSynchronous, active_.id != 0 && active_.phase == Phase::kSynchronous);
+  // Simulated, the follower is not synchronous (X22 FALSE) while InGear/InSync stay TRUE (spec 07 §4.4).
+  const bool driving = active_.id != 0 && simulation_ == 0;
+  axis_.set_status(StatusWordBit::kSynchronizing, driving && active_.phase != Phase::kSynchronous);
+  axis_.set_status(StatusWordBit::kSynchronous, driving && active_.phase == Phase::kSynchronous);
   axis_.set_status(StatusWord2Bit::kDesynchronizingCommand, desync_.active);
-  axis_.set_status(StatusWordBit::kPhasingCommand, phasing_.id != 0 && !phasing_.waiting);
-  axis_.set_status(StatusWord2Bit::kPhasingCommandWaiting, phasing_.id != 0 && phasing_.waiting);
-  axis_.set_status(StatusWord2Bit::kOffsetCommand, offset_job_.id != 0 && !offset_job_.waiting);
-  axis_.set_status(StatusWord2Bit::kOffsetCommandWaiting, offset_job_.id != 0 && offset_job_.waiting);
+  const ShiftJob& k = shift_job_;
+  axis_.set_status(StatusWordBit::kPhasingCommand, k.id != 0 && k.phasing && !k.waiting);
+  axis_.set_status(StatusWord2Bit::kPhasingCommandWaiting, k.id != 0 && k.phasing && k.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommand, k.id != 0 && !k.phasing && !k.waiting);
+  axis_.set_status(StatusWord2Bit::kOffsetCommandWaiting, k.id != 0 && !k.phasing && k.waiting);
   cycle_leader_source_ = -1;  // a status update from a job call (user program) samples afresh
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <malloc.h>
 
+#include <cstdio>
 #include <memory>
 
 #include "positioning_axis_fixture.hpp"
@@ -13,6 +14,7 @@
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
+#include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 namespace {
 
@@ -22,6 +24,10 @@ using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
 
 constexpr std::size_t kAxisBudget = 8192;
+// What TO_SynchronousAxis adds to a positioning axis (its SynchronousOperation): 1,760 bytes before the job
+// slots were shared (decision C17), 1,504 since. The 8,192 of a positioning axis cannot hold it as long as
+// the positioning axis alone fills them (docs/performance.md "Memory per axis").
+constexpr std::size_t kSynchronousOperationBudget = 1504;
 
 // A runtime with one positioning axis on a simulated drive (telegram 3) and one virtual one.
 struct Machine {
@@ -44,6 +50,13 @@ struct Machine {
     auto& enc_io = runtime.add_device(
         std::make_unique<drives::SimulatedDrive>(encoder_device, drives::SimulatedDriveParameters{}));
     encoder = &runtime.emplace<ExternalEncoder>("LineEncoder", &enc_io, techobjects::ExternalEncoderData{});
+    auto& follower_io =
+        runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+    follower = &runtime.emplace<techobjects::SynchronousAxis>(
+        "Knife", &follower_io, tomc::testing::linear_axis_data(),
+        std::vector<techobjects::LeadingValueInterconnection>{
+            {driven, driven, techobjects::LeadingValueCoupling::kSetpoint},
+            {encoder, encoder, techobjects::LeadingValueCoupling::kActualValue}});
     runtime.start();
   }
   techobjects::Runtime runtime;
@@ -51,6 +64,7 @@ struct Machine {
   PositioningAxis* virtual_axis = nullptr;
   SpeedAxis* speed = nullptr;
   ExternalEncoder* encoder = nullptr;
+  techobjects::SynchronousAxis* follower = nullptr;
 };
 
 TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
@@ -59,9 +73,22 @@ TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
   EXPECT_LE(m.virtual_axis->memory_footprint(), kAxisBudget);
   // The start values went to the runtime's load memory when the axes were added.
   EXPECT_EQ(m.driven->memory_footprint(), sizeof(PositioningAxis));
-  EXPECT_EQ(m.runtime.start_values().size(), 4u);
+  EXPECT_EQ(m.runtime.start_values().size(), 5u);  // the five TOs of Machine
   m.runtime.step();
   EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
+}
+
+// The synchronous axis: the positioning axis plus its synchronous operation, whose job states share their
+// storage (decision C17); it fails if the synchronous part grows back.
+TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
+  Machine m;
+  m.runtime.step();
+  const std::size_t footprint = m.follower->memory_footprint();
+  EXPECT_EQ(footprint - m.driven->memory_footprint(),
+            sizeof(techobjects::SynchronousOperation) + 2 * sizeof(techobjects::LeadingValueInterconnection) +
+                2 * sizeof(techobjects::TechnologyObject*));
+  EXPECT_LE(sizeof(techobjects::SynchronousOperation), kSynchronousOperationBudget);
+  EXPECT_LE(footprint, kAxisBudget + kSynchronousOperationBudget + 2 * 32);
 }
 
 TEST(MemoryPerAxis, SpeedAxisAndExternalEncoderSmallerStill) {
@@ -110,6 +137,68 @@ TEST(MemoryPerAxis, FootprintAccountsForTheHeap) {
   const std::size_t footprint = axis->memory_footprint();
   EXPECT_GE(taken, footprint);
   EXPECT_LE(taken, footprint + 3 * 32);  // three blocks: the object, its start values, the filter histories
+#endif
+}
+
+// Several encoders (spec 01 §3.8, decision B1): the storage of Sensor[2..4] exists only for the encoders
+// that exist, reserved at construction and counted in memory_footprint(). Telegram 4 (G1, G2) plus two
+// separate encoder telegrams 81: up to four encoders on one device (decision B3).
+std::unique_ptr<PositioningAxis> axis_with_encoders(techobjects::DeviceIo& io, std::size_t encoders) {
+  auto data = tomc::testing::linear_axis_data();
+  for (std::size_t n = 1; n < encoders; ++n) {
+    data.Sensor[n].Existent = true;
+    data.Sensor[n].Interface.Number = n == 1 ? 2 : 1;
+  }
+  return std::make_unique<PositioningAxis>("A", &io, data);
+}
+
+struct FourEncoderDevice {
+  FourEncoderDevice() {
+    drives::DeviceConfig device;
+    device.drive_telegram = 4;
+    device.encoder_telegrams = {81, 81};
+    runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, tomc::testing::linear_drive()));
+  }
+  techobjects::DeviceIo& io() { return runtime.device(0); }
+  techobjects::Runtime runtime{techobjects::RuntimeConfig{0.001, 1, 1}};
+};
+
+TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
+  FourEncoderDevice d;
+  const auto one = axis_with_encoders(d.io(), 1);
+  const auto two = axis_with_encoders(d.io(), 2);
+  const auto four = axis_with_encoders(d.io(), 4);
+  const std::size_t per_encoder = sizeof(techobjects::AdditionalEncoder);
+  EXPECT_EQ(one->additional_encoders().heap_bytes(), 0u);
+  EXPECT_EQ(two->memory_footprint() - one->memory_footprint(), per_encoder);
+  EXPECT_EQ(four->memory_footprint() - one->memory_footprint(), 3 * per_encoder);
+  EXPECT_LE(sizeof(PositioningAxis), kAxisBudget);  // a one-encoder axis (its start values go to the runtime)
+  std::printf(
+      "sizeof(PositioningAxis) %zu, AdditionalEncoder %zu; footprint without start values: 1 encoder "
+      "%zu, 2 encoders %zu, 4 encoders %zu\n",
+      sizeof(PositioningAxis), per_encoder, sizeof(PositioningAxis),
+      sizeof(PositioningAxis) + two->additional_encoders().heap_bytes(),
+      sizeof(PositioningAxis) + four->additional_encoders().heap_bytes());
+}
+
+// The heap an additional encoder really takes is what memory_footprint() counts for it.
+TEST(MemoryPerAxis, AdditionalEncoderFootprintAccountsForTheHeap) {
+#ifdef TOMC_SANITIZED_BUILD
+  GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
+#else
+  FourEncoderDevice d;
+  auto heap_of = [&](std::size_t encoders, std::size_t& footprint) {
+    const auto before = mallinfo2().uordblks;
+    const auto axis = axis_with_encoders(d.io(), encoders);
+    footprint = axis->memory_footprint();
+    return mallinfo2().uordblks - before;
+  };
+  std::size_t f1 = 0;
+  std::size_t f4 = 0;
+  const auto h1 = heap_of(1, f1);
+  const auto h4 = heap_of(4, f4);
+  EXPECT_GE(h4 - h1, f4 - f1);
+  EXPECT_LE(h4 - h1, f4 - f1 + 32);  // one block, the allocator's overhead
 #endif
 }
 

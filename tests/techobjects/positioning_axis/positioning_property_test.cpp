@@ -8,7 +8,8 @@
 // instances, random profiles within the dynamic limits, relative, and absolute on the linear axis, random
 // StartTime and BufferMode) and MC_MotionInVelocity fed by an application that keeps its own setpoints within
 // the limits (spec 03 §4.17: "respect the dynamic limits yourself") and brings the velocity to 0 before
-// Enable falls — the limits hold for the total motion.
+// Enable falls — the limits hold for the total motion. The jerk-limited linear axis has a second, load-side
+// encoder (telegram 4) and MC_SetSensor switches between the two in random modes (spec 03 §4.12).
 //
 // Checked in every cycle, each property against the spec section it comes from:
 //  P1 spec 02 §4.5    the setpoint never passes an active software limit on a homed axis (except after direct
@@ -50,6 +51,7 @@
 #include "counting_allocator.hpp"
 #include "positioning_axis_fixture.hpp"
 #include "profile_motion_in_fixture.hpp"
+#include "tomc/instructions/mc_set_sensor.hpp"
 
 namespace {
 
@@ -87,6 +89,7 @@ struct Scenario {
   double velocity = 0;                         // job velocities up to this (above the limit on purpose)
   double acceleration = 0;                     // job accelerations up to this (above the limit on purpose)
   double jerk = 0;                             // job jerks up to this
+  std::uint16_t telegram = 3;                  // 4: two encoders, MC_SetSensor in the sequence
 };
 
 // (a) The default linear axis (mm, 10 mm leadscrew) with software limits [-50, 200] mm. MaxJerk 0 or
@@ -96,6 +99,12 @@ Scenario linear_scenario(bool jerk_limit) {
   s.name = jerk_limit ? "linear, software limits, MaxJerk 1e5" : "linear, software limits, MaxJerk 0";
   s.data = tomc::testing::linear_axis_data();
   s.data.DynamicLimits.MaxJerk = jerk_limit ? 100000.0 : 0.0;
+  if (jerk_limit) {  // encoder 2 on the load side (G2 of telegram 4), the same position as the motor's
+    s.telegram = 4;
+    s.data.Sensor[1].Existent = true;
+    s.data.Sensor[1].Interface.Number = 2;
+    s.data.Sensor[1].MountingMode = 1;
+  }
   s.data.PositionLimits_SW.Active = true;
   s.data.PositionLimits_SW.MinPosition = -50.0;
   s.data.PositionLimits_SW.MaxPosition = 200.0;
@@ -180,6 +189,7 @@ struct Stats {
   long done_with_superimposed = 0;  // P2 checks of a target moved by a superimposed distance
   long on_profile_cycles = 0;       // MC_PositionProfile on its profile (StatusWord2.X10)
   long motion_in_cycles = 0;        // MC_MotionInVelocity Busy
+  long sensor_switches = 0;         // MC_SetSensor Done
   double worst_window = 0, worst_fe_ratio = 0, worst_velocity_ratio = 0, worst_acceleration_ratio = 0;
 };
 
@@ -200,7 +210,11 @@ double wrap(double x, double length) {
 
 class Run {
  public:
-  Run(const Scenario& s, std::uint32_t seed) : s_(s), rng_(seed), m_(s.data, s.drive) {
+  Run(const Scenario& s, std::uint32_t seed) : s_(s), rng_(seed), m_(s.data, s.drive, true, s.telegram) {
+    m_.user = [this, profile_user = m_.user] {
+      profile_user();
+      set_sensor_(*m_.axis);
+    };
     m_.power.Enable = true;
     m_.run(20);
     tracked_[0].kind = tracked_[1].kind = Kind::kAbsolute;
@@ -303,6 +317,17 @@ class Run {
     release(m.halt_superimposed);
     release(m.home);
     release(m.reset);
+    release(set_sensor_);
+    if (set_sensor_.Done && !sensor_done_before_) ++stats_.sensor_switches;
+    sensor_done_before_ = set_sensor_.Done;
+    if (s_.telegram == 4 && !set_sensor_.Execute && chance(p_job * 0.2)) {
+      set_sensor_.Sensor = static_cast<std::int16_t>(1 + rng_() % 2);
+      set_sensor_.Mode = static_cast<std::int32_t>(rng_() % 4);
+      set_sensor_.ReferenceSensor = static_cast<std::int16_t>(1 + rng_() % 2);
+      set_sensor_.Execute = true;
+      note("MC_SetSensor (Sensor, Mode, ReferenceSensor)", set_sensor_.Sensor, set_sensor_.Mode,
+           set_sensor_.ReferenceSensor);
+    }
     if (m.stop.Execute && (m.stop.Done || m.stop.Error || m.stop.CommandAborted) && chance(0.01))
       m.stop.Execute = false;
     if (m.reset.Execute && !m.reset.Busy) m.reset.Execute = false;
@@ -718,6 +743,8 @@ class Run {
   Scenario s_;
   std::mt19937 rng_;
   tomc::testing::ProfileMachine m_;
+  instructions::MC_SetSensor<techobjects::PositioningAxis> set_sensor_;
+  bool sensor_done_before_ = false;
   std::array<Tracked, 4> tracked_{};
   std::array<techobjects::TimePositionProfile, 2> profiles_{};  // one per instance, unchanged while it runs
   double motion_in_target_ = 0.0;
@@ -773,8 +800,9 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
   total.modulo_turns += st.modulo_turns;
   total.on_profile_cycles += st.on_profile_cycles;
   total.motion_in_cycles += st.motion_in_cycles;
-  std::printf("  %ld cycles on a time-position profile, %ld with MotionInVelocity\n", st.on_profile_cycles,
-              st.motion_in_cycles);
+  total.sensor_switches += st.sensor_switches;
+  std::printf("  %ld cycles on a time-position profile, %ld with MotionInVelocity, %ld MC_SetSensor Done\n",
+              st.on_profile_cycles, st.motion_in_cycles, st.sensor_switches);
 }
 
 TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
@@ -793,6 +821,7 @@ TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
   EXPECT_GT(total.superimposed_cycles, kSeeds * kCycles / 200);
   EXPECT_GT(total.on_profile_cycles, kSeeds * 100);
   EXPECT_GT(total.motion_in_cycles, kSeeds * 100);
+  EXPECT_GT(total.sensor_switches, kSeeds * 5);
 }
 
 TEST(PositioningProperty, RotaryModuloAxis) {

@@ -22,8 +22,8 @@ inline techobjects::TimePositionProfile ramp_profile() {
 struct ProfileMachine : PositioningAxisMachine {
   explicit ProfileMachine(techobjects::PositioningAxisData data = linear_axis_data(),
                           drives::SimulatedDriveParameters drive_parameters = linear_drive(),
-                          bool with_drive = true)
-      : PositioningAxisMachine(data, drive_parameters, 3, with_drive) {
+                          bool with_drive = true, std::uint16_t telegram = 3)
+      : PositioningAxisMachine(data, drive_parameters, telegram, with_drive) {
     user = [this] {
       profile(*axis);
       profile2(*axis);

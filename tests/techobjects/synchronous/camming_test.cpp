@@ -333,6 +333,42 @@ TEST(Camming, ProfileOneInAdvanceOverDistance) {
   EXPECT_TRUE(c.InSync);
 }
 
+// SyncDirection on a modulo follower (spec 07 §3.4 SyncDirection, §6.1 item 3; decision Y3 [IMPL]): cam C
+// (cyclic) synchronized over 100 deg of leader travel (profile 1) to its point u = 0, y = 0. Without the
+// synchronization the follower would be at its position − f(260) = −55.6 deg relative; from there the
+// occurrence of y = 0 (k·360) is chosen: 1 the next one above, 2 the one below, 3 the nearer. Table: follower
+// start, SyncDirection, the follower's travel until InSync (unwrapped, summed per cycle).
+TEST(Camming, SyncDirectionOnAModuloFollower) {
+  struct Case {
+    double start;
+    std::int32_t direction;
+    double travel;
+  };
+  for (const Case k : {Case{300.0, 1, 60.0}, Case{300.0, 2, -300.0}, Case{300.0, 3, 60.0},
+                       Case{100.0, 3, -100.0}, Case{100.0, 1, 260.0}, Case{100.0, 2, -100.0}}) {
+    CammingMachine m;
+    m.follower_to(k.start);
+    m.leader_velocity(100.0);
+    auto& c = m.cam_in;
+    c.Cam = m.cams.C;
+    c.SyncProfileReference = 1;
+    c.MasterOffset = m.l().Position + 150.0;  // the synchronous point 150 deg ahead (cam u = 0)
+    c.MasterStartDistance = 100.0;
+    c.ApplicationMode = 1;
+    c.SyncDirection = k.direction;
+    double travel = 0.0;
+    double last = m.f().Position;
+    m.user = [&] {
+      travel += std::remainder(m.f().Position - last, 360.0);
+      last = m.f().Position;
+    };
+    c.Execute = true;
+    ASSERT_GT(m.run_until([&] { return c.InSync; }, 5000), 0) << k.start << " " << k.direction;
+    EXPECT_NEAR(travel, k.travel, 1e-6) << k.start << " " << k.direction;
+    EXPECT_NEAR(std::remainder(m.f().Position, 360.0), 0.0, 1e-6);
+  }
+}
+
 // Profile 3 (§3.4): subsequent synchronization: starts at x_sync, synchronous at x_sync +
 // MasterStartDistance.
 TEST(Camming, ProfileThreeSubsequent) {
@@ -414,6 +450,38 @@ TEST(Camming, ProfileZeroDynamicParameters) {
   EXPECT_NEAR(m.f().Position, 20.0 + 100.0 * (m.l().Position - x_sync) / 360.0, 1e-6);
   EXPECT_LE(peak_v, 200.0);
   EXPECT_LE(peak_a, 500.0);
+}
+
+// Profile 0 over the next modulo pass (spec 07 §3.4 profile 0, §6.5; decision Y12 as for MC_GearInPos): a
+// modulo leader at 100 deg/s, the synchronous point 1 deg ahead — closer than the synchronization length
+// (>= 100²/1000 = 10 deg), so its start lies behind the leader. The job waits for the next pass (the cam
+// moves with its synchronous point, 360 deg on), synchronizes without a step (at most Velocity per cycle) and
+// is InSync on cam C's rising flank, F = (100/180)·(L − synchronous point) in the modulo ranges.
+TEST(Camming, ProfileZeroOverTheNextModuloPass) {
+  CammingMachine m;
+  m.leader_velocity(100.0);
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C;
+  c.SyncProfileReference = 0;
+  c.MasterOffset = m.l().Position + 1.0;
+  c.ApplicationMode = 1;
+  c.Velocity = 500.0;
+  c.Acceleration = c.Deceleration = 1000.0;
+  c.Jerk = 0.0;
+  c.Execute = true;
+  double previous = m.F->setpoint().position;
+  int cycles = 0;
+  for (; cycles < 8000 && !c.InSync; ++cycles) {
+    m.run(1);
+    ASSERT_FALSE(c.Error) << cycles;
+    ASSERT_LE(std::fabs(m.F->setpoint().position - previous), 0.5 + 1e-6) << cycles;
+    previous = m.F->setpoint().position;
+  }
+  ASSERT_TRUE(c.InSync);
+  EXPECT_NEAR(cycles, 3610, 2);  // InSync at the synchronous point of the next pass: 361 deg at 100 deg/s
+  const double u = std::remainder(m.l().Position - c.MasterOffset, 360.0);
+  EXPECT_GE(u, -1e-9);
+  EXPECT_NEAR(std::remainder(m.f().Position - 100.0 / 180.0 * u, 360.0), 0.0, 1e-6);
 }
 
 // MC_CamOut (§3.5): profile 0 stops the follower at SlavePosition (FunctionState 5, the camming aborted at
@@ -548,8 +616,8 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 
 }  // namespace
 
-// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted, the
-// cam free again) and is Done; against an active camming it is Done and the camming goes on.
+// MC_CamOut profile 5 (spec 07 §3.5, §5.1 footnote 8): it cancels a pending MC_CamIn only (CommandAborted,
+// the cam free again) and is Done; against an active camming it is Done and the camming goes on.
 TEST(Camming, CamOutProfileFiveCancelsOnlyAPendingCamIn) {
   CammingMachine m;
   auto& c = m.cam_in;

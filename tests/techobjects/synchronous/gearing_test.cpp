@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "gearing_fixture.hpp"
+#include "tomc/drives/simulated_drive.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 
 namespace {
@@ -436,11 +437,10 @@ TEST(Gearing, GP3PendingLetsRunningJobsContinue) {
   EXPECT_TRUE(m.halt_F.CommandAborted);
 }
 
-// GP-4: MC_Home Mode 3 during an active GearInPos -> 16#80A1, the gearing continues. During a plain GearIn it
-// aborts the gearing — except on a virtual or simulated follower (footnote 1 of §9.19.2), as F is here: there
-// the homing is executed at once and the gearing goes on.
-TEST(Gearing, GP4HomingAgainstGearing) {
-  GearingMachine m;
+// GP-4's sequence: MC_GearInPos (profile 3 over 10 from L = 0) in sync with L at 100 mm/s; MC_Home Mode 3 ->
+// 16#80A1 (spec 07 §1.10), the gearing goes on; then MC_GearIn InGear and MC_Home Mode 3 again (what that
+// does, the callers check).
+void home_during_gear_in_pos_then_during_gear_in(GearingMachine& m) {
   m.gear_pos.MasterSyncPosition = 0.0;
   m.gear_pos.SyncProfileReference = 3;
   m.gear_pos.MasterStartDistance = 10.0;
@@ -453,6 +453,7 @@ TEST(Gearing, GP4HomingAgainstGearing) {
   m.home_F.Mode = 3;
   m.home_F.Execute = true;
   m.run(1);
+  EXPECT_TRUE(m.home_F.Error);
   EXPECT_EQ(m.home_F.ErrorID, eid::kHomingDuringGearInPos);
   EXPECT_TRUE(m.gear_pos.InSync);
   m.home_F.Execute = false;
@@ -461,9 +462,42 @@ TEST(Gearing, GP4HomingAgainstGearing) {
   ASSERT_GT(m.run_until([&] { return m.gear.InGear; }, 2000), 0);
   m.home_F.Execute = true;
   m.run(2);
+}
+
+// GP-4: MC_Home Mode 3 during an active GearInPos -> 16#80A1, the gearing continues. During a plain GearIn it
+// aborts the gearing — except on a virtual or simulated follower (footnote 1 of §9.19.2), as F is here: there
+// the homing is executed at once and the gearing goes on.
+TEST(Gearing, GP4HomingAgainstGearing) {
+  GearingMachine m;
+  home_during_gear_in_pos_then_during_gear_in(m);
   EXPECT_TRUE(m.home_F.Done);
   EXPECT_FALSE(m.gear.CommandAborted);
   EXPECT_TRUE(m.gear.InGear);
+}
+
+// GP-4 on a real follower (spec 07 §1.10 16#80A1; §9.19.2 row "MC_Home Mode 3, 5", footnote 1 only for a
+// virtual or simulated axis): F on a simulated PROFIdrive drive (telegram 3). MC_Home Mode 3 during an active
+// MC_GearInPos -> 16#80A1, the gearing goes on; during a plain MC_GearIn it is accepted and aborts the
+// gearing (S1 "A"), where GP-4's virtual follower kept it.
+TEST(Gearing, GP4HomingAgainstGearingOnADrivenFollower) {
+  auto driven = virtual_linear();
+  driven.VirtualAxis.Mode = techobjects::kModeOff;
+  GearingMachine m(virtual_linear(), driven, {}, [](techobjects::Runtime& r) -> techobjects::DeviceIo* {
+    drives::DeviceConfig device;
+    device.drive_telegram = 3;
+    drives::SimulatedDriveParameters drive;
+    drive.load_units_per_revolution = 10.0;
+    return &r.add_device(std::make_unique<drives::SimulatedDrive>(device, drive));
+  });
+  ASSERT_GT(m.run_until([&] { return m.power_F.Status; }, 3000), 0);
+  m.home_F.Mode = 0;
+  m.home_F.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.home_F.Done; }, 100), 0);
+  m.home_F.Execute = false;
+  home_during_gear_in_pos_then_during_gear_in(m);
+  EXPECT_FALSE(m.home_F.Error) << m.home_F.ErrorID;
+  EXPECT_TRUE(m.gear.CommandAborted);  // a real follower: the homing ends the gearing
+  EXPECT_FALSE(m.gear.InGear);
 }
 
 // GP-5: GearInPos 2/1 in sync, L at 100 (F at 200 mm/s); GearOut(SlavePosition 1000, profile 0, Deceleration
@@ -862,7 +896,7 @@ TEST(Gearing, ChainsAreEvaluatedLeadersFirstAndCyclesRejected) {
   runtime.add_technology_object(std::move(l));
   instructions::MC_Power<techobjects::PositioningAxis> pl;
   instructions::MC_Power<techobjects::SynchronousAxis> pf, pf2;
-  instructions::MC_GearIn<techobjects::SynchronousAxis> g1, g2;
+  instructions::MC_GearIn<techobjects::SynchronousAxis> g1, g2, g3;
   instructions::MC_MoveVelocity<techobjects::PositioningAxis> move;
   g1.Master = L;
   g1.RatioNumerator = 2;
@@ -875,6 +909,7 @@ TEST(Gearing, ChainsAreEvaluatedLeadersFirstAndCyclesRejected) {
     pf2(*F2);
     g1(*F);
     g2(*F2);
+    g3(*F);
     move(*L);
   });
   runtime.start();
@@ -891,6 +926,16 @@ TEST(Gearing, ChainsAreEvaluatedLeadersFirstAndCyclesRejected) {
     // The same cycle's values all along the chain: F2 = 3·F = 6·L, no cycle of lag.
     ASSERT_NEAR(F2->setpoint().position, 6.0 * L->setpoint().position, 1e-9) << i;
   }
+  // Spec 07 §1.10 16#8019, the branch of two synchronous axes: F2 follows F, so F may not follow F2 (the
+  // leader follows this axis) — refused before F2 is even looked up among F's interconnections (no alarm
+  // 601); F's running gearing is not affected.
+  g3.Master = F2;
+  g3.Execute = true;
+  runtime.step();
+  EXPECT_TRUE(g3.Error);
+  EXPECT_EQ(g3.ErrorID, techobjects::error_id::kRecursiveLeadingValue);
+  EXPECT_TRUE(g1.InGear);
+  EXPECT_FALSE(techobjects::test(F->data().ErrorWord, techobjects::ErrorWordBit::kSynchronousError));
 
   // A coupling cycle A -> B -> C -> A is a configuration error naming it (spec 07 §1.2).
   struct Linked final : techobjects::TechnologyObject {

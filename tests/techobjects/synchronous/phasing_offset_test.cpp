@@ -12,6 +12,7 @@
 #include "gearing_fixture.hpp"
 #include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_phasing.hpp"
+#include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/cam/cam.hpp"
 
@@ -53,6 +54,17 @@ struct ShiftMachine : GearingMachine {
     move_L.Execute = true;
     ASSERT_GT(run_until([&] { return move_L.InVelocity; }, 2000), 0);
   }
+  // PhasingRelative(10, V 100, A/D 1000, the given jerk) by dynamic parameters (profile 0), executed.
+  instructions::MC_PhasingRelative<SynchronousAxis>& phasing_by_dynamics(double jerk) {
+    phasing_rel.Master = leader_axis;
+    phasing_rel.PhaseShift = 10.0;
+    phasing_rel.ProfileReference = 0;
+    phasing_rel.Velocity = 100.0;
+    phasing_rel.Acceleration = phasing_rel.Deceleration = 1000.0;
+    phasing_rel.Jerk = jerk;
+    phasing_rel.Execute = true;
+    return phasing_rel;
+  }
   const techobjects::StatusSynchronizedMotion& sync() const { return F->synchronized_motion(); }
   bool bit(StatusWordBit b) const { return techobjects::test(f().StatusWord, b); }
   bool bit(StatusWord2Bit b) const { return techobjects::test(f().StatusWord2, b); }
@@ -72,14 +84,7 @@ struct ShiftMachine : GearingMachine {
 TEST(PhasingOffset, PH1PhasingByDynamicParameters) {
   ShiftMachine m;
   m.geared(2);
-  auto& p = m.phasing_rel;
-  p.Master = m.leader_axis;
-  p.PhaseShift = 10.0;
-  p.ProfileReference = 0;
-  p.Velocity = 100.0;
-  p.Acceleration = p.Deceleration = 1000.0;
-  p.Jerk = 0.0;
-  p.Execute = true;
+  auto& p = m.phasing_by_dynamics(0.0);
   m.run(1);
   EXPECT_TRUE(p.Busy);
   EXPECT_TRUE(p.StartPhasing);
@@ -126,6 +131,32 @@ TEST(PhasingOffset, PH1PhasingByDynamicParameters) {
   ASSERT_GT(m.run_until([&] { return a.Done; }, 1000), 0);
   EXPECT_NEAR(a.AbsolutePhaseShift, 4.0, 1e-12);
   EXPECT_NEAR(m.f().Position, 18.0, 1e-9);
+}
+
+// Spec 07 §4.1 profile 0 with a jerk limit (the 7-segment rest-to-rest travel the job keeps, decision C17):
+// GearIn 2/1, PhasingRelative(10, V 100, A/D 1000, J 100,000): the follower's extra travel 20 as an S-curve,
+// jerk ramps 0.01 s, acceleration phases 0.11 s (v = a²/j + a·0.09 = 100) covering 5.5 each, cruise
+// 9 / 100 = 0.09 s: 0.31 s = 310 cycles. Half way (0.155 s, the symmetric midpoint) the phase shift is 5.
+TEST(PhasingOffset, PhasingProfile0WithJerkIsTheSevenSegmentSCurve) {
+  ShiftMachine m;
+  m.geared(2);
+  auto& p = m.phasing_by_dynamics(100000.0);
+  double peak_velocity = 0.0;
+  double peak_acceleration = 0.0;
+  m.extra = [&] {
+    peak_velocity = std::max(peak_velocity, std::fabs(m.f().Velocity));
+    peak_acceleration = std::max(peak_acceleration, std::fabs(m.f().Acceleration));
+  };
+  m.run(1);  // the call's cycle (as PH-1); the travel starts in the next MC_Interpolator
+  m.run(155);
+  EXPECT_NEAR(m.sync().PhaseShift, 5.0, 1e-9);
+  EXPECT_NEAR(m.f().Position, 10.0, 1e-9);
+  const int cycles = 1 + 155 + m.run_until([&] { return p.Done; }, 1000);
+  EXPECT_NEAR(cycles, 310, 1);
+  EXPECT_NEAR(peak_velocity, 100.0, 1e-6);
+  EXPECT_NEAR(peak_acceleration, 1000.0, 1e-6);
+  EXPECT_NEAR(m.f().Position, 20.0, 1e-9);
+  EXPECT_NEAR(p.CoveredPhaseShift, 10.0, 1e-12);
 }
 
 // OF-1 (spec 07 §8; §4.2 profile 1, §6.6): GearIn 1/1, L at +100 mm/s. OffsetRelative(10, OffsetDistance 90):
@@ -525,6 +556,40 @@ TEST(PhasingOffset, LV1AdditiveLeadingValue) {
   m.run(1);
   EXPECT_TRUE(second.Error);
   EXPECT_FALSE(second.Busy);
+}
+
+// Spec 07 §4.3, decision C19: a Position that is not finite answers with Error/16#8118 while it lasts and
+// keeps the last value (no step, no silent NaN: MotionIn ends its job instead, which here would drop the
+// additive value, itself a step); a finite value again clears the error. MC_Reset with Restart = TRUE ends
+// the job (§4.3 "aborted only by another MC_LeadingValueAdditive and by MC_Reset with Restart = TRUE").
+TEST(PhasingOffset, AdditiveNotFiniteAnswersWithAnErrorAndRestartEndsIt) {
+  ShiftMachine m;
+  instructions::MC_Reset<SynchronousAxis> reset;
+  m.extra = [&] { reset(*m.F); };
+  m.geared(1);
+  m.additive.Enable = true;
+  m.additive.Position = 0.5;
+  m.run(2);
+  EXPECT_NEAR(m.f().Position, 0.5, 1e-12);
+  m.additive.Position = std::nan("");
+  m.run(3);
+  EXPECT_TRUE(m.additive.Busy);
+  EXPECT_TRUE(m.additive.Error);
+  EXPECT_EQ(m.additive.ErrorID, eid::kInvalidPosition);  // 16#8118
+  EXPECT_NEAR(m.f().Position, 0.5, 1e-12);
+  m.additive.Position = 0.25;
+  m.run(2);
+  EXPECT_FALSE(m.additive.Error);
+  EXPECT_NEAR(m.f().Position, 0.25, 1e-12);
+  m.power_F.Enable = false;
+  m.run(3);
+  EXPECT_TRUE(m.additive.Busy);  // disabling does not end it
+  reset.Restart = true;
+  reset.Execute = true;
+  ASSERT_GT(m.run_until([&] { return reset.Done; }, 10), 0);
+  m.run(1);
+  EXPECT_FALSE(m.additive.Busy);
+  EXPECT_FALSE(m.additive.Error);
 }
 
 }  // namespace

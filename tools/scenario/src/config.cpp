@@ -260,6 +260,38 @@ void load_machine(const Json& value, const std::string& path, drives::SimulatedM
   }
 }
 
+// {"subdevice": s, "channel": c} of a comedi card.
+void load_channel(ObjectReader& parent, std::string_view key, drives::io::Channel& channel,
+                  Problems& problems) {
+  if (const Json* v = parent.get(key, true)) {
+    ObjectReader r(*v, parent.path_of(key), problems);
+    r.integer("subdevice", channel.subdevice, 0, 65535, false, true);
+    r.integer("channel", channel.channel, 0, 65535, false, true);
+    r.finish();
+  }
+}
+
+void load_comedi(const Json& value, const std::string& path, ComediSettings& c, Problems& problems) {
+  ObjectReader r(value, path, problems);
+  if (!r.valid()) return;
+  if (const Json* v = r.get("device", true)) {
+    if (auto file = detail::read_string(*v, r.path_of("device"), problems)) {
+      if (file->empty()) {
+        problems.add(r.path_of("device"), "expected the card's device file, e.g. \"/dev/comedi0\"");
+      } else {
+        c.device_file = *file;
+      }
+    }
+  }
+  load_channel(r, "analog_output", c.analog_output, problems);
+  load_channel(r, "counter", c.counter, problems);
+  // Optional: needed when the TO's Actor.Interface wires them (checked where the drive is built).
+  if (r.has("enable_output")) load_channel(r, "enable_output", c.enable_output.emplace(), problems);
+  if (r.has("ready_input")) load_channel(r, "ready_input", c.ready_input.emplace(), problems);
+  r.integer("counter_width_bits", c.counter_width_bits, 8, 32);
+  r.finish();
+}
+
 void load_analog(const Json& value, const std::string& path, AnalogSettings& a, Problems& problems) {
   ObjectReader r(value, path, problems);
   r.real("volts_at_reference", a.volts_at_reference, detail::kPositive);
@@ -270,6 +302,16 @@ void load_analog(const Json& value, const std::string& path, AnalogSettings& a, 
   r.real("amplifier_rpm_per_volt", a.amplifier_rpm_per_volt, detail::kNonNegative);
   r.real("amplifier_offset_volts", a.amplifier_offset_volts);
   r.real("ready_delay_s", a.ready_delay_s, detail::kNonNegative);
+  if (const Json* v = r.get("comedi")) {
+    load_comedi(*v, r.path_of("comedi"), a.comedi.emplace(), problems);
+    // The simulated amplifier's keys describe hardware a real card replaces.
+    for (const char* key : {"amplifier_rpm_per_volt", "amplifier_offset_volts", "ready_delay_s"}) {
+      if (r.has(key)) {
+        problems.add(r.path_of(key),
+                     "a key of the simulated servo amplifier: with \"comedi\" the amplifier is the real one");
+      }
+    }
+  }
   r.finish();
   if (a.volts_at_reference * a.overdrive_percent / 100.0 > a.dac.full_scale_volts * (1.0 + 1e-9)) {
     problems.add(path,

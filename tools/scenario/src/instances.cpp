@@ -30,7 +30,9 @@
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/instructions/mc_save_absolute_encoder_data.hpp"
 #include "tomc/instructions/mc_set_axis_stw.hpp"
+#include "tomc/instructions/mc_set_sensor.hpp"
 #include "tomc/instructions/mc_stop.hpp"
+#include "tomc/instructions/mc_synchronized_motion_simulation.hpp"
 #include "tomc/instructions/mc_torque_additive.hpp"
 #include "tomc/instructions/mc_torque_limiting.hpp"
 #include "tomc/instructions/mc_torque_range.hpp"
@@ -423,6 +425,21 @@ const auto kHaltSuperimposed = std::to_array<Parameter<HaltSuperimposed<Axis>>>(
 });
 
 template <typename Axis>
+using SetSensor = instructions::MC_SetSensor<Axis>;
+template <typename Axis>
+const auto kSetSensor = std::to_array<Parameter<SetSensor<Axis>>>({
+    in("Execute", &SetSensor<Axis>::Execute),
+    in("Sensor", &SetSensor<Axis>::Sensor),
+    in("Mode", &SetSensor<Axis>::Mode),
+    in("ReferenceSensor", &SetSensor<Axis>::ReferenceSensor),
+    out("Done", &SetSensor<Axis>::Done),
+    out("Busy", &SetSensor<Axis>::Busy),
+    out("CommandAborted", &SetSensor<Axis>::CommandAborted),
+    out("Error", &SetSensor<Axis>::Error),
+    out("ErrorID", &SetSensor<Axis>::ErrorID),
+});
+
+template <typename Axis>
 using Home = instructions::MC_Home<Axis>;
 template <typename Axis>
 const auto kHome = std::to_array<Parameter<Home<Axis>>>({
@@ -620,6 +637,15 @@ const auto kLeadingValueAdditive = std::to_array<Parameter<LeadingValueAdditive>
     out("ErrorID", &LeadingValueAdditive::ErrorID),
 });
 
+using SynchronizedMotionSimulation = instructions::MC_SynchronizedMotionSimulation<SynchronousAxis>;
+const auto kSynchronizedMotionSimulation = std::to_array<Parameter<SynchronizedMotionSimulation>>({
+    in("Enable", &SynchronizedMotionSimulation::Enable),
+    out("InSimulation", &SynchronizedMotionSimulation::InSimulation),
+    out("Busy", &SynchronizedMotionSimulation::Busy),
+    out("Error", &SynchronizedMotionSimulation::Error),
+    out("ErrorID", &SynchronizedMotionSimulation::ErrorID),
+});
+
 // The cam instructions (spec 07 §3.2, §3.6). MC_CopyCamData takes arrays, which a scenario event cannot give:
 // a machine file gives a cam's elements beside its config (docs/scenarios.md "Cams").
 using InterpolateCam = instructions::MC_InterpolateCam;
@@ -754,7 +780,7 @@ constexpr std::array<std::string_view, 12> kSpeedAxisInstructions{
     "MC_Stop",           "MC_SetAxisSTW",  "MC_WriteParameter", "MC_MotionInVelocity", "MC_TorqueLimiting",
     "MC_TorqueAdditive", "MC_TorqueRange",
 };
-constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
+constexpr std::array<std::string_view, 22> kPositioningAxisInstructions{
     "MC_Power",
     "MC_Reset",
     "MC_Home",
@@ -766,6 +792,7 @@ constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
     "MC_MoveJog",
     "MC_MoveSuperimposed",
     "MC_HaltSuperimposed",
+    "MC_SetSensor",
     "MC_Stop",
     "MC_SetAxisSTW",
     "MC_WriteParameter",
@@ -778,10 +805,10 @@ constexpr std::array<std::string_view, 21> kPositioningAxisInstructions{
     "MC_TorqueRange",
 };
 // A synchronous axis accepts every instruction of a positioning axis (spec 01 §1.3) and these.
-constexpr std::array<std::string_view, 11> kSynchronousOnlyInstructions{
+constexpr std::array<std::string_view, 12> kSynchronousOnlyInstructions{
     "MC_GearIn",         "MC_GearInPos",      "MC_GearInVelocity",       "MC_GearOut",
     "MC_CamIn",          "MC_CamOut",         "MC_PhasingAbsolute",      "MC_PhasingRelative",
-    "MC_OffsetAbsolute", "MC_OffsetRelative", "MC_LeadingValueAdditive",
+    "MC_OffsetAbsolute", "MC_OffsetRelative", "MC_LeadingValueAdditive", "MC_SynchronizedMotionSimulation",
 };
 template <std::size_t A, std::size_t B>
 constexpr std::array<std::string_view, A + B> joined(const std::array<std::string_view, A>& a,
@@ -891,6 +918,7 @@ std::unique_ptr<Instance> make_positioning(std::string_view instruction) {
   if (instruction == "MC_MoveSuperimposed") return make(kMoveSuperimposed<Axis>);
   if (instruction == "MC_HaltSuperimposed") return make(kHaltSuperimposed<Axis>);
   if (instruction == "MC_Home") return make(kHome<Axis>);
+  if (instruction == "MC_SetSensor") return make(kSetSensor<Axis>);
   if (instruction == "MC_PositionProfile") return make(kPositionProfile<Axis>);
   if (instruction == "MC_MotionInPosition") return make(kMotionInPosition<Axis>);
   if (instruction == "MC_MotionInSuperimposed") return make(kMotionInSuperimposed<Axis>);
@@ -923,6 +951,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
       if (instruction == "MC_OffsetAbsolute") return make(kOffsetAbsolute);
       if (instruction == "MC_OffsetRelative") return make(kOffsetRelative);
       if (instruction == "MC_LeadingValueAdditive") return make(kLeadingValueAdditive);
+      if (instruction == "MC_SynchronizedMotionSimulation") return make(kSynchronizedMotionSimulation);
       return make_positioning<SynchronousAxis>(instruction);
     case TechnologyObjectKind::kExternalEncoder:
       if (instruction == "MC_Home") return make(kHome<ExternalEncoder>);

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "json_reader.hpp"
 #include "tomc/techobjects/position/legacy_regulator.hpp"
@@ -71,14 +73,146 @@ void put_following_error(double limit_mm, LegacyExpansion& e) {
   }
 }
 
+// The JOINT `INTDEVICE` declaration line (spec 05b A.1.1): "<name> JOINT TCamp NAxis Buffer" then ICont IntL
+// IAZero IoutA for X, Y, Z and IOut1..IOut4, 21 tokens on one line; "X.X" (IntL: "X") marks an unused
+// resource. `axis` (X, Y, Z) says which axis of the device this TO is: it needs its counter and DAC (A.1
+// "minimum resources") and, for homing, the enable input (all modes) and the zero-pulse input (mode 1).
+struct JointDeclaration {
+  std::int64_t TCamp = 0;
+  bool has_enable_input = false;  // IAZero
+  bool has_zero_input = false;    // IntL
+};
+
+bool is_address(const std::string& t) {  // "<n>.<m>"
+  const auto dot = t.find('.');
+  const auto digits = [](std::string_view s) {
+    return !s.empty() && s.find_first_not_of("0123456789") == std::string_view::npos;
+  };
+  return dot != std::string::npos && digits(std::string_view(t).substr(0, dot)) &&
+         digits(std::string_view(t).substr(dot + 1));
+}
+
+std::optional<JointDeclaration> read_intdevice(const std::string& line, const std::string& axis,
+                                               const std::string& path, const std::string& axis_path,
+                                               Problems& problems) {
+  std::istringstream in(line);
+  std::vector<std::string> t;
+  for (std::string token; in >> token;)
+    t.push_back(token);
+  if (t.size() != 21 || t[1] != "JOINT") {
+    problems.add(path,
+                 std::to_string(t.size()) +
+                     " tokens: expected 21 on one line, '<name> JOINT TCamp NAxis Buffer', ICont IntL "
+                     "IAZero IoutA of X, Y, Z, IOut1 ... IOut4 (X.X / X for an unused one; spec 05b A.1.1)");
+    return std::nullopt;
+  }
+  const std::size_t before = problems.size();
+  const auto number = [&](std::size_t i, const char* field, std::int64_t lo,
+                          std::int64_t hi) -> std::int64_t {
+    std::int64_t v = 0;
+    const bool digits = !t[i].empty() && t[i].find_first_not_of("0123456789") == std::string::npos;
+    if (digits && t[i].size() < 7) v = std::stoll(t[i]);
+    if (!digits || t[i].size() >= 7 || v < lo || v > hi) {
+      problems.add(path, std::string(field) + " '" + t[i] + "' out of range " + std::to_string(lo) + ".." +
+                             std::to_string(hi));
+    }
+    return v;
+  };
+  JointDeclaration d;
+  d.TCamp = number(2, "TCamp", 1, 255);
+  const std::int64_t axes = number(3, "NAxis", 2, 3);
+  (void)number(4, "Buffer", 3, 30000);
+  static constexpr const char* kAxes = "XYZ";
+  for (std::size_t a = 0; a < 3; ++a) {
+    const std::size_t f = 5 + 4 * a;
+    const std::string name(1, kAxes[a]);
+    for (std::size_t k : {f, f + 2, f + 3}) {
+      if (t[k] != "X.X" && !is_address(t[k])) {
+        problems.add(path, "'" + t[k] + "' of axis " + name + " is no address (<module>.<channel>, or X.X)");
+      }
+    }
+    if (t[f + 1] != "X" && t[f + 1].find_first_not_of("0123456789") != std::string::npos) {
+      problems.add(path, "IntL" + name + " '" + t[f + 1] + "' is no input number (or X)");
+    }
+  }
+  for (std::size_t k = 17; k < 21; ++k) {
+    if (!is_address(t[k]))
+      problems.add(path, "IOut" + std::to_string(k - 16) + " '" + t[k] + "' is no address");
+  }
+  const auto index = std::string_view(kAxes).find(axis);
+  if (axis.size() != 1 || index == std::string_view::npos) {
+    problems.add(axis_path, "'" + axis + "' is not an axis of the device (X, Y or Z)");
+  } else if (static_cast<std::int64_t>(index) >= axes && problems.size() == before) {
+    problems.add(axis_path, "axis " + axis + " is beyond NAxis " + std::to_string(axes));
+  } else if (problems.size() == before) {
+    const std::size_t f = 5 + 4 * index;
+    if (t[f] == "X.X" || t[f + 3] == "X.X") {
+      problems.add(path, "axis " + axis + " needs its counter (ICont" + axis + ") and its DAC (IoutA" + axis +
+                             "): at least one bidirectional counter and one 16-bit DAC (spec 05b A.1)");
+    }
+    d.has_zero_input = t[f + 1] != "X";
+    d.has_enable_input = t[f + 2] != "X.X";
+  }
+  if (problems.size() != before) return std::nullopt;
+  return d;
+}
+
+// JOINT homing (spec 05b A.4) as MC_Home's configuration (C.4, decision A23). PRESET is MC_Home Mode 5 for
+// prsmode 0/1 (active homing to Homing.HomePosition = prspos with offset 0: the axis returns onto the mark,
+// as JOINT positions to prspos) and Mode 10 for prsmode 2 (passive, the mark := HomePosition). The enable
+// input (IAZero) is the TO's homing input (the machine's reference cam), high while on the cam.
+//   prsmode 0: the input's falling edge in the homing direction = active homing via digital input, the mark
+//              "leaving the input" (positive: SideInput TRUE, negative: FALSE; spec 02 §5.4);
+//   prsmode 1: the first zero mark after leaving the cam = active homing with cam + zero mark;
+//   prsmode 2: the rising edge = passive homing via digital input, the mark "entering" while moving in
+//   prsdir.
+// prsvel / sprsvel: ApproachVelocity / ReferencingVelocity; prsdir: the approach and homing direction.
+void put_joint_homing(std::int64_t prsmode, bool negative, double prsvel, double sprsvel, double prspos,
+                      LegacyExpansion& e) {
+  e.config["Homing.HomePosition"] = prspos;
+  e.config["Homing.ApproachDirection"] = negative;
+  if (prsvel > 0.0) e.config["Homing.ApproachVelocity"] = prsvel;
+  if (sprsvel > 0.0) e.config["Homing.ReferencingVelocity"] = sprsvel;
+  if (prsmode == 2) {
+    e.config["Sensor[1].PassiveHoming.Mode"] = 2;
+    e.config["Sensor[1].PassiveHoming.Direction"] = negative ? 1 : 0;
+    e.config["Sensor[1].PassiveHoming.SideInput"] = negative;  // entering: positive-FALSE, negative-TRUE
+  } else {
+    e.config["Sensor[1].ActiveHoming.Mode"] = prsmode == 0 ? 2 : 1;
+    e.config["Sensor[1].ActiveHoming.Direction"] = negative ? 1 : 0;
+    e.config["Sensor[1].ActiveHoming.SideInput"] = !negative;  // leaving: positive-TRUE, negative-FALSE
+    e.config["Sensor[1].ActiveHoming.HomePositionOffset"] = 0.0;
+  }
+}
+
 // ---- DEVICE JOINT (spec 05b A.2, A.3, A.8; C.1, C.2, C.3, C.5) ----
 void expand_joint(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Problems& problems) {
   const std::size_t before = problems.size();
   std::int64_t tcamp = 0, measure = 0, pulse = 0, unitvel = 1, decpt = 0, maxvel = 0, setvel = 0;
   std::int64_t rampmode = 0, ramptype = 0, taccdec = 0, tacc = 0, tdec = 0, toldly = 0, maxfolterr = 0;
   std::int64_t pgain = 1000, feedfw = 0, integt = 0, derivt = 0, offset = 0;
-  std::optional<double> maxpos, minpos, tol;
-  r.integer("TCamp", tcamp, 1, 255, false, true);
+  std::int64_t prsmode = 0, prsdir = 0, prsvel = 0, sprsvel = 0;
+  std::optional<double> maxpos, minpos, tol, prspos;
+  // The declaration line gives TCamp (and says which resources the axis has); else the key TCamp.
+  std::optional<JointDeclaration> declaration;
+  if (const Json* v = r.get("INTDEVICE")) {
+    std::string axis = "X";
+    if (const Json* a = r.get("axis")) axis = read_string(*a, r.path_of("axis"), problems).value_or("X");
+    if (auto line = read_string(*v, r.path_of("INTDEVICE"), problems)) {
+      declaration = read_intdevice(*line, axis, r.path_of("INTDEVICE"), r.path_of("axis"), problems);
+    }
+    if (declaration) tcamp = declaration->TCamp;
+    if (r.has("TCamp")) {
+      r.get("TCamp");
+      problems.add(r.path_of("TCamp"), "given by the INTDEVICE line");
+    }
+  } else {
+    r.integer("TCamp", tcamp, 1, 255, false, true);
+    if (r.has("axis")) {
+      r.get("axis");
+      problems.add(r.path_of("axis"), "names the axis of an INTDEVICE line, which is not given");
+    }
+  }
   r.integer("measure", measure, 1, 999999, false, true);
   r.integer("pulse", pulse, 1, 999999, false, true);
   r.integer("unitvel", unitvel, 0, 1);
@@ -100,6 +234,12 @@ void expand_joint(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Prob
   r.integer("integt", integt, 0, 32767);
   r.integer("derivt", derivt, 0, 32767);
   r.integer("offset", offset, -32768, 32767);
+  // Homing ("preset", A.4, A.8): modes 0/1/2, direction, fast and slow velocity (Uv), home position (Um).
+  r.integer("prsmode", prsmode, 0, 2);
+  r.integer("prsdir", prsdir, 0, 1);
+  r.integer("prsvel", prsvel, 0, 999999);
+  r.integer("sprsvel", sprsvel, 0, 999999);
+  r.optional_real("prspos", prspos);
   if (problems.size() != before) return;
 
   if (std::fabs(static_cast<double>(tcamp) / 1000.0 - cycle_time_s) > 1e-12) {
@@ -131,6 +271,23 @@ void expand_joint(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Prob
   } else if (maxpos && *maxpos <= *minpos) {
     problems.add(r.path_of("maxpos"),
                  format_number(*maxpos) + " must be above minpos " + format_number(*minpos));
+  }
+  // Homing needs the enable input (IAZero) in every mode and the zero-pulse input (IntL) in mode 1 (A.4).
+  if (declaration && (r.has("prsmode") || prspos)) {
+    if (!declaration->has_enable_input) {
+      problems.add(r.path_of("prsmode"), "homing needs the enable input IAZero, X.X in the INTDEVICE line");
+    } else if (prsmode == 1 && !declaration->has_zero_input) {
+      problems.add(r.path_of("prsmode"), "1 needs the zero-pulse input IntL, X in the INTDEVICE line");
+    }
+  }
+  for (const auto& [key, value] : {std::pair{"prsvel", prsvel}, std::pair{"sprsvel", sprsvel}}) {
+    if (value > maxvel) {
+      problems.add(r.path_of(key), std::to_string(value) + " exceeds maxvel " + std::to_string(maxvel));
+    }
+  }
+  if (prspos && maxpos && (*prspos > *maxpos || *prspos < *minpos)) {
+    problems.add(r.path_of("prspos"), format_number(*prspos) + " is outside minpos ... maxpos (" +
+                                          format_number(*minpos) + " ... " + format_number(*maxpos) + ")");
   }
   if (tol && !(*tol > 0.0 && *tol <= 999999.0)) {
     problems.add(r.path_of("tol"), format_number(*tol) + ": the tolerance window must be > 0 (≤ 999999)");
@@ -167,6 +324,10 @@ void expand_joint(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Prob
   if (tol) e.config["PositioningMonitoring.Window"] = *tol;
   if (r.has("toldly")) e.config["PositioningMonitoring.MinDwellTime"] = static_cast<double>(toldly) / 100.0;
   put_following_error(static_cast<double>(maxfolterr) * um_per_pulse, e);
+  const bool homing = r.has("prsmode") || r.has("prsdir") || r.has("prsvel") || r.has("sprsvel") || prspos;
+  if (homing)
+    put_joint_homing(prsmode, prsdir == 1, static_cast<double>(prsvel) * uv,
+                     static_cast<double>(sprsvel) * uv, prspos.value_or(0.0), e);
 }
 
 // ---- SAIA PCD4.H3 (spec 05b B.4, B.7.1, B.8, B.9; C.1, C.2) ----
@@ -256,6 +417,14 @@ void expand_h3(ObjectReader& r, double cycle_time_s, LegacyExpansion& e, Problem
   const double a = static_cast<double>(accel) * unit_mm;
   put_dynamics(static_cast<double>(veloc) * unit_mm, a, a, e);
   put_following_error(static_cast<double>(poser) / counts_per_mm, e);
+  // MCW 1BH, "flag only" (B.9, C.5: ExcPEr → 522, the regulator stays on): the warning at PosEr as 1 % of a
+  // limit 100 × PosEr, so 521 (remove enable) is only a far backstop; 1AH keeps 522 at 90 % and 521 at PosEr.
+  if (reaction == 0x1B && poser > 0) {
+    const double limit = 100.0 * static_cast<double>(poser) / counts_per_mm;
+    e.config["FollowingError.MaxValue"] = limit;
+    e.config["FollowingError.MinValue"] = limit;
+    e.config["FollowingError.WarningLevel"] = 1.0;
+  }
 }
 
 void merge_into(Json& target, const Json& patch) {

@@ -13,6 +13,9 @@
 #include "cam_elements.hpp"
 #include "json_reader.hpp"
 #include "legacy_parameters.hpp"
+#if TOMC_WITH_COMEDI
+#include "tomc/drives/comedi_analog_drive.hpp"
+#endif
 #include "tomc/techobjects/datablocks/positioning_variables.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/telegrams/encoder.hpp"
@@ -134,6 +137,57 @@ drives::AnalogDriveParameters analog_actor(const DriveSettings& drive, bool enab
   actor.dac = a.dac;
   actor.analog_output = drives::io::SimulatedServoAmplifierParameters{}.speed_input;
   return actor;
+}
+
+// A drive with "analog": {"comedi": {...}}: the analog actor on a real DAQ card (decision A21). The card is
+// opened here, so a missing device is a configuration error naming the file; nullptr after a problem.
+to::DeviceIo* add_comedi_drive(const DriveSettings& drive, bool enable_output, bool ready_input,
+                               const std::string& path, to::Runtime& runtime, Problems& problems) {
+  const ComediSettings& c = *drive.analog->comedi;
+  const std::string at = path + ".analog.comedi";
+  const std::size_t before = problems.size();
+  if (drive.encoder_telegram != 0) {
+    problems.add(path + ".encoder_telegram",
+                 "a separate 81/83 encoder is simulated: with \"comedi\" the position is the card's counter");
+  }
+  // The card's wiring and the TO's Actor.Interface must agree (spec 01 §3.12: both are optional).
+  const auto wiring = [&](const char* key, bool wired, bool given, const char* variable) {
+    if (wired && !given) {
+      problems.add(at + "." + key, std::string("missing: the TO's ") + variable + " is TRUE");
+    } else if (!wired && given) {
+      problems.add(at + "." + key,
+                   std::string("the TO's ") + variable + " is FALSE (set it TRUE or remove the channel)");
+    }
+  };
+  wiring("enable_output", enable_output, c.enable_output.has_value(), "Actor.Interface.EnableDriveOutput");
+  wiring("ready_input", ready_input, c.ready_input.has_value(), "Actor.Interface.DriveReadyInput");
+  if (problems.size() != before) return nullptr;
+#if TOMC_WITH_COMEDI
+  drives::io::ComediIoParameters card;
+  card.device_file = c.device_file;
+  card.analog_outputs = {c.analog_output};
+  if (c.enable_output) card.digital_outputs = {*c.enable_output};
+  if (c.ready_input) card.digital_inputs = {*c.ready_input};
+  card.counters = {c.counter};
+  card.counter_width_bits = c.counter_width_bits;
+  drives::AnalogDriveParameters actor = analog_actor(drive, enable_output, ready_input);
+  actor.analog_output = c.analog_output;
+  actor.enable_output = c.enable_output;
+  actor.ready_input = c.ready_input;
+  actor.counter = c.counter;
+  actor.counter_width_bits = c.counter_width_bits;
+  try {
+    return &runtime.add_device(std::make_unique<drives::ComediAnalogDrive>(card, actor));
+  } catch (const std::runtime_error& e) {
+    problems.add(at + ".device", e.what());
+  }
+#else
+  (void)runtime;
+  problems.add(at,
+               "this tomc is built without the comedi backend (configure with -DTOMC_WITH_COMEDI=ON, "
+               "which needs Debian's libcomedi-dev)");
+#endif
+  return nullptr;
 }
 
 // The simulated stepper driver and motor (decision A12) on the simulated drive's gear, load and machine. With
@@ -535,16 +589,25 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
       // The S7 shows the analog setpoint interface in Actor.Type (RON, set by the configuration).
       speed_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
       positioning_data.Actor.Type = static_cast<std::int32_t>(to::ActorType::kAnalogOutput);
+      if (drive.analog->comedi) {
+        // A real DAQ card (add_comedi_drive): opened now, so a missing card is a configuration error.
+        io = add_comedi_drive(drive, itf.EnableDriveOutput, itf.DriveReadyInput, r.path_of("drive"), runtime,
+                              problems);
+        if (io == nullptr)
+          return entry.name.empty() ? std::nullopt : std::optional<MachineObject>(std::move(entry));
+      }
       std::optional<drives::SeparateEncoderParameters> encoder;
       if (drive.encoder_telegram != 0) encoder = {drive.encoder_telegram, drive.parameters.encoder1};
-      auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
-          analog_amplifier(drive, itf.EnableDriveOutput),
-          analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput), encoder);
-      entry.mechanics = &owned->hardware().mechanics();
-      entry.analog_drive = owned.get();
-      // The separate 81/83 encoder is a simulated PROFIdrive encoder device: encoder_error goes there.
-      drive_ptr = owned->separate_encoder();
-      io = &runtime.add_device(std::move(owned));
+      if (io == nullptr) {
+        auto owned = std::make_unique<drives::SimulatedAnalogDrive>(
+            analog_amplifier(drive, itf.EnableDriveOutput),
+            analog_actor(drive, itf.EnableDriveOutput, itf.DriveReadyInput), encoder);
+        entry.mechanics = &owned->hardware().mechanics();
+        entry.analog_drive = owned.get();
+        // The separate 81/83 encoder is a simulated PROFIdrive encoder device: encoder_error goes there.
+        drive_ptr = owned->separate_encoder();
+        io = &runtime.add_device(std::move(owned));
+      }
     } else if (has_drive && drive.stepper) {
       // A PTO module is a telegram-3 drive to the S7 (spec 01 §3.11): Actor.Type stays 1.
       const auto& itf = *kind == TechnologyObjectKind::kSpeedAxis ? speed_data.Actor.Interface

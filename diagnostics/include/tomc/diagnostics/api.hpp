@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tomc/diagnostics/cam_plot.hpp"
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/panel.hpp"
 #include "tomc/diagnostics/trace.hpp"
@@ -72,6 +73,8 @@ Json status(const Diagnostics& diagnostics, const Diagnostics::State& state, std
 Json variables(const Diagnostics& diagnostics, const Diagnostics::State& state, std::size_t object);
 // GET /api/objects/<name>/alarms: the pending alarms and the whole history the reader kept.
 Json alarms(const Diagnostics& diagnostics, const Diagnostics::State& state, std::size_t object);
+// GET /api/objects/<cam>/plot: the sampled cam (cam_plot.hpp).
+Json cam_plot(const CamPlot& plot);
 // GET /api/trace: the capture; at most max_points rows (evenly picked; the trigger row always kept).
 Json trace(const TraceCapture& capture, std::size_t max_points);
 // GET /api/trace.csv: "cycle,time,<channels>" with time relative to the trigger (s).

@@ -27,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tomc/diagnostics/actor_view.hpp"
 #include "tomc/diagnostics/bounded_queue.hpp"
 #include "tomc/diagnostics/layout.hpp"
 #include "tomc/diagnostics/object_view.hpp"
@@ -40,7 +41,9 @@
 namespace tomc::techobjects {
 class SpeedAxis;
 class PositioningAxis;
+class SynchronousAxis;
 class ExternalEncoder;
+class Cam;
 }  // namespace tomc::techobjects
 
 namespace tomc::diagnostics {
@@ -50,6 +53,7 @@ inline constexpr std::size_t kEventsPerSnapshot = 32;
 // What the cycle publishes of one technology object.
 struct ObjectSnapshot {
   std::uint64_t cycle = 0;
+  std::uint64_t revision = 0;        // ObjectView::revision() when the snapshot was taken
   std::vector<double> values;        // one per row of the object's reflection table (sized at set-up)
   std::vector<std::uint32_t> words;  // one per telegram channel
   std::array<techobjects::PendingAlarm, techobjects::AlarmList::kCapacity> alarms{};
@@ -57,6 +61,7 @@ struct ObjectSnapshot {
   std::array<techobjects::AlarmEvent, kEventsPerSnapshot> events{};  // the newest alarm events, oldest first
   std::uint32_t event_count = 0;
   PanelStatus panel{};
+  ActorSnapshot actor{};  // an axis on an analog or stepper actor (set_actor); kind kNone otherwise
 };
 
 struct DiagnosticsConfig {
@@ -94,9 +99,17 @@ class Diagnostics {
   void add(techobjects::SpeedAxis& axis);  // view + control panel
   // View + control panel with homing and positioning (PositioningAxisPanel); also a SynchronousAxis.
   void add(techobjects::PositioningAxis& axis);
+  // Its own view (the positioning axis' areas plus synchronous operation, StatusSynchronizedMotion in the
+  // trace) and the positioning axis' panel.
+  void add(techobjects::SynchronousAxis& axis);
+  void add(const techobjects::Cam& cam);            // view and cam plot (no panel)
   void add(techobjects::ExternalEncoder& encoder);  // view (no panel: an encoder is not moved)
   // Any technology object: its view and, for an axis, its panel (nullptr: none).
   void add(std::unique_ptr<ObjectView> view, std::unique_ptr<AxisPanel> panel);
+  // The analog or stepper actor of an added axis (issue 20): the page shows its terminals instead of
+  // telegram words. Throws std::invalid_argument for an unknown name.
+  void set_actor(std::string_view object, ActorSource actor);
+  ActorKind actor_kind(std::size_t object) const noexcept { return objects_[object]->actor.kind(); }
   void add_switch(std::string name, std::string description, std::atomic<bool>& flag);
   // Sets the runtime's post-interpolator hook to cycle(); the runtime must not have started.
   void attach(techobjects::Runtime& runtime);
@@ -168,6 +181,7 @@ class Diagnostics {
     std::uint64_t publish_slot = 0;  // published when servo_cycles % publish_period_cycles == publish_slot
     ObjectUnits units;
     double reference_speed = 0.0;
+    ActorSource actor;
   };
   void publish(Object& object, std::uint64_t cycle) noexcept;
   void answer(std::uint64_t request, PanelAnswer answer) noexcept;

@@ -23,6 +23,10 @@
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/telegrams/signals.hpp"
 
+namespace tomc::techobjects {
+class Cam;
+}
+
 namespace tomc::diagnostics {
 
 // The reflection table of a TO type (the synchronous axis shares the positioning axis' table).
@@ -48,6 +52,22 @@ class ObjectView {
   virtual const techobjects::DriveConnection* drive() const noexcept = 0;  // nullptr: virtual/simulated
 
   std::span<const techobjects::VariableInfo> variables() const noexcept { return variables_of(type()); }
+  // Status a TO keeps outside its data block (a synchronous axis' StatusSynchronizedMotion): the rows of
+  // variables() whose owner is kSynchronousAxis read it. nullptr: none.
+  virtual const void* extension_block() const noexcept { return nullptr; }
+  // What a row of variables() is read from.
+  const void* source_of(const techobjects::VariableInfo& row) const noexcept {
+    return row.owner == techobjects::TechnologyObjectType::kSynchronousAxis ? extension_block()
+                                                                            : data_block();
+  }
+  // Changes whenever the TO rebuilds data that is not in its rows (a cam's interpolated form); 0: never.
+  // Read in the cycle and published with the snapshot.
+  virtual std::uint64_t revision() const noexcept { return 0; }
+  // The names of the configured leading values of a synchronous axis (ActualMaster 1 is the first); empty
+  // for every other TO.
+  virtual std::vector<std::string> leading_value_names() const { return {}; }
+  // The cam of a TO_Cam view (its plot: cam_plot.hpp); nullptr for every other TO.
+  virtual const techobjects::Cam* cam() const noexcept { return nullptr; }
 
   // Set-up, once before the cycle runs: the telegram words of the configured telegrams.
   void resolve_telegrams();

@@ -96,6 +96,9 @@ class IoController {
   void set_outputs_valid(bool valid) noexcept;
   // The output frame of this cycle into out (0 before the Connect response).
   std::size_t next_output_frame(std::span<std::uint8_t> out) noexcept;
+  // The FrameID of this AR's input frames (the device's choice once the Connect is answered): with several
+  // devices on one interface, a received frame is offered only to the AR whose FrameID it carries.
+  std::uint16_t input_frame_id() const noexcept { return input_codec_.layout().frame_id; }
   // A received input frame of this AR; false if it is another frame or malformed.
   bool on_input_frame(std::span<const std::uint8_t> frame, std::uint64_t now_us) noexcept;
   // True while the last input frame is valid data (DataValid, provider RUN) and younger than the watchdog.

@@ -50,6 +50,8 @@ inline constexpr std::uint32_t kAlarmModuloTooFast = 412;       // seed L3946
 inline constexpr std::uint32_t kAlarmDriveSto = 421;            // seed L2712
 inline constexpr std::uint32_t kAlarmSensorFault = 431;         // encoder error (Gx_ZSW.15), [OUR CHOICE]
 inline constexpr std::uint32_t kAlarmAdjustmentLost = 432;      // absolute-encoder adjustment not restored
+// an encoder that does not close the position loop reported an error (Gx_ZSW.15), [OUR CHOICE] B2
+inline constexpr std::uint32_t kAlarmAdditionalSensorFault = 433;
 inline constexpr std::uint32_t kAlarmDynamicsLimitedVelocity = 501;  // seed §10.3.15
 inline constexpr std::uint32_t kAlarmDynamicsLimitedAcceleration = 502;
 inline constexpr std::uint32_t kAlarmDynamicsLimitedJerk = 503;

@@ -42,22 +42,24 @@ enum class AxisJobKind : std::uint8_t {
   kStop,
   kSetAxisStw,
   kWriteParameter,
-  kGearIn,            // synchronous axis: MC_GearIn
-  kGearInPos,         // MC_GearInPos, once synchronization started
-  kGearInVelocity,    // MC_GearInVelocity
-  kGearOut,           // MC_GearOut, once desynchronization started
-  kCamIn,             // MC_CamIn
-  kCamOut,            // MC_CamOut, once desynchronization started
-  kPositionProfile,   // MC_PositionProfile (spec 03 §4.7)
-  kMotionInVelocity,  // MC_MotionInVelocity (spec 03 §4.17.1)
-  kMotionInPosition,  // MC_MotionInPosition (spec 03 §4.17.2)
-  kMoveSuperimposed,  // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
-  kHaltSuperimposed,  // MC_HaltSuperimposed
+  kGearIn,                    // synchronous axis: MC_GearIn
+  kGearInPos,                 // MC_GearInPos, once synchronization started
+  kGearInVelocity,            // MC_GearInVelocity
+  kGearOut,                   // MC_GearOut, once desynchronization started
+  kCamIn,                     // MC_CamIn
+  kCamOut,                    // MC_CamOut, once desynchronization started
+  kPositionProfile,           // MC_PositionProfile (spec 03 §4.7)
+  kMotionInVelocity,          // MC_MotionInVelocity (spec 03 §4.17.1)
+  kMotionInPosition,          // MC_MotionInPosition (spec 03 §4.17.2)
+  kMoveSuperimposed,          // MC_MoveSuperimposed (positioning_axis/superimposed_motion.hpp)
+  kHaltSuperimposed,          // MC_HaltSuperimposed
   kMotionInSuperimposed,      // MC_MotionInSuperimposed (spec 03 §4.17.3)
   kMotionInSuperimposedAxes,  // MC_MotionInSuperimposedAxes (spec 03 §4.17.4)
   kPhasing,  // MC_PhasingAbsolute / MC_PhasingRelative (the synchronous operation's leading value offset)
   kOffset,   // MC_OffsetAbsolute / MC_OffsetRelative (its following value offset)
-  kLeadingValueAdditive,  // MC_LeadingValueAdditive
+  kLeadingValueAdditive,          // MC_LeadingValueAdditive
+  kSynchronizedMotionSimulation,  // MC_SynchronizedMotionSimulation
+  kSetSensor,                     // MC_SetSensor (positioning_axis_encoders.cpp)
 };
 
 // The enable state of an axis (MC_Power, spec 01 §6, spec 02 §3.1).
@@ -105,6 +107,8 @@ class AxisCore {
   // finish_reset().
   std::optional<bool> begin_reset(std::uint64_t cycle) noexcept;
   void finish_reset() noexcept { jobs.set(reset_job_, JobState::kDone); }
+  // An MC_Reset with Restart = TRUE waits for its interpolator cycle (MC_SetSensor's prerequisite).
+  bool restart_pending() const noexcept { return reset_pending_ && restart_requested_; }
   // ---- MC_Stop (spec 03 §4.13) ----
   // Whether a stop reaction of an alarm with a higher weight is in force: the MC_Stop ends with
   // CommandAborted, not Error (seed §6.9.4, spec 02 §3.8).

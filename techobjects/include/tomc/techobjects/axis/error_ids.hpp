@@ -41,6 +41,8 @@ inline constexpr std::uint16_t kInvalidSyncProfileReference = 0x8036;
 inline constexpr std::uint16_t kInvalidSlavePosition = 0x8037;    // MC_GearOut stop position not reachable
 inline constexpr std::uint16_t kInvalidPhaseShift = 0x8070;       // PhaseShift not finite
 inline constexpr std::uint16_t kNoSynchronousOperation = 0x8075;  // phasing/offset: no gearing or camming
+// A new synchronous job while the synchronous operation is simulated (MC_SynchronizedMotionSimulation)
+inline constexpr std::uint16_t kSynchronousOperationSimulated = 0x8076;
 inline constexpr std::uint16_t kNoGearing = 0x8077;               // MC_GearOut without MC_GearIn/GearInPos
 inline constexpr std::uint16_t kNoCamming = 0x8078;               // MC_CamOut without MC_CamIn
 inline constexpr std::uint16_t kNoActiveCamming = 0x808B;         // MC_CamIn profile 5 without active camming
@@ -79,8 +81,11 @@ inline constexpr std::uint16_t kInvalidStartMode = 0x8116;     // MC_Power.Start
 inline constexpr std::uint16_t kInvalidStopMode = 0x8117;      // MC_Power.StopMode not 0..3
 inline constexpr std::uint16_t kInvalidPosition =
     0x8118;  // Position/Distance not finite, or outside the modulo range
-inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;         // BufferMode not 0/1
-inline constexpr std::uint16_t kInvalidSensor = 0x811A;             // MC_Home.Sensor names no usable encoder
+inline constexpr std::uint16_t kInvalidBufferMode = 0x8119;  // BufferMode not 0/1
+inline constexpr std::uint16_t kInvalidSensor = 0x811A;      // MC_Home.Sensor names no usable encoder
+// MC_SetSensor (decision B4): Sensor/ReferenceSensor not 1...4 or no configured encoder of the axis
+inline constexpr std::uint16_t kSensorNotConfigured = 0x811B;
+inline constexpr std::uint16_t kSensorSwitchBlocked = 0x811C;  // MC_SetSensor while MC_Home or a restart runs
 inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.Restart while enabled or busy
 inline constexpr std::uint16_t kInvalidParameterNumber =
     0x8130;  // MC_WriteParameter: index not writable on this TO
@@ -107,6 +112,9 @@ inline constexpr std::uint16_t kInvalidTorqueValue = 0x8146;
 inline constexpr std::uint16_t kCamNotInterpolated = 0x8150;
 // MC_CopyCamData: an element range outside the cam's Point/Segment arrays or outside the given source arrays
 inline constexpr std::uint16_t kInvalidCamElementRange = 0x8151;
+// MC_SynchronizedMotionSimulation, tomc's own: the leading value or the follower moves when the simulation
+// starts (the manual's procedure: the leader at standstill; a moving follower would be left without a job)
+inline constexpr std::uint16_t kSimulationNeedsStandstill = 0x8152;
 // MC_PositionProfile (spec 03 §4.7; tomc's profile structure, decision L1): no profile, fewer than 2 or more
 // than kMaxTimePositionPoints points
 inline constexpr std::uint16_t kInvalidTimePositionProfile = 0x8180;

@@ -121,6 +121,12 @@ struct HaltSuperimposedInputs {
   double Jerk = -1.0;
   bool AbortAcceleration = false;
 };
+// Inputs of MC_SetSensor (spec 03 §4.12); Sensor and ReferenceSensor are INT in the manual (AMB-26).
+struct SetSensorInputs {
+  std::int16_t Sensor = 1;
+  std::int32_t Mode = 0;  // 0 switch + take over the position, 1 switch only, 2/3 take over without switch
+  std::int16_t ReferenceSensor = 1;
+};
 // Inputs of MC_Home (spec 03 §4.3).
 struct HomeInputs {
   double Position = 0.0;

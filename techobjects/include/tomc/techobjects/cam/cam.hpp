@@ -74,6 +74,9 @@ class Cam final : public TechnologyObject {
   JobStatus job_status(JobId id) const noexcept {
     return id != 0 && id <= last_job_ ? JobStatus{JobState::kDone, 0, false} : JobStatus{};
   }
+  // How many times MC_InterpolateCam rebuilt (or began to rebuild) the profile: a reader outside the cycle
+  // (the diagnostics page's cam plot) compares it before and after reading profile().
+  std::uint32_t interpolation_count() const noexcept { return interpolation_count_; }
   // Why the last MC_InterpolateCam failed (kNone after a success).
   const CamInterpolationResult& last_interpolation() const noexcept { return last_interpolation_; }
 
@@ -95,6 +98,7 @@ class Cam final : public TechnologyObject {
   CamProfile profile_;
   CamInterpolationResult last_interpolation_{};
   std::uint32_t users_ = 0;
+  std::uint32_t interpolation_count_ = 0;
   JobId last_job_ = 0;
 };
 

@@ -27,9 +27,10 @@ struct DriveConnectionConfig {
 
 // Where an encoder's signals are (decision P3).
 enum class EncoderSource : std::uint8_t {
-  kDriveG1,    // G1 of the drive telegram (3, 4, 5, 6, 102, 103, 105, 106)
-  kDriveG2,    // G2 of the drive telegram (4, 6, 103, 106) — Sensor[n].Interface.Number = 2
-  kEncoderG1,  // G1 of the separate encoder telegram 81/83 (slot kEncoder1)
+  kDriveG1,     // G1 of the drive telegram (3, 4, 5, 6, 102, 103, 105, 106)
+  kDriveG2,     // G2 of the drive telegram (4, 6, 103, 106) — Sensor[n].Interface.Number = 2
+  kEncoderG1,   // G1 of the separate encoder telegram 81/83 (slot kEncoder1)
+  kEncoder2G1,  // G1 of the second separate encoder telegram 81/83 (slot kEncoder2; decision B3)
 };
 
 // What one MC_Servo cycle commands of the drive (issue 14: one writer of the setpoint telegram). The TO's
@@ -76,6 +77,9 @@ class DriveConnection {
   // ---- MC_Servo ----
   void read() noexcept;                              // first, after the runtime read the actual frames
   void write(const ServoCommand& command) noexcept;  // last: this cycle's setpoints, encoded
+  // Before write(): the Gx_STW of an encoder that is not the operative one (spec 01 §3.8: every used encoder
+  // is evaluated, so each needs its own requests); write() sets the operative encoder's from the command.
+  void set_encoder_control(EncoderSource source, telegrams::EncoderControlWord word) noexcept;
   // Telegram 750 (spec 06 §2.14, §8), before write(): additive torque and torque limits, N2 of the reference
   // torque. Kept in the setpoint signals themselves, not in ServoCommand, so that no axis carries a copy (the
   // positioning axis' memory budget); until the first call the limits are ±100 % (TV14).

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "tomc/drives/drive_adapter.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
@@ -14,9 +15,11 @@
 namespace tomc::techobjects {
 
 // The source of encoder `number` (Sensor[n].Interface.Number, 1 or 2) on a device: G1/G2 of the drive
-// telegram if it carries them, else the separate encoder telegram. nullopt: the device carries no such
-// encoder. Set-up only (creates codecs).
-std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number);
+// telegram if it carries them, else the first separate encoder telegram 81/83, else the second; a source in
+// `taken` (another encoder of the same axis already reads it) is skipped (decision B3). nullopt: the device
+// carries no such encoder. Set-up only (creates codecs).
+std::optional<EncoderSource> find_encoder_source(const drives::DeviceConfig& device, std::uint32_t number,
+                                                 std::span<const EncoderSource> taken = {});
 
 class EncoderChannel {
  public:

@@ -47,6 +47,7 @@
 #include "tomc/techobjects/position/passive_homing.hpp"
 #include "tomc/techobjects/position/position_control.hpp"
 #include "tomc/techobjects/position/position_monitoring.hpp"
+#include "tomc/techobjects/positioning_axis/additional_encoders.hpp"
 #include "tomc/techobjects/positioning_axis/superimposed_motion.hpp"
 #include "tomc/techobjects/positioning_axis/superimposing_axes.hpp"
 #include "tomc/techobjects/positioning_axis/synchronous_slot.hpp"
@@ -72,7 +73,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
 
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
   std::size_t memory_footprint() const noexcept {
-    return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes() +
+    return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes() + additional_.heap_bytes() +
            (superimposing_axes_ ? sizeof(SuperimposingAxisTable) : 0);
   }
 
@@ -102,6 +103,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   Submission move_superimposed(const MoveSuperimposedInputs& in) noexcept;                  // 9.10
   Submission halt_superimposed(const HaltSuperimposedInputs& in) noexcept;                  // 9.11
   Submission stop(const StopInputs& in) noexcept;                                           // 9.13
+  // 9.12 MC_SetSensor (positioning_axis_encoders.cpp): Mode 0/1 make Sensor the operative encoder with /
+  // without taking over the actual position, Mode 2/3 give Sensor the axis' / ReferenceSensor's position.
+  // Done at once; no other job aborts it and it aborts none (spec 03 §4.12).
+  Submission set_sensor(const SetSensorInputs& in) noexcept;
   // 9.15: 1000 PositionLimits_HW.Active (immediately), 1010/1011/1012 communication times (after restart),
   // 1020 Actor.RemoveEnableReaction (immediately).
   Submission write_parameter(std::int32_t parameter_number, double value) noexcept;
@@ -125,10 +130,15 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   double reference_mark_position() const noexcept { return reference_mark_position_; }
 
   // ---- retentive data (spec 02 §5.9): the absolute-encoder adjustment that survives a power cycle ----
-  // What the CPU keeps retentively for the operative encoder: valid once an absolute encoder was adjusted.
-  // Changes (MC_Home 6/7, the first active/passive homing of an absolute encoder) increase `sequence`.
+  // What the CPU keeps retentively for the start-up encoder (PositionControl.InitialOperativeSensor, the one
+  // restore_retained() gives back at power-up, whichever encoder MC_SetSensor made operative since): valid
+  // once an absolute encoder was adjusted. Changes (MC_Home 6/7, the first active/passive homing of an
+  // absolute encoder) increase `sequence`. The other encoders' adjustments are not persisted (decision B1).
   using RetainedEncoderData = techobjects::RetainedEncoderData;
-  const RetainedEncoderData& retained() const noexcept { return retained_; }
+  const RetainedEncoderData& retained() const noexcept {
+    const AdditionalEncoder* e = additional_.find(db_.PositionControl.InitialOperativeSensor);
+    return e != nullptr ? e->retained : retained_;
+  }
   bool absolute_encoder() const noexcept;
   // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
   void restore_retained(const RetainedEncoderData& data) noexcept;
@@ -154,6 +164,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   const DynamicFilter& dynamic_filter() const noexcept { return dynamic_filter_; }
   double continuous_actual_position() const noexcept { return actual_position_; }
   bool position_controlled() const noexcept { return position_controlled_; }
+  // The encoders besides the operative one (spec 01 §3.8).
+  const AdditionalEncoders& additional_encoders() const noexcept { return additional_; }
+  const EncoderChannel& operative_encoder() const noexcept { return encoder_; }
   const AxisUnitFactors& units() const noexcept { return units_; }
 
  protected:
@@ -237,6 +250,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
     double value = 0.0;  // position assigned at the mark
   };
   void start_active_homing(JobId id, double home_position) noexcept;
+  Submission home_other_encoder(const HomeInputs& in) noexcept;  // MC_Home.Sensor: not the operative one
   void homing_observe() noexcept;  // MC_Servo: reference mark, digital-input edges, reversal cams
   void run_homing() noexcept;      // MC_Interpolator
   void run_passive_homing() noexcept;
@@ -259,6 +273,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void abort_synchronous(std::uint16_t error_id) noexcept {
     if (synchronous_ != nullptr) synchronous_->abort(error_id);
   }
+  void restart_synchronous() noexcept {
+    if (synchronous_ != nullptr) synchronous_->restart();
+  }
   void run_synchronous() noexcept {
     if (synchronous_ != nullptr) synchronous_->run();
   }
@@ -280,6 +297,18 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void configure_monitoring() noexcept;
   void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
   void configure_extrapolation() noexcept;
+  // multiple encoders (positioning_axis_encoders.cpp)
+  void configure_encoders() noexcept;        // every encoder's chain from its Sensor[n] and the cycle time
+  void read_additional_encoders() noexcept;  // MC_Servo: the encoders that do not close the loop
+  void write_additional_encoder_controls() noexcept;
+  void power_up_additional_encoders() noexcept;  // absolute ones with their retained adjustment
+  void update_additional_encoder_status() noexcept;
+  // The encoder Sensor[n] becomes the operative one: channel, retained data and fault state change places
+  // with the additional encoder n (no allocation). n must exist.
+  std::uint32_t make_operative(std::uint32_t n) noexcept;
+  ActualValueChain* sensor_chain(std::uint32_t n) noexcept;  // encoder n's chain; nullptr: none
+  void transfer_position(std::uint32_t n, double position, bool adjusted) noexcept;
+  void discard_absolute_compensation() noexcept;  // returns the operative encoder number
   // jobs
   std::uint16_t motion_prerequisites() const noexcept { return core_.motion_prerequisites(); }
   std::optional<std::uint16_t> resolve_dynamics(double velocity, double acceleration, double deceleration,
@@ -386,9 +415,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // components
   AxisUnitFactors units_{};
   AxisMechanics mechanics_{};
-  EncoderMechanics encoder_mechanics_{};
-  EncoderChannel encoder_;  // the operative encoder (S7-1500: Sensor[1])
-  ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
+  EncoderChannel
+      encoder_;  // the operative encoder, Sensor[OperativeSensor] (its mechanics: encoder_.chain())
+  AdditionalEncoders additional_;  // the other Sensor[n].Existent encoders (spec 01 §3.8, decision B1)
+  ServoCommand command_{};         // what MC_Servo sends the drive (one writer: DriveConnection::write)
   // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
   // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
   std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
@@ -439,6 +469,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   double actual_position_ = 0.0;
   double actual_velocity_ = 0.0;
   double reference_mark_position_ = 0.0;
+  // MC_SetSensor Mode 1: the old encoder's position minus the new one's, added to the actual value and
+  // decaying with PositionControl.SmoothingTimeByChangeDifference (spec 01 §3.8).
+  double sensor_switch_difference_ = 0.0;
 
   // MC_TorqueLimiting (spec 01 §8.10/§8.11)
   ClampingMonitor clamping_{};
@@ -446,7 +479,6 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // ---- one-byte state, kept together so that it leaves no padding (8 KiB per axis TO, issue 18) ----
   AxisDigitalInputs inputs_{};
   bool servo_cycle_known_ = false;
-  EncoderSource encoder_source_ = EncoderSource::kDriveG1;
   bool position_controlled_ = true;
   Generator generator_ = Generator::kIdle;
   bool positioning_start_pending_ = false;  // servo starts the positioning monitor with positioning_target_

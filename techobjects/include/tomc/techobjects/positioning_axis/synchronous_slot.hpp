@@ -18,6 +18,9 @@ class SynchronousSlot {
   virtual std::uint16_t arbitrate(NewJob row) noexcept = 0;
   // Every synchronous job ends (alarm reaction, disable, MC_Stop, restart): error_id 0 = CommandAborted.
   virtual void abort(std::uint16_t error_id) noexcept = 0;
+  // MC_Reset Restart = TRUE: every synchronous job ends, also a simulated synchronous operation (spec 07
+  // §4.4), which the other aborts leave running.
+  virtual void restart() noexcept = 0;
   // MC_Interpolator, before the setpoint is generated: pending jobs, synchronization, desynchronization.
   virtual void run() noexcept = 0;
   // The setpoint of this cycle while the synchronous operation drives the axis.

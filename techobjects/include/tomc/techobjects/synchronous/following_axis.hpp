@@ -48,6 +48,8 @@ class FollowingAxis {
     return axis_.arbitrate_motion(row, queue);
   }
   void abort_pending() noexcept { axis_.abort_pending(0); }
+  // MC_Stop is running (spec 03 §4.13): no synchronous operation may take the axis over (§9.19.1 C6).
+  bool stop_running() const noexcept { return axis_.core_.stop.id != 0; }
 
   // ---- the setpoint ----
   // The job becomes the axis' motion and the synchronous operation generates its setpoint.

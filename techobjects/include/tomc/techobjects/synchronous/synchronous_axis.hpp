@@ -29,6 +29,12 @@ class SynchronousAxis final : public PositioningAxis {
   SynchronousAxis(std::string name, DeviceIo* device, const PositioningAxisData& start_values,
                   std::vector<LeadingValueInterconnection> leaders, const DriveConnectionConfig& drive = {});
 
+  // The object plus the heap it owns: the positioning axis' heap and the interconnection lists.
+  std::size_t memory_footprint() const noexcept {
+    return sizeof(*this) - sizeof(PositioningAxis) + PositioningAxis::memory_footprint() +
+           operation_.heap_bytes();
+  }
+
   std::span<TechnologyObject* const> leaders() const noexcept override { return operation_.leaders(); }
   std::span<const LeadingValueInterconnection> interconnections() const noexcept {
     return operation_.interconnections();
@@ -59,8 +65,8 @@ class SynchronousAxis final : public PositioningAxis {
   Submission additive_start(const LeadingValueAdditiveValues& values) noexcept {
     return operation_.additive_start(values);
   }
-  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
-    operation_.additive_update(job, values);
+  std::uint16_t additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept {
+    return operation_.additive_update(job, values);
   }
   void additive_end(JobId job) noexcept { operation_.additive_end(job); }
   bool additive_busy(JobId job) const noexcept { return operation_.additive_busy(job); }
@@ -69,6 +75,10 @@ class SynchronousAxis final : public PositioningAxis {
     operation_.update_ratio(job, numerator, denominator);
   }
   SyncJobOutputs sync_outputs(JobId job) const noexcept { return operation_.sync_outputs(job); }
+  // ---- MC_SynchronizedMotionSimulation (spec 07 §4.4) ----
+  Submission simulation_start() noexcept { return operation_.simulation_start(); }
+  std::uint16_t simulation_end(JobId job) noexcept { return operation_.simulation_end(job); }
+  bool in_simulation(JobId job) const noexcept { return operation_.in_simulation(job); }
 
   // ---- the data block's synchronous part ----
   const StatusSynchronizedMotion& synchronized_motion() const noexcept { return operation_.status(); }

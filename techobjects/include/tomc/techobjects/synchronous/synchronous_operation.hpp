@@ -8,6 +8,7 @@
 // share the pending/active/desynchronizing job states, the leader-domain blend and the desynchronization;
 // only the synchronous function differs (a gear line or a cam). Phasing and offsets (phasing_offset.cpp)
 // shift the function leading value and the following value around it.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -185,6 +186,11 @@ class SynchronousOperation final : public SynchronousSlot {
 
   std::span<TechnologyObject* const> leaders() const noexcept { return leader_objects_; }
   std::span<const LeadingValueInterconnection> interconnections() const noexcept { return interconnections_; }
+  // The heap this component owns: the two lists of leading values (sized once at set-up).
+  std::size_t heap_bytes() const noexcept {
+    return interconnections_.capacity() * sizeof(LeadingValueInterconnection) +
+           leader_objects_.capacity() * sizeof(TechnologyObject*);
+  }
   // The leading value the active synchronous job follows (nullptr: none) — a loop check for other followers.
   const LeadingValueSource* followed_leading_value() const noexcept;
 
@@ -203,11 +209,19 @@ class SynchronousOperation final : public SynchronousSlot {
   // another instance ends, §9.19.2 S7 "A"), its values taken on every call while Enable holds, ended by
   // Enable = FALSE. additive_busy(): the job's values are in the effective leading value.
   Submission additive_start(const LeadingValueAdditiveValues& values) noexcept;
-  void additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
-  void additive_end(JobId job) noexcept;
+  // 0, or 16#8118 for values that are not finite (the last ones stay).
+  std::uint16_t additive_update(JobId job, const LeadingValueAdditiveValues& values) noexcept;
+  // Enable = FALSE (Done); MC_Reset Restart ends it as CommandAborted (spec 07 §4.3).
+  void additive_end(JobId job, JobState state = JobState::kDone) noexcept;
   bool additive_busy(JobId job) const noexcept { return job != 0 && job == additive_.id; }
   void update_ratio(JobId job, std::int32_t numerator, std::int32_t denominator) noexcept;
   SyncJobOutputs sync_outputs(JobId job) const noexcept;
+  // MC_SynchronizedMotionSimulation (synchronized_motion_simulation.cpp, spec 07 §4.4): simulation_start() on
+  // Enable's rising edge, simulation_end() on every call with Enable = FALSE while the simulation runs (it
+  // ends once the follower can take the synchronous setpoint over). in_simulation(): InSimulation.
+  Submission simulation_start() noexcept;
+  std::uint16_t simulation_end(JobId job) noexcept;  // 0: ended (or not running), else the ErrorID
+  bool in_simulation(JobId job) const noexcept { return job != 0 && job == simulation_; }
 
   const StatusSynchronizedMotion& status() const noexcept { return status_; }
   // "StatusSynchronizedMotion.<member>" without the prefix; NaN for an unknown member.
@@ -216,9 +230,10 @@ class SynchronousOperation final : public SynchronousSlot {
   // ---- SynchronousSlot ----
   std::uint16_t arbitrate(NewJob row) noexcept override;
   void abort(std::uint16_t error_id) noexcept override;
+  void restart() noexcept override;
   void run() noexcept override;
   MotionState setpoint() const noexcept override { return sync_setpoint_; }
-  bool following() const noexcept override { return active_.id != 0; }
+  bool following() const noexcept override { return active_.id != 0 && simulation_ == 0; }
   void update_status() noexcept override;
 
  private:
@@ -270,11 +285,24 @@ class SynchronousOperation final : public SynchronousSlot {
     bool armed = false;  // profile 0: the leader was before the (moving) start position
     CamJob cam{};        // kind kCamIn
   };
+  // Phasing profile 0's time-based travel of the follower (spec 07 §6.6): a PositionProfile planned from
+  // rest, kept as its segments only. From rest to rest needs at most 7 (jerk up, hold, down, cruise, and the
+  // braking mirror), so 7 instead of the planner's 10 and none of its bookkeeping (decision C17).
+  struct RestToRestTravel {
+    std::array<ProfileSegment, 7> segments{};
+    std::uint32_t count = 0;
+    double duration = 0.0;
+    double target = 0.0;
+    bool take(const PositionProfile& plan, double to) noexcept;  // false: more segments than kept
+    MotionState at(double t) const noexcept;                     // beyond duration: rest at the target
+  };
   // A leading value offset (MC_Phasing*) or a following value offset (MC_Offset*) job (spec 07 §4.1, §4.2,
   // §6.6): the shift goes from `from` to `from + delta` over `length` of effective leading value from
-  // `x_start` (profiles 1, 2), or, phasing profile 0, along a time-based profile of the follower.
+  // `x_start` (profiles 1, 2), or, phasing profile 0, along a time-based profile of the follower. One job
+  // slot serves both kinds: a leading and a following value offset exclude each other (16#808A, §4.1).
   struct ShiftJob {
     JobId id = 0;
+    bool phasing = false;  // MC_Phasing* (the phase shift), else MC_Offset* (the offset)
     std::int32_t profile = 1;
     bool waiting = false;    // profile 2 before StartPosition (StatusWord2.X3 / X5)
     double committed = 0.0;  // the leading value's direction the job relies on (0: not moving yet)
@@ -285,8 +313,9 @@ class SynchronousOperation final : public SynchronousSlot {
     double length = 0.0;
     double from = 0.0;
     double delta = 0.0;
-    std::uint32_t cycles = 0;  // profile 0: MC_Interpolator cycles since the start
-    double ratio = 1.0;        // profile 0: follower travel per leading value
+    std::uint32_t cycles = 0;   // profile 0: MC_Interpolator cycles since the start
+    double ratio = 1.0;         // profile 0: follower travel per leading value
+    RestToRestTravel travel{};  // profile 0
   };
   struct Shift {  // a shift and its time derivatives in this cycle
     double value = 0.0;
@@ -318,6 +347,9 @@ class SynchronousOperation final : public SynchronousSlot {
     int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
   };
 
+  // A new gearing, camming or desynchronization job: refused by the program state, or 16#8076 while the
+  // synchronous operation is simulated (spec 07 §4.4). 0: none.
+  std::uint16_t synchronous_job_rejection() const noexcept;
   int find_source(const LeadingValueSource* master) const noexcept;
   LeadingValue sample(int source) const noexcept;
   std::optional<std::uint16_t> check_master(const LeadingValueSource* master, int& source) noexcept;
@@ -348,15 +380,16 @@ class SynchronousOperation final : public SynchronousSlot {
   std::uint16_t arbitrate_row(NewSyncRow row) noexcept;
   // ---- leading and following value offsets (phasing_offset.cpp) ----
   std::optional<std::uint16_t> shift_requirements(bool phasing) const noexcept;
-  Submission start_shift(ShiftJob& job, Shift& shift, AxisJobKind kind, std::int32_t profile, double target,
-                         bool absolute, double length, double start_position,
-                         std::int32_t direction) noexcept;
-  void step_shifts(const LeadingValue& effective) noexcept;
-  void step_shift(ShiftJob& job, Shift& shift, FinishedShift& finished,
-                  const LeadingValue& effective) noexcept;
-  void end_shift(ShiftJob& job, const Shift& shift, FinishedShift& finished, JobState state,
-                 std::uint16_t error_id) noexcept;
-  void end_shifts() noexcept;  // the synchronous operation ended: both jobs end, both shifts are 0 again
+  Submission start_shift(const ShiftJob& prepared, double target, bool absolute) noexcept;
+  void step_shift(const LeadingValue& effective) noexcept;
+  void end_shift(JobState state, std::uint16_t error_id) noexcept;  // the running phasing or offset job
+  void cancel_waiting_shift(bool phasing) noexcept;                 // ProfileReference 5
+  void end_shifts() noexcept;  // the synchronous operation ended: the job ends, both shifts are 0 again
+  Shift& shift_of(bool phasing) noexcept { return phasing ? phase_shift_ : offset_; }
+  FinishedShift& finished_of(bool phasing) noexcept { return phasing ? phasing_finished_ : offset_finished_; }
+  // ---- simulation (synchronized_motion_simulation.cpp) ----
+  void run_simulated() noexcept;  // the synchronous operation goes on without the axis
+  void end_simulation(JobState state) noexcept;
   // ---- camming (camming.cpp) ----
   bool start_pending_cam(const LeadingValue& leader) noexcept;
   void step_cam(const LeadingValue& leader) noexcept;
@@ -376,14 +409,13 @@ class SynchronousOperation final : public SynchronousSlot {
   int cycle_leader_source_ = -1;
   SyncFamily new_job_family_ = SyncFamily::kGearing;  // of the desynchronization being arbitrated (fn. 7)
   StatusSynchronizedMotion status_{};
-  ShiftJob phasing_{};
-  ShiftJob offset_job_{};
+  ShiftJob shift_job_{};  // the running MC_Phasing* or MC_Offset* job
   Shift phase_shift_{};
   Shift offset_{};
   FinishedShift phasing_finished_{};
   FinishedShift offset_finished_{};
-  PositionProfile phasing_profile_{};  // profile 0
   Additive additive_{};
+  JobId simulation_ = 0;   // the running MC_SynchronizedMotionSimulation
   int shown_source_ = -1;  // the leading value EffectiveLeadingValue shows (the last one used)
 
   FollowingAxis axis_;

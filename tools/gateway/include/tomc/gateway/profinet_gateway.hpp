@@ -39,6 +39,9 @@ struct GatewayCounters {
   std::uint64_t answers_published = 0;
   std::uint64_t cycles = 0;    // of the cyclic thread
   std::uint64_t overruns = 0;  // cycles that ended after the next one was due
+  // The cyclic thread's wake-up latency (wake-up minus deadline, RealTimeRunner), µs.
+  double wake_up_p99_us = 0.0;
+  double wake_up_max_us = 0.0;
 };
 
 class ProfinetGateway {

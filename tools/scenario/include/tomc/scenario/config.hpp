@@ -69,6 +69,18 @@ void load_cam_config(const Json& config, std::string_view path, techobjects::Cam
 // scaling and the simulated servo amplifier. The enable output and the ready input are the TO's
 // Actor.Interface.EnableDriveOutput / DriveReadyInput; the motor, load, encoder and machine keys are the
 // simulated drive's.
+// `"comedi"` in the `analog` object: the analog actor on a real DAQ card instead of the simulated amplifier
+// (drives/comedi, built with -DTOMC_WITH_COMEDI=ON). Channels are (subdevice, channel) as comedi numbers
+// them; the enable output and the ready input are wired when the TO's Actor.Interface says so.
+struct ComediSettings {
+  std::string device_file;  // "/dev/comedi0"
+  drives::io::Channel analog_output{};
+  std::optional<drives::io::Channel> enable_output;  // needed exactly when Actor.Interface.EnableDriveOutput
+  std::optional<drives::io::Channel> ready_input;    // needed exactly when Actor.Interface.DriveReadyInput
+  drives::io::Channel counter{};
+  std::uint8_t counter_width_bits = 32;
+};
+
 struct AnalogSettings {
   double volts_at_reference = 10.0;  // U_100%
   double overdrive_percent = 117.0;
@@ -77,6 +89,7 @@ struct AnalogSettings {
   double amplifier_rpm_per_volt = 0.0;  // 0: matched, reference_speed_rpm / volts_at_reference
   double amplifier_offset_volts = 0.0;  // the amplifier's drift
   double ready_delay_s = 0.02;
+  std::optional<ComediSettings> comedi;  // set: a real card, not the simulated amplifier
 };
 
 // The `stepper` object of a drive with "adapter": "stepper" (docs/analog-drives.md): the PTO module and the
