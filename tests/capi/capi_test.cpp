@@ -638,8 +638,7 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
 }
 
 TEST(CApi, TheExamplesMachineFilesLoad) {
-  for (const char* file :
-       {"positioning_machine.json", "gearing_machine.json", "demo_machine.json", "flying_saw.json"}) {
+  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "flying_saw.json"}) {
     tomc_runtime* r = nullptr;
     // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
     // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false
@@ -651,6 +650,17 @@ TEST(CApi, TheExamplesMachineFilesLoad) {
     EXPECT_EQ(tomc_runtime_object_count(r, &count), TOMC_OK);
     EXPECT_GE(count, 1u) << file;
     tomc_runtime_destroy(r);
+  }
+  // The machines with a TO_Cam (the demo's knife, the rotary knife) are refused with the reason, until the C
+  // ABI has cams (docs/embedding.md); never loaded half.
+  for (const char* file : {"demo_machine.json", "rotary_knife.json"}) {
+    tomc_runtime* r = nullptr;
+    std::string path = TOMC_EXAMPLES_DIR;
+    path.append("/").append(file);
+    EXPECT_EQ(tomc_runtime_create_from_file(path.c_str(), &r), TOMC_ERROR_CONFIG) << file;
+    EXPECT_NE(last_error().find("TO_Cam is not yet available through the C ABI"), std::string::npos)
+        << file << ": " << last_error();
+    EXPECT_EQ(r, nullptr);
   }
 }
 

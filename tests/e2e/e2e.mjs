@@ -206,7 +206,7 @@ async function synchronousAxisView(page, base, token) {
   await until('leader, function and cam named', async () =>
     (await shownText(page, 'Leading value/Leading axis (ActualMaster)')) === 'LineEncoder (1)' &&
     (await shownText(page, 'Following value/Active function (FunctionState)')) === 'camming (MC_CamIn) (3)' &&
-    (await shownText(page, 'Following value/Active cam (ActualCam)')) === 'CutCam (6)');
+    (await shownText(page, 'Following value/Active cam (ActualCam)')) === 'CutCam (10)');  // its 1-based place in the machine file (decision C8)
   // The leading value is the line encoder's actual value: 100 mm/s (its external_speed).
   await until('the effective leading velocity of the line', async () =>
     Math.abs((await shownValue(page, 'Leading value/Effective leading value velocity')) - 100) < 2);

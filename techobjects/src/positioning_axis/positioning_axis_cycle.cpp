@@ -856,12 +856,14 @@ void PositioningAxis::restart() noexcept {
     ActualValueChain& chain = additional_.all()[i].channel.chain();
     if (chain.absolute_type()) chain.power_up(&additional_retained[i]);
   }
+  // Every absolute encoder keeps its adjustment over the restart, the operative one or not (an incremental
+  // operative encoder does not make the others lose theirs).
+  for (std::size_t n = 0; n < adjusted.size(); ++n) {
+    const bool absolute = db_.Sensor[n].Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
+    if (absolute) db_.StatusSensor[n].Adjusted = adjusted[n];
+  }
   if (encoder_.chain().absolute_type()) {
     encoder_.chain().power_up(&retained);
-    for (std::size_t n = 0; n < adjusted.size(); ++n) {
-      const bool absolute = db_.Sensor[n].Type != static_cast<std::int32_t>(SensorEncoderType::INCREMENTAL);
-      if (absolute) db_.StatusSensor[n].Adjusted = adjusted[n];
-    }
   } else {
     homed_ = false;
     actual_position_ = 0.0;

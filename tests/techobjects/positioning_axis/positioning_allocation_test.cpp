@@ -603,7 +603,8 @@ TEST(PositioningAllocation, TwoEncodersAndSetSensorRunWithoutAllocating) {
 // The superimposed MotionIn jobs (issue 18) allocate nothing: two virtual axes, TO_2 a possible
 // superimposing axis of TO_1. In 2,000-cycle phases: TO_1's base velocity changes while MotionInSuperimposed
 // feeds a sine, which MC_MoveSuperimposed then replaces and MC_HaltSuperimposed stops; then TO_2 jogs back
-// and forth while MotionInSuperimposedAxes adds it to TO_1, and a base job aborts that.
+// and forth while MotionInSuperimposedAxes adds it to TO_1 (TO_2 set by MC_Home Mode 0 to TO_1's
+// superimposition first, as the manual's warning asks), and a base job aborts that.
 TEST(PositioningAllocation, SuperimposedMotionInRunsWithoutAllocating) {
   techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
   auto data = tomc::testing::linear_axis_data();
@@ -612,7 +613,9 @@ TEST(PositioningAllocation, SuperimposedMotionInRunsWithoutAllocating) {
   auto& to2 = runtime.emplace<techobjects::PositioningAxis>("TO_2", nullptr, data);
   to1.add_possible_superimposing_axis(to2);
   instructions::MC_Power<techobjects::PositioningAxis> power1, power2;
-  instructions::MC_MoveVelocity<techobjects::PositioningAxis> base, jog2;
+  instructions::MC_MoveVelocity<techobjects::PositioningAxis> base;
+  instructions::MC_MoveRelative<techobjects::PositioningAxis> step2;
+  instructions::MC_Home<techobjects::PositioningAxis> home2;
   instructions::MC_MoveSuperimposed<techobjects::PositioningAxis> move_sup;
   instructions::MC_HaltSuperimposed<techobjects::PositioningAxis> halt_sup;
   instructions::MC_MotionInSuperimposed<techobjects::PositioningAxis> feed;
@@ -622,7 +625,8 @@ TEST(PositioningAllocation, SuperimposedMotionInRunsWithoutAllocating) {
     power1(to1);
     power2(to2);
     base(to1);
-    jog2(to2);
+    step2(to2);
+    home2(to2);
     move_sup(to1);
     halt_sup(to1);
     feed(to1);
@@ -651,12 +655,16 @@ TEST(PositioningAllocation, SuperimposedMotionInRunsWithoutAllocating) {
       move_sup.Execute = t >= 800 && t < 805;
       halt_sup.Execute = t >= 1200 && t < 1205;
       axes.Enable = false;
+      home2.Execute = step2.Execute = false;
     } else {
       feed.Enable = false;
       move_sup.Execute = halt_sup.Execute = false;
+      home2.Mode = 0;
+      home2.Position = to1.data().StatusPositioning.SuperimposedDistance;
+      home2.Execute = t < 5;
       axes.Enable = t < 1800;
-      jog2.Velocity = t < 1000 ? 15.0 : -15.0;
-      jog2.Execute = t % 1000 < 5;
+      step2.Distance = t < 1000 ? 15.0 : -15.0;
+      step2.Execute = t % 1000 >= 10 && t % 1000 < 15;
     }
     runtime.step();
     if (feed.Busy) ++fed;
