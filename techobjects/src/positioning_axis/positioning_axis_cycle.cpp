@@ -52,9 +52,12 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   filtered_ = dynamic_filter_.update(setpoint_, !follows_actual() && position_controlled_);
   if (device_ != nullptr) {
     read_actual_values();
-    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value.
-    actual_position_ += backlash_.compensate(encoder_.chain(), actual_valid_,
-                                             !follows_actual() && position_controlled_, filtered_.velocity);
+    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value — of the start-up
+    // encoder it is configured for; after MC_SetSensor to another encoder (e.g. on the load side, which sees
+    // no backlash) nothing is added (decision B4).
+    if (db_.OperativeSensor == db_.PositionControl.InitialOperativeSensor)
+      actual_position_ += backlash_.compensate(encoder_.chain(), actual_valid_,
+                                               !follows_actual() && position_controlled_, filtered_.velocity);
   } else {
     simulate_actual_values();
   }
