@@ -179,6 +179,36 @@ TEST(MultipleEncoders, SetSensorMode0SwitchesWithoutAJump) {
   EXPECT_NEAR(m.db().StatusSensor[0].Position, 110.0 - (before - 100.0) - 0.0, 0.002);
 }
 
+// Spec 01 §5.9: backlash compensation corrects the motor encoder's actual value (Sensor[1], motor shaft,
+// 0.2 mm). After MC_SetSensor Mode 0 to the load-side encoder 2 nothing is added on a reversal: at rest after
+// moving back, ActualPosition is encoder 2's position and StatusWord2.X2 (passing backlash) never shows
+// (decision B4; before, the start-up encoder's 0.2 mm went on being added to encoder 2).
+TEST(MultipleEncoders, BacklashCompensationOnlyWhileItsEncoderClosesTheLoop) {
+  auto d = two_encoder_data();
+  d.Sensor[0].Backlash.Enable = true;
+  d.Sensor[0].Backlash.Size = 0.2;
+  TwoEncoderAxis m(d);
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  ASSERT_GT(m.move_to(50.0), 0);
+  m.run(100);
+  ASSERT_EQ(m.switch_to(2, 0), 0);
+  ASSERT_EQ(m.db().OperativeSensor, 2u);
+  bool passing = false;
+  m.move_absolute.Position = 20.0;
+  m.move_absolute.Velocity = 50.0;
+  m.move_absolute.Execute = true;
+  for (int k = 0; k < 5000 && !m.move_absolute.Done; ++k) {
+    m.run(1);
+    passing = passing || tt::test(m.db().StatusWord2, tt::StatusWord2Bit::kPassingBacklash);
+  }
+  ASSERT_TRUE(m.move_absolute.Done);
+  m.run(200);
+  EXPECT_FALSE(passing);
+  EXPECT_NEAR(m.db().ActualPosition, m.db().StatusSensor[1].Position, 1e-9);
+  EXPECT_NEAR(m.db().ActualPosition, 20.0, 0.01);
+}
+
 // Spec 01 §3.8 Mode 1: the difference D = p_old - p_new reaches ActualPosition as D·exp(-t/T), T =
 // SmoothingTimeByChangeDifference = 10 ms; position control then moves the load by -0.4 mm until encoder 2
 // reads the setpoint (spec 03 §4.12 "compensating motion").
