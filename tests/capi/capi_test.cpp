@@ -72,6 +72,16 @@ struct PositioningProgram {
   }
 };
 
+// MC_Power Enable = TRUE on `object`, one call after each cycle, until Status (at most 200 cycles).
+bool enabled(tomc_runtime* runtime, tomc_object* object, tomc_MC_Power& power) {
+  power.Enable = true;
+  for (int k = 0; k < 200 && !power.Status; ++k) {
+    if (tomc_runtime_step(runtime, 1) != TOMC_OK || tomc_MC_Power_call(object, &power) != TOMC_OK)
+      return false;
+  }
+  return power.Status;
+}
+
 double read(const tomc_object* o, const char* path) {
   double value = std::nan("");
   EXPECT_EQ(tomc_read_lreal(o, path, &value), TOMC_OK) << last_error();
@@ -263,12 +273,7 @@ TEST(CApi, MotionInVelocityOnPositioningAndSpeedAxes) {
   tomc_MC_Power_init(&power);
   tomc_MC_MotionInVelocity_init(&feed);
   EXPECT_TRUE(feed.PositionControlled);
-  power.Enable = true;
-  for (int k = 0; k < 200 && !power.Status; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
-    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK);
-  }
-  ASSERT_TRUE(power.Status);
+  ASSERT_TRUE(enabled(m.runtime, m.slide, power));
   feed.Enable = true;
   feed.Velocity = 30.0;
   ASSERT_EQ(tomc_MC_MotionInVelocity_call(m.slide, &feed), TOMC_OK) << last_error();
@@ -281,12 +286,7 @@ TEST(CApi, MotionInVelocityOnPositioningAndSpeedAxes) {
   tomc_MC_Power_init(&conveyor_power);
   tomc_MC_MotionInVelocity_init(&conveyor_feed);
   tomc_MC_MotionInPosition_init(&position_feed);
-  conveyor_power.Enable = true;
-  for (int k = 0; k < 200 && !conveyor_power.Status; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK);
-    ASSERT_EQ(tomc_MC_Power_call(m.conveyor, &conveyor_power), TOMC_OK);
-  }
-  ASSERT_TRUE(conveyor_power.Status);
+  ASSERT_TRUE(enabled(m.runtime, m.conveyor, conveyor_power));
   conveyor_feed.Enable = true;
   conveyor_feed.Velocity = 120.0;
   ASSERT_EQ(tomc_MC_MotionInVelocity_call(m.conveyor, &conveyor_feed), TOMC_OK) << last_error();
