@@ -53,7 +53,8 @@ std::uint64_t measuring_range_of(const EncoderMechanics& e) noexcept {
                                    e.Parameter.DeterminableRevolutions);
 }
 
-constexpr ConfigProblem problem(std::string_view path, std::string_view message) noexcept {
+// String literals only: the chain keeps the pointers (decision M5).
+constexpr ConfigProblem problem(const char* path, const char* message) noexcept {
   return ConfigProblem{path, message};
 }
 
@@ -282,10 +283,14 @@ std::int32_t SetpointScaling::xerr(double position_error) const noexcept {
 
 ActualValueChain::ActualValueChain(const AxisMechanics& axis, const EncoderMechanics& encoder,
                                    double servo_cycle_s) noexcept
-    : axis_(axis), encoder_(encoder), problem_(validate(axis, encoder)), servo_cycle_s_(servo_cycle_s) {
-  if (!problem_ && !positive_finite(servo_cycle_s))
-    problem_ = ConfigProblem{"ServoCycle", "servo cycle time must be > 0"};
-  if (!problem_) {
+    : modulo_(axis.Modulo), encoder_(encoder), servo_cycle_s_(servo_cycle_s) {
+  auto problem = validate(axis, encoder);
+  if (!problem && !positive_finite(servo_cycle_s))
+    problem = ConfigProblem{"ServoCycle", "servo cycle time must be > 0"};
+  if (problem) {
+    problem_path_ = problem->path.data();  // static strings (validate())
+    problem_message_ = problem->message.data();
+  } else {
     scaling_ = SetpointScaling(axis, encoder);
     units_per_count_ = units_per_xist1_count(axis, encoder);
     width_ = xist1_width_bits(encoder);
@@ -310,8 +315,8 @@ std::int64_t ActualValueChain::xist1_to_xist2_counts(std::int64_t c) const noexc
 }
 
 std::int64_t ActualValueChain::cycle_index(double continuous) const noexcept {
-  if (!axis_.Modulo.Enable) return 0;
-  return modulo_wrap(continuous, axis_.Modulo.StartValue, axis_.Modulo.Length).cycle;
+  if (!modulo_.Enable) return 0;
+  return modulo_wrap(continuous, modulo_.StartValue, modulo_.Length).cycle;
 }
 
 void ActualValueChain::add_cycles(std::int64_t delta) noexcept {
@@ -361,7 +366,7 @@ void ActualValueChain::restart() noexcept {
 }
 
 void ActualValueChain::update(const EncoderSample& sample) noexcept {
-  if (problem_) return;
+  if (problem_path_ != nullptr) return;
   const bool first_sample = !has_sample_;
   const std::int64_t previous_counts = tracker_.counts();
   tracker_.update(sample.xist1);  // first sample: reference only
@@ -424,12 +429,12 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
 }
 
 void ActualValueChain::set_position(double value, ModuloCycleRule rule, double home_position) noexcept {
-  if (problem_ || !std::isfinite(value)) return;
+  if (problem_path_ != nullptr || !std::isfinite(value)) return;
   const double old_position = position();
   offset_ = value - static_cast<double>(tracker_.counts()) * units_per_count_;
-  if (axis_.Modulo.Enable) {
-    const double start = axis_.Modulo.StartValue;
-    const double length = axis_.Modulo.Length;
+  if (modulo_.Enable) {
+    const double start = modulo_.StartValue;
+    const double length = modulo_.Length;
     const double new_position = modulo_wrap(value, start, length).position;
     switch (rule) {
       case ModuloCycleRule::kShortestDistance:
@@ -453,9 +458,9 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule, double h
 }
 
 void ActualValueChain::shift_offset(double delta) noexcept {
-  if (problem_ || !std::isfinite(delta) || delta == 0.0) return;
+  if (problem_path_ != nullptr || !std::isfinite(delta) || delta == 0.0) return;
   offset_ += delta;
-  if (!axis_.Modulo.Enable) return;
+  if (!modulo_.Enable) return;
   const std::int64_t k = cycle_index(continuous_position());
   add_cycles(k - cycle_index_);
   cycle_index_ = k;
@@ -467,8 +472,8 @@ double ActualValueChain::continuous_position() const noexcept {
 
 double ActualValueChain::position() const noexcept {
   const double p = continuous_position();
-  if (!axis_.Modulo.Enable) return p;
-  return modulo_wrap(p, axis_.Modulo.StartValue, axis_.Modulo.Length).position;
+  if (!modulo_.Enable) return p;
+  return modulo_wrap(p, modulo_.StartValue, modulo_.Length).position;
 }
 
 std::int64_t ActualValueChain::measuring_range_count() const noexcept {

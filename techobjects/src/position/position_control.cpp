@@ -51,7 +51,9 @@ PositionControlConfigResult PositionController::configure(const PositionControlC
   if ((pid_option && config.EnableDSC) || !pid_.configure(gains, config.ServoCycle)) {
     return PositionControlConfigResult::kInvalidParameter;
   }
-  config_ = config;
+  kv_ = config.Kv;
+  quantization_ = config.ControlDifferenceQuantization;
+  dsc_ = config.EnableDSC;
   const double ts = config.ServoCycle;
   kpc_ = std::min(config.Kpc, kMaxKpc) / 100.0;
   symmetry_gain_ = ts / (config.VelocityTimeConstant + ts);
@@ -88,7 +90,7 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
   const double x_sym = kpc_ * symmetry_state_ + (1.0 - kpc_) * x_d;
   const double e = x_sym - in.actual_position;
   // spec 01 §3.11 / spec 02 §7.4 (4): the controller sees q·trunc(e/q); |e| < q -> 0.
-  const double q = config_.ControlDifferenceQuantization;
+  const double q = quantization_;
   const double e_controlled = q > 0.0 ? q * std::trunc(e / q) : e;
   const double precontrol = kpc_ * in.velocity_setpoint;
 
@@ -96,10 +98,10 @@ PositionControlOutput PositionController::update(const PositionControlInput& in)
   out.balanced_position = x_sym;
   out.control_difference = e;
   out.following_error = fe_line_.delayed(fe_tap_) - in.actual_position;
-  if (config_.EnableDSC) {
+  if (dsc_) {
     out.velocity_setpoint = precontrol;
     out.dsc_position_error = e_controlled;
-    out.dsc_kpc = config_.Kv;
+    out.dsc_kpc = kv_;
   } else {
     out.pid = pid_.update(e_controlled);
     out.velocity_setpoint = precontrol + out.pid.output;

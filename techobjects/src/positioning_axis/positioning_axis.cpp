@@ -157,15 +157,31 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
 // Everything derived from the data block and the cycle time. Runs at construction, on the first servo
 // cycle (when the cycle time is known) and after a restart; no allocation.
 void PositioningAxis::configure_components() noexcept {
-  mechanics_.MotionType = static_cast<AxisMotionType>(db_.Properties.MotionType);
-  mechanics_.LoadGear = GearRatio{db_.LoadGear.Numerator, db_.LoadGear.Denominator};
-  mechanics_.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
-  mechanics_.Actor.InverseDirection = db_.Actor.InverseDirection;
-  mechanics_.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
-  mechanics_.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
-  mechanics_.RotaryUnitsPerRevolution = units_.units_per_revolution;
-  configure_encoders();
+  // The axis mechanics only feed the encoders' chains, which keep what they need (decision M5).
+  AxisMechanics mechanics;
+  mechanics.MotionType = static_cast<AxisMotionType>(db_.Properties.MotionType);
+  mechanics.LoadGear = GearRatio{db_.LoadGear.Numerator, db_.LoadGear.Denominator};
+  mechanics.Mechanics.LeadScrew = db_.Mechanics.LeadScrew * units_.leadscrew;
+  mechanics.Actor.InverseDirection = db_.Actor.InverseDirection;
+  mechanics.Actor.DriveParameter.ReferenceSpeed = db_.Actor.DriveParameter.ReferenceSpeed;
+  mechanics.Modulo = ModuloConfig{db_.Modulo.Enable, db_.Modulo.StartValue, db_.Modulo.Length};
+  mechanics.RotaryUnitsPerRevolution = units_.units_per_revolution;
+  configure_encoders(mechanics);
 
+  if (auto* controller = this->controller()) {
+    (void)controller->configure(
+        position_control_config(control_difference_quantization(db_, encoder_.chain().units_per_count())));
+  }
+  configure_monitoring();
+  configure_extrapolation();
+  software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
+  hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
+  configure_backlash_and_filter();
+}
+
+// The position controller's configuration from the data block, the communication times in force and the
+// cycle time; the controller keeps only what its cycle reads (decision M5).
+PositionControlConfig PositioningAxis::position_control_config(double quantization) const noexcept {
   PositionControlConfig pc;
   pc.Kv = db_.PositionControl.Kv;
   pc.Kpc = db_.PositionControl.Kpc;
@@ -177,13 +193,8 @@ void PositioningAxis::configure_components() noexcept {
   pc.To = core_.communication_times.To;
   pc.Tdc = core_.communication_times.Tdc;
   pid_config(db_, units_.velocity, pc);
-  pc.ControlDifferenceQuantization = control_difference_quantization(db_, encoder_.chain().units_per_count());
-  if (auto* controller = this->controller()) (void)controller->configure(pc);
-  configure_monitoring();
-  configure_extrapolation();
-  software_limits_.configure(limits::software_limit_config(db_.PositionLimits_SW, db_.Modulo));
-  hardware_limits_.configure(limits::hardware_limit_config(db_.PositionLimits_HW));
-  configure_backlash_and_filter();
+  pc.ControlDifferenceQuantization = quantization;
+  return pc;
 }
 
 // Backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6): DIR variables, re-read after a
@@ -662,14 +673,10 @@ void PositioningAxis::written(std::string_view path) noexcept {
   if (path.starts_with("Sensor[") || path.starts_with("SetpointFilter.")) configure_backlash_and_filter();
   if (path.starts_with("PositionControl.") || path.starts_with("DynamicAxisModel.") ||
       path.starts_with("FollowingError.")) {
+    // The quantization stays the one of the encoder it was configured for; the rest are DIR values or change
+    // only at a restart.
     if (auto* controller = this->controller()) {
-      PositionControlConfig pc = controller->config();
-      pc.Kv = db_.PositionControl.Kv;
-      pc.Kpc = db_.PositionControl.Kpc;
-      pc.VelocityTimeConstant = db_.DynamicAxisModel.VelocityTimeConstant;
-      pc.AdditionalSetpointDelayTime = db_.FollowingError.AdditionalSetpointDelayTime;
-      pid_config(db_, units_.velocity, pc);
-      (void)controller->configure(pc);
+      (void)controller->configure(position_control_config(controller->quantization()));
     }
   }
 }

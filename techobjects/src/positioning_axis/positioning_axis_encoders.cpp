@@ -31,9 +31,9 @@ RetainedSensorState sensor_state(const RetainedEncoderData& r) {
 
 }  // namespace
 
-void PositioningAxis::configure_encoders() noexcept {
+void PositioningAxis::configure_encoders(const AxisMechanics& mechanics) noexcept {
   const auto channel = [&](std::uint32_t n, EncoderSource source) {
-    return EncoderChannel(mechanics_, encoder_mechanics(db_.Sensor[n - 1], source), servo_cycle_s_, source);
+    return EncoderChannel(mechanics, encoder_mechanics(db_.Sensor[n - 1], source), servo_cycle_s_, source);
   };
   encoder_ = channel(db_.OperativeSensor, encoder_.source());
   for (AdditionalEncoder& e : additional_.all())

@@ -120,9 +120,9 @@ TEST(PositionController, RejectsInvalidConfiguration) {
   bad = c;
   bad.VelocityTimeConstant = std::nan("");
   EXPECT_EQ(pc.configure(bad), PositionControlConfigResult::kInvalidParameter);
-  EXPECT_DOUBLE_EQ(pc.config().Kv, 20.0);  // previous configuration kept
+  EXPECT_DOUBLE_EQ(pc.kv(), 20.0);  // previous configuration kept
   PositionController from_bad(bad);
-  EXPECT_DOUBLE_EQ(from_bad.config().Kv, PositionControlConfig{}.Kv);
+  EXPECT_DOUBLE_EQ(from_bad.kv(), PositionControlConfig{}.Kv);
 }
 
 // ---- open loop: the equations of §7.4 and §6.2 ----

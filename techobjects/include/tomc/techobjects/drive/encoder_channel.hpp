@@ -70,16 +70,17 @@ class EncoderChannel {
  private:
   enum class MarkState : std::uint8_t { kIdle, kArmed, kReading, kCaptured };
 
+  // Wide members first, the bytes together: no padding (decision M5).
   ActualValueChain chain_;
+  double mark_position_ = 0.0;
+  std::uint32_t error_code_ = 0;
+  std::uint32_t acknowledge_cycles_ = 0;
+  telegrams::EncoderControlWord control_{};  // the Gx_STW of the last cycle
   EncoderSource source_ = EncoderSource::kDriveG1;
   MarkState mark_ = MarkState::kIdle;
   bool read_sent_ = false;
-  double mark_position_ = 0.0;
-  telegrams::EncoderControlWord control_{};  // the Gx_STW of the last cycle
   bool velocity_from_nist_ = false;
   bool error_ = false;
-  std::uint32_t error_code_ = 0;
-  std::uint32_t acknowledge_cycles_ = 0;
 };
 
 }  // namespace tomc::techobjects

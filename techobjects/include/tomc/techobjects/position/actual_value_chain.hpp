@@ -220,7 +220,10 @@ class ActualValueChain {
   // update() does nothing. Starts in the power-up state (no retained values).
   ActualValueChain(const AxisMechanics& axis, const EncoderMechanics& encoder, double servo_cycle_s) noexcept;
 
-  const std::optional<ConfigProblem>& config_problem() const noexcept { return problem_; }
+  std::optional<ConfigProblem> config_problem() const noexcept {
+    if (problem_path_ == nullptr) return std::nullopt;
+    return ConfigProblem{problem_path_, problem_message_};
+  }
 
   // CPU power-up: incremental encoder at 0, ActualModuloCycle 0; absolute encoders wait for Gx_XIST2 and take
   // AbsEncoderOffset (and the cyclic counter) from `retained`.
@@ -275,21 +278,24 @@ class ActualValueChain {
   std::int64_t cycle_index(double continuous) const noexcept;
   void add_cycles(std::int64_t delta) noexcept;
 
-  AxisMechanics axis_{};
+  // Of the axis mechanics only the modulo setting is needed after construction (decision M5); the first
+  // configuration problem is kept as its two static strings (nullptr: none).
+  ModuloConfig modulo_{};
   EncoderMechanics encoder_{};
   SetpointScaling scaling_{};
-  std::optional<ConfigProblem> problem_;
+  const char* problem_path_ = nullptr;
+  const char* problem_message_ = nullptr;
   double servo_cycle_s_ = 0.0;
   double units_per_count_ = 0.0;
   std::uint64_t range_ = 0;  // absolute measuring range in Gx_XIST2 counts
-  std::uint8_t width_ = 32;
 
   // state
   telegrams::IncrementalCount tracker_{};  // continuous position in Gx_XIST1 counts
   double offset_ = 0.0;
   double velocity_ = 0.0;
-  std::int32_t modulo_cycle_ = 0;
   std::int64_t cycle_index_ = 0;  // floor((continuous - Start) / Length) at the last update
+  std::int32_t modulo_cycle_ = 0;
+  std::uint8_t width_ = 32;
   bool has_sample_ = false;
   bool anchored_ = false;
   bool derive_cycle_on_anchor_ = true;  // absolute power-up: ActualModuloCycle from the absolute value

@@ -87,17 +87,18 @@ class BacklashCompensation {
  private:
   void become_known(double gap) noexcept;
 
+  // The doubles first, the flags together: no padding (decision M5).
   BacklashConfig config_{};
-  bool have_reference_ = false;
   double last_motor_ = 0.0;
-  bool known_ = false;
   double lowest_ = 0.0;  // unknown side: the motor's extremes since then
   double highest_ = 0.0;
   double gap_ = 0.0;      // p: where the motor is in the gap (tracked from its motion)
   double applied_ = 0.0;  // the p the correction c corresponds to (ahead of gap_ while shifting)
-  int direction_ = 0;     // setpoint operation: the travel direction the compensation is set for
-  bool passing_ = false;
   double held_ = 0.0;
+  int direction_ = 0;  // setpoint operation: the travel direction the compensation is set for
+  bool have_reference_ = false;
+  bool known_ = false;
+  bool passing_ = false;
 };
 
 }  // namespace tomc::techobjects

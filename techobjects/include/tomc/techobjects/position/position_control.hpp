@@ -161,7 +161,9 @@ class PositionController {
   explicit PositionController(const PositionControlConfig& config) noexcept;
 
   PositionControlConfigResult configure(const PositionControlConfig& config) noexcept;
-  const PositionControlConfig& config() const noexcept { return config_; }
+  // The configured Kv [1/s] (DSC sends it as KPC; the PID's own copy may change with apply_gains()).
+  double kv() const noexcept { return kv_; }
+  double quantization() const noexcept { return quantization_; }  // ControlDifferenceQuantization
   // Forgets the history (and the PID's integral); the next update() starts without a step.
   void reset() noexcept;
   // Double-buffered PID gains (H3 FLdRP/FUpDRP): load_gains() stores a set (Kv included), apply_gains() makes
@@ -187,7 +189,9 @@ class PositionController {
   bool delay_clamped() const noexcept { return delay_clamped_; }
 
  private:
-  PositionControlConfig config_{};
+  // Of the configuration only what update() reads is kept; the delays are resolved into the taps (M5).
+  double kv_ = PositionControlConfig{}.Kv;
+  double quantization_ = 0.0;   // ControlDifferenceQuantization
   double kpc_ = 1.0;            // Kpc/100
   double symmetry_gain_ = 1.0;  // Ts/(T_vtc + Ts)
   double control_delay_cycles_ = 1.0;
@@ -196,6 +200,7 @@ class PositionController {
   SetpointDelayLine::Tap fe_tap_ = SetpointDelayLine::tap(1.0);
   bool delay_clamped_ = false;
   bool started_ = false;
+  bool dsc_ = false;  // EnableDSC
   double symmetry_state_ = 0.0;
   SetpointDelayLine control_line_{};
   SetpointDelayLine fe_line_{};

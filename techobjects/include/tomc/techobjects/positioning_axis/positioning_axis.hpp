@@ -298,7 +298,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void configure_backlash_and_filter() noexcept;  // Sensor[n].Backlash, SetpointFilter (issue 5)
   void configure_extrapolation() noexcept;
   // multiple encoders (positioning_axis_encoders.cpp)
-  void configure_encoders() noexcept;        // every encoder's chain from its Sensor[n] and the cycle time
+  PositionControlConfig position_control_config(double quantization) const noexcept;
+  // every encoder's chain from its Sensor[n], the axis mechanics and the cycle time
+  void configure_encoders(const AxisMechanics& mechanics) noexcept;
   void read_additional_encoders() noexcept;  // MC_Servo: the encoders that do not close the loop
   void write_additional_encoder_controls() noexcept;
   void power_up_additional_encoders() noexcept;  // absolute ones with their retained adjustment
@@ -414,7 +416,6 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
 
   // components
   AxisUnitFactors units_{};
-  AxisMechanics mechanics_{};
   EncoderChannel
       encoder_;  // the operative encoder, Sensor[OperativeSensor] (its mechanics: encoder_.chain())
   AdditionalEncoders additional_;  // the other Sensor[n].Existent encoders (spec 01 §3.8, decision B1)

@@ -248,42 +248,43 @@ class SynchronousOperation final : public SynchronousSlot {
     double master_sync = 0.0;          // MasterSyncPosition as given (profiles 2, 5: placed when starting)
     std::uint32_t ends = 0;            // cam ends passed (EndOfProfileCount)
   };
+  // The job states below keep their one-byte members together, so that they have no padding (decision M5).
   struct ActiveSync {
     JobId id = 0;
-    JobKind kind = JobKind::kNone;
     int source = -1;
     std::int32_t numerator = 1;
     std::int32_t denominator = 1;
+    JobKind kind = JobKind::kNone;
     Phase phase = Phase::kSynchronizing;
+    bool continuous_update = false;
+    bool start_sync = false;
+    bool in_sync = false;
     ProfileLimits limits{};
     double x_sync = 0.0;  // leader and follower positions of the gear line y = y_sync + r·(x − x_sync)
     double y_sync = 0.0;
     LeaderDomainBlend blend{};
     double direction = 0.0;  // the leader's direction the synchronization relies on (reversal: alarm 608)
-    bool continuous_update = false;
-    bool start_sync = false;
-    bool in_sync = false;
-    CamJob cam{};  // kind kCamIn
+    CamJob cam{};            // kind kCamIn
   };
   struct PendingSyncIn {  // MC_GearInPos / MC_CamIn waiting for its start (WaitingFunctionState 2 / 3)
     JobId id = 0;
-    JobKind kind = JobKind::kGearInPos;
     int source = -1;
     std::int32_t numerator = 1;
     std::int32_t denominator = 1;
+    std::int32_t profile = 1;
+    std::int32_t sync_direction = 3;
+    JobKind kind = JobKind::kGearInPos;
+    bool armed = false;        // profile 0: the leader was before the (moving) start position
     double master_sync = 0.0;  // continuous occurrence of MasterSyncPosition
     double slave_sync = 0.0;   // SlaveSyncPosition as given
-    std::int32_t profile = 1;
-    double length = 1.0;  // MasterStartDistance
-    std::int32_t sync_direction = 3;
-    double direction = 1.0;  // the leader's direction of travel towards the start
-    ProfileLimits limits{};  // profile 0
+    double length = 1.0;       // MasterStartDistance
+    double direction = 1.0;    // the leader's direction of travel towards the start
+    ProfileLimits limits{};    // profile 0
     // Profile 0: the last synchronization length and what it was computed from (reused while they stay).
     double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
     MotionState sized_follower{};
     double sized_length = 0.0;
-    bool armed = false;  // profile 0: the leader was before the (moving) start position
-    CamJob cam{};        // kind kCamIn
+    CamJob cam{};  // kind kCamIn
   };
   // Phasing profile 0's time-based travel of the follower (spec 07 §6.6): a PositionProfile planned from
   // rest, kept as its segments only. From rest to rest needs at most 7 (jerk up, hold, down, cruise, and the
@@ -302,10 +303,11 @@ class SynchronousOperation final : public SynchronousSlot {
   // slot serves both kinds: a leading and a following value offset exclude each other (16#808A, §4.1).
   struct ShiftJob {
     JobId id = 0;
-    bool phasing = false;  // MC_Phasing* (the phase shift), else MC_Offset* (the offset)
     std::int32_t profile = 1;
-    bool waiting = false;    // profile 2 before StartPosition (StatusWord2.X3 / X5)
-    double committed = 0.0;  // the leading value's direction the job relies on (0: not moving yet)
+    std::uint32_t cycles = 0;  // profile 0: MC_Interpolator cycles since the start
+    bool phasing = false;      // MC_Phasing* (the phase shift), else MC_Offset* (the offset)
+    bool waiting = false;      // profile 2 before StartPosition (StatusWord2.X3 / X5)
+    double committed = 0.0;    // the leading value's direction the job relies on (0: not moving yet)
     double start_position = 0.0;
     double x_start = 0.0;
     double x_extreme = 0.0;  // farthest effective leading value reached in `committed` direction
@@ -313,7 +315,6 @@ class SynchronousOperation final : public SynchronousSlot {
     double length = 0.0;
     double from = 0.0;
     double delta = 0.0;
-    std::uint32_t cycles = 0;   // profile 0: MC_Interpolator cycles since the start
     double ratio = 1.0;         // profile 0: follower travel per leading value
     RestToRestTravel travel{};  // profile 0
   };
@@ -334,17 +335,17 @@ class SynchronousOperation final : public SynchronousSlot {
   };
   struct Desync {  // MC_GearOut / MC_CamOut
     JobId id = 0;
+    std::int32_t profile = 1;
+    std::int32_t direction = 3;
+    int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
     JobKind kind = JobKind::kGearOut;
     bool active = false;
-    std::int32_t profile = 1;
+    bool start_sync_out = false;
     double slave_position = 0.0;
     double stop_distance = 0.0;
-    std::int32_t direction = 3;
     ProfileLimits limits{};
     double y_stop = 0.0;
     LeaderDomainBlend blend{};
-    bool start_sync_out = false;
-    int source = -1;  // the leading value of the gearing it ends (profile 1 runs over it after that ended)
   };
 
   // A new gearing, camming or desynchronization job: refused by the program state, or 16#8076 while the
