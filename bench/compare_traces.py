@@ -35,7 +35,11 @@ EXTRA = {"TO_PositioningAxis": AXIS, "TO_SynchronousAxis": AXIS, "TO_SpeedAxis":
 
 
 def run(tomc: str, scenario: str, out: str) -> tuple[int, bytes]:
+    if os.path.exists(out):
+        os.remove(out)
     r = subprocess.run([tomc, "sim", scenario, "--out", out], capture_output=True)
+    if not os.path.exists(out):
+        return r.returncode, r.stderr
     with open(out, "rb") as f:
         return r.returncode, f.read()
 
@@ -72,6 +76,10 @@ def main() -> int:
     columns = 0
     with tempfile.TemporaryDirectory() as tmp:
         for path in files:
+            with open(path) as f:
+                if "cycles" not in json.load(f):  # e.g. examples/demo_machine.json, a `tomc demo` configuration
+                    print(f"note: {path}: not a tomc sim scenario (no cycles); skipped")
+                    continue
             variants = [path]
             ext = extended(path, base)
             if ext is None:
