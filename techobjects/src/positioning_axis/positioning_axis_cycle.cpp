@@ -41,11 +41,12 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
       r.MeasuringRangeCount = retained_.MeasuringRangeCount;
       r.LastAbsoluteValue = retained_.LastAbsoluteValue;
       encoder_.chain().power_up(&r);
-      power_up_additional_encoders();
       // The backlash was crossed in DirectionAbsoluteHoming before the adjustment (spec 02 §5.11 Mode 6/7).
       backlash_.assume_contact(
           db_.Sensor[db_.OperativeSensor - 1].Backlash.DirectionAbsoluteHoming == 0 ? 1 : -1);
     }
+    // The other absolute encoders with their own retained adjustments, whatever the start-up encoder has.
+    power_up_additional_encoders();
   }
   // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
   // virtual axis takes from x_f.
