@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "positioning_machine.hpp"
+#include "touched_bytes.hpp"
 
 constexpr int kCycles = 20000;
 constexpr int kAxes = 1;
@@ -12,11 +13,13 @@ extern "C" __attribute__((noinline, noipa)) void positioning_virtual(
   group.run(clock, phase);
 }
 
-int main() {
+int main(int argc, char** argv) {  // argument `touched`: bench/touched_bytes.py
+  const bool touched = tomc::bench::touched_mode(argc, argv);
   tomc::bench::PositioningMachine m(kAxes, false, 0);
-  m.group().hook = positioning_virtual;
-  for (int i = 0; i < kCycles; ++i)
+  m.group().hook = touched ? tomc::bench::touched_phase<tomc::bench::AxisGroup> : positioning_virtual;
+  const int cycles = touched ? tomc::bench::kTouchedCycles : kCycles;
+  for (int i = 0; i < cycles; ++i)
     m.step();
-  std::printf("cycles=%d units=%d velocity=%g\n", kCycles, kAxes, m.group().axes[0]->data().Velocity);
+  std::printf("cycles=%d units=%d velocity=%g\n", cycles, kAxes, m.group().axes[0]->data().Velocity);
   return 0;
 }

@@ -78,7 +78,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   if (device_ != nullptr) {
     command_.encoder = encoder_.source();
     command_.encoder_control = encoder_.control_word();  // absolute value cyclically, error acknowledge
-    write_additional_encoder_controls();
+    if (!additional_.all().empty()) write_additional_encoder_controls();
     drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
     drive_.write(command_);
   }
@@ -118,7 +118,7 @@ void PositioningAxis::read_actual_values() noexcept {
     actual_position_ += sensor_switch_difference_;
   }
   actual_velocity_ = encoder_.chain().velocity();
-  read_additional_encoders();
+  if (!additional_.all().empty()) read_additional_encoders();  // most axes have one encoder
   core_.supervise_drive(drive_);
 }
 
@@ -563,10 +563,10 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
 void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoint) noexcept {
   if (core_.phase != PowerPhase::kEnabled || follows_actual()) return;
   const auto& limits = software_limits_.effective_limits();
-  if (!limits.monitored || !homed()) {
+  if (!limits.monitored || !homed_) {
     // Not effective (not active, or not homed): the monitor only resets its state; no look-ahead to prepare.
     limits::SoftwareLimitInput idle;
-    idle.homed = homed();
+    idle.homed = homed_;
     (void)software_limits_.update(idle);
     return;
   }
@@ -737,7 +737,7 @@ void PositioningAxis::update_status() noexcept {
   sensor.Velocity = db_.ActualVelocity;
   sensor.ModuloCycle = db_.ActualModuloCycle;
   if (virtual_axis()) sensor.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);  // §2.5 table
-  update_additional_encoder_status();
+  if (!additional_.all().empty()) update_additional_encoder_status();
 
   const bool positioning = motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative;
   db_.StatusPositioning.TargetPosition =
@@ -754,9 +754,15 @@ void PositioningAxis::update_status() noexcept {
 
   std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
   std::uint32_t sw2 = 0;
-  const limits::LimitStatusBits limit_bits = limits::merge(software_limits_.bits(), hardware_limits_.bits());
-  std::uint32_t ew = limit_bits.error_word();
-  std::uint32_t ww = limit_bits.warning_word();
+  // No limit switch active or pending (the usual cycle): no bit to merge.
+  const bool limits_quiet =
+      software_limits_.active_side() == limits::LimitSide::kNone && !software_limits_.alarm_pending() &&
+      hardware_limits_.active_side() == limits::LimitSide::kNone && !hardware_limits_.alarm_pending();
+  const limits::LimitStatusBits limit_bits =
+      limits_quiet ? limits::LimitStatusBits{}
+                   : limits::merge(software_limits_.bits(), hardware_limits_.bits());
+  std::uint32_t ew = limits_quiet ? 0u : limit_bits.error_word();
+  std::uint32_t ww = limits_quiet ? 0u : limit_bits.warning_word();
   core_.update_words(sw, sw2, ew, ww, db_.ErrorDetail, db_.Simulation.Mode == kModeOn);
   const bool enabled = test(sw, StatusWordBit::kEnable);
   const bool settled = generator_ == Generator::kIdle;
@@ -766,7 +772,7 @@ void PositioningAxis::update_status() noexcept {
   db_.StatusSensor[db_.OperativeSensor - 1].AbsEncoderOffset =
       retained_.valid ? retained_.AbsEncoderOffset : 0.0;
   const PositioningOutcome outcome = positioning_.status().outcome;
-  assign(sw, StatusWordBit::kHomingDone, homed());
+  assign(sw, StatusWordBit::kHomingDone, homed_);
   // P: Done after the positioning window check (spec 04 §8 rule 2), or no motion job at all.
   assign(sw, StatusWordBit::kDone,
          !job_running && settled && at_zero && outcome != PositioningOutcome::kInProgress &&
@@ -807,7 +813,7 @@ void PositioningAxis::update_status() noexcept {
   assign(sw, StatusWordBit::kDecelerating, setpoint_.acceleration * setpoint_.velocity < 0.0);
   assign(sw, StatusWordBit::kNonPositionControlled, !position_controlled_ || !enabled);
   assign(sw, StatusWordBit::kInClamping, clamping_.clamped());
-  sw |= limit_bits.status_word();
+  if (!limits_quiet) sw |= limit_bits.status_word();
   db_.StatusWord = sw;
   assign(sw2, StatusWord2Bit::kPassingBacklash, backlash_.passing());
   // MC_PositionProfile (seed 004 §6.8.4): X9 while the job is active, X10 while the setpoint is the

@@ -98,12 +98,16 @@ void PositioningAxis::servo_torque_data() noexcept {
   auto& status = db_.StatusTorqueData;
   status.CommandAdditiveTorqueActive = core_.torque_data.additive_active() ? 1 : 0;
   status.CommandTorqueRangeActive = core_.torque_data.range_active() ? 1 : 0;
-  const TorqueDataConditions c = torque_data_conditions();
-  const double total = c.telegram_750 ? core_.torque_data.additive_value() + torque_precontrol() : 0.0;
   // A linear motor has force where a standard motor has torque (spec 04 §4.7).
   const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
+  // Without telegram 750 nothing goes to the drive: the total is 0, the start conditions are not needed.
+  if (device_ == nullptr || drive_.device_config().supplementary_telegram != 750) {
+    (linear_motor ? status.TotalForceAdditive : status.TotalTorqueAdditive) = 0.0;
+    return;
+  }
+  const TorqueDataConditions c = torque_data_conditions();
+  const double total = core_.torque_data.additive_value() + torque_precontrol();
   (linear_motor ? status.TotalForceAdditive : status.TotalTorqueAdditive) = total;
-  if (!c.telegram_750) return;
   core_.torque_data.write(drive_, total, c.reference, c.inverse);
   (linear_motor ? status.ActualForce : status.ActualTorque) =
       (c.inverse ? -1.0 : 1.0) * telegrams::n2_to_torque(drive_.supplementary_actual().M_ACT, c.reference);

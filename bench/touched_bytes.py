@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Data touched per axis-cycle (issue 23, docs/performance.md "Per-cycle cost").
+
+Runs a callgrind workload with the argument `touched` under valgrind's lackey (--trace-mem=yes). The workload
+brackets each counted phase (MC_Servo, MC_Interpolator of its axes) with two stores to a marker whose address it
+prints first; this script collects every data load/store/modify between the markers of the last cycle (the last
+two phases) and prints the distinct bytes and 64-byte cache lines, all and without the stack.
+
+Usage: bench/touched_bytes.py build-bench/bin/positioning_to_cycle_callgrind [units]
+  units: divide by this many axes (the workload's units=, e.g. 16 followers of gearing_cycle)
+"""
+import subprocess
+import sys
+import threading
+
+LINE = 64
+
+
+def main() -> int:
+    program = sys.argv[1]
+    units = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+    proc = subprocess.Popen(
+        ["valgrind", "--tool=lackey", "--trace-mem=yes", "--log-fd=2", program, "touched"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1 << 20)
+    marker = []
+    cycles = []
+
+    def read_stdout() -> None:
+        for line in proc.stdout:
+            if line.startswith("marker=") and not marker:
+                marker.append(int(line.split("=", 1)[1], 16))
+            elif line.startswith("cycles="):
+                cycles.append(int(line.split()[0].split("=")[1]))
+
+    reader = threading.Thread(target=read_stdout)
+    reader.start()
+    # Phases in order: each a set of (address, size); the marker's own accesses are not counted.
+    phases = []
+    current = None
+    tag = None
+    for line in proc.stderr:
+        if tag is None:
+            # The marker is printed before the machine is built, long before its first store; the trace
+            # up to then (the loader, the set-up) is drained unread so that valgrind never blocks on it.
+            if not marker:
+                continue
+            tag = f" {marker[0]:08x},"  # lackey prints " S %08lx,size"
+        if current is None:
+            # Outside the counted phases only the opening store matters (a substring test, for speed).
+            if tag in line and line[1] in "SM":
+                current = []
+            continue
+        if len(line) < 3 or line[0] != " " or line[1] not in "LSM":
+            continue
+        addr_s, size_s = line[3:].strip().split(",")
+        if int(addr_s, 16) == marker[0]:
+            if line[1] in "SM":
+                phases.append(current)
+                current = None
+            continue
+        current.append((int(addr_s, 16), int(size_s)))
+    proc.wait()
+    reader.join()
+    expected = 2 * cycles[0] if cycles else -1  # MC_Servo and MC_Interpolator of every cycle
+    if proc.returncode != 0 or len(phases) != expected:
+        print(f"touched_bytes: {program} failed or traced {len(phases)} phases, not {expected}", file=sys.stderr)
+        return 1
+    cycle = phases[-2] + phases[-1]  # MC_Servo + MC_Interpolator of the last cycle
+    # The stack: the highest addresses of the trace (valgrind places it far above heap and image).
+    stack_floor = max(a for a, _ in cycle) - (1 << 20)
+    counts = {}
+    for name, pick in (("all", lambda a: True), ("without stack", lambda a: a < stack_floor)):
+        data_bytes = set()
+        lines = set()
+        for addr, size in cycle:
+            if not pick(addr):
+                continue
+            for b in range(addr, addr + size):
+                data_bytes.add(b)
+                lines.add(b // LINE)
+        counts[name] = (len(data_bytes), len(lines))
+    accesses = len(cycle)
+    print(f"{program}: one cycle, {accesses} data accesses; per axis (units={units}):")
+    for name, (nb, nl) in counts.items():
+        print(f"  {name}: {nb // units} distinct bytes, {nl / units:.0f} cache lines = {nl * LINE // units} bytes")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
