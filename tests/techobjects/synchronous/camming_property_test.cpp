@@ -60,6 +60,7 @@
 #include <random>
 #include <string>
 
+#include "alarm_watch.hpp"
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_cam_in.hpp"
@@ -797,28 +798,12 @@ class CamRun {
     EXPECT_EQ(held, holders) << where() << ": cams held (StatusWord.X0) against active/pending camming jobs";
   }
 
-  // Alarm numbers the follower raised since the last call (its alarm history; fixed buffer).
-  struct Raised {
-    std::array<std::uint32_t, 16> numbers{};
-    std::size_t n = 0;
-    bool count(std::uint32_t x) const {
-      for (std::size_t i = 0; i < n; ++i)
-        if (numbers[i] == x) return true;
-      return false;
-    }
-  };
+  // Alarm numbers the follower raised since the last call.
+  using Raised = tomc::testing::RaisedAlarms;
   Raised new_alarms() {
-    Raised r;
-    const std::size_t n = F_->alarms().log().copy_since(alarm_sequence_, alarm_events_);
-    for (std::size_t i = 0; i < n; ++i) {
-      alarm_sequence_ = alarm_events_[i].sequence;
-      if (alarm_events_[i].kind == techobjects::AlarmEvent::Kind::kRaised && r.n < r.numbers.size()) {
-        r.numbers[r.n++] = alarm_events_[i].number;
-        note("alarm raised (number, additional value)",
-             {double(alarm_events_[i].number), double(alarm_events_[i].additional_value)});
-      }
-    }
-    return r;
+    return alarm_watch_.take(F_->alarms(), [&](const techobjects::AlarmEvent& e) {
+      note("alarm raised (number, additional value)", {double(e.number), double(e.additional_value)});
+    });
   }
 
   bool encoder_leader_;
@@ -866,8 +851,7 @@ class CamRun {
   } prev_{};
   Raised interpolator_alarms_{};
   bool checking_ = false;
-  std::uint64_t alarm_sequence_ = 0;
-  std::array<techobjects::AlarmEvent, techobjects::AlarmLog::kCapacity> alarm_events_{};
+  tomc::testing::AlarmWatch alarm_watch_;
   Stats stats_{};
   int cycle_ = 0;
   std::array<Event, 80> events_{};
