@@ -897,10 +897,12 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
   }
   // The fixed seeds exercised what the properties are about (other seeds print their counts only).
   if (base_seed() != kDefaultSeed) return;
-  EXPECT_GT(total.synchronous_cycles, kCycles / 2);
+  // The sanitizer build's shorter run looks for memory and UB errors on the same paths (CI runs both).
+  EXPECT_GT(total.synchronous_cycles, kCycles / 10);
   EXPECT_GT(total.synchronizing_cycles, kCycles / 100);
   EXPECT_GT(total.distance_syncs, 2);
 #ifndef TOMC_SANITIZED_BUILD
+  EXPECT_GT(total.synchronous_cycles, kCycles / 2);
   for (std::size_t p = 0; p < 7; ++p)
     EXPECT_GT(total.started_by_profile[p], 0) << "profile " << p;
   for (std::size_t p = 1; p < 7; ++p)
