@@ -21,10 +21,21 @@ TYPES = {
     "LREAL": "double",
     # MC_PositionProfile.TimePosition: tomc's time-position point structure (decision L1), by pointer.
     "PROFILE": "const tomc_time_position_profile*",
+    # MC_CamIn.Cam: a TO_Cam of the machine (tomc_object* handle).
+    "CAM": "const tomc_object*",
+    # MC_CopyCamData.ArrayOfPoints / ArrayOfSegments (IN_OUT ARRAY[*] in the manual): a pointer and, in the input
+    # after it, the number of elements it holds.
+    "POINTS": "const tomc_cam_point*",
+    "SEGMENTS": "const tomc_cam_segment*",
 }
 
 # TO kinds: S TO_SpeedAxis, P TO_PositioningAxis, Y TO_SynchronousAxis, E TO_ExternalEncoder
-KIND_NAMES = {"S": "TO_SpeedAxis", "P": "TO_PositioningAxis", "Y": "TO_SynchronousAxis", "E": "TO_ExternalEncoder"}
+# C TO_Cam (its instructions take the cam as their technology object)
+KIND_NAMES = {"S": "TO_SpeedAxis", "P": "TO_PositioningAxis", "Y": "TO_SynchronousAxis", "E": "TO_ExternalEncoder",
+              "C": "TO_Cam"}
+KIND_CONSTANTS = {"S": "kSpeed", "P": "kPositioning", "Y": "kSynchronous", "E": "kEncoder", "C": "kCam"}
+KIND_CLASSES = {"S": "SpeedAxis", "P": "PositioningAxis", "Y": "SynchronousAxis", "E": "ExternalEncoder",
+                "C": "Cam"}
 
 
 def fb(name, spec, kinds, inputs, outputs, master=False):
@@ -42,6 +53,12 @@ PHASING_INPUTS = ([("Execute", "BOOL", "FALSE"), ("PhaseShift", "LREAL", "0.0"),
                    ("StartPosition", "LREAL", "0.0"), ("Direction", "DINT", "3")])
 OFFSET_INPUTS = [("Execute", "BOOL", "FALSE"), ("Offset", "LREAL", "0.0"), ("ProfileReference", "DINT", "1"),
                  ("OffsetDistance", "LREAL", "0.0"), ("StartPosition", "LREAL", "0.0"), ("Direction", "DINT", "3")]
+
+# Scaling and shifting of the cam read instructions (spec 07 §3.3, §3.6).
+CAM_SCALING = [("MasterOffset", "LREAL", "0.0"), ("SlaveOffset", "LREAL", "0.0"), ("MasterScaling", "LREAL", "1.0"),
+               ("SlaveScaling", "LREAL", "1.0")]
+# Inputs of tomc's own beside the manual's (not in the C++ class): the length of an array given by pointer.
+ARRAY_LENGTHS = {"ArrayOfPointsLength", "ArrayOfSegmentsLength"}
 
 # The implemented instructions in the manual's order (spec 01 §1.3). Inputs: (name, IEC type, default);
 # outputs: (name, IEC type). A "master" instruction also has the input Master (the leading TO), or the TO input
@@ -152,6 +169,20 @@ TABLE = [
         ("MasterStopDistance", "LREAL", "0.0"), ("Deceleration", "LREAL", "-1.0"), ("Jerk", "LREAL", "-1.0"),
         ("SyncOutDirection", "DINT", "3")],
        [("StartSyncOut", "BOOL")] + HANDSHAKE),
+    fb("MC_CamIn", "spec 07 §3.4", "Y",
+       [("Cam", "CAM", "NULL"), ("Execute", "BOOL", "FALSE"), ("MasterOffset", "LREAL", "0.0"),
+        ("SlaveOffset", "LREAL", "0.0"), ("MasterScaling", "LREAL", "1.0"), ("SlaveScaling", "LREAL", "1.0"),
+        ("MasterSyncPosition", "LREAL", "0.0"), ("SyncProfileReference", "DINT", "1"),
+        ("MasterStartDistance", "LREAL", "0.0"), ("Velocity", "LREAL", "-1.0")] + DYN +
+       [("ApplicationMode", "DINT", "0"), ("SyncDirection", "DINT", "3")],
+       [("StartSync", "BOOL"), ("InSync", "BOOL"), ("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
+        ("ErrorID", "WORD"), ("EndOfProfile", "BOOL")],
+       master=True),
+    fb("MC_CamOut", "spec 07 §3.5", "Y",
+       [("Execute", "BOOL", "FALSE"), ("SlavePosition", "LREAL", "0.0"), ("SyncProfileReference", "DINT", "1"),
+        ("MasterStopDistance", "LREAL", "0.0"), ("Deceleration", "LREAL", "-1.0"), ("Jerk", "LREAL", "-1.0"),
+        ("SyncOutDirection", "DINT", "3")],
+       [("StartSyncOut", "BOOL")] + HANDSHAKE),
     fb("MC_PhasingAbsolute", "spec 07 §4.1", "Y", PHASING_INPUTS,
        [("StartPhasing", "BOOL")] + HANDSHAKE + [("AbsolutePhaseShift", "LREAL")], master=True),
     fb("MC_PhasingRelative", "spec 07 §4.1", "Y", PHASING_INPUTS,
@@ -166,6 +197,23 @@ TABLE = [
        [("Busy", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
     fb("MC_SynchronizedMotionSimulation", "spec 07 §4.4", "Y", [("Enable", "BOOL", "FALSE")],
        [("InSimulation", "BOOL"), ("Busy", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")]),
+    # The cam's own instructions (spec 07 §3.2, §3.6): the TO_Cam is their technology object; each completes in
+    # the call of its rising edge (decision C2).
+    fb("MC_InterpolateCam", "spec 07 §3.2", "C", [("Execute", "BOOL", "FALSE")], HANDSHAKE),
+    fb("MC_GetCamFollowingValue", "spec 07 §3.6", "C",
+       [("Execute", "BOOL", "FALSE"), ("LeadingValue", "LREAL", "0.0")] + CAM_SCALING,
+       [("Value", "LREAL"), ("FirstDerivative", "LREAL"), ("SecondDerivative", "LREAL")] + HANDSHAKE),
+    fb("MC_GetCamLeadingValue", "spec 07 §3.6", "C",
+       [("Execute", "BOOL", "FALSE"), ("FollowingValue", "LREAL", "0.0"), ("ApproachLeadingValue", "LREAL", "0.0"),
+        ("ApproachDirection", "DINT", "3")] + CAM_SCALING,
+       [("Value", "LREAL")] + HANDSHAKE),
+    fb("MC_CopyCamData", "spec 07 §3.6", "C",
+       [("Execute", "BOOL", "FALSE"), ("Mode", "DINT", "0"), ("StartPointCam", "DINT", "1"),
+        ("StartSegmentCam", "DINT", "1"), ("StartPointArray", "DINT", "0"), ("StartSegmentArray", "DINT", "0"),
+        ("NumberOfPoints", "DINT", "0"), ("NumberOfSegments", "DINT", "0"), ("ArrayOfPoints", "POINTS", "NULL"),
+        ("ArrayOfPointsLength", "DINT", "0"), ("ArrayOfSegments", "SEGMENTS", "NULL"),
+        ("ArrayOfSegmentsLength", "DINT", "0")],
+       HANDSHAKE),
 ]
 
 HEADER_NOTE = "Generated by capi/generate.py from its table: do not edit; edit the table and run it again."
@@ -180,7 +228,7 @@ def c_default(iec_type, value):
 def cpp_literal(iec_type, value):
     if iec_type == "BOOL":
         return "true" if value == "TRUE" else "false"
-    if iec_type == "PROFILE":
+    if iec_type in ("PROFILE", "CAM", "POINTS", "SEGMENTS"):
         return "nullptr"
     return value
 
@@ -209,6 +257,18 @@ def c_header():
            "  int32_t NumberOfPoints; /* 2 ... TOMC_MAX_TIME_POSITION_POINTS */",
            "  tomc_time_position_point Point[TOMC_MAX_TIME_POSITION_POINTS];",
            "} tomc_time_position_profile;",
+           "",
+           "/* MC_CopyCamData's elements (spec 07 §3.1 TO_Cam_Struct_PointData / TO_Cam_Struct_SegmentData): a segment is",
+           " * y = a6·x⁶ + … + a1·x + a0 + sineAmplitude·sin(sinePeriod·x + sinePhase) on [xmin, xmax], x absolute. */",
+           "typedef struct tomc_cam_point {",
+           "  double x;",
+           "  double y;",
+           "} tomc_cam_point;",
+           "typedef struct tomc_cam_segment {",
+           "  double xmin, xmax;",
+           "  double a0, a1, a2, a3, a4, a5, a6;",
+           "  double sineAmplitude, sinePeriod, sinePhase;",
+           "} tomc_cam_segment;",
            ""]
     for f in TABLE:
         kinds = ", ".join(KIND_NAMES[k] for k in f["kinds"])
@@ -221,7 +281,11 @@ def c_header():
         elif f["master"]:
             out.append(f"  const tomc_object* {f['master']}; /* a positioning or synchronous axis */")
         for name, t, _ in f["inputs"]:
-            out.append(f"  {TYPES[t]} {name};")
+            note = {"CAM": " /* a TO_Cam */", "POINTS": " /* ArrayOfPointsLength elements */",
+                    "SEGMENTS": " /* ArrayOfSegmentsLength elements */"}.get(t, "")
+            if name in ARRAY_LENGTHS:
+                note = " /* tomc: the number of elements the array above holds */"
+            out.append(f"  {TYPES[t]} {name};{note}")
         out.append("  /* outputs */")
         for name, t in f["outputs"]:
             out.append(f"  {TYPES[t]} {name};")
@@ -243,17 +307,31 @@ def cpp_glue():
            "static_assert(offsetof(tomc_time_position_profile, Point) == offsetof(techobjects::TimePositionProfile, Point));",
            "static_assert(sizeof(tomc_time_position_point) == sizeof(techobjects::TimePositionPoint));",
            "static_assert(TOMC_MAX_TIME_POSITION_POINTS == techobjects::kMaxTimePositionPoints);",
+           "// tomc_cam_point / tomc_cam_segment are TO_Cam_Struct_PointData / TO_Cam_Struct_SegmentData (all doubles).",
+           "static_assert(sizeof(tomc_cam_point) == sizeof(techobjects::TO_Cam_Struct_PointData));",
+           "static_assert(offsetof(tomc_cam_point, y) == offsetof(techobjects::TO_Cam_Struct_PointData, y));",
+           "static_assert(sizeof(tomc_cam_segment) == sizeof(techobjects::TO_Cam_Struct_SegmentData));",
+           "static_assert(offsetof(tomc_cam_segment, a0) == offsetof(techobjects::TO_Cam_Struct_SegmentData, a0));",
+           "static_assert(offsetof(tomc_cam_segment, sinePhase) == offsetof(techobjects::TO_Cam_Struct_SegmentData, sinePhase));",
            ""]
     for f in TABLE:
         n = f["name"]
-        kinds = " | ".join({"S": "kSpeed", "P": "kPositioning", "Y": "kSynchronous", "E": "kEncoder"}[k]
-                           for k in f["kinds"])
+        kinds = " | ".join(KIND_CONSTANTS[k] for k in f["kinds"])
+        cam_fb = f["kinds"] == "C"  # the cam's instructions are not templates over the TO type
         out.append(f"struct Fb_{n} {{")
         out.append(f"  using C = tomc_{n};")
-        out.append(f"  template <typename Axis> using Cpp = instructions::{n}<Axis>;")
+        out.append(f"  template <typename Axis> using Cpp = instructions::{n}{'' if cam_fb else '<Axis>'};")
         out.append(f'  static constexpr const char* kName = "{n}";')
         out.append(f"  static constexpr unsigned kKinds = {kinds};")
         out.append(f"  static constexpr bool kMaster = {'true' if f['master'] else 'false'};")
+        # MC_InterpolateCam allocates, MC_CopyCamData reads the caller's arrays: not from a user task (decision C22).
+        user_program = n in ("MC_InterpolateCam", "MC_CopyCamData")
+        out.append(f"  static constexpr bool kUserProgramOnly = {'true' if user_program else 'false'};")
+        cams = [name for name, t, _ in f["inputs"] if t == "CAM"]
+        if cams:
+            out.append(f"  static const char* wrong_object(const C& c) noexcept {{ return cam_of(c.{cams[0]}) == nullptr && c.{cams[0]} != nullptr ? \"{cams[0]}\" : nullptr; }}")
+        else:
+            out.append("  static const char* wrong_object(const C&) noexcept { return nullptr; }")
         if f["master"]:
             m = f["master"]
             out.append(f'  static constexpr const char* kMasterName = "{m}";')
@@ -263,6 +341,15 @@ def cpp_glue():
         for name, t, _ in f["inputs"]:
             if t == "PROFILE":  # the same layout (static_asserts below the table)
                 out.append(f"    t.{name} = reinterpret_cast<const techobjects::TimePositionProfile*>(c.{name});")
+                continue
+            if t == "CAM":
+                out.append(f"    t.{name} = cam_of(c.{name});")
+                continue
+            if t in ("POINTS", "SEGMENTS"):  # the same layout; the length is the input after it
+                element = "PointData" if t == "POINTS" else "SegmentData"
+                out.append(f"    t.{name} = array_of(reinterpret_cast<const techobjects::TO_Cam_Struct_{element}*>(c.{name}), c.{name}Length);")
+                continue
+            if name in ARRAY_LENGTHS:
                 continue
             cast = "static_cast<bool>" if t == "BOOL" else ""
             out.append(f"    t.{name} = {cast}(c.{name});")
@@ -280,11 +367,12 @@ def cpp_glue():
             out.append(f"    c.{name} = {cpp_literal(t, d)};")
         out.append("  }")
         out.append("};")
-        first = {"S": "SpeedAxis", "P": "PositioningAxis", "Y": "SynchronousAxis", "E": "ExternalEncoder"}[f["kinds"][0]]
+        first = KIND_CLASSES[f["kinds"][0]]
+        cls = f"instructions::{n}" if cam_fb else f"instructions::{n}<techobjects::{first}>"
         for name, t, d in f["inputs"]:
-            if t == "PROFILE":
-                continue  # no profile by default (a TimePositionSource, not comparable in a constant)
-            out.append(f"static_assert(instructions::{n}<techobjects::{first}>{{}}.{name} == {cpp_literal(t, d)},")
+            if t in ("PROFILE", "CAM", "POINTS", "SEGMENTS") or name in ARRAY_LENGTHS:
+                continue  # pointers and spans, none by default (not comparable in a constant)
+            out.append(f"static_assert({cls}{{}}.{name} == {cpp_literal(t, d)},")
             out.append(f'              "{n}.{name}: the table\'s default differs from the C++ class");')
         out.append(f"extern \"C\" void tomc_{n}_init(tomc_{n}* fb) {{ init_fb<Fb_{n}>(fb); }}")
         out.append(f"extern \"C\" tomc_status tomc_{n}_call(tomc_object* axis, tomc_{n}* fb) {{")
@@ -302,7 +390,7 @@ def st_declarations():
            "",
            "TYPE",
            "  TO_Object : LWORD; (* a tomc_object* handle: TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis,",
-           "                        TO_ExternalEncoder *)",
+           "                        TO_ExternalEncoder, TO_Cam *)",
            "END_TYPE",
            ""]
     for f in TABLE:
@@ -316,6 +404,12 @@ def st_declarations():
         for name, t, d in f["inputs"]:
             if t == "PROFILE":
                 out.append(f"  {name} : LWORD; (* a tomc_time_position_profile* *)")
+                continue
+            if t == "CAM":
+                out.append(f"  {name} : TO_Object; (* a TO_Cam *)")
+                continue
+            if t in ("POINTS", "SEGMENTS"):
+                out.append(f"  {name} : LWORD; (* a {TYPES[t][6:-1]}* *)")
                 continue
             out.append(f"  {name} : {t} := {d};")
         out.append("END_VAR")

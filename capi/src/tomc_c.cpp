@@ -15,10 +15,12 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <new>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -27,13 +29,18 @@
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/diagnostics/triple_buffer.hpp"
+#include "tomc/instructions/mc_cam_in.hpp"
+#include "tomc/instructions/mc_cam_out.hpp"
+#include "tomc/instructions/mc_copy_cam_data.hpp"
 #include "tomc/instructions/mc_gear_in.hpp"
 #include "tomc/instructions/mc_gear_in_pos.hpp"
 #include "tomc/instructions/mc_gear_in_velocity.hpp"
 #include "tomc/instructions/mc_gear_out.hpp"
+#include "tomc/instructions/mc_get_cam_value.hpp"
 #include "tomc/instructions/mc_halt.hpp"
 #include "tomc/instructions/mc_halt_superimposed.hpp"
 #include "tomc/instructions/mc_home.hpp"
+#include "tomc/instructions/mc_interpolate_cam.hpp"
 #include "tomc/instructions/mc_leading_value_additive.hpp"
 #include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_absolute.hpp"
@@ -223,7 +230,8 @@ tomc_status version_error(const char* function, const char* type, const T* s) no
 
 using Json = scenario::Json;
 
-tomc_status load(const std::string& text, tomc_runtime** out) {
+// `directory`: where a cam's points file ({"file": ...}) is looked up (the machine file's folder).
+tomc_status load(const std::string& text, tomc_runtime** out, const std::filesystem::path& directory = {}) {
   Json root;
   try {
     root = Json::parse(text);
@@ -257,15 +265,9 @@ tomc_status load(const std::string& text, tomc_runtime** out) {
     problems.add("technology_objects", "expected a non-empty array of technology objects");
   } else {
     for (std::size_t i = 0; i < list->size(); ++i) {
-      if (auto o =
-              scenario::load_technology_object((*list)[i], "technology_objects[" + std::to_string(i) + "]",
-                                               cycle_time, *rt->runtime, objects, problems, "the C ABI")) {
-        if (o->kind == scenario::TechnologyObjectKind::kCam) {
-          // <tomc/tomc.h> has no cam type and no cam instructions yet (docs/embedding.md).
-          problems.add("technology_objects[" + std::to_string(i) + "].type",
-                       std::string(o->type_name()) + " is not yet available through the C ABI");
-          continue;
-        }
+      if (auto o = scenario::load_technology_object(
+              (*list)[i], "technology_objects[" + std::to_string(i) + "]", cycle_time, *rt->runtime, objects,
+              problems, "the C ABI", nullptr, directory)) {
         objects.push_back(std::move(*o));
       }
     }
@@ -345,7 +347,7 @@ tomc_status write(tomc_object* o, const char* function, const char* path, double
 
 // ---- instructions ----
 
-enum Kind : unsigned { kSpeed = 1, kPositioning = 2, kSynchronous = 4, kEncoder = 8 };
+enum Kind : unsigned { kSpeed = 1, kPositioning = 2, kSynchronous = 4, kEncoder = 8, kCam = 16 };
 
 Kind kind_of(const tomc_object& o) noexcept {
   switch (o.machine.kind) {
@@ -356,10 +358,23 @@ Kind kind_of(const tomc_object& o) noexcept {
     case scenario::TechnologyObjectKind::kSynchronousAxis:
       return kSynchronous;
     case scenario::TechnologyObjectKind::kExternalEncoder:
-    case scenario::TechnologyObjectKind::kCam:  // never loaded (load() refuses cams)
       return kEncoder;
+    case scenario::TechnologyObjectKind::kCam:
+      return kCam;
   }
   return kSpeed;
+}
+
+// MC_CamIn.Cam: the TO_Cam of a handle; nullptr for none or another TO type (call_fb refuses that).
+techobjects::Cam* cam_of(const tomc_object* o) noexcept {
+  return o != nullptr && o->machine.built ? o->machine.cam : nullptr;
+}
+
+// MC_CopyCamData's arrays: a pointer and its length from C (none when either is missing).
+template <typename T>
+std::span<const T> array_of(const T* data, std::int32_t length) noexcept {
+  return data != nullptr && length > 0 ? std::span<const T>(data, static_cast<std::size_t>(length))
+                                       : std::span<const T>();
 }
 
 // The instance data: words[0] says which C++ instance lives at words[1..] (0: none yet), so that a struct
@@ -406,6 +421,8 @@ void dispatch(tomc_object& axis, typename Fb::C& c) noexcept {
     if (kind == kSynchronous) run<Fb>(c, *m.synchronous_axis, kind, master);
   if constexpr ((Fb::kKinds & kEncoder) != 0)
     if (kind == kEncoder) run<Fb>(c, *m.external_encoder, kind, master);
+  if constexpr ((Fb::kKinds & kCam) != 0)
+    if (kind == kCam) run<Fb>(c, *m.cam, kind, master);
 }
 
 // Servo thread: one call of a task's instance with the newest inputs the task posted.
@@ -481,9 +498,21 @@ tomc_status call_fb(tomc_object* axis, typename Fb::C* c) noexcept {
                         std::string(master->machine.type_name()) + ") is not a leading value");
       }
     }
+    if (const char* input = Fb::wrong_object(*c)) {
+      return fail(TOMC_ERROR_WRONG_OBJECT_TYPE, std::string(Fb::kName) + "." + input + ": not a TO_Cam");
+    }
     if (!axis->machine.built)
       return fail(TOMC_ERROR_STATE, std::string(Fb::kName) + ": " + axis->machine.name + " was not built");
-    if (in_task_of(axis->owner)) return task_call<Fb>(*t_task, axis, c);
+    if (in_task_of(axis->owner)) {
+      if constexpr (Fb::kUserProgramOnly) {
+        // It would run in the cycle's thread: MC_InterpolateCam allocates, MC_CopyCamData reads the task's
+        // arrays there (decision C22).
+        return fail(TOMC_ERROR_STATE, std::string(Fb::kName) +
+                                          ": not from a user task (call it from the program of "
+                                          "tomc_runtime_set_program or between tomc_runtime_step calls)");
+      }
+      return task_call<Fb>(*t_task, axis, c);
+    }
     if (const auto s = check_thread(axis->owner, Fb::kName); s != TOMC_OK) return s;
     dispatch<Fb>(*axis, *c);
     return TOMC_OK;
@@ -556,7 +585,7 @@ extern "C" tomc_status tomc_runtime_create_from_file(const char* path, tomc_runt
     if (!in) return fail(TOMC_ERROR_SYSTEM, std::string(path) + ": cannot open: " + std::strerror(errno));
     std::ostringstream text;
     text << in.rdbuf();
-    const tomc_status s = load(text.str(), runtime);
+    const tomc_status s = load(text.str(), runtime, std::filesystem::path(path).parent_path());
     if (s == TOMC_ERROR_CONFIG) t_last_error = std::string(path) + ":\n" + t_last_error;
     return s;
   });
@@ -849,10 +878,14 @@ extern "C" tomc_status tomc_runtime_serve_diagnostics(tomc_runtime* runtime,
       const auto& m = o.machine;
       if (m.speed_axis != nullptr) {
         d->add(*m.speed_axis);
+      } else if (m.synchronous_axis != nullptr) {  // its own view (synchronous status), not the PA's
+        d->add(*m.synchronous_axis);
       } else if (m.positioning_axis != nullptr) {
         d->add(*m.positioning_axis);
       } else if (m.external_encoder != nullptr) {
         d->add(*m.external_encoder);
+      } else if (m.cam != nullptr) {
+        d->add(*m.cam);
       }
     }
     diagnostics::ServerOptions options;
@@ -957,6 +990,9 @@ extern "C" tomc_status tomc_object_type_of(const tomc_object* object, tomc_objec
     case kEncoder:
       *type = TOMC_TO_EXTERNAL_ENCODER;
       break;
+    case kCam:
+      *type = TOMC_TO_CAM;
+      break;
   }
   return TOMC_OK;
 }
@@ -980,8 +1016,13 @@ tomc_status read_typed(const tomc_object* object, const char* function, const ch
     if (!accepts(v)) return wrong_type(object, function, path, v, wanted);
     if (task) {
       // The user task reads the data block of the last interpolator cycle (taken at its cycle's start).
-      if (!object->snapshot)
-        return fail(TOMC_ERROR_STATE, std::string(function) + ": " + object->machine.name + " was not built");
+      if (!object->snapshot) {
+        // A TO_Cam's data block (points and segments) is not mirrored for the task (decision C22).
+        return fail(TOMC_ERROR_STATE,
+                    std::string(function) + ": " + object->machine.name +
+                        (object->machine.cam != nullptr ? ": a TO_Cam is not readable from a user task"
+                                                        : " was not built"));
+      }
       *value = convert(object->snapshot->read(v.info, v.bit));
       return TOMC_OK;
     }

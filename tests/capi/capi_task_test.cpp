@@ -126,6 +126,59 @@ TEST(CApiTask, A10msTaskPositionsTheAxisThroughTheMailboxes) {
   EXPECT_EQ(user.cycles, static_cast<uint64_t>(task.cycles.load()));
 }
 
+// Decision C22: from a user task, MC_InterpolateCam (it allocates) and MC_CopyCamData (it reads the task's
+// arrays) would run in the cycle's thread: refused with TOMC_ERROR_STATE and a message; a TO_Cam's variables
+// are not in the task's snapshots (TOMC_ERROR_STATE). MC_GetCamFollowingValue works from the task.
+struct CamTask {
+  tomc_object* cam = nullptr;
+  tomc_MC_InterpolateCam interpolate;
+  tomc_MC_GetCamFollowingValue following;
+  std::atomic<int> interpolate_status{-1};
+  std::atomic<int> read_status{-1};
+  std::atomic<bool> read_done{false};
+  std::string message;
+};
+
+void cam_task_program(void* context) {
+  auto* t = static_cast<CamTask*>(context);
+  if (t->interpolate_status.load() < 0) {
+    t->interpolate.Execute = true;
+    t->interpolate_status.store(tomc_MC_InterpolateCam_call(t->cam, &t->interpolate));
+    t->message = tomc_last_error();
+    bool interpolated = false;
+    t->read_status.store(tomc_read_bool(t->cam, "StatusWord.X5", &interpolated));
+  }
+  t->following.Execute = true;
+  t->following.LeadingValue = 90.0;
+  if (tomc_MC_GetCamFollowingValue_call(t->cam, &t->following) == TOMC_OK && t->following.Done)
+    t->read_done.store(true);
+}
+
+TEST(CApiTask, CamInstructionsThatAllocateAreRefusedInTheTask) {
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
+      {"name": "C", "type": "TO_Cam", "Points": [[0, 0], [180, 100], [360, 0]], "Interpolate": true}]})",
+                                &runtime),
+            TOMC_OK)
+      << tomc_last_error();
+  CamTask task;
+  tomc_MC_InterpolateCam_init(&task.interpolate);
+  tomc_MC_GetCamFollowingValue_init(&task.following);
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "C", &task.cam), TOMC_OK);
+  const tomc_task_config config = task_config(2'000'000);
+  ASSERT_EQ(tomc_runtime_add_task(runtime, &config, cam_task_program, &task), TOMC_OK) << tomc_last_error();
+  const tomc_runner_config runner = runner_config();
+  ASSERT_EQ(tomc_runtime_run_realtime(runtime, &runner), TOMC_OK) << tomc_last_error();
+  const bool read = wait_for(task.read_done, std::chrono::seconds(10));
+  ASSERT_EQ(tomc_runtime_stop_realtime(runtime), TOMC_OK);
+  EXPECT_EQ(task.interpolate_status.load(), TOMC_ERROR_STATE);
+  EXPECT_NE(task.message.find("MC_InterpolateCam: not from a user task"), std::string::npos) << task.message;
+  EXPECT_EQ(task.read_status.load(), TOMC_ERROR_STATE);
+  EXPECT_TRUE(read);
+  EXPECT_DOUBLE_EQ(task.following.Value, 50.0);
+  tomc_runtime_destroy(runtime);
+}
+
 TEST(CApiTask, BadTaskSettingsAreRefused) {
   Runtime r;
   Task task(1.0);

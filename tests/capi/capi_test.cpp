@@ -88,6 +88,12 @@ double read(const tomc_object* o, const char* path) {
   return value;
 }
 
+bool read_bit(const tomc_object* o, const char* path) {
+  bool value = false;
+  EXPECT_EQ(tomc_read_bool(o, path, &value), TOMC_OK) << last_error();
+  return value;
+}
+
 TEST(CApi, PositioningMoveThroughTheGeneratedStructs) {
   Machine m;
   PositioningProgram program(200.0);
@@ -624,21 +630,20 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
                            "technology_objects[0].config.Position:", "technology_objects[1]"}) {
     EXPECT_NE(e.find(path), std::string::npos) << path << " missing in:\n" << e;
   }
-  // A cam is a valid machine-file entry but has no C type yet (docs/embedding.md "Not there yet").
+  // A cam's problems with their paths too (cams are TOs of the C ABI since issue 19).
   EXPECT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
-      {"name": "Knife", "type": "TO_Cam_10k", "Points": [[0, 0], [360, 10]]}]})",
+      {"name": "Knife", "type": "TO_Cam_10k", "Points": [[0, 0], [360]]}]})",
                                 &r),
             TOMC_ERROR_CONFIG);
-  EXPECT_NE(
-      last_error().find("technology_objects[0].type: TO_Cam_10k is not yet available through the C ABI"),
-      std::string::npos)
-      << last_error();
+  EXPECT_NE(last_error().find("technology_objects[0].Points[1]"), std::string::npos) << last_error();
   EXPECT_EQ(tomc_runtime_create_from_file("/nonexistent/machine.json", &r), TOMC_ERROR_SYSTEM);
   EXPECT_NE(last_error().find("/nonexistent/machine.json: cannot open"), std::string::npos) << last_error();
 }
 
 TEST(CApi, TheExamplesMachineFilesLoad) {
-  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "flying_saw.json"}) {
+  // With their cams (the demo's knife, the rotary knife's cut cam): TO_Cam objects since issue 19.
+  for (const char* file : {"positioning_machine.json", "gearing_machine.json", "flying_saw.json",
+                           "demo_machine.json", "rotary_knife.json"}) {
     tomc_runtime* r = nullptr;
     // Appended, not `std::string(...) + "/" + file`: with the tests' precompiled header GCC 12 reports a
     // false -Warray-bounds inside libstdc++'s operator+ for some path lengths (a known GCC 12 false
@@ -651,17 +656,17 @@ TEST(CApi, TheExamplesMachineFilesLoad) {
     EXPECT_GE(count, 1u) << file;
     tomc_runtime_destroy(r);
   }
-  // The machines with a TO_Cam (the demo's knife, the rotary knife) are refused with the reason, until the C
-  // ABI has cams (docs/embedding.md); never loaded half.
-  for (const char* file : {"demo_machine.json", "rotary_knife.json"}) {
-    tomc_runtime* r = nullptr;
-    std::string path = TOMC_EXAMPLES_DIR;
-    path.append("/").append(file);
-    EXPECT_EQ(tomc_runtime_create_from_file(path.c_str(), &r), TOMC_ERROR_CONFIG) << file;
-    EXPECT_NE(last_error().find("TO_Cam is not yet available through the C ABI"), std::string::npos)
-        << file << ": " << last_error();
-    EXPECT_EQ(r, nullptr);
-  }
+  // The rotary knife's cut cam is a TO_Cam of the C ABI, interpolated by the file ("Interpolate": true).
+  tomc_runtime* r = nullptr;
+  std::string path = TOMC_EXAMPLES_DIR;
+  path.append("/rotary_knife.json");
+  ASSERT_EQ(tomc_runtime_create_from_file(path.c_str(), &r), TOMC_OK) << last_error();
+  tomc_object* cam = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(r, "CutCam", &cam), TOMC_OK) << last_error();
+  tomc_object_type type = TOMC_TO_SPEED_AXIS;
+  ASSERT_EQ(tomc_object_type_of(cam, &type), TOMC_OK);
+  EXPECT_EQ(type, TOMC_TO_CAM);
+  tomc_runtime_destroy(r);
 }
 
 TEST(CApi, AlarmsOfTheTechnologyObject) {
@@ -853,3 +858,194 @@ TEST(CApi, PositionProfileFollowsTheHostsTimePositionPoints) {
 }
 
 }  // namespace
+
+namespace {
+
+// Steps one cycle, then calls each given instruction with its TO (the program of a PLC cycle).
+template <typename... Calls>
+void cycle(tomc_runtime* runtime, Calls&&... calls) {
+  ASSERT_EQ(tomc_runtime_step(runtime, 1), TOMC_OK) << last_error();
+  for (const tomc_status status : {calls()...})
+    ASSERT_EQ(status, TOMC_OK) << last_error();
+}
+
+}  // namespace
+
+// Cams through the C ABI (issue 19): a TO_Cam from the machine file, its instructions with the cam as their
+// technology object (MC_InterpolateCam, MC_GetCamFollowingValue/LeadingValue, MC_CopyCamData; spec 07 §3.2,
+// §3.6) and a follower cammed from C (MC_CamIn profile 2, MC_CamOut profile 5; spec 07 §3.4, §3.5): the cam
+// C of spec 07 §8 "Camming", (0, 0), (180, 100), (360, 0), linear.
+TEST(CApi, CammingAFollowerFromC) {
+  constexpr const char* kCamming = R"({
+    "cycle_time": 0.001,
+    "technology_objects": [
+      {"name": "L", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1}},
+      {"name": "F", "type": "TO_SynchronousAxis", "config": {"VirtualAxis.Mode": 1, "DynamicLimits.MaxJerk": 0.0},
+       "LeadingValueInterconnections": [{"Leader": "L", "Coupling": "Setpoint"}]},
+      {"name": "C", "type": "TO_Cam", "Points": [[0, 0], [180, 100], [360, 0]]}
+    ]
+  })";
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(kCamming, &runtime), TOMC_OK) << last_error();
+  tomc_object* leader = nullptr;
+  tomc_object* follower = nullptr;
+  tomc_object* cam = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "C", &cam), TOMC_OK) << last_error();
+  tomc_object_type type = TOMC_TO_SPEED_AXIS;
+  ASSERT_EQ(tomc_object_type_of(cam, &type), TOMC_OK);
+  EXPECT_EQ(type, TOMC_TO_CAM);
+
+  // Not interpolated after the download (spec 07 §3.2): the read instruction says so (16#8150, decision C3).
+  tomc_MC_GetCamFollowingValue following;
+  tomc_MC_GetCamFollowingValue_init(&following);
+  following.Execute = true;
+  following.LeadingValue = 90.0;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValue_call(cam, &following), TOMC_OK) << last_error();
+  EXPECT_EQ(following.ErrorID, 0x8150);
+  following.Execute = false;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValue_call(cam, &following), TOMC_OK) << last_error();
+  tomc_MC_InterpolateCam interpolate;
+  tomc_MC_InterpolateCam_init(&interpolate);
+  interpolate.Execute = true;
+  ASSERT_EQ(tomc_MC_InterpolateCam_call(cam, &interpolate), TOMC_OK) << last_error();
+  EXPECT_TRUE(interpolate.Done) << interpolate.ErrorID;
+  EXPECT_EQ(read_bit(cam, "StatusWord.X5"), true);  // Interpolated
+  int64_t points = 0;
+  ASSERT_EQ(tomc_read_int(cam, "StatusCam.NumberOfValidPoints", &points), TOMC_OK) << last_error();
+  EXPECT_EQ(points, 3);
+  following.Execute = true;
+  following.SlaveScaling = 2.0;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValue_call(cam, &following), TOMC_OK) << last_error();
+  EXPECT_TRUE(following.Done);
+  EXPECT_DOUBLE_EQ(following.Value, 100.0);  // 2·f(90)
+  EXPECT_DOUBLE_EQ(following.FirstDerivative, 2.0 * 100.0 / 180.0);
+  // spec 07 §3.6 example: following value 0.5·100 from approach 225: direction 1 -> 270, 2 -> 90.
+  tomc_MC_GetCamLeadingValue leading;
+  tomc_MC_GetCamLeadingValue_init(&leading);
+  leading.Execute = true;
+  leading.FollowingValue = 50.0;
+  leading.ApproachLeadingValue = 225.0;
+  leading.ApproachDirection = 2;
+  ASSERT_EQ(tomc_MC_GetCamLeadingValue_call(cam, &leading), TOMC_OK) << last_error();
+  EXPECT_NEAR(leading.Value, 90.0, 1e-9) << leading.ErrorID;
+  // The instructions of an axis are not the cam's, nor the cam's an axis' (TOMC_ERROR_WRONG_OBJECT_TYPE).
+  EXPECT_EQ(tomc_MC_InterpolateCam_call(follower, &interpolate), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  tomc_MC_Power power_l;
+  tomc_MC_Power_init(&power_l);
+  EXPECT_EQ(tomc_MC_Power_call(cam, &power_l), TOMC_ERROR_WRONG_OBJECT_TYPE);
+
+  tomc_MC_Power power_f;
+  tomc_MC_Home home;
+  tomc_MC_MoveRelative move;
+  tomc_MC_CamIn cam_in;
+  tomc_MC_CamOut cam_out;
+  tomc_MC_Power_init(&power_f);
+  tomc_MC_Home_init(&home);
+  tomc_MC_MoveRelative_init(&move);
+  tomc_MC_CamIn_init(&cam_in);
+  tomc_MC_CamOut_init(&cam_out);
+  power_l.Enable = power_f.Enable = true;
+  auto program = [&] {
+    cycle(
+        runtime, [&] { return tomc_MC_Power_call(leader, &power_l); },
+        [&] { return tomc_MC_Power_call(follower, &power_f); },
+        [&] { return tomc_MC_Home_call(follower, &home); },
+        [&] { return tomc_MC_MoveRelative_call(leader, &move); },
+        [&] { return tomc_MC_CamIn_call(follower, &cam_in); },
+        [&] { return tomc_MC_CamOut_call(follower, &cam_out); });
+  };
+  for (int i = 0; i < 5; ++i)
+    program();
+  home.Execute = true;  // MC_CamIn needs a homed follower (spec 07 §3.4)
+  program();
+  ASSERT_TRUE(home.Done) << home.ErrorID;
+  // MC_CamIn.Cam must be a TO_Cam.
+  cam_in.Master = leader;
+  cam_in.Cam = leader;
+  cam_in.Execute = true;
+  EXPECT_EQ(tomc_MC_CamIn_call(follower, &cam_in), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  EXPECT_NE(last_error().find("MC_CamIn.Cam: not a TO_Cam"), std::string::npos) << last_error();
+  // Profile 2, cyclic (CM-1 without scaling): synchronous at once; the leader moves 90: F = f(90) = 50.
+  cam_in.Cam = cam;
+  cam_in.SyncProfileReference = 2;
+  cam_in.ApplicationMode = 1;
+  program();
+  ASSERT_TRUE(cam_in.InSync) << std::hex << cam_in.ErrorID;
+  EXPECT_EQ(read_bit(cam, "StatusWord.X0"), true);  // in use
+  move.Distance = 90.0;
+  move.Velocity = 100.0;
+  move.Execute = true;
+  for (int i = 0; i < 3000 && !move.Done; ++i)
+    program();
+  ASSERT_TRUE(move.Done);
+  program();
+  EXPECT_NEAR(read(follower, "Position"), 50.0, 1e-9);
+  EXPECT_TRUE(read_bit(follower, "StatusWord.X22"));  // Synchronous
+  // A cam in use is not interpolated (16#80AB); MC_CopyCamData is allowed and takes effect with the next
+  // MC_InterpolateCam (spec 07 §3.6).
+  interpolate.Execute = false;
+  ASSERT_EQ(tomc_MC_InterpolateCam_call(cam, &interpolate), TOMC_OK);
+  interpolate.Execute = true;
+  ASSERT_EQ(tomc_MC_InterpolateCam_call(cam, &interpolate), TOMC_OK);
+  EXPECT_EQ(interpolate.ErrorID, 0x80AB);
+  const tomc_cam_point line[] = {{0.0, 0.0}, {360.0, 360.0}};
+  tomc_MC_CopyCamData copy;
+  tomc_MC_CopyCamData_init(&copy);
+  copy.ArrayOfPoints = line;
+  copy.ArrayOfPointsLength = 2;
+  copy.NumberOfPoints = 2;
+  copy.Execute = true;
+  ASSERT_EQ(tomc_MC_CopyCamData_call(cam, &copy), TOMC_OK) << last_error();
+  EXPECT_TRUE(copy.Done) << std::hex << copy.ErrorID;
+  EXPECT_EQ(read_bit(cam, "StatusWord.X4"), true);  // CamDataChanged
+  // More points than the array holds: refused, nothing read beyond it (16#8151, decision C3).
+  tomc_MC_CopyCamData beyond;
+  tomc_MC_CopyCamData_init(&beyond);
+  beyond.ArrayOfPoints = line;
+  beyond.ArrayOfPointsLength = 2;
+  beyond.NumberOfPoints = 3;
+  beyond.Execute = true;
+  ASSERT_EQ(tomc_MC_CopyCamData_call(cam, &beyond), TOMC_OK) << last_error();
+  EXPECT_EQ(beyond.ErrorID, 0x8151);
+  // MC_CamOut profile 5 against an active camming: Done, the camming goes on (spec 07 §3.5).
+  cam_out.SyncProfileReference = 5;
+  cam_out.Execute = true;
+  program();
+  EXPECT_TRUE(cam_out.Done) << std::hex << cam_out.ErrorID;
+  EXPECT_TRUE(cam_in.InSync);
+  // MC_CamIn's EndOfProfile: through the end of the cam at 360 (leader 90 -> 400).
+  bool end_of_profile = false;
+  move.Execute = false;
+  program();
+  move.Distance = 310.0;
+  move.Velocity = 1000.0;
+  move.Execute = true;
+  for (int i = 0; i < 3000 && !move.Done; ++i) {
+    program();
+    end_of_profile = end_of_profile || cam_in.EndOfProfile;
+  }
+  EXPECT_TRUE(end_of_profile);
+  EXPECT_NEAR(read(follower, "Position"), 40.0 * 100.0 / 180.0, 1e-9);  // f(40) in the second period
+  // The copied line after the camming ends (MC_Halt releases the cam) and MC_InterpolateCam.
+  tomc_MC_Halt halt;
+  tomc_MC_Halt_init(&halt);
+  halt.Execute = true;
+  ASSERT_EQ(tomc_MC_Halt_call(follower, &halt), TOMC_OK) << last_error();
+  program();
+  EXPECT_TRUE(cam_in.CommandAborted);
+  EXPECT_EQ(read_bit(cam, "StatusWord.X0"), false);
+  interpolate.Execute = false;
+  ASSERT_EQ(tomc_MC_InterpolateCam_call(cam, &interpolate), TOMC_OK);
+  interpolate.Execute = true;
+  ASSERT_EQ(tomc_MC_InterpolateCam_call(cam, &interpolate), TOMC_OK);
+  EXPECT_TRUE(interpolate.Done) << std::hex << interpolate.ErrorID;
+  following.Execute = false;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValue_call(cam, &following), TOMC_OK);
+  following.Execute = true;
+  following.SlaveScaling = 1.0;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValue_call(cam, &following), TOMC_OK);
+  EXPECT_DOUBLE_EQ(following.Value, 90.0);
+  tomc_runtime_destroy(runtime);
+}

@@ -75,7 +75,8 @@ typedef enum tomc_object_type {
   TOMC_TO_SPEED_AXIS = 1,
   TOMC_TO_POSITIONING_AXIS = 2,
   TOMC_TO_SYNCHRONOUS_AXIS = 3,
-  TOMC_TO_EXTERNAL_ENCODER = 4
+  TOMC_TO_EXTERNAL_ENCODER = 4,
+  TOMC_TO_CAM = 5
 } tomc_object_type;
 
 /* ---- the runtime ---- */

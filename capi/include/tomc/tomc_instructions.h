@@ -22,6 +22,18 @@ typedef struct tomc_time_position_profile {
   tomc_time_position_point Point[TOMC_MAX_TIME_POSITION_POINTS];
 } tomc_time_position_profile;
 
+/* MC_CopyCamData's elements (spec 07 §3.1 TO_Cam_Struct_PointData / TO_Cam_Struct_SegmentData): a segment is
+ * y = a6·x⁶ + … + a1·x + a0 + sineAmplitude·sin(sinePeriod·x + sinePhase) on [xmin, xmax], x absolute. */
+typedef struct tomc_cam_point {
+  double x;
+  double y;
+} tomc_cam_point;
+typedef struct tomc_cam_segment {
+  double xmin, xmax;
+  double a0, a1, a2, a3, a4, a5, a6;
+  double sineAmplitude, sinePeriod, sinePhase;
+} tomc_cam_segment;
+
 /* MC_Power (spec 03 §4.1) on TO_SpeedAxis, TO_PositioningAxis, TO_SynchronousAxis, TO_ExternalEncoder. */
 typedef struct tomc_MC_Power {
   tomc_struct_header header; /* set by the init function */
@@ -549,6 +561,62 @@ typedef struct tomc_MC_GearOut {
 TOMC_API void tomc_MC_GearOut_init(tomc_MC_GearOut* fb);
 TOMC_API tomc_status tomc_MC_GearOut_call(tomc_object* axis, tomc_MC_GearOut* fb);
 
+/* MC_CamIn (spec 07 §3.4) on TO_SynchronousAxis. */
+typedef struct tomc_MC_CamIn {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  const tomc_object* Master; /* the leading axis or external encoder */
+  const tomc_object* Cam; /* a TO_Cam */
+  bool Execute;
+  double MasterOffset;
+  double SlaveOffset;
+  double MasterScaling;
+  double SlaveScaling;
+  double MasterSyncPosition;
+  int32_t SyncProfileReference;
+  double MasterStartDistance;
+  double Velocity;
+  double Acceleration;
+  double Deceleration;
+  double Jerk;
+  int32_t ApplicationMode;
+  int32_t SyncDirection;
+  /* outputs */
+  bool StartSync;
+  bool InSync;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  bool EndOfProfile;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_CamIn;
+TOMC_API void tomc_MC_CamIn_init(tomc_MC_CamIn* fb);
+TOMC_API tomc_status tomc_MC_CamIn_call(tomc_object* axis, tomc_MC_CamIn* fb);
+
+/* MC_CamOut (spec 07 §3.5) on TO_SynchronousAxis. */
+typedef struct tomc_MC_CamOut {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double SlavePosition;
+  int32_t SyncProfileReference;
+  double MasterStopDistance;
+  double Deceleration;
+  double Jerk;
+  int32_t SyncOutDirection;
+  /* outputs */
+  bool StartSyncOut;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_CamOut;
+TOMC_API void tomc_MC_CamOut_init(tomc_MC_CamOut* fb);
+TOMC_API tomc_status tomc_MC_CamOut_call(tomc_object* axis, tomc_MC_CamOut* fb);
+
 /* MC_PhasingAbsolute (spec 07 §4.1) on TO_SynchronousAxis. */
 typedef struct tomc_MC_PhasingAbsolute {
   tomc_struct_header header; /* set by the init function */
@@ -682,6 +750,97 @@ typedef struct tomc_MC_SynchronizedMotionSimulation {
 } tomc_MC_SynchronizedMotionSimulation;
 TOMC_API void tomc_MC_SynchronizedMotionSimulation_init(tomc_MC_SynchronizedMotionSimulation* fb);
 TOMC_API tomc_status tomc_MC_SynchronizedMotionSimulation_call(tomc_object* axis, tomc_MC_SynchronizedMotionSimulation* fb);
+
+/* MC_InterpolateCam (spec 07 §3.2) on TO_Cam. */
+typedef struct tomc_MC_InterpolateCam {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_InterpolateCam;
+TOMC_API void tomc_MC_InterpolateCam_init(tomc_MC_InterpolateCam* fb);
+TOMC_API tomc_status tomc_MC_InterpolateCam_call(tomc_object* axis, tomc_MC_InterpolateCam* fb);
+
+/* MC_GetCamFollowingValue (spec 07 §3.6) on TO_Cam. */
+typedef struct tomc_MC_GetCamFollowingValue {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double LeadingValue;
+  double MasterOffset;
+  double SlaveOffset;
+  double MasterScaling;
+  double SlaveScaling;
+  /* outputs */
+  double Value;
+  double FirstDerivative;
+  double SecondDerivative;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_GetCamFollowingValue;
+TOMC_API void tomc_MC_GetCamFollowingValue_init(tomc_MC_GetCamFollowingValue* fb);
+TOMC_API tomc_status tomc_MC_GetCamFollowingValue_call(tomc_object* axis, tomc_MC_GetCamFollowingValue* fb);
+
+/* MC_GetCamLeadingValue (spec 07 §3.6) on TO_Cam. */
+typedef struct tomc_MC_GetCamLeadingValue {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  double FollowingValue;
+  double ApproachLeadingValue;
+  int32_t ApproachDirection;
+  double MasterOffset;
+  double SlaveOffset;
+  double MasterScaling;
+  double SlaveScaling;
+  /* outputs */
+  double Value;
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_GetCamLeadingValue;
+TOMC_API void tomc_MC_GetCamLeadingValue_init(tomc_MC_GetCamLeadingValue* fb);
+TOMC_API tomc_status tomc_MC_GetCamLeadingValue_call(tomc_object* axis, tomc_MC_GetCamLeadingValue* fb);
+
+/* MC_CopyCamData (spec 07 §3.6) on TO_Cam. */
+typedef struct tomc_MC_CopyCamData {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Execute;
+  int32_t Mode;
+  int32_t StartPointCam;
+  int32_t StartSegmentCam;
+  int32_t StartPointArray;
+  int32_t StartSegmentArray;
+  int32_t NumberOfPoints;
+  int32_t NumberOfSegments;
+  const tomc_cam_point* ArrayOfPoints; /* ArrayOfPointsLength elements */
+  int32_t ArrayOfPointsLength; /* tomc: the number of elements the array above holds */
+  const tomc_cam_segment* ArrayOfSegments; /* ArrayOfSegmentsLength elements */
+  int32_t ArrayOfSegmentsLength; /* tomc: the number of elements the array above holds */
+  /* outputs */
+  bool Done;
+  bool Busy;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_CopyCamData;
+TOMC_API void tomc_MC_CopyCamData_init(tomc_MC_CopyCamData* fb);
+TOMC_API tomc_status tomc_MC_CopyCamData_call(tomc_object* axis, tomc_MC_CopyCamData* fb);
 
 #ifdef __cplusplus
 }

@@ -93,8 +93,12 @@ Submission SynchronousOperation::cam_in(const CamInInputs& in) noexcept {
     return Submission::reject(error_id::kOutsideCam);
   }
   ProfileLimits limits;
-  if (const auto e = axis_.resolve_dynamics(profile == 0 ? in.Velocity : -1.0, in.Acceleration,
-                                            in.Deceleration, in.Jerk, limits))
+  // Velocity, Acceleration, Deceleration and Jerk belong to profile 0 alone (spec 07 §3.4): the other
+  // profiles neither check them nor raise 501/502/503 for them (decision C20).
+  const bool dynamic = profile == 0;
+  if (const auto e =
+          axis_.resolve_dynamics(dynamic ? in.Velocity : -1.0, dynamic ? in.Acceleration : -1.0,
+                                 dynamic ? in.Deceleration : -1.0, dynamic ? in.Jerk : -1.0, limits))
     return Submission::reject(*e);
   if (const auto e = axis_.motion_prerequisites()) return Submission::reject(e);
   if (!axis_.homed()) return Submission::reject(error_id::kAxisNotHomed);  // spec 07 §3.4 requirements
@@ -246,6 +250,17 @@ bool SynchronousOperation::start_pending_cam(const LeadingValue& leader) noexcep
     }
     if (p.direction * (leader.position - x_a) < 0.0) return false;  // not there yet
     if (!(p.direction * leader.velocity > 0.0)) return false;       // reached, but not moving towards it
+  }
+  // A non-cyclic cam must hold the synchronous point: profiles 3 and 4 reach it MasterStartDistance after
+  // the start, which may lie beyond the cam's end; synchronous there, the job would end at once and the
+  // follower jump to f(End). The job ends with 16#80AD when it would start instead (decision C21).
+  if (job.function.mode() == CamApplicationMode::kNotCyclic) {
+    const double u_sync = (x_sync - k.MasterOffset) / k.MasterScaling;
+    const double slack = 1e-9 * std::max({1.0, std::fabs(cam.start()), std::fabs(cam.end())});
+    if (!(u_sync >= cam.start() - slack && u_sync <= cam.end() + slack)) {
+      end_pending(JobState::kError, error_id::kOutsideCam);
+      return false;
+    }
   }
   // A modulo follower reaches the occurrence of the cam that SyncDirection allows (spec 07 §3.4): the cam
   // is shifted by whole follower modulo lengths in the following range.

@@ -677,3 +677,67 @@ TEST(Camming, CamInterpolatedBeforeTheRuntimeStartsIsUsable) {
   EXPECT_FALSE(c.Error) << std::hex << c.ErrorID;
   EXPECT_TRUE(c.InSync);
 }
+
+// Decision C20 (spec 07 §3.4: Velocity/Acceleration/Deceleration/Jerk are profile 0's only): a
+// distance profile ignores them — an Acceleration above MaxAcceleration raises no alarm 502 and an
+// Acceleration of 0.0 is not refused (16#8111); profile 0 still checks them. Found by
+// camming_property_test.cpp (alarm 502 in synchronous travel from a profile-3 job's unused Acceleration).
+TEST(Camming, DynamicParametersAreProfileZerosOnly) {
+  CammingMachine m(virtual_linear(), virtual_linear());
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C2;
+  c.SyncProfileReference = 3;
+  c.MasterOffset = 100.0;
+  c.MasterStartDistance = 50.0;
+  c.ApplicationMode = 2;
+  c.Acceleration = 20000.0;  // MaxAcceleration 10000
+  c.Deceleration = 0.0;      // illegal where it is used
+  c.Jerk = std::nan("");
+  c.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(c.Busy) << std::hex << c.ErrorID;
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedAcceleration));
+  auto& p0 = m.cam_in2;
+  p0.Cam = m.cams.C2;
+  p0.SyncProfileReference = 0;
+  p0.MasterOffset = 400.0;
+  p0.ApplicationMode = 2;
+  p0.Deceleration = 0.0;
+  p0.Execute = true;
+  m.run(1);
+  EXPECT_EQ(p0.ErrorID, eid::kInvalidDeceleration);
+}
+
+// Decision C21 (spec 07 §3.3 not cyclic, §3.4 profile 4, §1.10 16#80AD): profile 4 becomes synchronous
+// MasterStartDistance after where the leader starts; beyond the end of a non-cyclic cam the job would be
+// synchronous outside the cam and end at once with a jump to f(End). It ends with 16#80AD when the leader
+// starts instead, the cam free, the follower where it was. Found by camming_property_test.cpp (an 87 mm
+// step).
+TEST(Camming, ProfileFourSynchronousPointBeyondANonCyclicCam) {
+  CammingMachine m(virtual_linear(), virtual_linear());
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C2;  // [0, 360]
+  c.SyncProfileReference = 4;
+  c.MasterOffset = 0.0;
+  c.MasterStartDistance = 400.0;  // the leader at 0 + 400 > 360
+  c.ApplicationMode = 0;
+  c.Execute = true;
+  m.run(3);
+  ASSERT_TRUE(c.Busy) << std::hex << c.ErrorID;  // pending while the leader stands (WaitingFunctionState 3)
+  m.move_L.Velocity = 100.0;
+  m.move_L.Acceleration = m.move_L.Deceleration = 10000.0;
+  m.move_L.Execute = true;
+  ASSERT_GT(m.run_until([&] { return c.Error; }, 10), 0);
+  EXPECT_EQ(c.ErrorID, eid::kOutsideCam);
+  EXPECT_FALSE(c.StartSync);
+  EXPECT_EQ(m.sync().WaitingFunctionState, 0);
+  EXPECT_EQ(m.cams.C2->read("StatusWord.X0"), 0.0);
+  EXPECT_NEAR(m.f().Position, 0.0, 1e-12);
+  // Within the cam the same job synchronizes (ProfileFourFromTheCurrentLeaderPosition does so from 0 + 40).
+  c.Execute = false;
+  m.run(1);
+  c.MasterStartDistance = 100.0;
+  c.Execute = true;
+  ASSERT_GT(m.run_until([&] { return c.InSync; }, 3000), 0);
+  EXPECT_NEAR(m.f().Position, 100.0 * m.l().Position / 360.0, 1e-6);
+}

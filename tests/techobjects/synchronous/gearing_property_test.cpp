@@ -59,6 +59,7 @@
 #include <random>
 #include <string>
 
+#include "alarm_watch.hpp"
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_reset.hpp"
@@ -766,27 +767,12 @@ class Run {
     prev_ = now;
   }
 
-  // Alarm numbers the follower raised since the last call (its alarm history; fixed buffer).
-  struct Raised {
-    std::array<std::uint32_t, 16> numbers{};
-    std::size_t n = 0;
-    bool count(std::uint32_t x) const {
-      for (std::size_t i = 0; i < n; ++i)
-        if (numbers[i] == x) return true;
-      return false;
-    }
-  };
+  // Alarm numbers the follower raised since the last call.
+  using Raised = tomc::testing::RaisedAlarms;
   Raised new_alarms() {
-    Raised r;
-    const std::size_t n = F_->alarms().log().copy_since(alarm_sequence_, alarm_events_);
-    for (std::size_t i = 0; i < n; ++i) {
-      alarm_sequence_ = alarm_events_[i].sequence;
-      if (alarm_events_[i].kind == techobjects::AlarmEvent::Kind::kRaised && r.n < r.numbers.size()) {
-        r.numbers[r.n++] = alarm_events_[i].number;
-        note("alarm raised", alarm_events_[i].number, alarm_events_[i].additional_value);
-      }
-    }
-    return r;
+    return alarm_watch_.take(F_->alarms(), [&](const techobjects::AlarmEvent& e) {
+      note("alarm raised", e.number, e.additional_value);
+    });
   }
 
   // G4: the handshake of every instance after the user program (spec 03 §3.2).
@@ -879,8 +865,7 @@ class Run {
   bool prev_enabled_ = false;
   bool anchored_ = false;
   double anchor_x_ = 0, anchor_y_ = 0, anchor_db_ = 0;
-  std::uint64_t alarm_sequence_ = 0;
-  std::array<techobjects::AlarmEvent, techobjects::AlarmLog::kCapacity> alarm_events_{};
+  tomc::testing::AlarmWatch alarm_watch_;
   Stats stats_{};
   int cycle_ = 0;
   std::array<Event, 120> events_{};
