@@ -166,6 +166,32 @@ TEST(DriveConnection, LinkLossAndRecovery) {
   EXPECT_EQ(m.drive->active_fault(), 0u);
 }
 
+// Frames that do not arrive are the link monitor's business (up to link_loss_tolerance_cycles ride through,
+// R9), not sign-of-life errors (spec 06 §5.2): the drive counts on while its frames are lost, and the monitor
+// resynchronises on the first fresh frame after the gap, so gaps of 1, 2 and 3 cycles, three times each,
+// leave CommunicationOK and the drive in operation (a monitor that kept its expectation over the gap would
+// see every later frame 1-3 ahead and raise 406).
+TEST(DriveConnection, ShortFrameGapsAreNoSignOfLifeErrors) {
+  for (int gap = 1; gap <= 3; ++gap) {
+    SCOPED_TRACE(gap);
+    DriveConnectionConfig c;
+    c.link_loss_tolerance_cycles = 3;
+    Machine m(3, {}, c);
+    m.connection().request(tg::DriveRequest::kOperate);
+    m.run(10);
+    ASSERT_TRUE(m.connection().in_operation());
+    for (int repeat = 0; repeat < 3; ++repeat) {  // three gaps, 15 cycles apart
+      m.drive->set_link_lost(true);
+      m.run(gap);
+      m.drive->set_link_lost(false);
+      m.run(15);
+      EXPECT_TRUE(m.connection().communication_ok());
+      EXPECT_NE(m.connection().communication_fault(), CommunicationFault::kSignOfLifeFailed);
+    }
+    EXPECT_TRUE(m.connection().in_operation());
+  }
+}
+
 // spec 06 TV26 through the connection: fault 0x0248 -> 0x04FE once -> 0x047E -> 0x0270 -> 0x0231 -> 0x047F.
 TEST(DriveConnection, FaultAcknowledgeSequence) {
   Machine m(2);
