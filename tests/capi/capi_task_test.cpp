@@ -105,9 +105,11 @@ TEST(CApiTask, A10msTaskPositionsTheAxisThroughTheMailboxes) {
   ASSERT_EQ(tomc_runtime_add_task(r.runtime, &config, task_program, &task), TOMC_OK) << tomc_last_error();
   EXPECT_EQ(tomc_runtime_add_task(r.runtime, &config, task_program, &task), TOMC_ERROR_STATE);
   const tomc_runner_config runner = runner_config();
+  const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(tomc_runtime_run_realtime(r.runtime, &runner), TOMC_OK) << tomc_last_error();
   const bool done = wait_for(task.done, std::chrono::seconds(30));
   ASSERT_EQ(tomc_runtime_stop_realtime(r.runtime), TOMC_OK);
+  const auto elapsed = std::chrono::steady_clock::now() - started;
   EXPECT_TRUE(done);
   EXPECT_EQ(task.failures.load(), 0);
   EXPECT_FALSE(task.move.Error) << task.move.ErrorID;
@@ -120,9 +122,13 @@ TEST(CApiTask, A10msTaskPositionsTheAxisThroughTheMailboxes) {
   tomc_runner_statistics user = servo;
   ASSERT_EQ(tomc_runtime_runner_statistics(r.runtime, &servo), TOMC_OK);
   ASSERT_EQ(tomc_runtime_task_statistics(r.runtime, &user), TOMC_OK);
-  // Two threads at their own periods: about ten servo cycles per task cycle.
+  // Two threads at their own periods: the task never runs more often than its 10 ms (absolute deadlines), the
+  // servo thread at 1 ms runs at least twice as often as the task. On an idle machine that is about ten per
+  // task cycle; under load each thread skips the periods it missed, the 1 ms one more of them (issue 22: 4.7
+  // servo cycles per task cycle at a load of 17, where "more than 5" failed 2 times in 10).
   EXPECT_GT(user.cycles, 20u);
-  EXPECT_GT(servo.cycles, 5 * user.cycles);
+  EXPECT_LE(user.cycles, static_cast<uint64_t>(elapsed / std::chrono::milliseconds(10)) + 1);
+  EXPECT_GT(servo.cycles, 2 * user.cycles);
   EXPECT_EQ(user.cycles, static_cast<uint64_t>(task.cycles.load()));
 }
 

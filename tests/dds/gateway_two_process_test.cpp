@@ -36,8 +36,11 @@ using tomc::testing::test_partition;
 constexpr auto kConnectTimeout = std::chrono::seconds(10);
 constexpr std::uint32_t kTolerance = 3;  // DriveConnectionConfig::link_loss_tolerance_cycles default
 // How long a lock-step cycle waits for an answer that is expected: generous, so that a loaded CI machine
-// cannot turn a slow answer into a missed cycle (a cycle waits only until its answer is in).
-constexpr auto kAnswerTimeout = std::chrono::milliseconds(200);
+// cannot turn a slow answer into a missed cycle (a cycle waits only until its answer is in). 200 ms was
+// exceeded once under ctest -j2 at a load of 15 (issue 22: PowerMoveStop counted one missed cycle); below
+// the gateway's 1 s watchdog. Only cycles whose answer is meant to be missing (dropped answers, a killed
+// gateway) wait for all of it; tests of a silent gateway set a short wait of their own.
+constexpr auto kAnswerTimeout = std::chrono::milliseconds(500);
 
 // A speed axis whose drive is behind the gateway, with the instructions a user program would call.
 struct GatewayAxis {
@@ -197,6 +200,7 @@ TEST(GatewayTwoProcess, KillRaisesTheLinkAlarmWithinToleranceAndARestartRecovers
   ASSERT_TRUE(m.enable_and_move(600.0));
   const std::uint64_t fresh_before = m.fresh_total();
   gateway->kill_hard();
+  m.answer_timeout = std::chrono::milliseconds(20);  // no answer will come: do not wait long for it
   int cycle = 0;
   int alarm_cycle = -1;
   int first_missed = -1;
@@ -222,6 +226,7 @@ TEST(GatewayTwoProcess, KillRaisesTheLinkAlarmWithinToleranceAndARestartRecovers
   gateway = std::make_unique<GatewayProcess>(dir, config);
   const int back = m.run_until([&] { return m.adapter->link_health().up; }, 2000);
   ASSERT_GT(back, 0) << gateway->log();
+  m.answer_timeout = kAnswerTimeout;
   m.run(5);
   EXPECT_TRUE(m.link_ok());
   EXPECT_EQ(m.alarm(), techobjects::kAlarmDriveCommunication);  // latched until acknowledged

@@ -530,9 +530,12 @@ TEST(WebApi, BadRequestsGet4xxAndDoNotDisturbTheRuntime) {
   EXPECT_EQ(c.Get("/api/status", host)->status, 421);
 
   // The runtime ran on: cycles advanced, the program's axis still at its velocity, no panel was taken.
-  std::this_thread::sleep_for(50ms);
-  const auto stats = s.runner.statistics();
-  EXPECT_GT(stats.cycles, cycles_before);
+  // Waits for a cycle after the requests (bounded) instead of sleeping 50 ms: a starved runner thread is
+  // late, not stopped (issue 22).
+  const auto deadline = std::chrono::steady_clock::now() + 10s;
+  while (s.runner.statistics().cycles <= cycles_before && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(1ms);
+  EXPECT_GT(s.runner.statistics().cycles, cycles_before);
   const Json after = s.wait_status([](const Json& j) { return j["objects"][1]["valid"] == true; });
   EXPECT_EQ(speed_setpoint(s.objects, after, 1), 300.0);
   EXPECT_EQ(after["objects"][0]["panel"]["held"], false);

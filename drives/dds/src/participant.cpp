@@ -8,6 +8,7 @@
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
+#include <fastrtps/xmlparser/XMLProfileManager.h>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/qos/PublisherQos.hpp>
 #include <fastdds/dds/subscriber/qos/SubscriberQos.hpp>
@@ -226,6 +227,16 @@ Participant::Participant(int domain, const std::string& name, const std::string&
     throw std::logic_error("DDS participant QoS is not limited to " + network.address + ":\n" + leaks);
   }
   auto* factory = fdds::DomainParticipantFactory::get_instance();
+  // No intra-process delivery: with it, Fast DDS 2.9 lets a participant's discovery writer keep a raw pointer
+  // to the discovery reader of another participant of this process after that one was deleted, and a crash
+  // follows when the survivor deletes an endpoint before the deletion reached it (issue 22, decision V10;
+  // fixed upstream in eProsima/Fast-DDS#5034, not in Debian's 2.9). Participants of one process then exchange
+  // through the loopback transport like separate processes. The default XML profiles are loaded first so
+  // that a <library_settings> in them cannot turn it back on.
+  factory->load_profiles();
+  eprosima::fastrtps::LibrarySettingsAttributes library;
+  library.intraprocess_delivery = eprosima::fastrtps::INTRAPROCESS_OFF;
+  eprosima::fastrtps::xmlparser::XMLProfileManager::library_settings(library);
   // No status callbacks at participant level (the readers have their own listeners); discovery callbacks
   // reach `listener` regardless of the mask.
   participant_ = factory->create_participant(static_cast<fdds::DomainId_t>(domain), qos, listener,
