@@ -119,6 +119,75 @@ TEST(GatewayConfig, EveryProblemNamesItsKey) {
   EXPECT_TRUE(has_line(lines, "devices[2].modules: no submodule in slot 1 subslot 2")) << all;
 }
 
+// docs/gateway.md §2: a device's slots beyond the drive telegram. The supplementary telegram 750 (spec 06
+// §2.14) and an encoder telegram 81/83 (§2.12, §2.13) each have their submodule: by default where the
+// emulated drive has it, else where "<key>_slot"/"<key>_subslot" say; its lengths must be the telegram's.
+TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
+  sc::ProfinetGatewayConfig config;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config(sc::Json::parse(R"({ "domain": 42,
+    "profinet": { "interface": "eth1", "ip": "192.168.0.1" },
+    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "192.168.0.10", "telegram": 105,
+                   "supplementary_telegram": 750 },
+                 { "name": "enc1", "name_of_station": "encoder-1", "ip": "192.168.0.11", "encoder_telegram": 81 },
+                 { "name": "axis2", "name_of_station": "drive-2", "ip": "192.168.0.12", "telegram": 3,
+                   "encoder_telegram": 83, "encoder_slot": 4, "encoder_subslot": 1 } ] })"),
+                                   config, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  ASSERT_EQ(config.devices.size(), 3u);
+  using tomc::drives::Slot;
+  const auto& torque = config.devices[0];
+  EXPECT_EQ(torque.device_config().supplementary_telegram, 750);
+  EXPECT_EQ(torque.place(Slot::kDrive).subslot, 2);
+  EXPECT_EQ(torque.place(Slot::kSupplementary).slot, 1);
+  EXPECT_EQ(torque.place(Slot::kSupplementary).subslot, 3);
+  EXPECT_EQ(torque.place(Slot::kEncoder1).subslot, 0);  // no telegram there
+  const auto& encoder = config.devices[1];
+  EXPECT_EQ(encoder.device_config().drive_telegram, 0);
+  EXPECT_EQ(encoder.device_config().encoder_telegrams[0], 81);
+  EXPECT_EQ(encoder.place(Slot::kEncoder1).slot, 1);  // an encoder-only device: its object in slot 1
+  EXPECT_EQ(encoder.place(Slot::kDrive).subslot, 0);
+  EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).slot, 4);
+  EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).subslot, 1);
+
+  const auto lines = problems_of(R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a1", "name_of_station": "d1", "ip": "10.0.0.2", "encoder_telegram": 81,
+                   "supplementary_telegram": 750 },
+                 { "name": "a2", "name_of_station": "d2", "ip": "10.0.0.3", "telegram": 3, "encoder_telegram": 82 },
+                 { "name": "a3", "name_of_station": "d3", "ip": "10.0.0.4", "telegram": 3,
+                   "supplementary_telegram": 750, "supplementary_subslot": 2 },
+                 { "name": "a4", "name_of_station": "d4", "ip": "10.0.0.5", "telegram": 3,
+                   "supplementary_telegram": 750,
+                   "modules": [ { "slot": 0, "ident": 1, "submodules": [ { "subslot": 1, "ident": 1 } ] },
+                                { "slot": 1, "ident": "0x100", "submodules": [
+                                  { "subslot": 2, "ident": "0x10003", "input_length": 18, "output_length": 10 },
+                                  { "subslot": 3, "ident": "0x102EE", "input_length": 2, "output_length": 2 } ] } ] },
+                 { "name": "a5", "name_of_station": "d5", "ip": "10.0.0.6", "encoder_telegram": 83,
+                   "modules": [ { "slot": 0, "ident": 1, "submodules": [ { "subslot": 1, "ident": 1 } ] } ] },
+                 { "name": "a6", "name_of_station": "d6", "ip": "10.0.0.7" } ] })");
+  const std::string all = joined(lines);
+  EXPECT_TRUE(has_line(lines,
+                       "devices[0].supplementary_telegram: supplementary_telegram: telegram 750 needs a "
+                       "drive telegram"))
+      << all;
+  EXPECT_TRUE(has_line(lines, "devices[1].encoder_telegram: encoder_telegrams[0]: 82 is not 81 or 83"))
+      << all;
+  EXPECT_TRUE(has_line(lines,
+                       "devices[2].supplementary_subslot: slot 1 subslot 2 carries the drive telegram "
+                       "already"))
+      << all;
+  // Telegram 750 sends 6 setpoint bytes (spec 06 §2.14): 2 output bytes cannot carry it.
+  EXPECT_TRUE(has_line(lines,
+                       "devices[3].modules[1].submodules[1]: the supplementary telegram submodule has "
+                       "input_length 2 and output_length 2; telegram 750 needs 2 and 6"))
+      << all;
+  EXPECT_TRUE(has_line(lines,
+                       "devices[4].modules: no submodule in slot 1 subslot 2 (encoder_slot, "
+                       "encoder_subslot)"))
+      << all;
+  EXPECT_TRUE(has_line(lines, "devices[5].telegram:")) << all;  // neither a drive nor an encoder telegram
+}
+
 TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
   const auto file =
       std::filesystem::temp_directory_path() / ("tomc17-bad-" + std::to_string(::getpid()) + ".json");
