@@ -398,6 +398,211 @@ TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
 
+namespace {
+
+// The dds_gateway adapter of the scenarios below: device `device` of the gateway in the gateway namespace.
+Json gateway_adapter(const std::string& device) {
+  return {{"type", "dds_gateway"},
+          {"domain", kDomain},
+          {"partition", "tomc-test-" + std::to_string(::getpid())},
+          {"device", device},
+          {"connect_timeout_s", 10.0},
+          {"answer_timeout_s", kAnswerTimeout}};
+}
+
+// tests/scenarios/torque_additive_range_750.json on a shorter timeline: a positioning axis on telegram 105 +
+// 750 (4 Nm reference torque p2003); MC_TorqueAdditive 0.25 Nm in cycles 50-70, MC_TorqueRange -0.25..0.5 Nm
+// from cycle 50, MC_MoveVelocity 400 mm/s at 5000 mm/s² from cycle 100: the acceleration runs at the upper
+// limit 0.5 Nm. Columns: 0 cycle, 1 time, 2 ActualTorque, 3 TotalTorqueAdditive, 4 ActualVelocity, 5 alarm.
+Json torque_scenario(bool through_gateway, int cycles) {
+  Json drive = {{"telegram", 105}, {"supplementary_telegram", 750}};
+  if (through_gateway) drive["adapter"] = gateway_adapter("axis1");
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] = Json::array({Json{{"name", "Winder"},
+                                                {"type", "TO_PositioningAxis"},
+                                                {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
+                                                {"drive", drive}}});
+  doc["timeline"] = Json::array(
+      {Json{{"cycle", 0},
+            {"instance", "power"},
+            {"instruction", "MC_Power"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"StartMode", 1}}}},
+       Json{{"cycle", 50},
+            {"instance", "add"},
+            {"instruction", "MC_TorqueAdditive"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"Value", 0.25}}}},
+       Json{{"cycle", 50},
+            {"instance", "range"},
+            {"instruction", "MC_TorqueRange"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"UpperLimit", 0.5}, {"LowerLimit", -0.25}}}},
+       Json{{"cycle", 70}, {"instance", "add"}, {"inputs", {{"Enable", false}}}},
+       Json{{"cycle", 100},
+            {"instance", "move"},
+            {"instruction", "MC_MoveVelocity"},
+            {"axis", "Winder"},
+            {"inputs",
+             {{"Execute", true}, {"Velocity", 400.0}, {"Acceleration", 5000.0}, {"Deceleration", 5000.0}}}}});
+  doc["trace"] = {"Winder.StatusTorqueData.ActualTorque", "Winder.StatusTorqueData.TotalTorqueAdditive",
+                  "Winder.ActualVelocity", "Winder.ErrorDetail.Number"};
+  return doc;
+}
+
+// A TO_ExternalEncoder on an encoder-only device (telegram 81) whose shaft turns at 100 mm/s, homed to 0 at
+// cycle 20 (as tests/scenarios/gearing_external_encoder_leader.json). Columns: 0 cycle, 1 time,
+// 2 ActualPosition, 3 ActualVelocity, 4 alarm.
+Json encoder_scenario(bool through_gateway, int cycles) {
+  Json drive = {{"encoder_telegram", 81}};
+  if (through_gateway) {
+    drive["adapter"] = gateway_adapter("line");
+  } else {
+    drive["external_speed"] = 100.0;
+  }
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] =
+      Json::array({Json{{"name", "Line"}, {"type", "TO_ExternalEncoder"}, {"drive", drive}}});
+  doc["timeline"] = Json::array({Json{{"cycle", 0},
+                                      {"instance", "power"},
+                                      {"instruction", "MC_Power"},
+                                      {"axis", "Line"},
+                                      {"inputs", {{"Enable", true}}}},
+                                 Json{{"cycle", 20},
+                                      {"instance", "home"},
+                                      {"instruction", "MC_Home"},
+                                      {"axis", "Line"},
+                                      {"inputs", {{"Execute", true}, {"Mode", 0}, {"Position", 0.0}}}}});
+  doc["trace"] = {"Line.ActualPosition", "Line.ActualVelocity", "Line.ErrorDetail.Number"};
+  return doc;
+}
+
+// "alarm 401 from cycle 37": the first alarm of the trace's column, for a failure message.
+std::string first_alarm(const std::vector<std::vector<double>>& rows, std::size_t column) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (rows[k][column] != 0.0)
+      return "alarm " + std::to_string(static_cast<int>(rows[k][column])) + " from cycle " +
+             std::to_string(k);
+  }
+  return "no alarm";
+}
+
+// Every cycle k >= from of `remote` (through the gateway) within the embedded run's values of cycles k-1..k+1
+// (one cycle of transport delay, docs/gateway.md §4); the number of cycles equal to 1e-9.
+int within_one_cycle(const std::vector<std::vector<double>>& embedded,
+                     const std::vector<std::vector<double>>& remote, std::size_t column, double tolerance,
+                     std::size_t from = 1) {
+  int exact = 0;
+  for (std::size_t k = from; k + 1 < embedded.size() && k + 1 < remote.size(); ++k) {
+    const double v = remote[k][column];
+    const double low = std::min({embedded[k - 1][column], embedded[k][column], embedded[k + 1][column]});
+    const double high = std::max({embedded[k - 1][column], embedded[k][column], embedded[k + 1][column]});
+    EXPECT_TRUE(v >= low - tolerance && v <= high + tolerance)
+        << "cycle " << k << ": " << v << " through the gateway, embedded " << embedded[k][column];
+    exact += std::abs(v - embedded[k][column]) < 1e-9 ? 1 : 0;
+  }
+  return exact;
+}
+
+}  // namespace
+
+// Telegram 750 behind PROFINET (spec 06 §2.14): the gateway, configured from the emulated drive's GSDML
+// file with TEL105 in subslot 2 and TEL750 in subslot 3, bridges the supplementary slot of the contract to
+// its submodule. MC_TorqueAdditive's M_ADD1 (0.25 Nm of 4 Nm: N2 0x0400) reaches the emulated drive, the
+// torque range's M_LIMIT_POS limits its acceleration torque, and its M_ACT comes back as
+// StatusTorqueData.ActualTorque: 0.5 Nm (N2 2048) in cycle 120, as the embedded drive's within one cycle.
+TEST(GatewayNetns, TorqueAdditiveReachesTheDriveThroughTelegram750) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions options;
+  options.telegram = 105;
+  options.drive = R"({ "telegram": 105, "supplementary_telegram": 750 })";
+  DeviceHost device(hosts.second, options);
+  GatewayHost gateway(
+      hosts,
+      R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 105,
+             "supplementary_telegram": 750, "gsdml": ")" TOMC_GSDML_DIR
+      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_DRIVE",
+             "submodules": [ { "subslot": 2, "submodule": "TEL105" }, { "subslot": 3, "submodule": "TEL750" } ] } ] } ])");
+  constexpr int kCycles = 200;
+  std::string failure;
+  const auto embedded = run(
+      torque_scenario(false, kCycles), "", [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "");
+  const auto remote = run(
+      torque_scenario(true, kCycles), hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(device.error(), "");
+  ASSERT_EQ(embedded.size(), static_cast<std::size_t>(kCycles));
+  ASSERT_EQ(remote.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kTorque = 2;
+  constexpr std::size_t kAdditive = 3;
+  constexpr std::size_t kAlarm = 5;
+  EXPECT_EQ(device.m_add1_max(), 0x0400);  // 0.25 / 4 Nm × 0x4000
+  EXPECT_EQ(device.m_add1_last(), 0);      // MC_TorqueAdditive disabled at cycle 70
+  EXPECT_DOUBLE_EQ(remote[60][kAdditive], 0.25);
+  EXPECT_DOUBLE_EQ(embedded[120][kTorque], 0.5);  // the upper limit (the scenario file's expectation)
+  EXPECT_NEAR(remote[120][kTorque], 0.5, 1e-9) << gateway.log();
+  const int exact = within_one_cycle(embedded, remote, kTorque, 1e-6);
+  EXPECT_EQ(remote.back()[kAlarm], 0.0)
+      << first_alarm(remote, kAlarm) << ", drive fault " << device.drive_fault() << "\n"
+      << gateway.log();
+  std::printf("gateway: ActualTorque in %d of %d cycles equal to the embedded drive's to 1e-9\n", exact,
+              kCycles - 2);
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// Encoder telegram 81 behind PROFINET (spec 06 §2.12): an encoder-only emulated device (the encoder object
+// DO_ENCODER in slot 1, TEL81 in subslot 2, chosen from the GSDML file; p0922 81 checked at start-up) whose
+// shaft turns at 100 mm/s. The TO_ExternalEncoder of `tomc sim` through the gateway follows it: homed to 0 at
+// cycle 20, its ActualPosition is the embedded encoder's within one cycle in every cycle (100 mm/s × 1 ms =
+// 0.1 mm per cycle) and 18.0 mm at cycle 200.
+TEST(GatewayNetns, AnExternalEncoderFollowsTheEmulatedEncoderThroughTheGateway) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions options;
+  options.drive = R"({ "encoder_telegram": 81, "external_speed": 100.0 })";
+  DeviceHost device(hosts.second, options);
+  GatewayHost gateway(
+      hosts,
+      R"([ { "name": "line", "name_of_station": "drive-1", "ip": "10.218.0.2", "encoder_telegram": 81,
+             "gsdml": ")" TOMC_GSDML_DIR
+      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_ENCODER",
+             "submodules": [ { "subslot": 2, "submodule": "TEL81" } ] } ] } ])");
+  constexpr int kCycles = 201;
+  std::string failure;
+  const auto embedded = run(
+      encoder_scenario(false, kCycles), "", [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "");
+  const auto remote = run(
+      encoder_scenario(true, kCycles), hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(device.error(), "");
+  ASSERT_EQ(embedded.size(), static_cast<std::size_t>(kCycles));
+  ASSERT_EQ(remote.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kPosition = 2;
+  constexpr std::size_t kVelocity = 3;
+  constexpr std::size_t kAlarm = 4;
+  EXPECT_NEAR(embedded[200][kPosition], 18.0, 0.01);                 // 180 cycles after homing at 0.1 mm
+  EXPECT_NEAR(remote[200][kPosition], 18.0, 0.11) << gateway.log();  // within one cycle
+  EXPECT_NEAR(remote[200][kVelocity], 100.0, 1.0);
+  // From homing on: before it the shaft's position is where the emulated encoder happened to be (it turns on
+  // its own clock until the controller's first setpoint; one cycle more than the embedded one here).
+  const int exact = within_one_cycle(embedded, remote, kPosition, 0.01, 22);
+  EXPECT_EQ(remote.back()[kAlarm], 0.0)
+      << first_alarm(remote, kAlarm) << ", encoder fault " << device.drive_fault() << "\n"
+      << gateway.log();
+  std::printf("gateway: ActualPosition in %d of %d cycles equal to the embedded encoder's to 1e-9\n", exact,
+              kCycles - 23);
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
 TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACableCut) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
   if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
