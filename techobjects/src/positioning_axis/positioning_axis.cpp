@@ -635,6 +635,14 @@ void PositioningAxis::restore_retained(const RetainedEncoderData& data) noexcept
   db_.StatusSensor[db_.OperativeSensor - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
 }
 
+void PositioningAxis::restore_retained(std::uint32_t n, const RetainedEncoderData& data) noexcept {
+  if (n == db_.OperativeSensor) return restore_retained(data);
+  AdditionalEncoder* e = additional_.find(n);
+  if (e == nullptr || !e->channel.chain().absolute_type() || !data.valid) return;
+  e->retained = data;  // applied by power_up_additional_encoders() in the first servo cycle
+  db_.StatusSensor[n - 1].Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+}
+
 void PositioningAxis::report_adjustment_lost(std::uint32_t cause) noexcept {
   if (!absolute_encoder()) return;
   (void)core_.alarms.raise(kAlarmAdjustmentLost, cause, core_.cycle);

@@ -41,20 +41,21 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
       r.MeasuringRangeCount = retained_.MeasuringRangeCount;
       r.LastAbsoluteValue = retained_.LastAbsoluteValue;
       encoder_.chain().power_up(&r);
-      power_up_additional_encoders();
       // The backlash was crossed in DirectionAbsoluteHoming before the adjustment (spec 02 §5.11 Mode 6/7).
       backlash_.assume_contact(
           db_.Sensor[db_.OperativeSensor - 1].Backlash.DirectionAbsoluteHoming == 0 ? 1 : -1);
     }
+    // The other absolute encoders with their own retained adjustments, whatever the start-up encoder has.
+    power_up_additional_encoders();
   }
   // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
   // virtual axis takes from x_f.
   filtered_ = dynamic_filter_.update(setpoint_, !follows_actual() && position_controlled_);
   if (device_ != nullptr) {
     read_actual_values();
-    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value — of the start-up
-    // encoder it is configured for; after MC_SetSensor to another encoder (e.g. on the load side, which sees
-    // no backlash) nothing is added (decision B4).
+    // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value — of the
+    // start-up encoder it is configured for; after MC_SetSensor to another encoder (e.g. on the load side,
+    // which sees no backlash) nothing is added (decision B4).
     if (db_.OperativeSensor == db_.PositionControl.InitialOperativeSensor)
       actual_position_ += backlash_.compensate(encoder_.chain(), actual_valid_,
                                                !follows_actual() && position_controlled_, filtered_.velocity);

@@ -185,8 +185,14 @@ bool write_retain_file(const std::filesystem::path& file, std::span<const Retain
 RetentiveStore::RetentiveStore(std::filesystem::path file) : file_(std::move(file)) {}
 
 void RetentiveStore::attach(PositioningAxis& axis) {
-  entries_.push_back(Entry{&axis, nullptr, 0});
+  entries_.push_back(Entry{&axis, nullptr, 0, 0});
   buffer_.push_back(RetainedRecord{std::string(axis.name()), {}});
+  for (const AdditionalEncoder& e : axis.additional_encoders().all()) {
+    if (!e.channel.chain().absolute_type()) continue;
+    entries_.push_back(Entry{&axis, nullptr, 0, e.number});
+    buffer_.push_back(
+        RetainedRecord{std::string(axis.name()) + ".Sensor[" + std::to_string(e.number) + "]", {}});
+  }
 }
 
 void RetentiveStore::attach(ExternalEncoder& encoder) {
@@ -195,7 +201,8 @@ void RetentiveStore::attach(ExternalEncoder& encoder) {
 }
 
 const RetainedEncoderData& RetentiveStore::retained_of(const Entry& e) const noexcept {
-  return e.axis != nullptr ? e.axis->retained() : e.encoder->retained();
+  if (e.axis == nullptr) return e.encoder->retained();
+  return e.sensor == 0 ? e.axis->retained() : *e.axis->retained_of_sensor(e.sensor);
 }
 
 RetainFile RetentiveStore::restore() {
@@ -203,9 +210,12 @@ RetainFile RetentiveStore::restore() {
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     Entry& e = entries_[i];
     const bool absolute = e.axis != nullptr ? e.axis->absolute_encoder() : e.encoder->absolute_encoder();
-    if (!absolute) continue;
+    if (!absolute && e.sensor == 0) continue;
     const auto report = [&](AdjustmentLoss cause) {
       const auto c = static_cast<std::uint32_t>(cause);
+      // An encoder Sensor[n] outside the loop powers up not adjusted (StatusSensor[n].Adjusted 0); the axis'
+      // homing state is not concerned, so no alarm 432 (decision B6).
+      if (e.sensor != 0) return;
       if (e.axis != nullptr) {
         e.axis->report_adjustment_lost(c);
       } else {
@@ -226,7 +236,9 @@ RetainFile RetentiveStore::restore() {
       report(AdjustmentLoss::kNoRecord);
       continue;
     }
-    if (e.axis != nullptr) {
+    if (e.sensor != 0) {
+      e.axis->restore_retained(e.sensor, it->data);
+    } else if (e.axis != nullptr) {
       e.axis->restore_retained(it->data);
     } else {
       e.encoder->restore_retained(it->data);

@@ -166,6 +166,32 @@ TEST(DriveConnection, LinkLossAndRecovery) {
   EXPECT_EQ(m.drive->active_fault(), 0u);
 }
 
+// spec 06 §5.1/§5.2 (TV18: "expected +1 per cycle"; the expectation runs on whatever is received): frames
+// that do not arrive are the link monitor's (up to link_loss_tolerance_cycles ride through, R9), not
+// sign-of-life errors. The drive counts on while its frames are lost, so after a gap of 1, 2 or 3 cycles the
+// next fresh frame carries the counter the expectation has run on to: no error, no trip, CommunicationOK
+// throughout. Before, the expectation stood still in the gap and every later frame mismatched (406).
+TEST(DriveConnection, ShortFrameGapsAreNoSignOfLifeErrors) {
+  for (int gap = 1; gap <= 3; ++gap) {
+    SCOPED_TRACE(gap);
+    DriveConnectionConfig c;
+    c.link_loss_tolerance_cycles = 3;
+    Machine m(3, {}, c);
+    m.connection().request(tg::DriveRequest::kOperate);
+    m.run(10);
+    ASSERT_TRUE(m.connection().in_operation());
+    for (int repeat = 0; repeat < 3; ++repeat) {  // three gaps, 15 cycles apart
+      m.drive->set_link_lost(true);
+      m.run(gap);
+      m.drive->set_link_lost(false);
+      m.run(15);
+      EXPECT_TRUE(m.connection().communication_ok());
+      EXPECT_NE(m.connection().communication_fault(), CommunicationFault::kSignOfLifeFailed);
+    }
+    EXPECT_TRUE(m.connection().in_operation());
+  }
+}
+
 // spec 06 TV26 through the connection: fault 0x0248 -> 0x04FE once -> 0x047E -> 0x0270 -> 0x0231 -> 0x047F.
 TEST(DriveConnection, FaultAcknowledgeSequence) {
   Machine m(2);

@@ -10,6 +10,7 @@
 
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_save_absolute_encoder_data.hpp"
+#include "tomc/instructions/mc_set_sensor.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/runtime/retentive_store.hpp"
 
@@ -143,6 +144,114 @@ TEST_F(RetentiveStoreTest, AdjustmentSurvivesARuntimeRestart) {
   EXPECT_TRUE(techobjects::test(n.db().StatusWord, techobjects::StatusWordBit::kHomingDone));
   EXPECT_NEAR(n.db().ActualPosition, 250.0, 0.001);
   EXPECT_FALSE(n.axis->alarms().pending(techobjects::kAlarmAdjustmentLost));
+}
+
+// Spec 01 §3.8 / seed 004 §6.2.4.5 (each encoder has its own absolute-encoder adjustment) with spec 02 §5.9
+// (the adjustment is retentive), decision B6: two absolute encoders on telegram 4 (G1 motor side, G2 load
+// side, gear 1:1, so both read the same distance). Sensor[1] is adjusted to 250 (Mode 7); MC_SetSensor makes
+// Sensor[2] operative, which is adjusted to 100 (Mode 7), and Sensor[1] closes the loop again. After a power
+// cycle both encoders come up adjusted: Sensor[1] at 250 (the axis, homed), Sensor[2] at 100. A file without
+// Sensor[2]'s record leaves only Sensor[2] not adjusted: no alarm 432, the axis stays homed.
+TEST_F(RetentiveStoreTest, EveryAbsoluteEncoderKeepsItsAdjustment) {
+  namespace tt = techobjects;
+  const fs::path file = dir_ / "retain.dat";
+  auto data = absolute_data();
+  data.Sensor[1].Existent = true;
+  data.Sensor[1].Interface.Number = 2;  // G2 of telegram 4
+  data.Sensor[1].MountingMode = static_cast<std::int32_t>(tt::SensorMountingMode::kLoadSide);
+  data.Sensor[1].Type = static_cast<std::int32_t>(tt::SensorEncoderType::ABSOLUTE);
+  data.Sensor[1].Parameter.DeterminableRevolutions = 4096;
+  const auto adjusted = [](const PositioningAxisMachine& m, int n) {
+    return m.db().StatusSensor[n - 1].Adjusted == static_cast<std::int32_t>(tt::SensorAdjusted::kAdjusted);
+  };
+  double load = 0.0;
+  double offset2 = 0.0;
+  {
+    PositioningAxisMachine m(data, linear_drive(), 4);
+    RetentiveStore store(file);
+    store.attach(*m.axis);
+    instructions::MC_SetSensor<tt::PositioningAxis> set_sensor;
+    m.user = [&] {
+      store.cycle();
+      set_sensor(*m.axis);
+    };
+    const auto pulse = [&](bool& execute) {
+      execute = true;
+      m.run(2);
+      execute = false;
+      m.run(1);
+    };
+    m.run(20);
+    m.home.Mode = 7;
+    m.home.Position = 250.0;
+    pulse(m.home.Execute);
+    ASSERT_TRUE(store.service());
+    set_sensor.Sensor = 2;
+    set_sensor.Mode = 1;  // switch as it is (no take-over)
+    pulse(set_sensor.Execute);
+    ASSERT_EQ(m.db().OperativeSensor, 2u);
+    m.home.Position = 100.0;
+    pulse(m.home.Execute);
+    EXPECT_NEAR(m.db().StatusSensor[1].Position, 100.0, 1e-6);
+    offset2 = m.db().StatusSensor[1].AbsEncoderOffset;
+    ASSERT_TRUE(store.service());  // Sensor[2]'s new adjustment
+    set_sensor.Sensor = 1;
+    pulse(set_sensor.Execute);
+    ASSERT_EQ(m.db().OperativeSensor, 1u);
+    m.run(5);
+    EXPECT_FALSE(store.service());  // switching encoders is no new adjustment
+    load = m.drive->load_position();
+  }
+  const std::string text = read_text(file);
+  EXPECT_NE(text.find("\nAxis1 1 "), std::string::npos) << text;
+  EXPECT_NE(text.find("\nAxis1.Sensor[2] 1 "), std::string::npos) << text;
+
+  auto p = linear_drive();
+  p.initial_load_position = load;
+  const auto power_up = [&](PositioningAxisMachine& n) {
+    RetentiveStore store(file);
+    store.attach(*n.axis);
+    EXPECT_EQ(store.restore().status, RetainFileStatus::kOk);
+    n.run(20);
+    EXPECT_TRUE(tt::test(n.db().StatusWord, tt::StatusWordBit::kHomingDone));
+    EXPECT_NEAR(n.db().ActualPosition, 250.0, 1e-3);
+    EXPECT_TRUE(adjusted(n, 1));
+    EXPECT_FALSE(n.axis->alarms().pending(tt::kAlarmAdjustmentLost));
+  };
+  {
+    PositioningAxisMachine n(data, p, 4);
+    power_up(n);
+    EXPECT_TRUE(adjusted(n, 2));
+    EXPECT_NEAR(n.db().StatusSensor[1].Position, 100.0, 1e-3);
+    EXPECT_EQ(n.db().StatusSensor[1].AbsEncoderOffset, offset2);
+  }
+  const auto records = techobjects::read_retain_file(file).records;
+  const auto write_without = [&](const char* name) {
+    auto kept = records;
+    std::erase_if(kept, [&](const RetainedRecord& r) { return r.name == name; });
+    std::string error;
+    ASSERT_TRUE(techobjects::write_retain_file(file, kept, error)) << error;
+  };
+  {
+    // Sensor[2]'s record lost: only that encoder is not adjusted; it reads its absolute value without offset.
+    write_without("Axis1.Sensor[2]");
+    PositioningAxisMachine k(data, p, 4);
+    power_up(k);
+    EXPECT_FALSE(adjusted(k, 2));
+    EXPECT_NEAR(k.db().StatusSensor[1].Position, 100.0 - offset2, 1e-3);
+  }
+  // The start-up encoder's record lost: alarm 432, not homed (H5); Sensor[2] still comes up adjusted at 100.
+  write_without("Axis1");
+  PositioningAxisMachine k(data, p, 4);
+  RetentiveStore store(file);
+  store.attach(*k.axis);
+  (void)store.restore();
+  k.run(20);
+  EXPECT_TRUE(k.axis->alarms().pending(tt::kAlarmAdjustmentLost));
+  EXPECT_FALSE(tt::test(k.db().StatusWord, tt::StatusWordBit::kHomingDone));
+  EXPECT_FALSE(adjusted(k, 1));
+  EXPECT_TRUE(adjusted(k, 2));
+  EXPECT_NEAR(k.db().StatusSensor[1].Position, 100.0, 1e-3);
 }
 
 // Missing file, corrupt file, no record for this TO: alarm 432 with the cause, not homed; an incremental axis

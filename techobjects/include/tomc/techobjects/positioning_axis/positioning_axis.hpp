@@ -133,15 +133,25 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // What the CPU keeps retentively for the start-up encoder (PositionControl.InitialOperativeSensor, the one
   // restore_retained() gives back at power-up, whichever encoder MC_SetSensor made operative since): valid
   // once an absolute encoder was adjusted. Changes (MC_Home 6/7, the first active/passive homing of an
-  // absolute encoder) increase `sequence`. The other encoders' adjustments are not persisted (decision B1).
+  // absolute encoder) increase `sequence`. Every other absolute encoder keeps its own (retained_of_sensor).
   using RetainedEncoderData = techobjects::RetainedEncoderData;
   const RetainedEncoderData& retained() const noexcept {
-    const AdditionalEncoder* e = additional_.find(db_.PositionControl.InitialOperativeSensor);
-    return e != nullptr ? e->retained : retained_;
+    return *retained_of_sensor(db_.PositionControl.InitialOperativeSensor);
+  }
+  // The retained adjustment of encoder Sensor[n] (1...4), wherever MC_SetSensor put it: an absolute encoder
+  // adjusted while it was operative keeps it when another one closes the loop (decision B6); nullptr when
+  // Sensor[n] does not exist.
+  const RetainedEncoderData* retained_of_sensor(std::uint32_t n) const noexcept {
+    if (n == db_.OperativeSensor) return &retained_;
+    const AdditionalEncoder* e = additional_.find(n);
+    return e != nullptr ? &e->retained : nullptr;
   }
   bool absolute_encoder() const noexcept;
   // Before Runtime::start(): the retained data of the last run (power-up of an absolute encoder).
   void restore_retained(const RetainedEncoderData& data) noexcept;
+  // The same for encoder Sensor[n] that is not the start-up encoder: it powers up with that adjustment
+  // (StatusSensor[n].Adjusted); the axis' homing state is the start-up encoder's alone.
+  void restore_retained(std::uint32_t n, const RetainedEncoderData& data) noexcept;
   // Before Runtime::start(): the retained data could not be restored (1 backup missing, 2 corrupt, 3 no
   // record for this TO): alarm 432, the axis stays not homed — never a silently wrong position.
   void report_adjustment_lost(std::uint32_t cause) noexcept;

@@ -62,6 +62,8 @@ class RetentiveStore {
   RetentiveStore& operator=(const RetentiveStore&) = delete;
 
   // ---- set-up (before Runtime::start()) ----
+  // An axis' start-up encoder is the record named as the axis; every other absolute encoder Sensor[n] has its
+  // own record "<axis>.Sensor[n]" (decision B6).
   void attach(PositioningAxis& axis);
   void attach(ExternalEncoder& encoder);
   // Reads the file and restores every attached TO; returns what was read (the caller logs `message`).
@@ -89,6 +91,7 @@ class RetentiveStore {
     PositioningAxis* axis = nullptr;
     ExternalEncoder* encoder = nullptr;
     std::uint64_t seen_sequence = 0;
+    std::uint32_t sensor = 0;  // an axis' absolute Sensor[n] other than its start-up encoder (0: that one)
   };
   const RetainedEncoderData& retained_of(const Entry& e) const noexcept;
   bool snapshot(JobId job) noexcept;
