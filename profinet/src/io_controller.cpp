@@ -434,12 +434,12 @@ bool IoController::on_input_frame(std::span<const std::uint8_t> frame, std::uint
 
 bool IoController::input_valid(std::uint64_t now_us) const noexcept {
   constexpr std::uint8_t kValid = data_status::kDataValid | data_status::kProviderRun;
-  return state_ == ControllerArState::kRunning && input_seen_ && now_us - last_input_us_ <= watchdog_us_ &&
+  return state_ == ControllerArState::kRunning && input_seen_ && now_us <= last_input_us_ + watchdog_us_ &&
          (input_status_.data_status & kValid) == kValid;
 }
 
 bool IoController::watchdog_expired(std::uint64_t now_us) noexcept {
-  if (state_ != ControllerArState::kRunning || !input_seen_ || now_us - last_input_us_ <= watchdog_us_)
+  if (state_ != ControllerArState::kRunning || !input_seen_ || now_us <= last_input_us_ + watchdog_us_)
     return false;
   abort_ar();
   return true;

@@ -410,7 +410,8 @@ std::span<const std::uint8_t> IoDevice::output_data(std::uint16_t slot, std::uin
 
 bool IoDevice::watchdog_expired(std::uint64_t now_us) {
   if (state_ != ArState::kRunning || !output_seen_) return false;
-  if (now_us - last_output_us_ <= data_hold_us_) return false;
+  // `now_us` may come from a clock read before the last frame's: that is no expiry (no unsigned wrap).
+  if (now_us <= last_output_us_ + data_hold_us_) return false;
   abort_ar();
   return true;
 }

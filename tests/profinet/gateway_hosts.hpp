@@ -240,7 +240,7 @@ class DeviceHost {
         for (int k = 0; k < 8 && take(0); ++k) {
         }
         if (device.state() != pn::ArState::kNone && now_us() - last_step > 5'000) send_input();
-        device.watchdog_expired(now);
+        device.watchdog_expired(now_us());
       }
     }
   }

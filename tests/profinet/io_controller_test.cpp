@@ -104,6 +104,8 @@ TEST(IoController, StartUpNamesConnectsWritesAndRuns) {
   EXPECT_TRUE(std::equal(at_controller.begin(), at_controller.end(), zsw1_nist.begin(), zsw1_nist.end()));
   EXPECT_EQ(pair.controller->input_iops(1, 2), pn::kIoxsGood);
   EXPECT_TRUE(pair.controller->input_valid(2000));
+  EXPECT_TRUE(pair.controller->input_valid(1999));  // a time read before the frame: no unsigned wrap
+  EXPECT_FALSE(pair.controller->watchdog_expired(1999));
   EXPECT_FALSE(pair.controller->input_valid(2000 + 3 * kCycleUs + 1));  // older than the watchdog
   // Release ends both sides.
   const auto release = pair.controller->release_request();

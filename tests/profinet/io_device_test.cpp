@@ -238,7 +238,9 @@ TEST(IoDevice, CyclicExchangeAndWatchdog) {
   EXPECT_EQ(controller.input.read_iops(input_image, 1), pn::kIoxsGood);
   EXPECT_EQ(controller.input.read_iocs(input_image, 0), pn::kIoxsGood);
 
-  // Watchdog: DataHoldFactor 3 x 1 ms after the last output frame (received at 1000 us).
+  // Watchdog: DataHoldFactor 3 x 1 ms after the last output frame (received at 1000 us). A time read
+  // before that frame arrived (999 us) is no expiry: the difference must not wrap around.
+  EXPECT_FALSE(device.watchdog_expired(999));
   EXPECT_FALSE(device.watchdog_expired(4000));
   EXPECT_TRUE(device.watchdog_expired(4001));
   EXPECT_EQ(device.state(), pn::ArState::kNone);

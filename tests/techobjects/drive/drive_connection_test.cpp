@@ -166,11 +166,11 @@ TEST(DriveConnection, LinkLossAndRecovery) {
   EXPECT_EQ(m.drive->active_fault(), 0u);
 }
 
-// spec 06 §5.1/§5.2 (TV18: "expected +1 per cycle"; the expectation runs on whatever is received): frames
-// that do not arrive are the link monitor's (up to link_loss_tolerance_cycles ride through, R9), not
-// sign-of-life errors. The drive counts on while its frames are lost, so after a gap of 1, 2 or 3 cycles the
-// next fresh frame carries the counter the expectation has run on to: no error, no trip, CommunicationOK
-// throughout. Before, the expectation stood still in the gap and every later frame mismatched (406).
+// Frames that do not arrive are the link monitor's business (up to link_loss_tolerance_cycles ride through,
+// R9), not sign-of-life errors (spec 06 §5.2): the drive counts on while its frames are lost, and the monitor
+// resynchronises on the first fresh frame after the gap, so gaps of 1, 2 and 3 cycles, three times each,
+// leave CommunicationOK and the drive in operation (a monitor that kept its expectation over the gap would
+// see every later frame 1-3 ahead and raise 406).
 TEST(DriveConnection, ShortFrameGapsAreNoSignOfLifeErrors) {
   for (int gap = 1; gap <= 3; ++gap) {
     SCOPED_TRACE(gap);
