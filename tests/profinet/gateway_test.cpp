@@ -149,6 +149,14 @@ TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
   EXPECT_EQ(encoder.place(Slot::kDrive).subslot, 0);
   EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).slot, 4);
   EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).subslot, 1);
+  // A configuration made in code (the in-process gateway of the allocation test): the default places.
+  sc::ProfinetDeviceConfig in_code;
+  in_code.telegram = 3;
+  in_code.supplementary_telegram = 750;
+  EXPECT_EQ(in_code.place(Slot::kDrive).slot, 1);
+  EXPECT_EQ(in_code.place(Slot::kDrive).subslot, 2);
+  EXPECT_EQ(in_code.place(Slot::kSupplementary).subslot, 3);
+  EXPECT_EQ(in_code.place(Slot::kEncoder1).subslot, 0);
 
   const auto lines = problems_of(R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
     "devices": [ { "name": "a1", "name_of_station": "d1", "ip": "10.0.0.2", "encoder_telegram": 81,

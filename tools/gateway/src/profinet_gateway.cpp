@@ -132,6 +132,7 @@ struct ProfinetGateway::Impl {
     gw::ByteOrder byte_order = gw::BYTE_ORDER_BIG;
     std::unique_ptr<pn::IoController> controller;
     std::size_t zsw1_low_byte = 1;  // where ZSW1 bit 3 is in the telegram's first word (byte order)
+    std::array<scenario::ProfinetTelegramPlace, drives::kSlotCount> places{};  // config.place() per slot
     // Who may touch `controller`: the start-up thread (false) or the cyclic thread (true).
     std::atomic<bool> cyclic{false};
     std::atomic<bool> faulted{false};
@@ -334,7 +335,7 @@ struct ProfinetGateway::Impl {
       for (std::size_t s = 0; s < drives::kSlotCount; ++s) {  // every slot's submodule (G10: unchanged)
         drives::Frame& actual = image.actual[i].slots[s];
         if (actual.length == 0) continue;
-        const auto input = d.controller->input_data(d.config.places[s].slot, d.config.places[s].subslot);
+        const auto input = d.controller->input_data(d.places[s].slot, d.places[s].subslot);
         if (input.size() == actual.length) std::memcpy(actual.bytes.data(), input.data(), input.size());
       }
       const drives::Frame& drive = image.actual[i][Slot::kDrive];
@@ -357,7 +358,7 @@ struct ProfinetGateway::Impl {
         for (std::size_t s = 0; s < drives::kSlotCount; ++s) {
           const drives::Frame& setpoint = image.frames[i].slots[s];
           if (setpoint.length == 0) continue;
-          const auto output = d.controller->output_data(d.config.places[s].slot, d.config.places[s].subslot);
+          const auto output = d.controller->output_data(d.places[s].slot, d.places[s].subslot);
           if (output.size() != setpoint.length) {
             complete = false;
             continue;
@@ -545,6 +546,8 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     auto d = std::make_unique<Impl::Device>();
     d->config = c;
     d->device_config = c.device_config();
+    for (std::size_t s = 0; s < drives::kSlotCount; ++s)
+      d->places[s] = c.place(static_cast<Slot>(s));
     d->byte_order = dds::to_contract(c.byte_order);
     d->zsw1_low_byte =
         c.byte_order == telegrams::ByteOrder::kBig || c.byte_order == telegrams::ByteOrder::kSwappedWords ? 1

@@ -145,6 +145,24 @@ void check_telegram_submodule(const ProfinetDeviceConfig& device, std::size_t sl
                          std::to_string(place.subslot) + " (" + key + "_slot, " + key + "_subslot)");
 }
 
+// The emulated drive's layout (drives/profinet, telegram_place()): the drive object in slot 1 (drive telegram
+// subslot 2, 750 subslot 3), an encoder object behind it (slot 2, 3) or alone (slot 1, 2), telegram
+// subslot 2.
+ProfinetTelegramPlace default_place(const ProfinetDeviceConfig& device, drives::Slot slot) noexcept {
+  const auto first_encoder = static_cast<std::uint16_t>(device.telegram != 0 ? 2 : 1);
+  switch (slot) {
+    case drives::Slot::kDrive:
+      return {1, 2};
+    case drives::Slot::kSupplementary:
+      return {1, 3};
+    case drives::Slot::kEncoder1:
+      return {first_encoder, 2};
+    case drives::Slot::kEncoder2:
+      return {static_cast<std::uint16_t>(first_encoder + 1), 2};
+  }
+  return {};
+}
+
 // The telegrams of the slots and where their submodules are: "telegram" (required unless "encoder_telegram"
 // is given), "supplementary_telegram", "encoder_telegram", each with "<key>_slot" and "<key>_subslot".
 void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& problems) {
@@ -159,15 +177,11 @@ void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& pro
     problems.add(r.path_of(key), why);
   }
   const bool valid = problems.size() == before;
-  // The emulated drive's layout (drives/profinet: drive object in slot 1, encoder object behind it).
-  const auto first_encoder = static_cast<std::uint16_t>(device.telegram != 0 ? 2 : 1);
-  const std::array<ProfinetTelegramPlace, 3> defaults{
-      ProfinetTelegramPlace{1, 2}, ProfinetTelegramPlace{1, 3}, ProfinetTelegramPlace{first_encoder, 2}};
   const std::array<std::uint16_t, 3> numbers{device.telegram, device.supplementary_telegram,
                                              device.encoder_telegram};
   for (std::size_t k = 0; k < 3; ++k) {
     const std::string key = kSlotKeys[k].key;
-    ProfinetTelegramPlace place = defaults[k];
+    ProfinetTelegramPlace place = default_place(device, static_cast<drives::Slot>(k));
     r.integer(key + "_slot", place.slot, 0, 0x7FFF);
     r.integer(key + "_subslot", place.subslot, 1, 0x9FFF, true);
     if (numbers[k] != 0 && valid) device.places[k] = place;
@@ -261,6 +275,13 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
 }
 
 }  // namespace
+
+ProfinetTelegramPlace ProfinetDeviceConfig::place(drives::Slot s) const noexcept {
+  const std::uint16_t numbers[] = {telegram, supplementary_telegram, encoder_telegram, 0};
+  const auto i = static_cast<std::size_t>(s);
+  if (numbers[i] == 0) return {};
+  return places[i].subslot != 0 ? places[i] : default_place(*this, s);
+}
 
 drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
   drives::DeviceConfig c;

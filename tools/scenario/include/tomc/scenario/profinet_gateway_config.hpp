@@ -49,11 +49,11 @@ struct ProfinetDeviceConfig {
   std::uint16_t telegram = 0;
   std::uint16_t supplementary_telegram = 0;
   std::uint16_t encoder_telegram = 0;
-  // Where each slot's telegram submodule is (subslot 0: the slot has no telegram); its input/output lengths
-  // must be the telegram's. Default: the emulated drive's layout (drive 1/2, supplementary 1/3, encoder 2/2,
-  // or 1/2 in an encoder-only device).
+  // Where each slot's telegram submodule is; subslot 0: the emulated drive's layout (drive 1/2, supplementary
+  // 1/3, encoder 2/2, or 1/2 in an encoder-only device). Its input/output lengths must be the telegram's.
   std::array<ProfinetTelegramPlace, drives::kSlotCount> places{};
-  ProfinetTelegramPlace place(drives::Slot s) const noexcept { return places[static_cast<std::size_t>(s)]; }
+  // The place of slot s: {} when the slot has no telegram, else `places` or the default.
+  ProfinetTelegramPlace place(drives::Slot s) const noexcept;
   // DAP first; by hand ("modules" with idents) or from the drive's GSDML ("gsdml", "dap", "modules" by ID);
   // default: the emulated drive's layout.
   std::vector<ProfinetModuleConfig> modules;
