@@ -73,6 +73,19 @@ std::uint16_t pzd_bytes(std::uint16_t telegram, tg::Direction direction) {
   return layout ? layout->length : 0;
 }
 
+// The file's submodule TEL<telegram>: ident 0x10000 + telegram, the PZD bytes of the codec's layout, its
+// name.
+void expect_telegram_submodule(const gsdml::Device& device, std::uint16_t telegram) {
+  const std::string id = "TEL" + std::to_string(telegram);
+  const auto found = std::find_if(device.submodules.begin(), device.submodules.end(),
+                                  [&](const gsdml::Submodule& s) { return s.id == id; });
+  ASSERT_NE(found, device.submodules.end());
+  EXPECT_EQ(found->ident, tomc::drives::telegram_submodule_ident(telegram));
+  EXPECT_EQ(found->input_length, pzd_bytes(telegram, tg::Direction::kActual));
+  EXPECT_EQ(found->output_length, pzd_bytes(telegram, tg::Direction::kSetpoint));
+  EXPECT_EQ(found->name, "Telegram " + std::to_string(telegram));
+}
+
 }  // namespace
 
 TEST(Gsdml, TheEmulatorsFileDescribesTheEmulator) {
@@ -100,15 +113,9 @@ TEST(Gsdml, TheEmulatorsFileDescribesTheEmulator) {
     if (!tg::is_drive_telegram(telegram)) continue;
     ++telegrams;
     SCOPED_TRACE("telegram " + std::to_string(telegram));
-    const std::string id = "TEL" + std::to_string(telegram);
-    const auto found = std::find_if(device.submodules.begin(), device.submodules.end(),
-                                    [&](const gsdml::Submodule& s) { return s.id == id; });
-    ASSERT_NE(found, device.submodules.end());
-    EXPECT_EQ(found->ident, tomc::drives::telegram_submodule_ident(telegram));
-    EXPECT_EQ(found->input_length, pzd_bytes(telegram, tg::Direction::kActual));
-    EXPECT_EQ(found->output_length, pzd_bytes(telegram, tg::Direction::kSetpoint));
-    EXPECT_EQ(found->name, "Telegram " + std::to_string(telegram));
-    EXPECT_EQ(gsdml::expected_modules(device, drive_on(id)), tomc::drives::profidrive_modules(telegram));
+    expect_telegram_submodule(device, telegram);
+    EXPECT_EQ(gsdml::expected_modules(device, drive_on("TEL" + std::to_string(telegram))),
+              tomc::drives::profidrive_modules(telegram));
   }
   EXPECT_EQ(telegrams, 10u);                           // 1-6, 102, 103, 105, 106
   EXPECT_EQ(device.submodules.size(), telegrams + 3);  // and TEL750, TEL81, TEL83 (next test)
@@ -121,14 +128,7 @@ TEST(Gsdml, TheSupplementaryAndEncoderTelegramSubmodulesDescribeTheEmulator) {
   const gsdml::Device device = gsdml::parse_file(kEmulatorFile);
   for (const std::uint16_t telegram : {750, 81, 83}) {
     SCOPED_TRACE("telegram " + std::to_string(telegram));
-    const std::string id = "TEL" + std::to_string(telegram);
-    const auto found = std::find_if(device.submodules.begin(), device.submodules.end(),
-                                    [&](const gsdml::Submodule& s) { return s.id == id; });
-    ASSERT_NE(found, device.submodules.end());
-    EXPECT_EQ(found->ident, tomc::drives::telegram_submodule_ident(telegram));
-    EXPECT_EQ(found->input_length, pzd_bytes(telegram, tg::Direction::kActual));
-    EXPECT_EQ(found->output_length, pzd_bytes(telegram, tg::Direction::kSetpoint));
-    EXPECT_EQ(found->name, "Telegram " + std::to_string(telegram));
+    expect_telegram_submodule(device, telegram);
   }
   EXPECT_EQ(pzd_bytes(750, tg::Direction::kSetpoint), 6);
   EXPECT_EQ(pzd_bytes(81, tg::Direction::kActual), 12);
