@@ -55,11 +55,10 @@ using pn::testing::quiet;
 
 // The drive's parameters exactly as the scenario gives the embedded simulated drive (defaults of a telegram-3
 // drive at the scenario's cycle time), so that the two runs can be compared.
-inline sc::DriveSettings drive_settings(int telegram) {
+inline sc::DriveSettings drive_settings(const std::string& drive) {
   sc::DriveSettings settings;
   sc::Problems problems;
-  sc::load_drive(sc::Json::parse(R"({ "telegram": )" + std::to_string(telegram) + " }"), "drive", 0.001,
-                 settings, problems);
+  sc::load_drive(sc::Json::parse(drive), "drive", 0.001, settings, problems);
   return settings;
 }
 
@@ -74,6 +73,9 @@ struct DeviceOptions {
   // The device announces no IP suite (0.0.0.0, as from the factory): the controller sets `ip` by DCP. Its
   // RPC socket listens on `ip` from the start (the namespace's address; the emulator does not rebind).
   bool factory_ip = false;
+  // The drive object of a scenario file for the simulated drive ("": { "telegram": telegram }), e.g. with a
+  // "supplementary_telegram" or an encoder-only device's "encoder_telegram" and "external_speed".
+  std::string drive = {};
 };
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
@@ -104,6 +106,12 @@ class DeviceHost {
   // The controller's output frames taken by the device so far (the gateway sends them from its cyclic thread,
   // which owns the AR only after the start-up's p0922 check).
   int output_frames() const { return output_frames_.load(); }
+  // M_ADD1 (N2, spec 06 §2.14) of the supplementary telegram 750 in the drive object's subslot 3, as the
+  // drive application took it: the largest and the last value (0 without telegram 750).
+  int m_add1_max() const { return m_add1_max_.load(); }
+  int m_add1_last() const { return m_add1_last_.load(); }
+  // The simulated drive's active fault (0: none), e.g. 8501 after its setpoint timeout.
+  std::uint32_t drive_fault() const { return drive_fault_.load(); }
 
  private:
   // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
@@ -135,6 +143,14 @@ class DeviceHost {
     return pn::encode(header, alarm, out, written) == pn::ProfinetError::kNone ? written : 0;
   }
 
+  void observe_m_add1(const pn::IoDevice& device) {
+    const auto out = device.output_data(tomc::drives::kDriveObjectSlot, tomc::drives::kSupplementarySubslot);
+    if (out.size() < 2) return;
+    const int value = static_cast<std::int16_t>(out[0] << 8 | out[1]);  // PROFINET order (big)
+    m_add1_last_ = value;
+    if (value > m_add1_max_) m_add1_max_ = value;
+  }
+
   void fail(const std::string& why) {
     std::lock_guard<std::mutex> lock(mutex_);
     error_ = why;
@@ -154,9 +170,12 @@ class DeviceHost {
     identity.vendor_id = 0x002A;
     identity.device_id = 0x0C01;
     identity.vendor = "tomc emulated drive";
-    const sc::DriveSettings settings = drive_settings(options_.telegram);
+    const sc::DriveSettings settings =
+        drive_settings(options_.drive.empty() ? R"({ "telegram": )" + std::to_string(options_.telegram) + " }"
+                                              : options_.drive);
     tomc::drives::ProfinetDrive host(identity, settings.device_config(), settings.parameters);
     if (options_.p0922 != 0) host.set_p0922(options_.p0922);
+    host.drive().set_external_speed(settings.external_speed);
     pn::IoDevice& device = host.device();
     std::array<std::uint8_t, 1518> frame{};
     std::uint64_t next_send = now_us();
@@ -182,6 +201,7 @@ class DeviceHost {
         } else if (device.on_cyclic(in, now_us()) && (++output_frames_, host.follow_controller())) {
           last_step = now_us();
           send_input();
+          observe_m_add1(device);
         }
       }
       return n > 0;
@@ -199,6 +219,7 @@ class DeviceHost {
           raw.send(std::span(alarm).first(n));
       }
       last = device.state();
+      drive_fault_ = host.drive().active_fault();
       const std::uint64_t now = now_us();
       if (now >= next_send) {
         next_send = now + 1000;
@@ -208,9 +229,7 @@ class DeviceHost {
         // drive moved ahead of tomc and faulted). Without it (no AR, IOPS BAD before the first setpoint or
         // after the gateway's watchdog) the drive runs on its own 1 ms clock and ends in F08501 like a real
         // one.
-        const bool controller_clock = device.state() == pn::ArState::kRunning &&
-                                      device.output_iops(tomc::drives::kDriveObjectSlot,
-                                                         tomc::drives::kTelegramSubslot) == pn::kIoxsGood;
+        const bool controller_clock = host.outputs_valid();
         if (!controller_clock) host.cycle();
         // While following the controller, every input frame answers a drive cycle; after 5 ms without one
         // (tomc waiting) the frame goes out every 1 ms again, for the controller's watchdog.
@@ -234,6 +253,9 @@ class DeviceHost {
   std::atomic<std::uint16_t> alarm_requested_{0};
   std::atomic<int> alarm_acks_{0};
   std::atomic<int> output_frames_{0};
+  std::atomic<int> m_add1_max_{0};
+  std::atomic<int> m_add1_last_{0};
+  std::atomic<std::uint32_t> drive_fault_{0};
   std::uint16_t alarm_sequence_ = 0;  // device thread only
   mutable std::mutex mutex_;
   std::string error_;

@@ -119,6 +119,83 @@ TEST(GatewayConfig, EveryProblemNamesItsKey) {
   EXPECT_TRUE(has_line(lines, "devices[2].modules: no submodule in slot 1 subslot 2")) << all;
 }
 
+// docs/gateway.md §2: a device's slots beyond the drive telegram. The supplementary telegram 750 (spec 06
+// §2.14) and an encoder telegram 81/83 (§2.12, §2.13) each have their submodule: by default where the
+// emulated drive has it, else where "<key>_slot"/"<key>_subslot" say; its lengths must be the telegram's.
+TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
+  sc::ProfinetGatewayConfig config;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config(sc::Json::parse(R"({ "domain": 42,
+    "profinet": { "interface": "eth1", "ip": "192.168.0.1" },
+    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "192.168.0.10", "telegram": 105,
+                   "supplementary_telegram": 750 },
+                 { "name": "enc1", "name_of_station": "encoder-1", "ip": "192.168.0.11", "encoder_telegram": 81 },
+                 { "name": "axis2", "name_of_station": "drive-2", "ip": "192.168.0.12", "telegram": 3,
+                   "encoder_telegram": 83, "encoder_slot": 4, "encoder_subslot": 1 } ] })"),
+                                   config, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  ASSERT_EQ(config.devices.size(), 3u);
+  using tomc::drives::Slot;
+  const auto& torque = config.devices[0];
+  EXPECT_EQ(torque.device_config().supplementary_telegram, 750);
+  EXPECT_EQ(torque.place(Slot::kDrive).subslot, 2);
+  EXPECT_EQ(torque.place(Slot::kSupplementary).slot, 1);
+  EXPECT_EQ(torque.place(Slot::kSupplementary).subslot, 3);
+  EXPECT_EQ(torque.place(Slot::kEncoder1).subslot, 0);  // no telegram there
+  const auto& encoder = config.devices[1];
+  EXPECT_EQ(encoder.device_config().drive_telegram, 0);
+  EXPECT_EQ(encoder.device_config().encoder_telegrams[0], 81);
+  EXPECT_EQ(encoder.place(Slot::kEncoder1).slot, 1);  // an encoder-only device: its object in slot 1
+  EXPECT_EQ(encoder.place(Slot::kDrive).subslot, 0);
+  EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).slot, 4);
+  EXPECT_EQ(config.devices[2].place(Slot::kEncoder1).subslot, 1);
+  // A configuration made in code (the in-process gateway of the allocation test): the default places.
+  sc::ProfinetDeviceConfig in_code;
+  in_code.telegram = 3;
+  in_code.supplementary_telegram = 750;
+  EXPECT_EQ(in_code.place(Slot::kDrive).slot, 1);
+  EXPECT_EQ(in_code.place(Slot::kDrive).subslot, 2);
+  EXPECT_EQ(in_code.place(Slot::kSupplementary).subslot, 3);
+  EXPECT_EQ(in_code.place(Slot::kEncoder1).subslot, 0);
+
+  const auto lines = problems_of(R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a1", "name_of_station": "d1", "ip": "10.0.0.2", "encoder_telegram": 81,
+                   "supplementary_telegram": 750 },
+                 { "name": "a2", "name_of_station": "d2", "ip": "10.0.0.3", "telegram": 3, "encoder_telegram": 82 },
+                 { "name": "a3", "name_of_station": "d3", "ip": "10.0.0.4", "telegram": 3,
+                   "supplementary_telegram": 750, "supplementary_subslot": 2 },
+                 { "name": "a4", "name_of_station": "d4", "ip": "10.0.0.5", "telegram": 3,
+                   "supplementary_telegram": 750,
+                   "modules": [ { "slot": 0, "ident": 1, "submodules": [ { "subslot": 1, "ident": 1 } ] },
+                                { "slot": 1, "ident": "0x100", "submodules": [
+                                  { "subslot": 2, "ident": "0x10003", "input_length": 18, "output_length": 10 },
+                                  { "subslot": 3, "ident": "0x102EE", "input_length": 2, "output_length": 2 } ] } ] },
+                 { "name": "a5", "name_of_station": "d5", "ip": "10.0.0.6", "encoder_telegram": 83,
+                   "modules": [ { "slot": 0, "ident": 1, "submodules": [ { "subslot": 1, "ident": 1 } ] } ] },
+                 { "name": "a6", "name_of_station": "d6", "ip": "10.0.0.7" } ] })");
+  const std::string all = joined(lines);
+  EXPECT_TRUE(has_line(lines,
+                       "devices[0].supplementary_telegram: supplementary_telegram: telegram 750 needs a "
+                       "drive telegram"))
+      << all;
+  EXPECT_TRUE(has_line(lines, "devices[1].encoder_telegram: encoder_telegrams[0]: 82 is not 81 or 83"))
+      << all;
+  EXPECT_TRUE(has_line(lines,
+                       "devices[2].supplementary_subslot: slot 1 subslot 2 carries the drive telegram "
+                       "already"))
+      << all;
+  // Telegram 750 sends 6 setpoint bytes (spec 06 §2.14): 2 output bytes cannot carry it.
+  EXPECT_TRUE(has_line(lines,
+                       "devices[3].modules[1].submodules[1]: the supplementary telegram submodule has "
+                       "input_length 2 and output_length 2; telegram 750 needs 2 and 6"))
+      << all;
+  EXPECT_TRUE(has_line(lines,
+                       "devices[4].modules: no submodule in slot 1 subslot 2 (encoder_slot, "
+                       "encoder_subslot)"))
+      << all;
+  EXPECT_TRUE(has_line(lines, "devices[5].telegram:")) << all;  // neither a drive nor an encoder telegram
+}
+
 TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
   const auto file =
       std::filesystem::temp_directory_path() / ("tomc17-bad-" + std::to_string(::getpid()) + ".json");
@@ -326,6 +403,211 @@ TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
       seen.device.detail,
       "ZSW1 bit 3: the drive reports a fault; alarm 2 acknowledged: process, slot 1 subslot 2, USI 0x0001");
   EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+namespace {
+
+// The dds_gateway adapter of the scenarios below: device `device` of the gateway in the gateway namespace.
+Json gateway_adapter(const std::string& device) {
+  return {{"type", "dds_gateway"},
+          {"domain", kDomain},
+          {"partition", "tomc-test-" + std::to_string(::getpid())},
+          {"device", device},
+          {"connect_timeout_s", 10.0},
+          {"answer_timeout_s", kAnswerTimeout}};
+}
+
+// tests/scenarios/torque_additive_range_750.json on a shorter timeline: a positioning axis on telegram 105 +
+// 750 (4 Nm reference torque p2003); MC_TorqueAdditive 0.25 Nm in cycles 50-70, MC_TorqueRange -0.25..0.5 Nm
+// from cycle 50, MC_MoveVelocity 400 mm/s at 5000 mm/s² from cycle 100: the acceleration runs at the upper
+// limit 0.5 Nm. Columns: 0 cycle, 1 time, 2 ActualTorque, 3 TotalTorqueAdditive, 4 ActualVelocity, 5 alarm.
+Json torque_scenario(bool through_gateway, int cycles) {
+  Json drive = {{"telegram", 105}, {"supplementary_telegram", 750}};
+  if (through_gateway) drive["adapter"] = gateway_adapter("axis1");
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] = Json::array({Json{{"name", "Winder"},
+                                                {"type", "TO_PositioningAxis"},
+                                                {"config", {{"DynamicLimits.MaxJerk", 0.0}}},
+                                                {"drive", drive}}});
+  doc["timeline"] = Json::array(
+      {Json{{"cycle", 0},
+            {"instance", "power"},
+            {"instruction", "MC_Power"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"StartMode", 1}}}},
+       Json{{"cycle", 50},
+            {"instance", "add"},
+            {"instruction", "MC_TorqueAdditive"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"Value", 0.25}}}},
+       Json{{"cycle", 50},
+            {"instance", "range"},
+            {"instruction", "MC_TorqueRange"},
+            {"axis", "Winder"},
+            {"inputs", {{"Enable", true}, {"UpperLimit", 0.5}, {"LowerLimit", -0.25}}}},
+       Json{{"cycle", 70}, {"instance", "add"}, {"inputs", {{"Enable", false}}}},
+       Json{{"cycle", 100},
+            {"instance", "move"},
+            {"instruction", "MC_MoveVelocity"},
+            {"axis", "Winder"},
+            {"inputs",
+             {{"Execute", true}, {"Velocity", 400.0}, {"Acceleration", 5000.0}, {"Deceleration", 5000.0}}}}});
+  doc["trace"] = {"Winder.StatusTorqueData.ActualTorque", "Winder.StatusTorqueData.TotalTorqueAdditive",
+                  "Winder.ActualVelocity", "Winder.ErrorDetail.Number"};
+  return doc;
+}
+
+// A TO_ExternalEncoder on an encoder-only device (telegram 81) whose shaft turns at 100 mm/s, homed to 0 at
+// cycle 20 (as tests/scenarios/gearing_external_encoder_leader.json). Columns: 0 cycle, 1 time,
+// 2 ActualPosition, 3 ActualVelocity, 4 alarm.
+Json encoder_scenario(bool through_gateway, int cycles) {
+  Json drive = {{"encoder_telegram", 81}};
+  if (through_gateway) {
+    drive["adapter"] = gateway_adapter("line");
+  } else {
+    drive["external_speed"] = 100.0;
+  }
+  Json doc;
+  doc["cycle_time"] = 0.001;
+  doc["cycles"] = cycles;
+  doc["technology_objects"] =
+      Json::array({Json{{"name", "Line"}, {"type", "TO_ExternalEncoder"}, {"drive", drive}}});
+  doc["timeline"] = Json::array({Json{{"cycle", 0},
+                                      {"instance", "power"},
+                                      {"instruction", "MC_Power"},
+                                      {"axis", "Line"},
+                                      {"inputs", {{"Enable", true}}}},
+                                 Json{{"cycle", 20},
+                                      {"instance", "home"},
+                                      {"instruction", "MC_Home"},
+                                      {"axis", "Line"},
+                                      {"inputs", {{"Execute", true}, {"Mode", 0}, {"Position", 0.0}}}}});
+  doc["trace"] = {"Line.ActualPosition", "Line.ActualVelocity", "Line.ErrorDetail.Number"};
+  return doc;
+}
+
+// "alarm 401 from cycle 37": the first alarm of the trace's column, for a failure message.
+std::string first_alarm(const std::vector<std::vector<double>>& rows, std::size_t column) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (rows[k][column] != 0.0)
+      return "alarm " + std::to_string(static_cast<int>(rows[k][column])) + " from cycle " +
+             std::to_string(k);
+  }
+  return "no alarm";
+}
+
+// Every cycle k >= from of `remote` (through the gateway) within the embedded run's values of cycles k-1..k+1
+// (one cycle of transport delay, docs/gateway.md §4); the number of cycles equal to 1e-9.
+int within_one_cycle(const std::vector<std::vector<double>>& embedded,
+                     const std::vector<std::vector<double>>& remote, std::size_t column, double tolerance,
+                     std::size_t from = 1) {
+  int exact = 0;
+  for (std::size_t k = from; k + 1 < embedded.size() && k + 1 < remote.size(); ++k) {
+    const double v = remote[k][column];
+    const double low = std::min({embedded[k - 1][column], embedded[k][column], embedded[k + 1][column]});
+    const double high = std::max({embedded[k - 1][column], embedded[k][column], embedded[k + 1][column]});
+    EXPECT_TRUE(v >= low - tolerance && v <= high + tolerance)
+        << "cycle " << k << ": " << v << " through the gateway, embedded " << embedded[k][column];
+    exact += std::abs(v - embedded[k][column]) < 1e-9 ? 1 : 0;
+  }
+  return exact;
+}
+
+}  // namespace
+
+// Telegram 750 behind PROFINET (spec 06 §2.14): the gateway, configured from the emulated drive's GSDML
+// file with TEL105 in subslot 2 and TEL750 in subslot 3, bridges the supplementary slot of the contract to
+// its submodule. MC_TorqueAdditive's M_ADD1 (0.25 Nm of 4 Nm: N2 0x0400) reaches the emulated drive, the
+// torque range's M_LIMIT_POS limits its acceleration torque, and its M_ACT comes back as
+// StatusTorqueData.ActualTorque: 0.5 Nm (N2 2048) in cycle 120, as the embedded drive's within one cycle.
+TEST(GatewayNetns, TorqueAdditiveReachesTheDriveThroughTelegram750) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions options;
+  options.telegram = 105;
+  options.drive = R"({ "telegram": 105, "supplementary_telegram": 750 })";
+  DeviceHost device(hosts.second, options);
+  GatewayHost gateway(
+      hosts,
+      R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 105,
+             "supplementary_telegram": 750, "gsdml": ")" TOMC_GSDML_DIR
+      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_DRIVE",
+             "submodules": [ { "subslot": 2, "submodule": "TEL105" }, { "subslot": 3, "submodule": "TEL750" } ] } ] } ])");
+  constexpr int kCycles = 200;
+  std::string failure;
+  const auto embedded = run(
+      torque_scenario(false, kCycles), "", [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "");
+  const auto remote = run(
+      torque_scenario(true, kCycles), hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(device.error(), "");
+  ASSERT_EQ(embedded.size(), static_cast<std::size_t>(kCycles));
+  ASSERT_EQ(remote.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kTorque = 2;
+  constexpr std::size_t kAdditive = 3;
+  constexpr std::size_t kAlarm = 5;
+  EXPECT_EQ(device.m_add1_max(), 0x0400);  // 0.25 / 4 Nm × 0x4000
+  EXPECT_EQ(device.m_add1_last(), 0);      // MC_TorqueAdditive disabled at cycle 70
+  EXPECT_DOUBLE_EQ(remote[60][kAdditive], 0.25);
+  EXPECT_DOUBLE_EQ(embedded[120][kTorque], 0.5);  // the upper limit (the scenario file's expectation)
+  EXPECT_NEAR(remote[120][kTorque], 0.5, 1e-9) << gateway.log();
+  const int exact = within_one_cycle(embedded, remote, kTorque, 1e-6);
+  EXPECT_EQ(remote.back()[kAlarm], 0.0)
+      << first_alarm(remote, kAlarm) << ", drive fault " << device.drive_fault() << "\n"
+      << gateway.log();
+  std::printf("gateway: ActualTorque in %d of %d cycles equal to the embedded drive's to 1e-9\n", exact,
+              kCycles - 2);
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// Encoder telegram 81 behind PROFINET (spec 06 §2.12): an encoder-only emulated device (the encoder object
+// DO_ENCODER in slot 1, TEL81 in subslot 2, chosen from the GSDML file; p0922 81 checked at start-up) whose
+// shaft turns at 100 mm/s. The TO_ExternalEncoder of `tomc sim` through the gateway follows it: homed to 0 at
+// cycle 20, its ActualPosition is the embedded encoder's within one cycle in every cycle (100 mm/s × 1 ms =
+// 0.1 mm per cycle) and 18.0 mm at cycle 200.
+TEST(GatewayNetns, AnExternalEncoderFollowsTheEmulatedEncoderThroughTheGateway) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions options;
+  options.drive = R"({ "encoder_telegram": 81, "external_speed": 100.0 })";
+  DeviceHost device(hosts.second, options);
+  GatewayHost gateway(
+      hosts,
+      R"([ { "name": "line", "name_of_station": "drive-1", "ip": "10.218.0.2", "encoder_telegram": 81,
+             "gsdml": ")" TOMC_GSDML_DIR
+      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_ENCODER",
+             "submodules": [ { "subslot": 2, "submodule": "TEL81" } ] } ] } ])");
+  constexpr int kCycles = 201;
+  std::string failure;
+  const auto embedded = run(
+      encoder_scenario(false, kCycles), "", [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "");
+  const auto remote = run(
+      encoder_scenario(true, kCycles), hosts.first, [](int, const std::vector<double>&) {}, failure);
+  ASSERT_EQ(failure, "") << gateway.log();
+  ASSERT_EQ(device.error(), "");
+  ASSERT_EQ(embedded.size(), static_cast<std::size_t>(kCycles));
+  ASSERT_EQ(remote.size(), static_cast<std::size_t>(kCycles)) << gateway.log();
+  constexpr std::size_t kPosition = 2;
+  constexpr std::size_t kVelocity = 3;
+  constexpr std::size_t kAlarm = 4;
+  EXPECT_NEAR(embedded[200][kPosition], 18.0, 0.01);                 // 180 cycles after homing at 0.1 mm
+  EXPECT_NEAR(remote[200][kPosition], 18.0, 0.11) << gateway.log();  // within one cycle
+  EXPECT_NEAR(remote[200][kVelocity], 100.0, 1.0);
+  // From homing on: before it the shaft's position is where the emulated encoder happened to be (it turns on
+  // its own clock until the controller's first setpoint; one cycle more than the embedded one here).
+  const int exact = within_one_cycle(embedded, remote, kPosition, 0.01, 22);
+  EXPECT_EQ(remote.back()[kAlarm], 0.0)
+      << first_alarm(remote, kAlarm) << ", encoder fault " << device.drive_fault() << "\n"
+      << gateway.log();
+  std::printf("gateway: ActualPosition in %d of %d cycles equal to the embedded encoder's to 1e-9\n", exact,
+              kCycles - 23);
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
 

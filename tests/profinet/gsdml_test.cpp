@@ -73,6 +73,19 @@ std::uint16_t pzd_bytes(std::uint16_t telegram, tg::Direction direction) {
   return layout ? layout->length : 0;
 }
 
+// The file's submodule TEL<telegram>: ident 0x10000 + telegram, the PZD bytes of the codec's layout, its
+// name.
+void expect_telegram_submodule(const gsdml::Device& device, std::uint16_t telegram) {
+  const std::string id = "TEL" + std::to_string(telegram);
+  const auto found = std::find_if(device.submodules.begin(), device.submodules.end(),
+                                  [&](const gsdml::Submodule& s) { return s.id == id; });
+  ASSERT_NE(found, device.submodules.end());
+  EXPECT_EQ(found->ident, tomc::drives::telegram_submodule_ident(telegram));
+  EXPECT_EQ(found->input_length, pzd_bytes(telegram, tg::Direction::kActual));
+  EXPECT_EQ(found->output_length, pzd_bytes(telegram, tg::Direction::kSetpoint));
+  EXPECT_EQ(found->name, "Telegram " + std::to_string(telegram));
+}
+
 }  // namespace
 
 TEST(Gsdml, TheEmulatorsFileDescribesTheEmulator) {
@@ -89,8 +102,9 @@ TEST(Gsdml, TheEmulatorsFileDescribesTheEmulator) {
   ASSERT_EQ(dap.submodules.size(), 1u);
   EXPECT_EQ(dap.submodules[0].ident, tomc::drives::kDapIdent);
   EXPECT_EQ(dap.submodules[0].fixed_in_subslots.text(), "1");
-  ASSERT_EQ(device.modules.size(), 1u);
+  ASSERT_EQ(device.modules.size(), 2u);
   EXPECT_EQ(device.modules[0].ident, tomc::drives::kDriveObjectIdent);
+  EXPECT_EQ(device.modules[1].ident, tomc::drives::kEncoderObjectIdent);
   // Every drive telegram of spec 06 §2 has its submodule: ident 0x10000 + telegram, IO data = the PZD bytes
   // of the codec's layout (e.g. telegram 3: 18 bytes in, 10 out, §2.3), and the selection gives exactly what
   // the emulator has (profidrive_modules), so the file and the emulator cannot drift apart.
@@ -99,18 +113,46 @@ TEST(Gsdml, TheEmulatorsFileDescribesTheEmulator) {
     if (!tg::is_drive_telegram(telegram)) continue;
     ++telegrams;
     SCOPED_TRACE("telegram " + std::to_string(telegram));
-    const std::string id = "TEL" + std::to_string(telegram);
-    const auto found = std::find_if(device.submodules.begin(), device.submodules.end(),
-                                    [&](const gsdml::Submodule& s) { return s.id == id; });
-    ASSERT_NE(found, device.submodules.end());
-    EXPECT_EQ(found->ident, tomc::drives::telegram_submodule_ident(telegram));
-    EXPECT_EQ(found->input_length, pzd_bytes(telegram, tg::Direction::kActual));
-    EXPECT_EQ(found->output_length, pzd_bytes(telegram, tg::Direction::kSetpoint));
-    EXPECT_EQ(found->name, "Telegram " + std::to_string(telegram));
-    EXPECT_EQ(gsdml::expected_modules(device, drive_on(id)), tomc::drives::profidrive_modules(telegram));
+    expect_telegram_submodule(device, telegram);
+    EXPECT_EQ(gsdml::expected_modules(device, drive_on("TEL" + std::to_string(telegram))),
+              tomc::drives::profidrive_modules(telegram));
   }
-  EXPECT_EQ(telegrams, 10u);  // 1-6, 102, 103, 105, 106
-  EXPECT_EQ(device.submodules.size(), telegrams);
+  EXPECT_EQ(telegrams, 10u);                           // 1-6, 102, 103, 105, 106
+  EXPECT_EQ(device.submodules.size(), telegrams + 3);  // and TEL750, TEL81, TEL83 (next test)
+}
+
+// The supplementary telegram 750 (spec 06 §2.14: 6 bytes out, 2 in) in the drive object's subslot 3, and
+// the encoder object with telegram 81 (§2.12: 4 out, 12 in) or 83 (§2.13: 4 out, 16 in) in its subslot 2:
+// the selections give exactly what the emulator has for those slots (profidrive_modules).
+TEST(Gsdml, TheSupplementaryAndEncoderTelegramSubmodulesDescribeTheEmulator) {
+  const gsdml::Device device = gsdml::parse_file(kEmulatorFile);
+  for (const std::uint16_t telegram : {750, 81, 83}) {
+    SCOPED_TRACE("telegram " + std::to_string(telegram));
+    expect_telegram_submodule(device, telegram);
+  }
+  EXPECT_EQ(pzd_bytes(750, tg::Direction::kSetpoint), 6);
+  EXPECT_EQ(pzd_bytes(81, tg::Direction::kActual), 12);
+  tomc::drives::DeviceConfig torque;  // telegram 105 + 750, as an MC_TorqueAdditive axis
+  torque.drive_telegram = 105;
+  torque.supplementary_telegram = 750;
+  EXPECT_EQ(gsdml::expected_modules(device, {"DAP", {{1, "DO_DRIVE", {{2, "TEL105"}, {3, "TEL750"}}}}}),
+            tomc::drives::profidrive_modules(torque));
+  tomc::drives::DeviceConfig both;  // a drive with a separately connected encoder: its object in slot 2
+  both.drive_telegram = 3;
+  both.encoder_telegrams[0] = 83;
+  EXPECT_EQ(gsdml::expected_modules(
+                device, {"DAP", {{1, "DO_DRIVE", {{2, "TEL3"}}}, {2, "DO_ENCODER", {{2, "TEL83"}}}}}),
+            tomc::drives::profidrive_modules(both));
+  tomc::drives::DeviceConfig encoder;  // an encoder-only device (TO_ExternalEncoder): its object in slot 1
+  encoder.encoder_telegrams[0] = 81;
+  EXPECT_EQ(gsdml::expected_modules(device, {"DAP", {{1, "DO_ENCODER", {{2, "TEL81"}}}}}),
+            tomc::drives::profidrive_modules(encoder));
+  EXPECT_EQ(tomc::drives::telegram_place(encoder, tomc::drives::Slot::kEncoder1),
+            (tomc::drives::TelegramPlace{1, 2}));
+  EXPECT_EQ(tomc::drives::telegram_place(both, tomc::drives::Slot::kEncoder1),
+            (tomc::drives::TelegramPlace{2, 2}));
+  EXPECT_EQ(tomc::drives::telegram_place(torque, tomc::drives::Slot::kSupplementary),
+            (tomc::drives::TelegramPlace{1, 3}));
 }
 
 TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
@@ -124,8 +166,8 @@ TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
        "<DeviceIdentity>: no DeviceID"},
       {"VendorID=\"0x002A\"", "VendorID=\"0x1002A\"",
        "<DeviceIdentity>: VendorID \"0x1002A\" is not a number"},
-      {"<DeviceAccessPointItem ID=\"DAP\" PhysicalSlots=\"0..1\" ModuleIdentNumber=\"0x00000001\"",
-       "<DeviceAccessPointItem ID=\"DAP\" PhysicalSlots=\"0..1\"",
+      {"<DeviceAccessPointItem ID=\"DAP\" PhysicalSlots=\"0..3\" ModuleIdentNumber=\"0x00000001\"",
+       "<DeviceAccessPointItem ID=\"DAP\" PhysicalSlots=\"0..3\"",
        "<DeviceAccessPointItem ID=\"DAP\">: no ModuleIdentNumber"},
       {"<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x00010003\"", "<SubmoduleItem ID=\"TEL3\"",
        "<SubmoduleItem ID=\"TEL3\">: no SubmoduleIdentNumber"},
@@ -147,10 +189,10 @@ TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
   }
   EXPECT_EQ(error_of("<root/>"), "GSDML: the root element is not <ISO15745Profile> (is this a GSDML file?)");
   EXPECT_EQ(error_of(""), "GSDML line 0: not well-formed XML (XML_ERROR_EMPTY_DOCUMENT)");
-  // The line is the element's: the broken SubmoduleItem of telegram 3 is on line 109 of the file.
+  // The line is the element's: the broken SubmoduleItem of telegram 3 is on line 123 of the file.
   EXPECT_EQ(error_of(edited("<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x00010003\"",
                             "<SubmoduleItem ID=\"TEL3\"")),
-            "GSDML line 109: <SubmoduleItem ID=\"TEL3\">: no SubmoduleIdentNumber");
+            "GSDML line 123: <SubmoduleItem ID=\"TEL3\">: no SubmoduleIdentNumber");
   // 185 Unsigned64 items and NIST_A: 1482 bytes in telegram 1's input, more than one frame's C_SDU (1440).
   std::string items;
   for (int i = 0; i < 185; ++i)
@@ -171,16 +213,21 @@ TEST(Gsdml, ASelectionOutsideTheFileIsNamed) {
   EXPECT_EQ(selection_error(device, {"DAP2", {}}),
             "no <DeviceAccessPointItem ID=\"DAP2\"> (the file has DAP)");
   EXPECT_EQ(selection_error(device, {"DAP", {{1, "DO_AXIS", {}}}}),
-            "slot 1: module 'DO_AXIS' is not in the UseableModules of 'DAP' (DO_DRIVE)");
+            "slot 1: module 'DO_AXIS' is not in the UseableModules of 'DAP' (DO_DRIVE, DO_ENCODER)");
   EXPECT_EQ(selection_error(device, {"DAP", {{2, "DO_DRIVE", {}}}}),
             "slot 2: module 'DO_DRIVE' is not allowed there (AllowedInSlots \"1\")");
   EXPECT_EQ(
       selection_error(device, {"", {{1, "DO_DRIVE", {{3, "TEL3"}}}}}),
       "module 'DO_DRIVE' in slot 1: submodule 'TEL3' is not allowed in subslot 3 (AllowedInSubslots \"2\")");
   EXPECT_EQ(
-      selection_error(device, {"", {{1, "DO_DRIVE", {{2, "TEL750"}}}}}),
-      "module 'DO_DRIVE' in slot 1: submodule 'TEL750' is not in its UseableSubmodules (TEL1, TEL2, TEL3, "
-      "TEL4, TEL5, TEL6, TEL102, TEL103, TEL105, TEL106)");
+      selection_error(device, {"", {{1, "DO_DRIVE", {{2, "TEL81"}}}}}),
+      "module 'DO_DRIVE' in slot 1: submodule 'TEL81' is not in its UseableSubmodules (TEL1, TEL2, TEL3, "
+      "TEL4, TEL5, TEL6, TEL102, TEL103, TEL105, TEL106, TEL750)");
+  EXPECT_EQ(selection_error(device, {"", {{1, "DO_DRIVE", {{2, "TEL750"}}}}}),
+            "module 'DO_DRIVE' in slot 1: submodule 'TEL750' is not allowed in subslot 2 (AllowedInSubslots "
+            "\"3\")");
+  EXPECT_EQ(selection_error(device, {"", {{4, "DO_ENCODER", {{2, "TEL81"}}}}}),
+            "slot 4: module 'DO_ENCODER' is not allowed there (AllowedInSlots \"1..3\")");
   EXPECT_EQ(selection_error(device, {"", {{1, "DO_DRIVE", {{2, "TEL3"}, {2, "TEL1"}}}}}),
             "module 'DO_DRIVE' in slot 1: subslot 2 of slot 1 is taken by 'TEL3'");
   EXPECT_EQ(selection_error(device, {"", {{1, "DO_DRIVE", {}}, {1, "DO_DRIVE", {}}}}),
@@ -328,7 +375,7 @@ TEST(GatewayConfig, AGsdmlProblemNamesTheKeyAndTheElement) {
   EXPECT_EQ(
       only(gateway_problems(emulated_drive_with("TEL7"), config)),
       "devices[0].modules: module 'DO_DRIVE' in slot 1: submodule 'TEL7' is not in its UseableSubmodules "
-      "(TEL1, TEL2, TEL3, TEL4, TEL5, TEL6, TEL102, TEL103, TEL105, TEL106)");
+      "(TEL1, TEL2, TEL3, TEL4, TEL5, TEL6, TEL102, TEL103, TEL105, TEL106, TEL750)");
   // Hand-written idents do not mix with a GSDML selection: the unknown key is named.
   const auto mixed = gateway_problems(R"("gsdml": "GSDML-V2.35-tomc-EmulatedDrive-20261127.xml",
       "modules": [ { "slot": 1, "ident": 256, "module": "DO_DRIVE",
@@ -347,7 +394,7 @@ TEST(GatewayConfig, AGsdmlProblemNamesTheKeyAndTheElement) {
                 "<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x1000G\"");
   EXPECT_EQ(only(gateway_problems("\"gsdml\": \"" + (broken / "drive.xml").string() + "\"", config)),
             "devices[0].gsdml: " + (broken / "drive.xml").string() +
-                ": GSDML line 109: <SubmoduleItem ID=\"TEL3\">: SubmoduleIdentNumber \"0x1000G\" is not a "
+                ": GSDML line 123: <SubmoduleItem ID=\"TEL3\">: SubmoduleIdentNumber \"0x1000G\" is not a "
                 "number in "
                 "0..4294967295");
   std::filesystem::remove_all(broken);

@@ -61,7 +61,7 @@ pn::Uuid random_uuid() {
 }
 
 std::vector<pn::ExpectedModule> expected_modules(const scenario::ProfinetDeviceConfig& c) {
-  if (c.modules.empty()) return drives::profidrive_modules(c.telegram);
+  if (c.modules.empty()) return drives::profidrive_modules(c.device_config());
   std::vector<pn::ExpectedModule> modules;
   for (const auto& m : c.modules) {
     pn::ExpectedModule module{m.api, m.slot, m.ident, {}};
@@ -132,6 +132,7 @@ struct ProfinetGateway::Impl {
     gw::ByteOrder byte_order = gw::BYTE_ORDER_BIG;
     std::unique_ptr<pn::IoController> controller;
     std::size_t zsw1_low_byte = 1;  // where ZSW1 bit 3 is in the telegram's first word (byte order)
+    std::array<scenario::ProfinetTelegramPlace, drives::kSlotCount> places{};  // config.place() per slot
     // Who may touch `controller`: the start-up thread (false) or the cyclic thread (true).
     std::atomic<bool> cyclic{false};
     std::atomic<bool> faulted{false};
@@ -331,12 +332,16 @@ struct ProfinetGateway::Impl {
       image.has_setpoint[i] = serving && d.has_setpoint && d.answered ? 1 : 0;
       image.setpoint_cycle[i] = d.answered_cycle;
       if (!running) continue;
-      drives::Frame& actual = image.actual[i][Slot::kDrive];
-      const auto input = d.controller->input_data(d.config.telegram_slot, d.config.telegram_subslot);
-      if (input.size() == actual.length) std::memcpy(actual.bytes.data(), input.data(), input.size());
-      d.faulted.store(actual.length > 1 &&
-                          (std::to_integer<std::uint8_t>(actual.bytes[d.zsw1_low_byte]) & kZsw1Fault) != 0,
-                      std::memory_order_relaxed);
+      for (std::size_t s = 0; s < drives::kSlotCount; ++s) {  // every slot's submodule (G10: unchanged)
+        drives::Frame& actual = image.actual[i].slots[s];
+        if (actual.length == 0) continue;
+        const auto input = d.controller->input_data(d.places[s].slot, d.places[s].subslot);
+        if (input.size() == actual.length) std::memcpy(actual.bytes.data(), input.data(), input.size());
+      }
+      const drives::Frame& drive = image.actual[i][Slot::kDrive];
+      d.faulted.store(
+          drive.length > 1 && (std::to_integer<std::uint8_t>(drive.bytes[d.zsw1_low_byte]) & kZsw1Fault) != 0,
+          std::memory_order_relaxed);
     }
     answers.publish();
     wake();
@@ -349,10 +354,18 @@ struct ProfinetGateway::Impl {
         Device& d = *devices[i];
         if (image.released) d.has_setpoint = d.answered = false;
         if (image.valid[i] == 0 || !d.cyclic.load(std::memory_order_acquire)) continue;
-        const auto output = d.controller->output_data(d.config.telegram_slot, d.config.telegram_subslot);
-        const drives::Frame& setpoint = image.frames[i][Slot::kDrive];
-        if (output.size() != setpoint.length) continue;
-        std::memcpy(output.data(), setpoint.bytes.data(), output.size());
+        bool complete = true;
+        for (std::size_t s = 0; s < drives::kSlotCount; ++s) {
+          const drives::Frame& setpoint = image.frames[i].slots[s];
+          if (setpoint.length == 0) continue;
+          const auto output = d.controller->output_data(d.places[s].slot, d.places[s].subslot);
+          if (output.size() != setpoint.length) {
+            complete = false;
+            continue;
+          }
+          std::memcpy(output.data(), setpoint.bytes.data(), output.size());
+        }
+        if (!complete) continue;
         d.controller->set_outputs_valid(true);
         d.has_setpoint = true;
         d.setpoint_cycle = image.cycle;
@@ -474,7 +487,9 @@ struct ProfinetGateway::Impl {
         if (stop.load()) return;
         Device& d = *owned;
         if (d.cyclic.load(std::memory_order_acquire)) continue;
-        detail::TelegramCheck check{d.config.telegram_slot, d.config.telegram, 0.0f};
+        // p0922 of the drive object, or of the encoder object in an encoder-only device.
+        const Slot checked = d.config.telegram != 0 ? Slot::kDrive : Slot::kEncoder1;
+        detail::TelegramCheck check{d.config.place(checked).slot, d.device_config.telegram(checked), 0.0f};
         const std::string problem = detail::start_up(*d.controller, start_socket, rpc_socket, xid,
                                                      d.config.check_telegram ? &check : nullptr);
         std::string text = problem;
@@ -531,6 +546,8 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     auto d = std::make_unique<Impl::Device>();
     d->config = c;
     d->device_config = c.device_config();
+    for (std::size_t s = 0; s < drives::kSlotCount; ++s)
+      d->places[s] = c.place(static_cast<Slot>(s));
     d->byte_order = dds::to_contract(c.byte_order);
     d->zsw1_low_byte =
         c.byte_order == telegrams::ByteOrder::kBig || c.byte_order == telegrams::ByteOrder::kSwappedWords ? 1

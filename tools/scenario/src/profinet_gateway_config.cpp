@@ -99,36 +99,104 @@ void read_modules(const Json& value, const std::string& path, ProfinetDeviceConf
     problems.add(path + "[0].slot", "the first module is the DAP in slot 0");
 }
 
-// The telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec 06 §2.15).
-// `by_hand`: the modules are the file's "modules" array (the path names the entry); otherwise they come from
-// the GSDML file and the message names the slot and subslot.
-void check_telegram_submodule(const ProfinetDeviceConfig& device, const std::string& path, bool by_hand,
-                              Problems& problems) {
-  if (device.telegram == 0 || device.modules.empty()) return;
-  const std::uint16_t in = telegram_bytes(device.telegram, telegrams::Direction::kActual);
-  const std::uint16_t out = telegram_bytes(device.telegram, telegrams::Direction::kSetpoint);
+// The keys of each contract slot's telegram and place: "<key>", "<key>_slot", "<key>_subslot" (the drive's
+// are "telegram", "telegram_slot", ...), and what the messages call its submodule.
+struct SlotKeys {
+  const char* key;
+  const char* submodule;
+};
+constexpr SlotKeys kSlotKeys[] = {{"telegram", "the telegram submodule"},
+                                  {"supplementary", "the supplementary telegram submodule"},
+                                  {"encoder", "the encoder telegram submodule"}};
+
+// Each used slot's telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec
+// 06 §2.15). `by_hand`: the modules are the file's "modules" array (the path names the entry); otherwise
+// they come from the GSDML file and the message names the slot and subslot.
+void check_telegram_submodule(const ProfinetDeviceConfig& device, std::size_t slot_index,
+                              const std::string& path, bool by_hand, Problems& problems) {
+  const auto slot = static_cast<drives::Slot>(slot_index);
+  const std::uint16_t telegram = device.device_config().telegram(slot);
+  const ProfinetTelegramPlace place = device.place(slot);
+  if (telegram == 0 || place.subslot == 0 || device.modules.empty()) return;  // subslot 0: not read
+  const std::uint16_t in = telegram_bytes(telegram, telegrams::Direction::kActual);
+  const std::uint16_t out = telegram_bytes(telegram, telegrams::Direction::kSetpoint);
   for (std::size_t i = 0; i < device.modules.size(); ++i) {
     const ProfinetModuleConfig& module = device.modules[i];
-    if (module.slot != device.telegram_slot) continue;
+    if (module.slot != place.slot) continue;
     for (std::size_t k = 0; k < module.submodules.size(); ++k) {
       const ProfinetSubmoduleConfig& sub = module.submodules[k];
-      if (sub.subslot != device.telegram_subslot) continue;
+      if (sub.subslot != place.subslot) continue;
       if (sub.input_length != in || sub.output_length != out) {
         problems.add(
             by_hand ? path + "[" + std::to_string(i) + "].submodules[" + std::to_string(k) + "]" : path,
             std::string(by_hand ? ""
                                 : "slot " + std::to_string(module.slot) + " subslot " +
                                       std::to_string(sub.subslot) + ": ") +
-                "the telegram submodule has input_length " + std::to_string(sub.input_length) +
-                " and output_length " + std::to_string(sub.output_length) + "; telegram " +
-                std::to_string(device.telegram) + " needs " + std::to_string(in) + " and " +
+                kSlotKeys[std::min<std::size_t>(slot_index, 2)].submodule + " has input_length " +
+                std::to_string(sub.input_length) + " and output_length " + std::to_string(sub.output_length) +
+                "; telegram " + std::to_string(telegram) + " needs " + std::to_string(in) + " and " +
                 std::to_string(out));
       }
       return;
     }
   }
-  problems.add(path, "no submodule in slot " + std::to_string(device.telegram_slot) + " subslot " +
-                         std::to_string(device.telegram_subslot) + " (telegram_slot, telegram_subslot)");
+  const std::string key = kSlotKeys[std::min<std::size_t>(slot_index, 2)].key;
+  problems.add(path, "no submodule in slot " + std::to_string(place.slot) + " subslot " +
+                         std::to_string(place.subslot) + " (" + key + "_slot, " + key + "_subslot)");
+}
+
+// The emulated drive's layout (drives/profinet, telegram_place()): the drive object in slot 1 (drive telegram
+// subslot 2, 750 subslot 3), an encoder object behind it (slot 2, 3) or alone (slot 1, 2), telegram
+// subslot 2.
+ProfinetTelegramPlace default_place(const ProfinetDeviceConfig& device, drives::Slot slot) noexcept {
+  const auto first_encoder = static_cast<std::uint16_t>(device.telegram != 0 ? 2 : 1);
+  switch (slot) {
+    case drives::Slot::kDrive:
+      return {1, 2};
+    case drives::Slot::kSupplementary:
+      return {1, 3};
+    case drives::Slot::kEncoder1:
+      return {first_encoder, 2};
+    case drives::Slot::kEncoder2:
+      return {static_cast<std::uint16_t>(first_encoder + 1), 2};
+  }
+  return {};
+}
+
+// The telegrams of the slots and where their submodules are: "telegram" (required unless "encoder_telegram"
+// is given), "supplementary_telegram", "encoder_telegram", each with "<key>_slot" and "<key>_subslot".
+void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& problems) {
+  r.integer("telegram", device.telegram, 1, 999, false, !r.has("encoder_telegram"));
+  r.integer("supplementary_telegram", device.supplementary_telegram, 1, 999, false);
+  r.integer("encoder_telegram", device.encoder_telegram, 1, 999, false);
+  const std::size_t before = problems.size();
+  if (const std::string why = drives::validate(device.device_config()); !why.empty()) {
+    const char* key = why.rfind("supplementary", 0) == 0 ? "supplementary_telegram"
+                      : why.rfind("encoder", 0) == 0     ? "encoder_telegram"
+                                                         : "telegram";
+    problems.add(r.path_of(key), why);
+  }
+  const bool valid = problems.size() == before;
+  const std::array<std::uint16_t, 3> numbers{device.telegram, device.supplementary_telegram,
+                                             device.encoder_telegram};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::string key = kSlotKeys[k].key;
+    ProfinetTelegramPlace place = default_place(device, static_cast<drives::Slot>(k));
+    r.integer(key + "_slot", place.slot, 0, 0x7FFF);
+    r.integer(key + "_subslot", place.subslot, 1, 0x9FFF, true);
+    if (numbers[k] != 0 && valid) device.places[k] = place;
+  }
+  static constexpr const char* kNames[] = {"drive", "supplementary", "encoder"};
+  for (std::size_t a = 0; a < 3; ++a) {
+    for (std::size_t b = a + 1; b < 3; ++b) {
+      if (numbers[a] != 0 && numbers[b] != 0 && device.places[a].slot == device.places[b].slot &&
+          device.places[a].subslot == device.places[b].subslot)
+        problems.add(r.path_of(std::string(kSlotKeys[b].key) + "_subslot"),
+                     "slot " + std::to_string(device.places[b].slot) + " subslot " +
+                         std::to_string(device.places[b].subslot) + " carries the " + kNames[a] +
+                         " telegram already");
+    }
+  }
 }
 
 // "gsdml": the device's GSDML file (relative to the configuration file), "dap" (its ID; optional when the
@@ -208,9 +276,18 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
 
 }  // namespace
 
+ProfinetTelegramPlace ProfinetDeviceConfig::place(drives::Slot s) const noexcept {
+  const std::uint16_t numbers[] = {telegram, supplementary_telegram, encoder_telegram, 0};
+  const auto i = static_cast<std::size_t>(s);
+  if (numbers[i] == 0) return {};
+  return places[i].subslot != 0 ? places[i] : default_place(*this, s);
+}
+
 drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
   drives::DeviceConfig c;
   c.drive_telegram = telegram;
+  c.supplementary_telegram = supplementary_telegram;
+  c.encoder_telegrams[0] = encoder_telegram;
   c.codec.byte_order = byte_order;
   return c;
 }
@@ -271,20 +348,15 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       read_ipv4(r, "netmask", device.netmask, false, problems);
       if (device.ip == config.ip && device.ip != std::array<std::uint8_t, 4>{})
         problems.add(r.path_of("ip"), "the same address as profinet.ip (the controller)");
-      r.integer("telegram", device.telegram, 1, 999, false, true);
-      if (device.telegram != 0) {
-        if (const std::string why = drives::validate(device.device_config()); !why.empty())
-          problems.add(r.path_of("telegram"), why);
-      }
-      r.integer("telegram_slot", device.telegram_slot, 0, 0x7FFF);
+      read_telegrams(r, device, problems);
       r.boolean("check_telegram", device.check_telegram);
-      r.integer("telegram_subslot", device.telegram_subslot, 1, 0x9FFF, true);
       if (r.has("gsdml")) {
         read_gsdml_modules(r, base_directory, gsdml_files, device, problems);
       } else if (const Json* m = r.get("modules")) {
         read_modules(*m, r.path_of("modules"), device, problems);
       }
-      check_telegram_submodule(device, r.path_of("modules"), !r.has("gsdml"), problems);
+      for (std::size_t k = 0; k < 3; ++k)
+        check_telegram_submodule(device, k, r.path_of("modules"), !r.has("gsdml"), problems);
       r.finish();
       config.devices.push_back(std::move(device));
     }

@@ -33,21 +33,33 @@ struct ProfinetModuleConfig {
   std::vector<ProfinetSubmoduleConfig> submodules;
 };
 
+struct ProfinetTelegramPlace {
+  std::uint16_t slot = 0;
+  std::uint16_t subslot = 0;
+};
+
 struct ProfinetDeviceConfig {
   std::string name;  // the device's name on DDS (the contract's `device`)
   telegrams::ByteOrder byte_order = telegrams::ByteOrder::kBig;
   std::string name_of_station;
   std::array<std::uint8_t, 4> ip{};
   std::array<std::uint8_t, 4> netmask{255, 255, 255, 0};
-  std::uint16_t telegram = 0;  // the drive telegram (slot "drive" of the contract)
-  // Where the telegram submodule is: its input/output lengths must be the telegram's.
-  std::uint16_t telegram_slot = 1;
-  std::uint16_t telegram_subslot = 2;
+  // The telegrams of the contract's slots (docs/gateway.md §2): the drive telegram (0 in an encoder-only
+  // device), the supplementary telegram 750, the encoder telegram 81/83 of a separately connected encoder.
+  std::uint16_t telegram = 0;
+  std::uint16_t supplementary_telegram = 0;
+  std::uint16_t encoder_telegram = 0;
+  // Where each slot's telegram submodule is; subslot 0: the emulated drive's layout (drive 1/2, supplementary
+  // 1/3, encoder 2/2, or 1/2 in an encoder-only device). Its input/output lengths must be the telegram's.
+  std::array<ProfinetTelegramPlace, drives::kSlotCount> places{};
+  // The place of slot s: {} when the slot has no telegram, else `places` or the default.
+  ProfinetTelegramPlace place(drives::Slot s) const noexcept;
   // DAP first; by hand ("modules" with idents) or from the drive's GSDML ("gsdml", "dap", "modules" by ID);
   // default: the emulated drive's layout.
   std::vector<ProfinetModuleConfig> modules;
   // At start-up, read p0922 (and p2000) through PROFIdrive parameter access and refuse the AR unless p0922 is
-  // `telegram`; false for a device without base-mode parameter access.
+  // `telegram` (in an encoder-only device: the encoder object's p0922 is `encoder_telegram`); false for a
+  // device without base-mode parameter access.
   bool check_telegram = true;
   drives::DeviceConfig device_config() const;
 };
