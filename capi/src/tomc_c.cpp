@@ -507,9 +507,10 @@ tomc_status call_fb(tomc_object* axis, typename Fb::C* c) noexcept {
       if constexpr (Fb::kUserProgramOnly) {
         // It would run in the cycle's thread: MC_InterpolateCam allocates, MC_CopyCamData reads the task's
         // arrays there (decision C22).
-        return fail(TOMC_ERROR_STATE, std::string(Fb::kName) +
-                                          ": not from a user task (call it from the program of "
-                                          "tomc_runtime_set_program or between tomc_runtime_step calls)");
+        return fail(TOMC_ERROR_STATE,
+                    std::string(Fb::kName) +
+                        ": not from a user task (call it from the program of "
+                        "tomc_runtime_set_user_program or between tomc_runtime_step calls)");
       }
       return task_call<Fb>(*t_task, axis, c);
     }

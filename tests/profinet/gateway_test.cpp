@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -177,6 +178,11 @@ TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
   EXPECT_TRUE(has_line(lines,
                        "devices[0].supplementary_telegram: supplementary_telegram: telegram 750 needs a "
                        "drive telegram"))
+      << all;
+  // Only that line: a telegram that failed validation has no place to collide with (review finding).
+  EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                          [](const std::string& l) { return l.starts_with("devices[0]"); }),
+            1)
       << all;
   EXPECT_TRUE(has_line(lines, "devices[1].encoder_telegram: encoder_telegrams[0]: 82 is not 81 or 83"))
       << all;

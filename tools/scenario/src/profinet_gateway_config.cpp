@@ -187,7 +187,8 @@ void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& pro
     if (numbers[k] != 0 && valid) device.places[k] = place;
   }
   static constexpr const char* kNames[] = {"drive", "supplementary", "encoder"};
-  for (std::size_t a = 0; a < 3; ++a) {
+  // Only for telegrams that passed validate(): the places of the others were never set.
+  for (std::size_t a = 0; a < 3 && valid; ++a) {
     for (std::size_t b = a + 1; b < 3; ++b) {
       if (numbers[a] != 0 && numbers[b] != 0 && device.places[a].slot == device.places[b].slot &&
           device.places[a].subslot == device.places[b].subslot)
