@@ -354,18 +354,21 @@ struct ProfinetGateway::Impl {
         Device& d = *devices[i];
         if (image.released) d.has_setpoint = d.answered = false;
         if (image.valid[i] == 0 || !d.cyclic.load(std::memory_order_acquire)) continue;
+        // Every slot must fit its submodule before any is copied: the output frames go out every cycle, and a
+        // frame of new and old slots would be a setpoint nobody sent (review finding).
+        const auto output_of = [&](std::size_t s) {
+          return d.controller->output_data(d.places[s].slot, d.places[s].subslot);
+        };
         bool complete = true;
         for (std::size_t s = 0; s < drives::kSlotCount; ++s) {
           const drives::Frame& setpoint = image.frames[i].slots[s];
-          if (setpoint.length == 0) continue;
-          const auto output = d.controller->output_data(d.places[s].slot, d.places[s].subslot);
-          if (output.size() != setpoint.length) {
-            complete = false;
-            continue;
-          }
-          std::memcpy(output.data(), setpoint.bytes.data(), output.size());
+          if (setpoint.length != 0 && output_of(s).size() != setpoint.length) complete = false;
         }
         if (!complete) continue;
+        for (std::size_t s = 0; s < drives::kSlotCount; ++s) {
+          const drives::Frame& setpoint = image.frames[i].slots[s];
+          if (setpoint.length != 0) std::memcpy(output_of(s).data(), setpoint.bytes.data(), setpoint.length);
+        }
         d.controller->set_outputs_valid(true);
         d.has_setpoint = true;
         d.setpoint_cycle = image.cycle;
