@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -181,7 +182,9 @@ namespace {
 class ScenarioRetain : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "tomc_sim_retain";
+    // Its own directory per process: ctest runs the two tests of this fixture side by side, and a shared one
+    // was removed under the other test's feet (its retain.dat missing, CI stop 29).
+    dir_ = std::filesystem::temp_directory_path() / ("tomc_sim_retain-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
