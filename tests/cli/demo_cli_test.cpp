@@ -54,6 +54,18 @@ std::string write_file(const std::string& name, const std::string& text) {
   return path;
 }
 
+// One speed axis "Fan" on a simulated drive (telegram 1), in the tomc sim format.
+std::string fan_machine(const std::string& name, const std::string& cycle_time) {
+  return write_file(name, R"({
+    "cycle_time": )" + cycle_time +
+                              R"(,
+    "technology_objects": [
+      {"name": "Fan", "type": "TO_SpeedAxis", "config": {"DynamicLimits.MaxVelocity": 1000.0},
+       "drive": {"adapter": "simulated", "telegram": 1}}
+    ]
+  })");
+}
+
 TEST(DemoCli, Help) {
   const DemoRun r = tomc({"demo", "--help"});
   EXPECT_EQ(r.status, 0);
@@ -67,6 +79,11 @@ TEST(DemoCli, BadOptions) {
   EXPECT_EQ(tomc({"demo", "--seconds", "-1"}).status, 2);
   EXPECT_EQ(tomc({"demo", "--frobnicate"}).status, 2);
   EXPECT_EQ(tomc({"demo", "--allow-host", ""}).status, 2);
+  EXPECT_EQ(tomc({"demo", "--inject-faults", "39"}).status, 2);  // shorter than a fault is held (2 x 20)
+  EXPECT_EQ(tomc({"demo", "--inject-faults", "x"}).status, 2);
+  const DemoRun gateway = tomc({"demo", "--free-running", "--gateway", "5"});
+  EXPECT_EQ(gateway.status, 2);
+  EXPECT_NE(gateway.err.find("real time"), std::string::npos) << gateway.err;
   const DemoRun missing = tomc({"demo", "--config", "/nonexistent/machine.json"});
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
@@ -142,19 +159,25 @@ TEST(DemoCli, CammingProgramProblemsAreNamed) {
 
 // A machine of one's own, in the tomc sim format, read-only (no token), on any free port, for one second.
 TEST(DemoCli, RunsAConfigurationOfOnesOwn) {
-  const std::string path = write_file("own_machine", R"({
-    "cycle_time": 0.002,
-    "technology_objects": [
-      {"name": "Fan", "type": "TO_SpeedAxis", "config": {"DynamicLimits.MaxVelocity": 1000.0},
-       "drive": {"adapter": "simulated", "telegram": 1}}
-    ]
-  })");
+  const std::string path = fan_machine("own_machine", "0.002");
   const DemoRun r = tomc({"demo", "--config", path, "--port", "0", "--seconds", "1"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("cycle 2 ms: Fan"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("read-only"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("http://127.0.0.1:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("stopped after"), std::string::npos) << r.out;
+}
+
+// The soak's mode (docs/reliability.md §7): virtual time, faults injected into the simulated drive.
+TEST(DemoCli, FreeRunningStepsOnVirtualTime) {
+  const std::string path = fan_machine("free_machine", "0.001");
+  const DemoRun r = tomc(
+      {"demo", "--config", path, "--port", "0", "--seconds", "1", "--free-running", "--inject-faults", "40"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("cycle 1 ms (free-running: virtual time): Fan"), std::string::npos) << r.out;
+  const auto at = r.out.find("stopped after ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_GT(std::stoull(r.out.substr(at + 14)), 0u) << r.out;
 }
 
 }  // namespace

@@ -4,11 +4,13 @@
 // the axis control panel can take master control (spec 02 §9.2, decision W15), on again resumes the loop.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <vector>
 
+#include "demo_faults.hpp"
 #include "demo_program.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/scenario/machine.hpp"
@@ -28,7 +30,9 @@ struct DemoMachine {
     device.drive_telegram = 3;
     drives::SimulatedDriveParameters p;
     p.load_units_per_revolution = units_per_rev;
-    auto& io = runtime.add_device(std::make_unique<drives::SimulatedDrive>(device, p));
+    auto owned = std::make_unique<drives::SimulatedDrive>(device, p);
+    drive = owned.get();
+    auto& io = runtime.add_device(std::move(owned));
     axis = &runtime.emplace<techobjects::PositioningAxis>("Axis", &io, data);
     program = std::make_unique<DemoPositioningProgram>(*axis, std::move(plan));
     runtime.set_user_program([this](techobjects::Runtime& rt) { (*program)(rt.clock()); });
@@ -45,6 +49,7 @@ struct DemoMachine {
   bool bit(StatusWordBit b) const { return techobjects::test(axis->data().StatusWord, b); }
 
   techobjects::Runtime runtime;
+  drives::SimulatedDrive* drive = nullptr;
   techobjects::PositioningAxis* axis = nullptr;
   std::unique_ptr<DemoPositioningProgram> program;
 };
@@ -79,6 +84,58 @@ TEST(DemoProgram, LinearAxisIsHomedActivelyAndMovesBetweenTwoPositions) {
   ASSERT_GT(m.run_until([&] { return m.program->step() == DemoPositioningProgram::Step::kMoving; }, 500), 0);
   const auto moves = m.program->moves();
   ASSERT_GT(m.run_until([&] { return m.program->moves() == moves + 1; }, 10000), 0);
+}
+
+// `tomc demo --inject-faults` (the free-running soak, docs/reliability.md §7): one drive, so the kinds take
+// turns fault by fault. Each raises its alarm in the cycle of docs/reliability.md §1's fault table: drive
+// fault (spec 06 §3.2) and encoder error (spec 06 §6.4) in the step right after the injection (k), a frozen
+// sign-of-life one step later (k+1, spec 06 §5.2); the cause is gone 20 cycles later, and the demo program
+// acknowledges the alarm after DemoProgram::kAcknowledgeAfterS (5 s = 5000 cycles) and positions again.
+TEST(DemoFaultInjector, EachKindRaisesItsAlarmAndTheDemoProgramRecovers) {
+  techobjects::PositioningAxisData data;
+  DemoPositioning plan;
+  plan.positions = {20.0, 60.0};
+  plan.velocity = 100.0;
+  plan.dwell_s = 0.2;
+  DemoMachine m(data, plan, 10.0);
+  constexpr std::uint64_t kPeriod = 8000;
+  cli::DemoFaultInjector faults({m.drive}, kPeriod);
+  std::uint64_t steps = 0;
+  const auto run_to = [&](std::uint64_t end) {
+    for (; steps < end; ++steps) {
+      faults(steps);
+      m.runtime.step();
+    }
+  };
+  struct Expected {
+    std::uint32_t alarm;
+    std::uint64_t detected_after;  // cycles after the one the fault was injected before
+  };
+  const Expected table[] = {{techobjects::kAlarmDriveFault, 1},        // ZSW1.3, k
+                            {techobjects::kAlarmSensorFault, 1},       // G1_ZSW.15, k
+                            {techobjects::kAlarmDriveSignOfLife, 2}};  // ZSW2 counter stops, k+1
+  for (std::size_t i = 0; i < std::size(table); ++i) {
+    const std::uint64_t injected_at = (i + 1) * kPeriod;
+    run_to(injected_at);
+    ASSERT_FALSE(m.bit(StatusWordBit::kError)) << i;
+    const std::size_t moves = m.program->moves();
+    ASSERT_GT(moves, 0u) << i;  // positioning before each fault
+    // Not before its detection cycle, then raised in it.
+    run_to(injected_at + table[i].detected_after - 1);
+    ASSERT_FALSE(m.axis->alarms().pending(table[i].alarm)) << i;
+    run_to(injected_at + table[i].detected_after);
+    ASSERT_TRUE(m.axis->alarms().pending(table[i].alarm)) << i;
+    EXPECT_EQ(faults.injected(), i + 1);
+    std::array<techobjects::AlarmEvent, 64> history{};
+    const std::size_t n = m.axis->alarms().log().copy_since(0, history);
+    ASSERT_GE(n, 1u);
+    EXPECT_EQ(history[n - 1].kind, techobjects::AlarmEvent::Kind::kRaised) << i;
+    // Cleared after kHoldCycles, acknowledged after 5 s by the program's MC_Reset, positioning again.
+    run_to(injected_at + 5000 + 500);
+    EXPECT_FALSE(m.axis->alarms().any_error()) << i;
+    run_to(injected_at + kPeriod - 1);
+    EXPECT_GT(m.program->moves(), moves) << i;
+  }
 }
 
 TEST(DemoProgram, ModuloAxisTurnsInRelativeSteps) {

@@ -22,7 +22,9 @@
 
 #include "cli_error.hpp"
 #include "commands.hpp"
+#include "demo_faults.hpp"
 #include "demo_program.hpp"
+#include "free_runner.hpp"
 #include "tomc/diagnostics/diagnostics.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/scenario/gateway_adapter.hpp"
@@ -38,6 +40,7 @@ constexpr std::string_view kDemoUsage =
     "                 [--token TOKEN | --generate-token]\n"
     "                 [--seconds S] [--gateway DOMAIN [--gateway-partition P]\n"
     "                 [--gateway-interface IF --gateway-peer ADDRESS...]]\n"
+    "                 [--free-running] [--inject-faults N]\n"
     "\n"
     "Runs a simulated machine in real time with a user program that moves its axes in a loop, and serves "
     "the\n"
@@ -60,6 +63,10 @@ constexpr std::string_view kDemoUsage =
     "  --gateway-interface IF  the network interface (name or IPv4 address of this host) to the gateway\n"
     "                     (default: loopback)\n"
     "  --gateway-peer ADDRESS  the gateway's IPv4 unicast address (repeatable; needed with an interface)\n"
+    "  --free-running     step the cycles back to back instead of in real time (the machine's clock is\n"
+    "                     virtual: the soak's 10^8 cycles in hours, not days); not with a gateway drive\n"
+    "  --inject-faults N  every N cycles a fault on the next simulated drive in turn (drive fault, encoder\n"
+    "                     error, frozen sign-of-life; cleared after 20 cycles, acknowledged by the program)\n"
     "\n"
     "exit status: 0 stopped normally, 1 could not serve (e.g. port in use), 2 bad command line or config.\n";
 
@@ -75,6 +82,8 @@ struct DemoOptions {
   std::string gateway_partition;
   std::optional<std::string> gateway_interface;
   std::vector<std::string> gateway_peers;
+  bool free_running = false;
+  std::optional<std::uint64_t> fault_period_cycles;
   bool help = false;
 };
 
@@ -125,6 +134,13 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
       const double s = number_of<double>(value_of(args, i, "--seconds"), "--seconds");
       if (!(s > 0.0) || !std::isfinite(s)) throw UsageError("demo: --seconds: a positive number");
       o.seconds = s;
+    } else if (a == "--free-running") {
+      o.free_running = true;
+    } else if (is_option(a, "--inject-faults")) {
+      const auto n = number_of<std::int64_t>(value_of(args, i, "--inject-faults"), "--inject-faults");
+      if (n < 2 * static_cast<std::int64_t>(DemoFaultInjector::kHoldCycles))
+        throw UsageError("demo: --inject-faults: a period of at least 40 cycles");
+      o.fault_period_cycles = static_cast<std::uint64_t>(n);
     } else if (is_option(a, "--gateway-interface")) {
       o.gateway_interface = value_of(args, i, "--gateway-interface");
     } else if (is_option(a, "--gateway-peer")) {
@@ -144,6 +160,8 @@ DemoOptions parse_demo_options(std::span<const std::string_view> args) {
     throw UsageError("demo: --gateway-partition needs --gateway");
   if ((o.gateway_interface || !o.gateway_peers.empty()) && !o.gateway_domain)
     throw UsageError("demo: --gateway-interface and --gateway-peer need --gateway");
+  if (o.free_running && o.gateway_domain)
+    throw UsageError("demo: --free-running: a gateway drive runs in real time (not with --gateway)");
   return o;
 }
 
@@ -607,10 +625,31 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
+  if (o.free_running && !gateways.empty()) {
+    std::cerr << "tomc: demo: --free-running: " << source
+              << " has a gateway drive, which runs in real time\n";
+    return kExitBadInput;
+  }
+  std::vector<drives::SimulatedDrive*> simulated;
+  for (const auto& object : config.objects) {
+    if (object.drive != nullptr) simulated.push_back(object.drive);
+  }
+  DemoFaultInjector faults(
+      o.fault_period_cycles ? std::move(simulated) : std::vector<drives::SimulatedDrive*>{},
+      o.fault_period_cycles.value_or(0));
+  // The cycle: the faults due before this step, then the step (one thread, so the drives need no lock).
+  std::uint64_t steps = 0;
   techobjects::RealTimeRunner runner(
       techobjects::RealTimeRunnerConfig{std::chrono::nanoseconds(std::llround(config.cycle_time_s * 1e9)), 0,
                                         false},
-      [&runtime] { runtime->step(); });
+      [&runtime, &faults, &steps] {
+        faults(steps++);
+        runtime->step();
+      });
+  FreeRunner free_runner([&runtime, &faults](std::uint64_t cycle) {
+    faults(cycle);
+    runtime->step();
+  });
 
   diagnostics::ServerOptions server_options = config.server;
   if (o.port) server_options.port = *o.port;
@@ -620,7 +659,9 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   if (o.token) server_options.token = *o.token;
   if (o.generate_token) server_options.token = random_token();
   server_options.title = "tomc demo";
-  server_options.runner_statistics = [&runner] { return runner.statistics(); };
+  server_options.runner_statistics = [&] {
+    return o.free_running ? free_runner.statistics() : runner.statistics();
+  };
   diagnostics::Server server(diagnostics, server_options);
   try {
     server.start();
@@ -632,9 +673,13 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
     for (const auto& warning : gateways.connect())
       std::cerr << "tomc: demo: warning: " << warning << '\n';
   }
-  runner.start();
+  if (o.free_running)
+    free_runner.start();
+  else
+    runner.start();
 
-  out << "tomc demo: " << source << ", cycle " << config.cycle_time_s * 1000.0 << " ms:";
+  out << "tomc demo: " << source << ", cycle " << config.cycle_time_s * 1000.0 << " ms"
+      << (o.free_running ? " (free-running: virtual time)" : "") << ":";
   for (const auto& object : config.objects)
     out << ' ' << object.name;
   out << '\n';
@@ -659,7 +704,8 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   }
   server.stop();
   runner.stop();
-  const auto stats = runner.statistics();
+  free_runner.stop();
+  const auto stats = o.free_running ? free_runner.statistics() : runner.statistics();
   out << "tomc demo: stopped after " << stats.cycles << " cycles (" << stats.overruns << " overruns)\n";
   return 0;
 }
