@@ -100,7 +100,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if ((data[0] & 1) == 0) {
     dds::ActualCycleType type;  // as every tomc reader: malformed bytes give a rejected sample
     eprosima::fastrtps::rtps::SerializedPayload_t payload(static_cast<std::uint32_t>(size - 1));
-    std::memcpy(payload.data, data + 1, size - 1);
+    // One byte leaves no payload (data == nullptr): memcpy from/to null is undefined even for 0 bytes
+    // (UBSan).
+    if (size > 1) std::memcpy(payload.data, data + 1, size - 1);
     payload.length = static_cast<std::uint32_t>(size - 1);
     (void)type.deserialize(&payload, &sample);  // as in Fast DDS: the sample is routed whatever it holds
     setup.core.route(sample, 0);
