@@ -471,6 +471,11 @@ TEST(GatewayNetns, AnEncoderErrorMakesTheDeviceFaulted) {
   DeviceHost device(hosts.second);  // the device first: the gateway finds it at its first Identify
   GatewayHost gateway(hosts, one_device(kGsdmlModules));
   const DdsObserver observer(hosts.first);
+  // Conditions, not times: the gateway's cyclic thread exchanges with the device (its output frames arrive;
+  // the start-up takes longer under the sanitizers and load), then the status says so.
+  for (int i = 0; i < 2000 && device.output_frames() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_GT(device.output_frames(), 0) << gateway.log();
   const SeenOverDds connected =
       observer.until([](const SeenOverDds& s) { return s.device.state == "connected"; });
   ASSERT_EQ(connected.device.state, "connected") << gateway.log();
