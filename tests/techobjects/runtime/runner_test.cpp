@@ -72,8 +72,8 @@ TEST(RealTimeRunner, ReportsWhatItCouldNotSetUp) {
 }
 
 TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
-  // 400 us early at 1 ms: each cycle spins what the kernel's wake-up latency left of the margin (never more
-  // than the margin); a wake-up later than the deadline is counted instead. Without a margin nothing spins.
+  // 400 us early at 1 ms: each cycle spins what the kernel's wake-up latency left of the margin; a wake-up
+  // later than the deadline is counted instead. Without a margin nothing spins.
   std::atomic<int> calls{0};
   RealTimeRunner spinning(RealTimeRunnerConfig{1ms, 0, false, 400us}, [&] { ++calls; });
   spinning.start();
@@ -84,7 +84,9 @@ TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   if (s.late_wakeups < s.cycles) {
     EXPECT_GT(s.spin_mean_us, 0.0);  // some cycle woke within the margin
   }
-  EXPECT_LE(s.spin_mean_us, 400.0);
+  // A cycle spins from its wake-up (at or after deadline − margin) to its start: at most the margin plus how
+  // late it started (a preemption during the spin).
+  EXPECT_LE(s.spin_mean_us, 400.0 + s.jitter_max_us + 1.0);
   EXPECT_LE(s.late_wakeups, s.cycles);
 
   calls = 0;
