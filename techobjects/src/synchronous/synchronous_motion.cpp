@@ -173,4 +173,15 @@ MotionState LeaderDomainBlend::at(double x, double v_x, double a_x) const noexce
   return MotionState{y, dy * v_x, ddy * v_x * v_x + dy * a_x};
 }
 
+double LeaderDomainBlend::jerk(double x, double v_x) const noexcept {
+  const double xi = progress(x);
+  if (xi >= 1.0) return 0.0;
+  const double L = length_;
+  const double ddd0 = -60.0 + 360.0 * xi - 360.0 * xi * xi;
+  const double ddd1 = -36.0 + 192.0 * xi - 180.0 * xi * xi;
+  const double ddd2 = -9.0 + 36.0 * xi - 30.0 * xi * xi;
+  const double dddy = d0_ * ddd0 / (L * L * L) + d1_ * ddd1 / (L * L) + d2_ * ddd2 / L;
+  return dddy * v_x * v_x * v_x;
+}
+
 }  // namespace tomc::techobjects

@@ -34,10 +34,11 @@
 //     and raises no alarm 501/502/503; X0…X2 are FALSE without synchronous operation. MC_CamOut profile 0
 //     (desynchronization with dynamic parameters) keeps |a| within max(MaxAcceleration, MaxDeceleration)
 //     and |v| within MaxVelocity, except that an excess carried over from synchronous travel may only fall
-//     (the velocity grows at most by the previous cycle's acceleration). Not checked: profile 0
-//     synchronization, which §6.8 limits to DynamicLimits: tomc sizes its leader-domain blend against the
-//     cam's tangent (decision C9), so the cam's curvature — and the blend's curvature term that takes it up
-//     — pass through unlimited (seed 20261130 showed 52,600 mm/s² of blend beside 87,800 of the cam's own).
+//     (the velocity grows at most by the previous cycle's acceleration). Profile 0 synchronization (§6.8:
+//     DynamicLimits) keeps |v| within MaxVelocity and |a| within MaxAcceleration / MaxDeceleration (by the
+//     direction of |v|), above them only what the follower carried in at its start, in every cycle in which
+//     the leader still has its velocity of the start and does not accelerate (the manual superimposes later
+//     leader dynamics; decision C23). Before C23 seed 20261130 showed 52,600 mm/s² of blend against 8,000.
 //  K5 spec 07 §1.9, §3.4, spec 03 §3.2  StatusWord.X21 and X22 not both; FunctionState 3 with X21 or X22;
 //     the instance showing InSync (exactly one while X22 and FunctionState 3) or StartSync names
 //     StatusSynchronizedMotion.ActualCam and shows X22 respectively X21; Busy without StartSync/InSync is
@@ -83,7 +84,7 @@ constexpr int kCycles = 8'000;  // per run; the sanitizers run the same code 10-
 #else
 constexpr int kCycles = 60'000;  // per run: 240,000 cycles in all (about 1 s of CPU in RelWithDebInfo)
 #endif
-constexpr std::uint32_t kDefaultSeed = 20261128;
+constexpr std::uint32_t kDefaultSeed = 20261132;
 std::uint32_t base_seed() {
   const char* s = std::getenv("TOMC_PROPERTY_SEED");
   return s != nullptr ? static_cast<std::uint32_t>(std::strtoul(s, nullptr, 10)) : kDefaultSeed;
@@ -95,7 +96,8 @@ struct Stats {
   long synchronous_cycles = 0;    // K1
   long synchronizing_cycles = 0;  // over a distance (K4, not limited)
   long distance_syncs = 0;        // K3
-  long limited_cycles = 0;        // K4 (CamOut profile 0, profile-0 synchronization)
+  long limited_cycles = 0;        // K4 (CamOut profile 0)
+  long dynamic_sync_cycles = 0;   // K4 (profile-0 synchronization at the start's leader velocity)
   long indicated_cycles = 0;      // X0..X2 set
   long cam_in = 0, accepted = 0, rejected = 0, aborted = 0, ends = 0, non_cyclic_ends = 0, switches = 0;
   long cam_out_done = 0;
@@ -760,6 +762,27 @@ class CamRun {
     } else if (!sync_operation && fs != 5 && fs != 4) {
       EXPECT_EQ(sm.StatusWord & 7u, 0u) << where() << ": X0..X2 without synchronous operation";
     }
+    // K4, profile 0 (spec 07 §6.8; SYNC8 "in advance using dynamic parameters"): MaxVelocity and
+    // MaxAcceleration / MaxDeceleration hold, above them only what the follower carried in at the start (not
+    // growing). Changes of the leader's dynamics after the start are superimposed according to the function
+    // (the manual), so a cycle is judged while the leader keeps its velocity of the start and does not
+    // accelerate.
+    const bool dynamic_sync = synchronizing && fs == 3 && active_profile == 0;
+    if (dynamic_sync && !prev_.dynamic_sync) {
+      sync_start_ = SyncStart{lv.velocity, std::fabs(prev_.v), std::fabs(prev_.a)};
+      note("profile-0 synchronization starts (leader velocity, follower v, a)",
+           {lv.velocity, prev_.v, prev_.a});
+    }
+    if (dynamic_sync && lv.acceleration == 0.0 &&
+        std::fabs(lv.velocity - sync_start_.leader_velocity) <=
+            1e-12 * std::max(1.0, std::fabs(lv.velocity))) {
+      ++stats_.dynamic_sync_cycles;
+      EXPECT_LE(std::fabs(sp.velocity), std::max(l.MaxVelocity, sync_start_.velocity) * (1.0 + 1e-9))
+          << where() << ": profile-0 synchronization above MaxVelocity";
+      const double lim = sp.velocity * sp.acceleration < 0.0 ? l.MaxDeceleration : l.MaxAcceleration;
+      EXPECT_LE(std::fabs(sp.acceleration), std::max(lim, sync_start_.acceleration) * (1.0 + 1e-9))
+          << where() << ": profile-0 synchronization beyond MaxAcceleration/MaxDeceleration";
+    }
     const double bound_a = std::max(l.MaxAcceleration, l.MaxDeceleration) * (1.0 + 1e-9);
     const bool enabled = techobjects::test(d.StatusWord, StatusWordBit::kEnable);
     if (fs == 5 && prev_.function_state != 5) {
@@ -782,7 +805,7 @@ class CamRun {
     }
     prev_ = Previous{
         sp.position, sp.velocity,  sp.acceleration, lv.position, lv.velocity, fs, sm.WaitingFunctionState,
-        in_sync,     leader_valid, enabled,         free_phase};
+        in_sync,     leader_valid, enabled,         free_phase,  dynamic_sync};
   }
 
   // Right after MC_Interpolator (before the user program starts or ends jobs): the alarms this cycle's
@@ -847,8 +870,11 @@ class CamRun {
   struct Previous {
     double y = 0, v = 0, a = 0, x = 0, vx = 0;
     int function_state = 0, waiting = 0, in_sync = -1;
-    bool leader_valid = true, enabled = false, free_phase = false;
+    bool leader_valid = true, enabled = false, free_phase = false, dynamic_sync = false;
   } prev_{};
+  struct SyncStart {  // K4 profile 0: the leader's velocity and the follower's |v|, |a| at the start
+    double leader_velocity = 0, velocity = 0, acceleration = 0;
+  } sync_start_{};
   Raised interpolator_alarms_{};
   bool checking_ = false;
   tomc::testing::AlarmWatch alarm_watch_;
@@ -875,18 +901,21 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
       run.cycle(k);
     const Stats& s = run.stats();
     std::printf(
-        "seed %u (%s): %ld synchronous cycles on the cam, %ld synchronizing over a distance, %ld limited, "
+        "seed %u (%s): %ld synchronous cycles on the cam, %ld synchronizing over a distance, %ld profile-0 "
+        "synchronizing at a constant leader, %ld limited, "
         "%ld indicated; MC_CamIn %ld (%ld accepted, %ld rejected, %ld aborted), InSync by profile 0-6: %ld "
         "%ld %ld %ld %ld %ld %ld; %ld distance checks, %ld ends of a non-cyclic cam, %ld EndOfProfile; "
         "%ld MC_CamOut Done, %ld desynchronizations; %ld leader faults; cams built %ld, refused %ld\n",
-        seed, encoder ? "encoder" : "axis", s.synchronous_cycles, s.synchronizing_cycles, s.limited_cycles,
-        s.indicated_cycles, s.cam_in, s.accepted, s.rejected, s.aborted, s.in_sync_by_profile[0],
-        s.in_sync_by_profile[1], s.in_sync_by_profile[2], s.in_sync_by_profile[3], s.in_sync_by_profile[4],
-        s.in_sync_by_profile[5], s.in_sync_by_profile[6], s.distance_syncs, s.non_cyclic_ends, s.ends,
-        s.cam_out_done, s.desync_starts, s.leader_faults, s.cams_built, s.cams_refused);
+        seed, encoder ? "encoder" : "axis", s.synchronous_cycles, s.synchronizing_cycles,
+        s.dynamic_sync_cycles, s.limited_cycles, s.indicated_cycles, s.cam_in, s.accepted, s.rejected,
+        s.aborted, s.in_sync_by_profile[0], s.in_sync_by_profile[1], s.in_sync_by_profile[2],
+        s.in_sync_by_profile[3], s.in_sync_by_profile[4], s.in_sync_by_profile[5], s.in_sync_by_profile[6],
+        s.distance_syncs, s.non_cyclic_ends, s.ends, s.cam_out_done, s.desync_starts, s.leader_faults,
+        s.cams_built, s.cams_refused);
     total.synchronous_cycles += s.synchronous_cycles;
     total.synchronizing_cycles += s.synchronizing_cycles;
     total.limited_cycles += s.limited_cycles;
+    total.dynamic_sync_cycles += s.dynamic_sync_cycles;
     total.distance_syncs += s.distance_syncs;
     total.leader_faults += s.leader_faults;
     total.non_cyclic_ends += s.non_cyclic_ends;
@@ -908,6 +937,7 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
   for (std::size_t p = 1; p < 7; ++p)
     EXPECT_GT(total.in_sync_by_profile[p], 0) << "profile " << p;
   EXPECT_GT(total.limited_cycles, 0);
+  EXPECT_GT(total.dynamic_sync_cycles, 0);
   EXPECT_GT(total.leader_faults, 0);
   EXPECT_GT(total.non_cyclic_ends, 0);
 #endif

@@ -27,9 +27,11 @@
 //     (EmergencyDeceleration under an emergency ramp: MC_Stop Mode 0, MC_Power StopMode 0, spec 02 §3.1).
 //     Not limited (the leader's dynamics pass through, §6.8): synchronous travel, MC_GearInPos
 //     synchronization over a leading-value distance (profiles 1, 3), MC_GearOut profile 1, the velocity
-//     during MC_GearInVelocity synchronization. Not checked either: MC_GearInPos profile 0, which tomc also
-//     runs as a leader-domain blend (decision Y6) whose length is sized for the leader's velocity at the
-//     start, so that later leader dynamics pass through scaled (spec 07 §6.5 "superimposed"). Leaving such a
+//     during MC_GearInVelocity synchronization. MC_GearInPos profile 0, a leader-domain blend (decision Y6)
+//     sized for the leader's velocity at the start (later leader dynamics pass through scaled, spec 07 §6.5
+//     "superimposed"), is judged on its own (decision C23): MaxVelocity, MaxAcceleration / MaxDeceleration
+//     and MaxJerk while the leader keeps its velocity of the start, above them only what the follower
+//     carried in at its start. Leaving such a
 //     phase the follower keeps its dynamics and the new motion brings them back (§2.1 "current dynamics are
 //     blended into the new job"): the hand-over cycle (one step of the new motion from the synchronous state
 //     of the same cycle, which is not observable) is not judged, and from then on a velocity or acceleration
@@ -107,6 +109,7 @@ struct Stats {
   long velocity_gearing_cycles = 0;  // G1 checks (velocity gearing)
   long limited_cycles = 0;           // G2 checks
   long synchronizing_cycles = 0;     // MC_GearIn synchronization, limited
+  long dynamic_sync_cycles = 0;      // MC_GearInPos profile 0 synchronization at a constant leader (G2)
   long elevated_cycles = 0;          // above a limit, admissibly (not growing after a pass-through phase)
   long indicated_cycles = 0;         // synchronous travel with X0 set
   long indicated_acceleration_cycles = 0;  // ... with X1 or X2 set
@@ -590,7 +593,12 @@ class Run {
     bool elevated = false;    // above a limit, admissibly
     bool recovering = false;  // after a phase without limits, the acceleration falling back into them
     bool velocity_unlimited = false;
+    bool dynamic_sync = false;  // MC_GearInPos profile 0 synchronizing
   };
+  struct SyncStart {  // G2 profile 0: the leader's velocity and the follower's |v|, |a| at the start
+    double leader_velocity = 0, velocity = 0, acceleration = 0;
+  } sync_start_{};
+  bool prev_constant_leader_ = false;
 
   void check() {
     if (!checking_) return;
@@ -763,6 +771,33 @@ class Run {
       now.elevated = elevated;
       if (elevated) ++stats_.elevated_cycles;
     }
+    // G2, MC_GearInPos profile 0 (spec 07 §2.2, §6.8; SYNC8 "in advance using dynamic parameters"):
+    // MaxVelocity, MaxAcceleration / MaxDeceleration and MaxJerk hold during the synchronization, above them
+    // only what the follower carried in at its start (not growing). Changes of the leader's dynamics after
+    // the start are superimposed according to the gear ratio (the manual): a cycle is judged while the leader
+    // keeps its velocity of the start and does not accelerate.
+    now.dynamic_sync = now.function_state == 2 && synchronizing && gear_pos_profile_ == 0 && enabled;
+    if (now.dynamic_sync && !prev_.dynamic_sync) {
+      sync_start_ = SyncStart{lv.velocity, std::fabs(prev_.velocity), std::fabs(prev_.acceleration)};
+      note("GearInPos profile 0 synchronizes (leader velocity, follower v, a)", lv.velocity, prev_.velocity,
+           prev_.acceleration);
+    }
+    const bool constant_leader =
+        lv.acceleration == 0.0 &&
+        std::fabs(lv.velocity - sync_start_.leader_velocity) <= 1e-12 * std::max(1.0, std::fabs(lv.velocity));
+    if (now.dynamic_sync && constant_leader) {
+      ++stats_.dynamic_sync_cycles;
+      EXPECT_LE(std::fabs(sp.velocity), std::max(l.MaxVelocity, sync_start_.velocity) * (1.0 + 1e-9))
+          << where() << ": MC_GearInPos profile 0 above MaxVelocity";
+      const double lim = sp.velocity * sp.acceleration < 0.0 ? l.MaxDeceleration : l.MaxAcceleration;
+      EXPECT_LE(std::fabs(sp.acceleration), std::max(lim, sync_start_.acceleration) * (1.0 + 1e-9))
+          << where() << ": MC_GearInPos profile 0 beyond MaxAcceleration/MaxDeceleration";
+      if (l.MaxJerk > 0.0 && prev_.dynamic_sync && prev_constant_leader_) {
+        EXPECT_LE(std::fabs(sp.acceleration - prev_.acceleration) / kCycle, l.MaxJerk * (1.0 + 1e-6))
+            << where() << ": MC_GearInPos profile 0 beyond MaxJerk";
+      }
+    }
+    prev_constant_leader_ = constant_leader;
     prev_enabled_ = enabled;
     prev_ = now;
   }
@@ -887,11 +922,11 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
       "limited "
       "cycles (%ld MC_GearIn synchronizing, %ld above a limit on the way down), %ld with X0; %ld GearIn, %ld "
       "GearInVelocity, %ld GearInPos synchronous, %ld GearOut Done, %ld aborted, %ld rejected, %ld alarms "
-      "608; GearInPos %ld accepted, %ld rejected, %ld started\n",
+      "608; GearInPos %ld accepted, %ld rejected, %ld started, %ld profile-0 cycles at a constant leader\n",
       seed, name_of(kind), s.synchronous_cycles, s.velocity_gearing_cycles, s.limited_cycles,
       s.synchronizing_cycles, s.elevated_cycles, s.indicated_cycles, s.gear_in, s.gear_in_velocity,
       s.gear_in_pos_synchronous, s.gear_out_done, s.aborted, s.rejected, s.alarms_608, s.gear_in_pos,
-      s.gear_in_pos_rejected, s.gear_in_pos_started);
+      s.gear_in_pos_rejected, s.gear_in_pos_started, s.dynamic_sync_cycles);
   total.synchronous_cycles += s.synchronous_cycles;
   total.velocity_gearing_cycles += s.velocity_gearing_cycles;
   total.limited_cycles += s.limited_cycles;
@@ -901,6 +936,7 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
   total.gear_in_pos_synchronous += s.gear_in_pos_synchronous;
   total.gear_out_done += s.gear_out_done;
   total.aborted += s.aborted;
+  total.dynamic_sync_cycles += s.dynamic_sync_cycles;
 }
 
 TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
@@ -923,6 +959,7 @@ TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
   EXPECT_GT(total.indicated_acceleration_cycles, 0);
   EXPECT_GT(total.gear_in_pos_synchronous, 4);
   EXPECT_GT(total.gear_out_done, 2);
+  EXPECT_GT(total.dynamic_sync_cycles, 0);
 #endif
 }
 

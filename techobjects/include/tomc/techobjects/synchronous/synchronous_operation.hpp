@@ -259,6 +259,7 @@ class SynchronousOperation final : public SynchronousSlot {
     bool continuous_update = false;
     bool start_sync = false;
     bool in_sync = false;
+    bool line_blend = false;  // MC_CamIn profile 0: the blend runs onto the cam's tangent (decision C23)
     ProfileLimits limits{};
     double x_sync = 0.0;  // leader and follower positions of the gear line y = y_sync + r·(x − x_sync)
     double y_sync = 0.0;
