@@ -225,15 +225,11 @@ bool SynchronousOperation::start_pending_cam(const LeadingValue& leader) noexcep
     }
   } else {
     if (p.profile == 0) {
-      if (leader.velocity != p.sized_leader_velocity ||
-          axis_.setpoint().position != p.sized_follower.position ||
-          axis_.setpoint().velocity != p.sized_follower.velocity ||
-          axis_.setpoint().acceleration != p.sized_follower.acceleration) {
-        const MotionState end = cam_target(job, x_sync, 1.0, 0.0);
-        p.sized_length = sync_length_profile0(p, leader, end.position, end.velocity);
-        p.sized_leader_velocity = leader.velocity;
-        p.sized_follower = axis_.setpoint();
-      }
+      // Sized onto the occurrence of the cam that SyncDirection will choose at the start (below).
+      const MotionState end = cam_target(job, x_sync, 1.0, 0.0);
+      const double estimate =
+          axis_.setpoint().position + end.position - cam_target(job, leader.position, 0.0, 0.0).position;
+      profile0_length(p, leader, choose_slave_sync(end.position, p.sync_direction, estimate), end.velocity);
       if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
         p.armed = false;
         return false;

@@ -153,13 +153,21 @@ double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const 
     const double x_a = p.master_sync - p.direction * length;
     b.start(x_a, p.direction * length, p.master_sync, y_target, r, f, v_leader, 0.0);
     if (std::fabs(b.jerk(x_a, v_leader)) > max_j) return false;
-    for (int i = 1; i <= 16; ++i) {
-      const double x = x_a + p.direction * length * (i / 16.0);
+    const auto within = [&](double x) noexcept {
       const MotionState m = b.at(x, v_leader, 0.0);
       if (std::fabs(m.velocity) > cap_v) return false;
       const bool decelerating = m.acceleration * m.velocity < 0.0;
       if (std::fabs(m.acceleration) > (decelerating ? cap_d : cap_a)) return false;
-      if (i < 16 && std::fabs(b.jerk(x, v_leader)) > max_j) return false;
+      return std::fabs(b.jerk(x, v_leader)) <= max_j;
+    };
+    for (int i = 1; i <= 16; ++i) {
+      if (!within(x_a + p.direction * length * (i / 16.0))) return false;
+    }
+    // The acceleration's and the jerk's peaks between the samples (a cubic and a quadratic in ξ).
+    std::array<double, 3> peaks{};
+    const std::size_t n = b.extrema(peaks);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!within(peaks[i])) return false;
     }
     return true;
   };
@@ -181,6 +189,24 @@ double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const 
     (fits(mid) ? high : low) = mid;
   }
   return high;
+}
+
+// Profile 0's synchronization length onto (y_target, slope), searched again (a few hundred blend evaluations)
+// only when what it depends on changed: the leader velocity, the follower's velocity and acceleration and
+// its distance to the target — a modulo follower's occurrence of the target moves with the leader, so the
+// follower's own position is not the key. A new pass of a modulo leader clears it (the slope of a cam may
+// differ there).
+double SynchronousOperation::profile0_length(PendingSyncIn& p, const LeadingValue& leader, double y_target,
+                                             double slope) noexcept {
+  const MotionState f = axis_.setpoint();
+  const double gap = f.position - y_target;
+  if (leader.velocity != p.sized_leader_velocity || gap != p.sized_follower.position ||
+      f.velocity != p.sized_follower.velocity || f.acceleration != p.sized_follower.acceleration) {
+    p.sized_length = sync_length_profile0(p, leader, y_target, slope);
+    p.sized_leader_velocity = leader.velocity;
+    p.sized_follower = MotionState{gap, f.velocity, f.acceleration};
+  }
+  return p.sized_length;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -415,8 +441,12 @@ Submission SynchronousOperation::gear_in_pos(const GearInPosInputs& in) noexcept
   if (!std::isfinite(in.SlaveSyncPosition)) return Submission::reject(error_id::kInvalidPosition);
   if (in.SyncDirection < 1 || in.SyncDirection > 3) return Submission::reject(error_id::kInvalidDirection);
   ProfileLimits limits;
-  if (const auto e = axis_.resolve_dynamics(in.SyncProfileReference == 0 ? in.Velocity : -1.0,
-                                            in.Acceleration, in.Deceleration, in.Jerk, limits))
+  // Velocity, Acceleration, Deceleration and Jerk belong to profile 0 alone (spec 07 §2.2): the distance
+  // profiles neither check them nor raise 501/502/503 for them (decisions C20, C24).
+  const bool dynamic = in.SyncProfileReference == 0;
+  if (const auto e =
+          axis_.resolve_dynamics(dynamic ? in.Velocity : -1.0, dynamic ? in.Acceleration : -1.0,
+                                 dynamic ? in.Deceleration : -1.0, dynamic ? in.Jerk : -1.0, limits))
     return Submission::reject(*e);
   if (const auto e = axis_.motion_prerequisites()) return Submission::reject(e);
   if (!axis_.homed()) return Submission::reject(error_id::kAxisNotHomed);  // spec 07 §2.2 requirements
@@ -537,17 +567,9 @@ bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexce
   double x_a = 0.0;
   double x_target = p.master_sync;
   if (p.profile == 0) {
-    // The search costs a few hundred blend evaluations: done again only when its inputs change.
-    if (leader.velocity != p.sized_leader_velocity ||
-        axis_.setpoint().position != p.sized_follower.position ||
-        axis_.setpoint().velocity != p.sized_follower.velocity ||
-        axis_.setpoint().acceleration != p.sized_follower.acceleration) {
-      const double y_target = choose_slave_sync(
-          p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
-      p.sized_length = sync_length_profile0(p, leader, y_target, r);
-      p.sized_leader_velocity = leader.velocity;
-      p.sized_follower = axis_.setpoint();
-    }
+    const double y_target = choose_slave_sync(
+        p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
+    profile0_length(p, leader, y_target, r);
     if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
       p.armed = false;
       return false;
@@ -597,6 +619,7 @@ bool SynchronousOperation::profile0_start_crossed(PendingSyncIn& p, const Leadin
         interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
     if (range.enabled && range.length > 0.0) {
       p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
+      p.sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();  // sized again for that pass
     }
     return false;
   }

@@ -63,6 +63,7 @@
 
 #include "alarm_watch.hpp"
 #include "gearing_fixture.hpp"
+#include "property_harness.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_cam_in.hpp"
 #include "tomc/instructions/mc_cam_out.hpp"
@@ -86,8 +87,7 @@ constexpr int kCycles = 60'000;  // per run: 240,000 cycles in all (about 1 s of
 #endif
 constexpr std::uint32_t kDefaultSeed = 20261132;
 std::uint32_t base_seed() {
-  const char* s = std::getenv("TOMC_PROPERTY_SEED");
-  return s != nullptr ? static_cast<std::uint32_t>(std::strtoul(s, nullptr, 10)) : kDefaultSeed;
+  return tomc::testing::property_base_seed(kDefaultSeed);
 }
 constexpr double kCycle = 0.001;
 constexpr std::size_t kCams = 3;
@@ -111,7 +111,7 @@ struct Stats {
 class CamRun {
  public:
   CamRun(bool encoder_leader, std::uint32_t seed)
-      : encoder_leader_(encoder_leader), rng_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
+      : encoder_leader_(encoder_leader), random_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
     auto follower_data = virtual_linear();
     follower_data.DynamicLimits.MaxVelocity = 800.0;  // cams often ask for more in synchronous travel (X0)
     follower_data.DynamicLimits.MaxAcceleration = 8000.0;
@@ -170,50 +170,36 @@ class CamRun {
 
  private:
   // ---- bookkeeping for the printout of a failure (fixed rings) ----
-  struct Event {
-    int cycle = 0;
-    const char* what = "";
-    std::array<double, 6> v{};
-  };
   struct State {
     int cycle = 0;
     double y = 0, v = 0, a = 0, x = 0, vx = 0;
     std::uint32_t status_word = 0;
     int function_state = 0, waiting = 0, cam = 0;
   };
-  void note(const char* what, std::array<double, 6> v = {}) {
-    events_[static_cast<std::size_t>(event_count_++) % events_.size()] = Event{cycle_, what, v};
-  }
+  void note(const char* what, std::initializer_list<double> v = {}) { events_.note(cycle_, what, v); }
   void dump() {
     dumped_ = true;
-    std::printf("last events (cycle, what, values):\n");
-    for (int i = std::max(0, event_count_ - static_cast<int>(events_.size())); i < event_count_; ++i) {
-      const Event& e = events_[static_cast<std::size_t>(i) % events_.size()];
-      std::printf("  %d %s %g %g %g %g %g %g\n", e.cycle, e.what, e.v[0], e.v[1], e.v[2], e.v[3], e.v[4],
-                  e.v[5]);
-    }
+    events_.print();
     for (std::size_t i = 0; i < cam_in_.size(); ++i) {
       const auto& c = cam_in_[i];
       std::printf(
           "MC_CamIn %zu: Execute %d Busy %d StartSync %d InSync %d CommandAborted %d Error %d ErrorID %x\n",
           i, c.Execute, c.Busy, c.StartSync, c.InSync, c.CommandAborted, c.Error, c.ErrorID);
     }
-    std::printf(
-        "last cycles (cycle, F y v a, leading value x v, StatusWord, FunctionState, Waiting, Cam):\n");
-    for (int i = std::max(0, state_count_ - static_cast<int>(states_.size())); i < state_count_; ++i) {
-      const State& t = states_[static_cast<std::size_t>(i) % states_.size()];
-      std::printf("  %d %.9f %.6f %.3f %.9f %.6f %08x %d %d %d\n", t.cycle, t.y, t.v, t.a, t.x, t.vx,
-                  t.status_word, t.function_state, t.waiting, t.cam);
-    }
+    states_.print("cycle, F y v a, leading value x v, StatusWord, FunctionState, Waiting, Cam",
+                  [](const State& t) {
+                    std::printf("  %d %.9f %.6f %.3f %.9f %.6f %08x %d %d %d\n", t.cycle, t.y, t.v, t.a, t.x,
+                                t.vx, t.status_word, t.function_state, t.waiting, t.cam);
+                  });
   }
   std::string where() const {
     return std::string(encoder_leader_ ? "encoder leader" : "axis leader") + ", cycle " +
            std::to_string(cycle_);
   }
 
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
-  bool chance(double p) { return uniform(0.0, 1.0) < p; }
-  int pick(int n) { return static_cast<int>(rng_() % static_cast<std::uint32_t>(n)); }
+  double uniform(double lo, double hi) { return random_.uniform(lo, hi); }
+  bool chance(double p) { return random_.chance(p); }
+  int pick(int n) { return random_.pick(n); }
   double dynamic(double high) { return chance(0.25) ? -1.0 : uniform(0.05, 1.0) * high; }
 
   // ---- random cams (spec 07 §3.1, §3.2) ----
@@ -595,9 +581,8 @@ class CamRun {
     const bool synchronizing = techobjects::test(d.StatusWord, StatusWordBit::kSynchronizing);
     const int fs = sm.FunctionState;
     const techobjects::LeadingValue lv = function_leader(sm.ActualMaster);
-    states_[static_cast<std::size_t>(state_count_++) % states_.size()] =
-        State{cycle_,      sp.position,  sp.velocity, sp.acceleration,         lv.position,
-              lv.velocity, d.StatusWord, fs,          sm.WaitingFunctionState, sm.ActualCam};
+    states_.push(State{cycle_, sp.position, sp.velocity, sp.acceleration, lv.position, lv.velocity,
+                       d.StatusWord, fs, sm.WaitingFunctionState, sm.ActualCam});
     for (double x : {d.Position, d.Velocity, d.Acceleration, sp.position, sp.velocity, sp.acceleration}) {
       ASSERT_TRUE(std::isfinite(x)) << where();
     }
@@ -768,21 +753,14 @@ class CamRun {
     // (the manual), so a cycle is judged while the leader keeps its velocity of the start and does not
     // accelerate.
     const bool dynamic_sync = synchronizing && fs == 3 && active_profile == 0;
-    if (dynamic_sync && !prev_.dynamic_sync) {
-      sync_start_ = SyncStart{lv.velocity, std::fabs(prev_.v), std::fabs(prev_.a)};
+    if (dynamic_sync && !prev_.dynamic_sync)
       note("profile-0 synchronization starts (leader velocity, follower v, a)",
            {lv.velocity, prev_.v, prev_.a});
-    }
-    if (dynamic_sync && lv.acceleration == 0.0 &&
-        std::fabs(lv.velocity - sync_start_.leader_velocity) <=
-            1e-12 * std::max(1.0, std::fabs(lv.velocity))) {
-      ++stats_.dynamic_sync_cycles;
-      EXPECT_LE(std::fabs(sp.velocity), std::max(l.MaxVelocity, sync_start_.velocity) * (1.0 + 1e-9))
-          << where() << ": profile-0 synchronization above MaxVelocity";
-      const double lim = sp.velocity * sp.acceleration < 0.0 ? l.MaxDeceleration : l.MaxAcceleration;
-      EXPECT_LE(std::fabs(sp.acceleration), std::max(lim, sync_start_.acceleration) * (1.0 + 1e-9))
-          << where() << ": profile-0 synchronization beyond MaxAcceleration/MaxDeceleration";
-    }
+    const auto verdict = dynamic_sync_.judge(
+        dynamic_sync, lv.velocity, lv.acceleration, sp.velocity, sp.acceleration, prev_.v, prev_.a,
+        {l.MaxVelocity, l.MaxAcceleration, l.MaxDeceleration, l.MaxJerk}, kCycle);
+    if (verdict.judged) ++stats_.dynamic_sync_cycles;
+    EXPECT_TRUE(verdict.problem.empty()) << where() << ": profile-0 synchronization " << verdict.problem;
     const double bound_a = std::max(l.MaxAcceleration, l.MaxDeceleration) * (1.0 + 1e-9);
     const bool enabled = techobjects::test(d.StatusWord, StatusWordBit::kEnable);
     if (fs == 5 && prev_.function_state != 5) {
@@ -830,7 +808,7 @@ class CamRun {
   }
 
   bool encoder_leader_;
-  std::mt19937 rng_;
+  tomc::testing::PropertyRandom random_;
   techobjects::Runtime runtime_;
   techobjects::PositioningAxis* L_ = nullptr;
   SynchronousAxis* F_ = nullptr;
@@ -872,18 +850,14 @@ class CamRun {
     int function_state = 0, waiting = 0, in_sync = -1;
     bool leader_valid = true, enabled = false, free_phase = false, dynamic_sync = false;
   } prev_{};
-  struct SyncStart {  // K4 profile 0: the leader's velocity and the follower's |v|, |a| at the start
-    double leader_velocity = 0, velocity = 0, acceleration = 0;
-  } sync_start_{};
+  tomc::testing::DynamicSyncJudge dynamic_sync_;
   Raised interpolator_alarms_{};
   bool checking_ = false;
   tomc::testing::AlarmWatch alarm_watch_;
   Stats stats_{};
   int cycle_ = 0;
-  std::array<Event, 80> events_{};
-  int event_count_ = 0;
-  std::array<State, 40> states_{};
-  int state_count_ = 0;
+  tomc::testing::EventRing<80> events_;
+  tomc::testing::StateRing<State, 40> states_;
   bool dumped_ = false;
 };
 

@@ -898,6 +898,40 @@ TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocit
   EXPECT_NEAR(m.f().Position - 2.0 * (m.l().Position - 1000.0), 300.0, 1e-6);
 }
 
+// Decision C24 (spec 07 §2.2: Velocity/Acceleration/Deceleration/Jerk are "profile 0 only"), as C20 for
+// MC_CamIn: a distance profile (1, 3) ignores them — an Acceleration of 20,000 above MaxAcceleration 10,000
+// raises no alarm 502, a Deceleration of 0.0 and a Jerk that is not a number are not refused, and the job
+// synchronizes over MasterStartDistance as GP-2 does (InSync at L = 150, F = L − 100); profile 0 still checks
+// them (Deceleration 0.0: 16#8112).
+TEST(Gearing, GearInPosDynamicParametersAreProfileZerosOnly) {
+  GearingMachine m;
+  auto& g = m.gear_pos;
+  g.SyncProfileReference = 3;
+  g.MasterSyncPosition = 100.0;
+  g.SlaveSyncPosition = 0.0;
+  g.MasterStartDistance = 50.0;
+  g.Acceleration = 20000.0;
+  g.Deceleration = 0.0;
+  g.Jerk = std::nan("");
+  g.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(g.Busy) << std::hex << g.ErrorID;
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedAcceleration));
+  leader_at(m, 100.0);
+  ASSERT_GT(m.run_until([&] { return g.InSync; }, 3000), 0);
+  EXPECT_NEAR(m.l().Position, 150.0, 0.11);
+  EXPECT_NEAR(m.f().Position - (m.l().Position - 100.0), 0.0, 1e-6);
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedAcceleration));
+  g.Execute = false;
+  m.run(1);
+  g.SyncProfileReference = 0;
+  g.MasterSyncPosition = 2000.0;
+  g.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(g.Error);
+  EXPECT_EQ(g.ErrorID, eid::kInvalidDeceleration);
+}
+
 // GV-1: MC_GearInVelocity(100/100, ContinuousUpdate, Acceleration 1000), L at 100, F at rest: InSync after
 // 0.100 s, FunctionState 6; numerator 110 -> F.Velocity = 110 on the next cycle, InSync stays,
 // ContinuousUpdateActive. GV-2: PositionControlled FALSE -> X28.
