@@ -9,8 +9,8 @@
 // random scalings (negative too), offsets, MasterSyncPosition and MasterStartDistance, now and then an
 // illegal parameter; MC_CamOut (profiles 0, 1, 5), MC_Halt, MC_MoveVelocity, MC_Power off/on and MC_Reset.
 // The leading value is a linear virtual positioning axis with random MC_MoveVelocity / MC_MoveAbsolute /
-// MC_Halt jobs (reversals and stops), or an external encoder turned at random speeds (actual-value coupling)
-// whose encoder fails now and then.
+// MC_Halt jobs (reversals and stops), a rotary modulo one (0…360°; the fifth run), or an external encoder
+// turned at random speeds (actual-value coupling) whose encoder fails now and then.
 //
 // Checked every cycle after the user program (the instances' outputs then show this cycle's MC_Interpolator):
 //  K1 spec 07 §3.3, §6.2  while StatusWord.X22 and FunctionState 3 the follower's setpoint is the scaled and
@@ -56,6 +56,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -110,13 +111,17 @@ struct Stats {
 
 class CamRun {
  public:
-  CamRun(bool encoder_leader, std::uint32_t seed)
-      : encoder_leader_(encoder_leader), random_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
+  CamRun(bool encoder_leader, std::uint32_t seed, bool modulo_leader = false)
+      : encoder_leader_(encoder_leader),
+        modulo_leader_(modulo_leader),
+        random_(seed),
+        runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
     auto follower_data = virtual_linear();
     follower_data.DynamicLimits.MaxVelocity = 800.0;  // cams often ask for more in synchronous travel (X0)
     follower_data.DynamicLimits.MaxAcceleration = 8000.0;
     follower_data.DynamicLimits.MaxDeceleration = 10000.0;
-    auto l = std::make_unique<techobjects::PositioningAxis>("L", nullptr, virtual_linear());
+    auto l = std::make_unique<techobjects::PositioningAxis>(
+        "L", nullptr, modulo_leader ? tomc::testing::virtual_rotary_modulo() : virtual_linear());
     L_ = l.get();
     std::vector<techobjects::LeadingValueInterconnection> leaders{
         {L_, L_, techobjects::LeadingValueCoupling::kSetpoint}};
@@ -193,8 +198,10 @@ class CamRun {
                   });
   }
   std::string where() const {
-    return std::string(encoder_leader_ ? "encoder leader" : "axis leader") + ", cycle " +
-           std::to_string(cycle_);
+    return std::string(encoder_leader_  ? "encoder leader"
+                       : modulo_leader_ ? "modulo axis leader"
+                                        : "axis leader") +
+           ", cycle " + std::to_string(cycle_);
   }
 
   double uniform(double lo, double hi) { return random_.uniform(lo, hi); }
@@ -337,7 +344,7 @@ class CamRun {
     switch (pick(4)) {
       case 0:
         if (p.move_absolute.Execute) break;
-        p.move_absolute.Position = uniform(-2000.0, 2000.0);
+        p.move_absolute.Position = modulo_leader_ ? uniform(0.0, 360.0) : uniform(-2000.0, 2000.0);
         p.move_absolute.Velocity = uniform(5.0, 300.0);
         p.move_absolute.Acceleration = dynamic(6000.0);
         p.move_absolute.Deceleration = dynamic(6000.0);
@@ -546,13 +553,14 @@ class CamRun {
     bool near_boundary = false;
   };
   static Reference reference(const Cam& cam, int mode, const techobjects::StatusSynchronizedMotion& sm,
-                             const techobjects::LeadingValue& lv, double shift_periods = 0.0) {
+                             double master_offset, const techobjects::LeadingValue& lv,
+                             double shift_periods = 0.0) {
     const auto& f = cam.profile();
     const double start = f.start();
     const double end = f.end();
     const double period = end - start;
     Reference r;
-    r.u = (lv.position - sm.MasterOffset) / sm.MasterScaling;
+    r.u = (lv.position - master_offset) / sm.MasterScaling;
     double u = r.u;
     double n = 0.0;
     if (mode == 0) {
@@ -658,25 +666,47 @@ class CamRun {
       const int mode = mode_of(&cam);
       ++stats_.synchronous_cycles;
       const int profile = active->SyncProfileReference;
-      if (!started_[static_cast<std::size_t>(in_sync)]) {
+      // A modulo leader: StatusSynchronizedMotion.MasterOffset is shown in the leader's modulo range
+      // (decision C9) while the cam runs on the continuous leading value, MasterOffset + k·Length. k is
+      // taken at the coupling's first synchronous cycle (the whole number of lengths that puts the follower
+      // on the cam there) and then held: every later cycle is judged with it.
+      const bool first = !started_[static_cast<std::size_t>(in_sync)];
+      if (modulo_leader_ && first) {
+        double best = std::numeric_limits<double>::infinity();
+        const int around = static_cast<int>(std::fabs(lv.position - sm.MasterOffset) / 360.0) + 3;
+        for (int k = -around; k <= around; ++k) {
+          const double e = std::fabs(reference(cam, mode, sm, sm.MasterOffset + 360.0 * k, lv).y -
+                                     F_->setpoint().position);
+          if (e < best) {
+            best = e;
+            modulo_turns_ = k;
+          }
+        }
+      }
+      const double master_offset = sm.MasterOffset + (modulo_leader_ ? 360.0 * modulo_turns_ : 0.0);
+      if (first) {
         started_[static_cast<std::size_t>(in_sync)] = true;
         ++stats_.in_sync_by_profile[static_cast<std::size_t>(profile)];
       }
       EXPECT_EQ(sm.MasterScaling, active->MasterScaling) << where();
       EXPECT_EQ(sm.SlaveScaling, active->SlaveScaling) << where();
       if (profile == 0 || profile == 1 || profile == 3 || profile == 4) {
-        EXPECT_EQ(sm.MasterOffset, active->MasterOffset) << where() << ": profile " << profile;
+        // (a modulo leader: the given offset's occurrence in the modulo range)
+        EXPECT_NEAR(modulo_leader_ ? std::remainder(sm.MasterOffset - active->MasterOffset, 360.0)
+                                   : sm.MasterOffset - active->MasterOffset,
+                    0.0, modulo_leader_ ? 1e-9 * std::max(1.0, std::fabs(active->MasterOffset)) : 0.0)
+            << where() << ": profile " << profile;
       }
       if (profile != 2 && profile != 5) {
         EXPECT_EQ(sm.SlaveOffset, active->SlaveOffset) << where();
       }
-      Reference r = reference(cam, mode, sm, lv);
+      Reference r = reference(cam, mode, sm, master_offset, lv);
       const double tol = 1e-7 + 1e-12 * std::fabs(r.y);
       if (r.near_boundary && std::fabs(sp.position - r.y) > tol) {
         // The other side of the period boundary (spec 07 §6.2: n is a floor; rounding may take either).
         const double side =
             std::fabs(r.u - cam.profile().start()) < std::fabs(r.u - cam.profile().end()) ? -1.0 : 1.0;
-        r = reference(cam, mode, sm, lv, side);
+        r = reference(cam, mode, sm, master_offset, lv, side);
       }
       EXPECT_TRUE(r.inside) << where() << ": synchronous outside a non-cyclic cam, u " << r.u;
       EXPECT_NEAR(sp.position, r.y, tol)
@@ -808,6 +838,9 @@ class CamRun {
   }
 
   bool encoder_leader_;
+  bool modulo_leader_;
+  int modulo_turns_ =
+      0;  // K1 with a modulo leader: whole lengths between the shown and the used MasterOffset
   tomc::testing::PropertyRandom random_;
   techobjects::Runtime runtime_;
   techobjects::PositioningAxis* L_ = nullptr;
@@ -862,14 +895,21 @@ class CamRun {
 };
 
 TEST(CammingProperty, RandomCamsLeadersAndJobs) {
-  std::printf("base seed %u, 4 runs (3 axis leaders, 1 encoder leader with encoder faults) x %d cycles\n",
-              base_seed(), kCycles);
+  std::printf(
+      "base seed %u, 5 runs (3 axis leaders, 1 encoder leader with encoder faults, 1 modulo axis leader) x "
+      "%d "
+      "cycles\n",
+      base_seed(), kCycles);
   Stats total;
-  for (int i = 0; i < 4 && !HasFailure(); ++i) {
+  for (int i = 0; i < 5 && !HasFailure(); ++i) {
     const std::uint32_t seed = base_seed() + static_cast<std::uint32_t>(i);
     const bool encoder = i == 3;
-    SCOPED_TRACE("seed " + std::to_string(seed) + (encoder ? ", encoder leader" : ", axis leader"));
-    CamRun run(encoder, seed);
+    const bool modulo = i == 4;
+    SCOPED_TRACE("seed " + std::to_string(seed) +
+                 (encoder  ? ", encoder leader"
+                  : modulo ? ", modulo axis leader"
+                           : ", axis leader"));
+    CamRun run(encoder, seed, modulo);
     ASSERT_TRUE(run.enabled()) << "enabled at the start";
     for (int k = 0; k < kCycles && !HasFailure(); ++k)
       run.cycle(k);
@@ -880,12 +920,15 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
         "%ld indicated; MC_CamIn %ld (%ld accepted, %ld rejected, %ld aborted), InSync by profile 0-6: %ld "
         "%ld %ld %ld %ld %ld %ld; %ld distance checks, %ld ends of a non-cyclic cam, %ld EndOfProfile; "
         "%ld MC_CamOut Done, %ld desynchronizations; %ld leader faults; cams built %ld, refused %ld\n",
-        seed, encoder ? "encoder" : "axis", s.synchronous_cycles, s.synchronizing_cycles,
-        s.dynamic_sync_cycles, s.limited_cycles, s.indicated_cycles, s.cam_in, s.accepted, s.rejected,
-        s.aborted, s.in_sync_by_profile[0], s.in_sync_by_profile[1], s.in_sync_by_profile[2],
-        s.in_sync_by_profile[3], s.in_sync_by_profile[4], s.in_sync_by_profile[5], s.in_sync_by_profile[6],
-        s.distance_syncs, s.non_cyclic_ends, s.ends, s.cam_out_done, s.desync_starts, s.leader_faults,
-        s.cams_built, s.cams_refused);
+        seed,
+        encoder  ? "encoder"
+        : modulo ? "modulo axis"
+                 : "axis",
+        s.synchronous_cycles, s.synchronizing_cycles, s.dynamic_sync_cycles, s.limited_cycles,
+        s.indicated_cycles, s.cam_in, s.accepted, s.rejected, s.aborted, s.in_sync_by_profile[0],
+        s.in_sync_by_profile[1], s.in_sync_by_profile[2], s.in_sync_by_profile[3], s.in_sync_by_profile[4],
+        s.in_sync_by_profile[5], s.in_sync_by_profile[6], s.distance_syncs, s.non_cyclic_ends, s.ends,
+        s.cam_out_done, s.desync_starts, s.leader_faults, s.cams_built, s.cams_refused);
     total.synchronous_cycles += s.synchronous_cycles;
     total.synchronizing_cycles += s.synchronizing_cycles;
     total.limited_cycles += s.limited_cycles;
