@@ -866,6 +866,11 @@ TEST(ScenarioLoader, MalformedJsonAndFiles) {
   ASSERT_EQ(result.problems.size(), 1u);
   EXPECT_EQ(result.problems[0].rfind("x.json: malformed JSON: parse error at line 2", 0), 0u)
       << result.problems[0];
+  // A number beyond a double is nlohmann's out_of_range.406, not a parse_error: it once escaped the loader
+  // and ended the process (scenario_loader_fuzzer, reliability.md §2).
+  result = Scenario::load_text("{\"cycles\": 7777e5777755555555555555555555552777}", "y.json");
+  ASSERT_EQ(result.problems.size(), 1u);
+  EXPECT_EQ(result.problems[0].rfind("y.json: malformed JSON: number overflow", 0), 0u) << result.problems[0];
   result = Scenario::load_file("/nonexistent/scenario.json");
   ASSERT_EQ(result.problems.size(), 1u);
   EXPECT_EQ(result.problems[0], "/nonexistent/scenario.json: cannot read: No such file or directory");

@@ -467,7 +467,7 @@ int encode(const Options& o, std::ostream& out) {
   Json input;
   try {
     input = Json::parse(o.operands.front());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // also out_of_range.406: a number beyond a double
     throw UsageError(std::string("JSON: ") + e.what());
   }
   std::vector<std::byte> frame(codec.frame_size());

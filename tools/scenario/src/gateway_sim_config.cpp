@@ -90,7 +90,7 @@ bool read_json_file(const std::filesystem::path& file, Json& document, Problems&
   text << in.rdbuf();
   try {
     document = Json::parse(text.str());
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, and out_of_range.406 for a number beyond a double
     std::string what = e.what();
     if (const auto close = what.find("] ");
         what.starts_with("[json.exception") && close != std::string::npos) {

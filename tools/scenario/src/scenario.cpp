@@ -1225,7 +1225,7 @@ LoadResult Scenario::load_text(std::string_view text, std::string_view source,
   Json document;
   try {
     document = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, and out_of_range.406 for a number beyond a double
     // nlohmann prefixes "[json.exception.parse_error.101] "; the user needs only line, column and cause.
     std::string what = e.what();
     if (const auto close = what.find("] ");
