@@ -33,10 +33,12 @@ std::vector<std::byte> random_frame(std::mt19937& rng, std::size_t size) {
 }
 
 // Own: the value struct of the codec's direction; Other: the other one (refused with kWrongDirection).
+// malformed: also every wrong length and the other direction's struct (once per layout is enough: the checks
+// are the codec's own, not the routine's).
 template <typename Own, typename Other, std::size_t N, std::size_t M>
 void same_as_reference(const TelegramCodec& codec, const Signal (&own)[N], const Signal (&other)[M],
-                       std::mt19937& rng) {
-  for (int iteration = 0; iteration < 64; ++iteration) {
+                       std::mt19937& rng, bool malformed) {
+  for (int iteration = 0; iteration < 16; ++iteration) {
     const Own values = random_values<Own>(rng, own);
     // Encode into a frame of random bytes: the routine writes exactly the bytes the loop writes.
     const auto start = random_frame(rng, codec.frame_size());
@@ -54,6 +56,7 @@ void same_as_reference(const TelegramCodec& codec, const Signal (&own)[N], const
     ASSERT_EQ(codec.decode_reference(frame, reference_values), TelegramError::kNone);
     ASSERT_EQ(fast_values, reference_values) << hex(frame);
   }
+  if (!malformed) return;
   // Every wrong length up to two bytes beyond the longest frame: the same error, nothing written or read.
   for (std::size_t size = 0; size <= kMaxFrameBytes + 2; ++size) {
     if (size == codec.frame_size()) continue;
@@ -87,11 +90,13 @@ void same_as_reference(const TelegramCodec& codec, const Signal (&own)[N], const
   EXPECT_EQ(wrong_reference, wrong);
 }
 
-void check_codec(const TelegramCodec& codec, std::mt19937& rng) {
+void check_codec(const TelegramCodec& codec, std::mt19937& rng, bool malformed) {
   if (codec.direction() == Direction::kSetpoint) {
-    same_as_reference<SetpointSignals, ActualSignals>(codec, kSetpointSignals, kActualSignals, rng);
+    same_as_reference<SetpointSignals, ActualSignals>(codec, kSetpointSignals, kActualSignals, rng,
+                                                      malformed);
   } else {
-    same_as_reference<ActualSignals, SetpointSignals>(codec, kActualSignals, kSetpointSignals, rng);
+    same_as_reference<ActualSignals, SetpointSignals>(codec, kActualSignals, kSetpointSignals, rng,
+                                                      malformed);
   }
 }
 
@@ -110,10 +115,10 @@ TEST(TelegramRoutines, SameBytesAndValuesAsTheReferenceLoop) {
           const CodecOptions options{.byte_order = order, .telegram83_nist_b_offset = nist};
           const auto created = TelegramCodec::create(telegram, direction, options);
           ASSERT_TRUE(created.ok());
-          check_codec(*created, rng);
+          check_codec(*created, rng, true);
           const auto shared = TelegramCodec::shared(telegram, direction, options);
           ASSERT_TRUE(shared.ok());
-          check_codec(**shared, rng);
+          check_codec(**shared, rng, false);
           ++codecs;
         }
       }
