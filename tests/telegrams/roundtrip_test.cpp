@@ -16,7 +16,6 @@ namespace tomc::telegrams {
 namespace {
 
 using test::hex;
-
 using test::kActualSignals;
 using test::kAllOrders;
 using test::kSetpointSignals;

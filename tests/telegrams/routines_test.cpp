@@ -17,11 +17,8 @@
 namespace tomc::telegrams {
 namespace {
 
-using test::hex;
-using test::kActualSignals;
-using test::kAllOrders;
-using test::kSetpointSignals;
-using test::random_values;
+// The signal lists, byte orders and random values of the round-trip tests (test_helpers.hpp).
+using namespace test;  // NOLINT(google-build-using-namespace): test helpers only
 
 constexpr std::uint8_t kNistBOffsets[] = {4, 8, 12};  // spec 06 §2.13
 
