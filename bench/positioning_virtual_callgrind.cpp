@@ -17,6 +17,7 @@ int main(int argc, char** argv) {  // argument `touched`: bench/touched_bytes.py
   const bool touched = tomc::bench::touched_mode(argc, argv);
   tomc::bench::PositioningMachine m(kAxes, false, 0);
   m.group().hook = touched ? tomc::bench::touched_phase<tomc::bench::AxisGroup> : positioning_virtual;
+  tomc::bench::touched_object(touched, m.group().axes[0].get(), sizeof(tomc::techobjects::PositioningAxis));
   const int cycles = touched ? tomc::bench::kTouchedCycles : kCycles;
   for (int i = 0; i < cycles; ++i)
     m.step();

@@ -4,6 +4,7 @@
 // bench/touched_bytes.py runs the program under valgrind's lackey (--trace-mem=yes) and counts the distinct
 // bytes and 64-byte cache lines loaded or stored between the markers of the last cycle (MC_Servo +
 // MC_Interpolator), split into stack and the rest (the TO, its codec, its frames).
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string_view>
@@ -24,6 +25,14 @@ inline bool touched_mode(int argc, char** argv) noexcept {
   std::printf("marker=%p\n", static_cast<const volatile void*>(&touched_marker));
   std::fflush(stdout);
   return true;
+}
+
+// The first axis' object, for the script's split of the lines inside and outside it (decision O4: which of
+// the TO's own members the cycle touches). Printed only in touched mode.
+inline void touched_object(bool touched, const void* object, std::size_t size) noexcept {
+  if (!touched) return;
+  std::printf("object=%p size=%zu\n", object, size);
+  std::fflush(stdout);
 }
 
 template <typename Group>

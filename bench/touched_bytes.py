@@ -6,7 +6,11 @@ brackets each counted phase (MC_Servo, MC_Interpolator of its axes) with two sto
 prints first; this script collects every data load/store/modify between the markers of the last cycle (the last
 two phases) and prints the distinct bytes and 64-byte cache lines, all and without the stack.
 
-Usage: bench/touched_bytes.py build-bench/bin/positioning_to_cycle_callgrind [units]
+A workload that also prints `object=<address> size=<bytes>` (its first axis) gets a third line: the bytes and
+lines inside that object; with --offsets, the touched byte ranges as offsets into it (to set against
+`ptype /o` of the class: which members the cycle touches, decision O4).
+
+Usage: bench/touched_bytes.py build-bench/bin/positioning_to_cycle_callgrind [units] [--offsets]
   units: divide by this many axes (the workload's units=, e.g. 16 followers of gearing_cycle)
 """
 import subprocess
@@ -17,18 +21,24 @@ LINE = 64
 
 
 def main() -> int:
-    program = sys.argv[1]
-    units = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+    args = [a for a in sys.argv[1:] if a != "--offsets"]
+    offsets = "--offsets" in sys.argv[1:]
+    program = args[0]
+    units = int(args[1]) if len(args) > 1 else 1
     proc = subprocess.Popen(
         ["valgrind", "--tool=lackey", "--trace-mem=yes", "--log-fd=2", program, "touched"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1 << 20)
     marker = []
     cycles = []
+    objects = []
 
     def read_stdout() -> None:
         for line in proc.stdout:
             if line.startswith("marker=") and not marker:
                 marker.append(int(line.split("=", 1)[1], 16))
+            elif line.startswith("object="):
+                address, size = line.split()
+                objects.append((int(address.split("=")[1], 16), int(size.split("=")[1])))
             elif line.startswith("cycles="):
                 cycles.append(int(line.split()[0].split("=")[1]))
 
@@ -69,20 +79,33 @@ def main() -> int:
     # The stack: the highest addresses of the trace (valgrind places it far above heap and image).
     stack_floor = max(a for a, _ in cycle) - (1 << 20)
     counts = {}
-    for name, pick in (("all", lambda a: True), ("without stack", lambda a: a < stack_floor)):
+    picks = [("all", lambda a: True), ("without stack", lambda a: a < stack_floor)]
+    if objects:
+        object_base, object_size = objects[0]
+        picks.append(("inside the first axis object", lambda a: object_base <= a < object_base + object_size))
+    for name, pick in picks:
         data_bytes = set()
         lines = set()
         for addr, size in cycle:
-            if not pick(addr):
-                continue
             for b in range(addr, addr + size):
-                data_bytes.add(b)
-                lines.add(b // LINE)
+                if pick(b):
+                    data_bytes.add(b)
+                    lines.add(b // LINE)
         counts[name] = (len(data_bytes), len(lines))
     accesses = len(cycle)
     print(f"{program}: one cycle, {accesses} data accesses; per axis (units={units}):")
     for name, (nb, nl) in counts.items():
         print(f"  {name}: {nb // units} distinct bytes, {nl / units:.0f} cache lines = {nl * LINE // units} bytes")
+    if objects and offsets:
+        base, size = objects[0]
+        touched = sorted({b - base for a, n in cycle for b in range(a, a + n) if base <= b < base + size})
+        ranges = []
+        for off in touched:
+            if ranges and off == ranges[-1][1] + 1:
+                ranges[-1][1] = off
+            else:
+                ranges.append([off, off])
+        print("  offsets:", " ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in ranges))
     return 0
 
 

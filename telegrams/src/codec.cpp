@@ -1,108 +1,37 @@
-// Table-driven frame codec: at create() the layout is resolved into (frame offset, value offset, width)
-// triples; encode/decode then move each signal between the value struct and the bytes.
+// Frame codec: at create() the layout is resolved into (frame offset, value offset, width) triples, which the
+// reference loop walks, and the telegram-specific routine of the layout is chosen (routines.cpp), which the
+// cycle calls.
 #include "tomc/telegrams/codec.hpp"
 
 #include <cstddef>
 #include <cstring>
 
+#include "field_moves.hpp"
+#include "layout_table.hpp"
+#include "routines.hpp"
+
 namespace tomc::telegrams {
 namespace {
 
-// Where each signal lives in its value struct. Both structs are standard-layout (Word<> has one uint16_t).
-constexpr std::uint8_t value_offset(Signal s) noexcept {
-  switch (s) {
-    case Signal::STW1:
-      return offsetof(SetpointSignals, STW1);
-    case Signal::NSOLL_A:
-      return offsetof(SetpointSignals, NSOLL_A);
-    case Signal::NSOLL_B:
-      return offsetof(SetpointSignals, NSOLL_B);
-    case Signal::STW2:
-      return offsetof(SetpointSignals, STW2);
-    case Signal::G1_STW:
-      return offsetof(SetpointSignals, G1_STW);
-    case Signal::G2_STW:
-      return offsetof(SetpointSignals, G2_STW);
-    case Signal::XERR:
-      return offsetof(SetpointSignals, XERR);
-    case Signal::KPC:
-      return offsetof(SetpointSignals, KPC);
-    case Signal::MOMRED:
-      return offsetof(SetpointSignals, MOMRED);
-    case Signal::STW2_ENC:
-      return offsetof(SetpointSignals, STW2_ENC);
-    case Signal::M_ADD1:
-      return offsetof(SetpointSignals, M_ADD1);
-    case Signal::M_LIMIT_POS:
-      return offsetof(SetpointSignals, M_LIMIT_POS);
-    case Signal::M_LIMIT_NEG:
-      return offsetof(SetpointSignals, M_LIMIT_NEG);
-    case Signal::ZSW1:
-      return offsetof(ActualSignals, ZSW1);
-    case Signal::NIST_A:
-      return offsetof(ActualSignals, NIST_A);
-    case Signal::NIST_B:
-      return offsetof(ActualSignals, NIST_B);
-    case Signal::ZSW2:
-      return offsetof(ActualSignals, ZSW2);
-    case Signal::G1_ZSW:
-      return offsetof(ActualSignals, G1_ZSW);
-    case Signal::G1_XIST1:
-      return offsetof(ActualSignals, G1_XIST1);
-    case Signal::G1_XIST2:
-      return offsetof(ActualSignals, G1_XIST2);
-    case Signal::G2_ZSW:
-      return offsetof(ActualSignals, G2_ZSW);
-    case Signal::G2_XIST1:
-      return offsetof(ActualSignals, G2_XIST1);
-    case Signal::G2_XIST2:
-      return offsetof(ActualSignals, G2_XIST2);
-    case Signal::MELDW:
-      return offsetof(ActualSignals, MELDW);
-    case Signal::ZSW2_ENC:
-      return offsetof(ActualSignals, ZSW2_ENC);
-    case Signal::M_ACT:
-      return offsetof(ActualSignals, M_ACT);
-  }
-  return 0;
-}
+using detail::CompiledField;
 
-static_assert(sizeof(Stw1) == 2 && sizeof(EncoderStatusWord) == 2, "words are plain 16-bit values");
-
-template <ByteOrder kOrder, typename Field>
-void encode_loop(const Field* fields, std::size_t count, const void* values, std::byte* frame) noexcept {
+template <ByteOrder kOrder>
+void encode_loop(const CompiledField* fields, std::size_t count, const void* values,
+                 std::byte* frame) noexcept {
   const auto* base = static_cast<const unsigned char*>(values);
-  for (std::size_t i = 0; i < count; ++i) {
-    const Field& f = fields[i];
-    if (f.bytes == 4) {
-      std::uint32_t v;
-      std::memcpy(&v, base + f.value_offset, sizeof v);
-      write_double_word(frame + f.frame_offset, v, kOrder);
-    } else {
-      std::uint16_t v;
-      std::memcpy(&v, base + f.value_offset, sizeof v);
-      write_word(frame + f.frame_offset, v, kOrder);
-    }
-  }
+  for (std::size_t i = 0; i < count; ++i)
+    detail::encode_field<kOrder>(fields[i], base, frame);
 }
 
-template <ByteOrder kOrder, typename Field>
-void decode_loop(const Field* fields, std::size_t count, const std::byte* frame, void* values) noexcept {
+template <ByteOrder kOrder>
+void decode_loop(const CompiledField* fields, std::size_t count, const std::byte* frame,
+                 void* values) noexcept {
   auto* base = static_cast<unsigned char*>(values);
-  for (std::size_t i = 0; i < count; ++i) {
-    const Field& f = fields[i];
-    if (f.bytes == 4) {
-      const std::uint32_t v = read_double_word(frame + f.frame_offset, kOrder);
-      std::memcpy(base + f.value_offset, &v, sizeof v);
-    } else {
-      const std::uint16_t v = read_word(frame + f.frame_offset, kOrder);
-      std::memcpy(base + f.value_offset, &v, sizeof v);
-    }
-  }
+  for (std::size_t i = 0; i < count; ++i)
+    detail::decode_field<kOrder>(fields[i], frame, base);
 }
 
-template <typename Field>
-void encode_any(ByteOrder order, const Field* fields, std::size_t count, const void* values,
+void encode_any(ByteOrder order, const CompiledField* fields, std::size_t count, const void* values,
                 std::byte* frame) noexcept {
   switch (order) {
     case ByteOrder::kBig:
@@ -120,8 +49,7 @@ void encode_any(ByteOrder order, const Field* fields, std::size_t count, const v
   }
 }
 
-template <typename Field>
-void decode_any(ByteOrder order, const Field* fields, std::size_t count, const std::byte* frame,
+void decode_any(ByteOrder order, const CompiledField* fields, std::size_t count, const std::byte* frame,
                 void* values) noexcept {
   switch (order) {
     case ByteOrder::kBig:
@@ -155,17 +83,13 @@ Result<TelegramCodec> TelegramCodec::create(int telegram, Direction direction,
     // spec 06 §2.13: NIST_B at 4, 8 or 12; XIST1 then XIST2 take the other two 32-bit slots in order.
     const std::uint8_t nist = options.telegram83_nist_b_offset;
     if (nist != 4 && nist != 8 && nist != 12) return TelegramError::kInvalidOption;
-    std::uint8_t slot = 4;
-    for (auto& f : codec.layout_.field_table) {
-      if (f.signal == Signal::G1_XIST1 || f.signal == Signal::G1_XIST2) {
-        if (slot == nist) slot += 4;
-        f.offset = slot;
-        slot += 4;
-      } else if (f.signal == Signal::NIST_B) {
-        f.offset = nist;
-      }
-    }
+    codec.layout_ = detail::with_nist_b_offset(codec.layout_, nist);
   }
+  const detail::Routines routines =
+      detail::find_routines(telegram, direction, options.byte_order, options.telegram83_nist_b_offset);
+  if (routines.encode == nullptr || routines.decode == nullptr) return TelegramError::kUnknownTelegram;
+  codec.encode_ = routines.encode;
+  codec.decode_ = routines.decode;
   codec.compile();
   return codec;
 }
@@ -235,42 +159,37 @@ const TelegramCodec& TelegramCodec::empty() noexcept {
 void TelegramCodec::compile() noexcept {
   for (std::size_t i = 0; i < layout_.field_count; ++i) {
     const FieldLayout& f = layout_.field_table[i];
-    compiled_[i] =
-        CompiledField{f.offset, value_offset(f.signal), static_cast<std::uint8_t>(info(f.signal).bits / 8)};
+    compiled_[i] = CompiledField{f.offset, detail::value_offset(f.signal),
+                                 static_cast<std::uint8_t>(info(f.signal).bits / 8)};
   }
 }
 
-TelegramError TelegramCodec::check(std::size_t frame_size, Direction expected) const noexcept {
-  if (layout_.length == 0) return TelegramError::kUnknownTelegram;
-  if (layout_.direction != expected) return TelegramError::kWrongDirection;
-  if (frame_size != layout_.length) return TelegramError::kFrameLengthMismatch;
-  return TelegramError::kNone;
-}
-
-TelegramError TelegramCodec::encode(const SetpointSignals& values,
-                                    std::span<std::byte> frame) const noexcept {
+TelegramError TelegramCodec::encode_reference(const SetpointSignals& values,
+                                              std::span<std::byte> frame) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kSetpoint);
   if (e == TelegramError::kNone)
     encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
   return e;
 }
 
-TelegramError TelegramCodec::encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept {
+TelegramError TelegramCodec::encode_reference(const ActualSignals& values,
+                                              std::span<std::byte> frame) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kActual);
   if (e == TelegramError::kNone)
     encode_any(options_.byte_order, compiled_.data(), layout_.field_count, &values, frame.data());
   return e;
 }
 
-TelegramError TelegramCodec::decode(std::span<const std::byte> frame,
-                                    SetpointSignals& values) const noexcept {
+TelegramError TelegramCodec::decode_reference(std::span<const std::byte> frame,
+                                              SetpointSignals& values) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kSetpoint);
   if (e == TelegramError::kNone)
     decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);
   return e;
 }
 
-TelegramError TelegramCodec::decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept {
+TelegramError TelegramCodec::decode_reference(std::span<const std::byte> frame,
+                                              ActualSignals& values) const noexcept {
   const TelegramError e = check(frame.size(), Direction::kActual);
   if (e == TelegramError::kNone)
     decode_any(options_.byte_order, compiled_.data(), layout_.field_count, frame.data(), &values);

@@ -16,31 +16,10 @@ namespace tomc::telegrams {
 namespace {
 
 using test::hex;
-
-constexpr ByteOrder kAllOrders[] = {ByteOrder::kBig, ByteOrder::kLittleBytes, ByteOrder::kSwappedWords,
-                                    ByteOrder::kLittle};
-
-constexpr Signal kSetpointSignals[] = {
-    Signal::STW1,   Signal::NSOLL_A,     Signal::NSOLL_B,    Signal::STW2,   Signal::G1_STW,
-    Signal::G2_STW, Signal::XERR,        Signal::KPC,        Signal::MOMRED, Signal::STW2_ENC,
-    Signal::M_ADD1, Signal::M_LIMIT_POS, Signal::M_LIMIT_NEG};
-constexpr Signal kActualSignals[] = {Signal::ZSW1,     Signal::NIST_A,   Signal::NIST_B,   Signal::ZSW2,
-                                     Signal::G1_ZSW,   Signal::G1_XIST1, Signal::G1_XIST2, Signal::G2_ZSW,
-                                     Signal::G2_XIST1, Signal::G2_XIST2, Signal::MELDW,    Signal::ZSW2_ENC,
-                                     Signal::M_ACT};
-
-std::uint32_t random_raw(std::mt19937& rng, Signal s) {
-  const std::uint32_t v = rng();
-  return info(s).bits == 16 ? (v & 0xFFFFu) : v;
-}
-
-template <typename Values, std::size_t N>
-Values random_values(std::mt19937& rng, const Signal (&signals)[N]) {
-  Values v;
-  for (const Signal s : signals)
-    v.set_raw(s, random_raw(rng, s));
-  return v;
-}
+using test::kActualSignals;
+using test::kAllOrders;
+using test::kSetpointSignals;
+using test::random_values;
 
 std::string trace(int telegram, Direction d, ByteOrder o) {
   return "telegram " + std::to_string(telegram) + " " + std::string(to_string(d)) + " " +

@@ -41,6 +41,10 @@ DriveConnection::DriveConnection(DeviceIo& device, const DriveConnectionConfig& 
   const auto& drive_actual = codecs_(tg::Direction::kActual, Slot::kDrive);
   has_nist_b_ = drive_actual.carries(tg::Signal::NIST_B);
   has_zsw2_ = drive_actual.carries(tg::Signal::ZSW2);
+  for (std::size_t i = 0; i < drives::kSlotCount; ++i) {
+    if (codecs_.actual[i]->frame_size() != 0) actual_slots_ |= static_cast<std::uint8_t>(1u << i);
+    if (codecs_.setpoint[i]->frame_size() != 0) setpoint_slots_ |= static_cast<std::uint8_t>(1u << i);
+  }
 }
 
 void DriveConnection::restart(const DriveConnectionConfig& config) noexcept {
@@ -91,7 +95,7 @@ void DriveConnection::read() noexcept {
     ever_fresh_ = true;
     auto decode = [&](Slot s, tg::ActualSignals& into) {
       const auto i = static_cast<std::size_t>(s);
-      if (codecs_.actual[i]->frame_size() != 0)
+      if ((actual_slots_ & (1u << i)) != 0)
         (void)codecs_.actual[i]->decode(device_->actual.slots[i].view(), into);
     };
     decode(Slot::kDrive, drive_act_);
@@ -102,8 +106,7 @@ void DriveConnection::read() noexcept {
     ++missed_;
   }
 
-  const auto& drive_codec = codecs_(tg::Direction::kActual, Slot::kDrive);
-  const bool has_drive = drive_codec.frame_size() != 0;
+  const bool has_drive = (actual_slots_ & (1u << static_cast<unsigned>(Slot::kDrive))) != 0;
   if (has_drive) {
     status_ = tg::decode_zsw1(drive_act_.ZSW1.value());
     actual_speed_rpm_ = has_nist_b_ ? tg::n4_to_speed(drive_act_.NIST_B, config_.reference_speed_rpm)
@@ -114,7 +117,7 @@ void DriveConnection::read() noexcept {
   if (config_.isochronous && fresh) {
     if (has_zsw2_) {
       (void)slave_monitor_.check(static_cast<std::uint8_t>(drive_act_.ZSW2.field(tg::kSignOfLifeField)));
-    } else if (!has_drive && codecs_(tg::Direction::kActual, Slot::kEncoder1).frame_size() != 0) {
+    } else if (!has_drive && (actual_slots_ & (1u << static_cast<unsigned>(Slot::kEncoder1))) != 0) {
       (void)slave_monitor_.check(
           static_cast<std::uint8_t>(encoder_act_[0].ZSW2_ENC.field(tg::kSignOfLifeField)));
     }
@@ -164,9 +167,8 @@ void DriveConnection::write(const ServoCommand& command) noexcept {
     fixed_stop_sent_ = command.travel_to_fixed_stop;
   }
   set_encoder_control(command.encoder, command.encoder_control);
-  const auto& drive_codec = codecs_(tg::Direction::kSetpoint, Slot::kDrive);
   const std::uint8_t master = config_.isochronous ? master_.next() : 0;
-  if (drive_codec.frame_size() != 0) {
+  if ((setpoint_slots_ & (1u << static_cast<unsigned>(Slot::kDrive))) != 0) {
     // STW1: the TO's bits 0..7 and 10 from the sequencer, the user's bits (8, 9, 11..15) kept.
     const std::uint16_t owned = 0x04FF;
     const std::uint16_t stw1 = sequencer_.next(drive_act_.ZSW1.value(), request_);
@@ -183,7 +185,7 @@ void DriveConnection::write(const ServoCommand& command) noexcept {
     e.STW2_ENC.set_field(tg::kSignOfLifeField, master);
   auto encode = [&](Slot s, const tg::SetpointSignals& from) {
     const auto i = static_cast<std::size_t>(s);
-    if (codecs_.setpoint[i]->frame_size() != 0)
+    if ((setpoint_slots_ & (1u << i)) != 0)
       (void)codecs_.setpoint[i]->encode(from, device_->setpoint.slots[i].view());
   };
   encode(Slot::kDrive, drive_sp_);

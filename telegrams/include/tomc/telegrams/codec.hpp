@@ -1,6 +1,8 @@
 #pragma once
 // Encodes and decodes one telegram of one direction into caller-provided bytes. No allocation, no
-// exceptions: every outcome is a TelegramError. Configure once (create), then call per cycle.
+// exceptions: every outcome is a TelegramError. Configure once (create), then call per cycle: create()
+// chooses a straight-line routine for the telegram's layout and byte order (decision O4); the generic
+// per-field loop stays as the reference it is tested against.
 
 #include <array>
 #include <cstddef>
@@ -13,6 +15,19 @@
 #include "tomc/telegrams/signals.hpp"
 
 namespace tomc::telegrams {
+
+namespace detail {
+// A layout unrolled at compile time (routines.cpp): `values` is the SetpointSignals or ActualSignals of the
+// layout's direction, `frame` has the layout's length.
+using EncodeRoutine = void (*)(const void* values, std::byte* frame) noexcept;
+using DecodeRoutine = void (*)(const std::byte* frame, void* values) noexcept;
+// A signal resolved at configuration: where it sits in the frame and in the value struct, and its width.
+struct CompiledField {
+  std::uint8_t frame_offset;
+  std::uint8_t value_offset;  // offsetof the member in SetpointSignals / ActualSignals
+  std::uint8_t bytes;         // 2 or 4
+};
+}  // namespace detail
 
 struct CodecOptions {
   ByteOrder byte_order = ByteOrder::kBig;
@@ -42,25 +57,53 @@ class TelegramCodec {
   bool carries(Signal signal) const noexcept { return layout_.carries(signal); }
 
   // The frame must be exactly frame_size() bytes; signals the telegram does not carry are left untouched.
-  TelegramError encode(const SetpointSignals& values, std::span<std::byte> frame) const noexcept;
-  TelegramError encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept;
-  TelegramError decode(std::span<const std::byte> frame, SetpointSignals& values) const noexcept;
-  TelegramError decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept;
+  TelegramError encode(const SetpointSignals& values, std::span<std::byte> frame) const noexcept {
+    return run(&values, frame, Direction::kSetpoint);
+  }
+  TelegramError encode(const ActualSignals& values, std::span<std::byte> frame) const noexcept {
+    return run(&values, frame, Direction::kActual);
+  }
+  TelegramError decode(std::span<const std::byte> frame, SetpointSignals& values) const noexcept {
+    return run(frame, &values, Direction::kSetpoint);
+  }
+  TelegramError decode(std::span<const std::byte> frame, ActualSignals& values) const noexcept {
+    return run(frame, &values, Direction::kActual);
+  }
+
+  // The same through the generic per-field loop over the compiled layout: the reference the telegram-specific
+  // routines are tested against (tests/telegrams/routines_test.cpp). Not for the cycle.
+  TelegramError encode_reference(const SetpointSignals& values, std::span<std::byte> frame) const noexcept;
+  TelegramError encode_reference(const ActualSignals& values, std::span<std::byte> frame) const noexcept;
+  TelegramError decode_reference(std::span<const std::byte> frame, SetpointSignals& values) const noexcept;
+  TelegramError decode_reference(std::span<const std::byte> frame, ActualSignals& values) const noexcept;
 
  private:
-  // The layout resolved once at create(): where each signal sits in the frame and in the value struct, so the
-  // per-cycle loop is a few loads and stores (docs/performance.md).
-  struct CompiledField {
-    std::uint8_t frame_offset;
-    std::uint8_t value_offset;  // offsetof the member in SetpointSignals / ActualSignals
-    std::uint8_t bytes;         // 2 or 4
-  };
+  // The layout resolved once at create(), walked by the reference loop.
   void compile() noexcept;
-  TelegramError check(std::size_t frame_size, Direction expected) const noexcept;
+  // Refuses an empty codec, the other direction's struct and a frame of another length, in this order.
+  TelegramError check(std::size_t frame_size, Direction expected) const noexcept {
+    if (layout_.length == 0) return TelegramError::kUnknownTelegram;
+    if (layout_.direction != expected) return TelegramError::kWrongDirection;
+    if (frame_size != layout_.length) return TelegramError::kFrameLengthMismatch;
+    return TelegramError::kNone;
+  }
+  TelegramError run(const void* values, std::span<std::byte> frame, Direction expected) const noexcept {
+    const TelegramError e = check(frame.size(), expected);
+    if (e == TelegramError::kNone) encode_(values, frame.data());
+    return e;
+  }
+  TelegramError run(std::span<const std::byte> frame, void* values, Direction expected) const noexcept {
+    const TelegramError e = check(frame.size(), expected);
+    if (e == TelegramError::kNone) decode_(frame.data(), values);
+    return e;
+  }
 
   TelegramLayout layout_{};
   CodecOptions options_{};
-  std::array<CompiledField, kMaxFieldsPerFrame> compiled_{};
+  std::array<detail::CompiledField, kMaxFieldsPerFrame> compiled_{};
+  // Set by create() for every valid layout; never called while the length is 0 (check() refuses first).
+  detail::EncodeRoutine encode_ = nullptr;
+  detail::DecodeRoutine decode_ = nullptr;
 };
 
 }  // namespace tomc::telegrams

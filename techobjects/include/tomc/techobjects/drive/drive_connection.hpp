@@ -148,6 +148,9 @@ class DriveConnection {
   bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
   bool has_zsw2_ = false;
   bool fixed_stop_sent_ = false;  // STW2.8 as the last command set it (the user may set it too)
+  // Bit n: slot n carries a telegram in that direction (resolved once: the cycle codes only those; O4).
+  std::uint8_t actual_slots_ = 0;
+  std::uint8_t setpoint_slots_ = 0;
 };
 
 }  // namespace tomc::techobjects

@@ -422,70 +422,37 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }
 
-  double servo_cycle_s_ = 0.001;
-
-  // components
-  AxisUnitFactors units_{};
-  EncoderChannel
-      encoder_;  // the operative encoder, Sensor[OperativeSensor] (its mechanics: encoder_.chain())
-  AdditionalEncoders additional_;  // the other Sensor[n].Existent encoders (spec 01 §3.8, decision B1)
-  ServoCommand command_{};         // what MC_Servo sends the drive (one writer: DriveConnection::write)
-  // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
-  // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
-  std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
   PositionController* controller() noexcept { return std::get_if<PositionController>(&control_loop_); }
   BasicSetpointDelayLine<kSimulationDelayCycles>* simulation_delay() noexcept {
     return std::get_if<BasicSetpointDelayLine<kSimulationDelayCycles>>(&control_loop_);
   }
-  FollowingErrorMonitor following_error_;
-  PositioningMonitor positioning_;
-  StandstillSignal standstill_;
-  limits::SoftwareLimitMonitor software_limits_;
-  limits::HardwareLimitMonitor hardware_limits_;
-  // ---- backlash compensation (spec 01 §5.9) and dynamic filter (spec 02 §7.6) ----
-  BacklashCompensation backlash_;
-  DynamicFilter dynamic_filter_;
-  MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
-  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
-
-  // motion
-  Motion motion_{};
-  Motion pending_{};  // BufferMode 1
-  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
-  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
-  std::variant<VelocityProfile, PositionProfile> profile_;
   const VelocityProfile& velocity_profile() const noexcept {
     return *std::get_if<VelocityProfile>(&profile_);
   }
   const PositionProfile& position_profile() const noexcept {
     return *std::get_if<PositionProfile>(&profile_);
   }
-  double profile_time_ = 0.0;
-  MotionState setpoint_{};  // continuous position units: base + superimposed
+
+  // Member order (decision O5): what the steady MC_Servo + MC_Interpolator cycle reads and writes comes first
+  // and together — the superimposed motion, whose own state sits at its end, then the scalars and flags, then
+  // the monitors and components with their hot parts; what only jobs, homing or configuration use comes last.
+  // bench/touched_bytes.py --offsets measures it; sizeof stays 7,840 (memory_per_axis_tests).
   SuperimposedMotion superimposed_{};
-  double positioning_target_ = 0.0;
-  double limit_stop_position_ = 0.0;
-  double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
-  double last_actual_velocity_ = 0.0;
-
-  // homing
-  ActiveHomingJob homing_{};
-  PassiveHomingJob passive_{};
-  PassiveHomingSearch passive_search_{};
-  InputEdges input_edges_{};             // edges of the homing digital input / cam, latched by MC_Servo
-  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
-  RetainedEncoderData retained_{};
-
+  double servo_cycle_s_ = 0.001;
+  AxisUnitFactors units_{};
+  ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
+  MotionState setpoint_{};  // continuous position units: base + superimposed
+  double profile_time_ = 0.0;
+  MotionState filtered_{};  // x_f, v_f, a_f: the setpoint after the dynamic filter, this servo cycle
   // actual values (continuous position units)
   double actual_position_ = 0.0;
   double actual_velocity_ = 0.0;
-  double reference_mark_position_ = 0.0;
   // MC_SetSensor Mode 1: the old encoder's position minus the new one's, added to the actual value and
   // decaying with PositionControl.SmoothingTimeByChangeDifference (spec 01 §3.8).
   double sensor_switch_difference_ = 0.0;
-
-  // MC_TorqueLimiting (spec 01 §8.10/§8.11)
-  ClampingMonitor clamping_{};
+  double profile_offset_ = 0.0;  // direct homing during a profile: its positions move with the axis
+  double last_actual_velocity_ = 0.0;
+  SynchronousSlot* synchronous_ = nullptr;
 
   // ---- one-byte state, kept together so that it leaves no padding (8 KiB per axis TO, issue 18) ----
   AxisDigitalInputs inputs_{};
@@ -508,7 +475,42 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool acceleration_was_zero_ = true;    // the setpoint's acceleration in the last cycle (ConstantVelocity)
   bool superimposing_error_ = false;     // ErrorWord.X16: a superimposing axis was not a possible one
   bool positioning_on_base_ = false;     // the positioning check runs on actual - superimposed (U13)
-  SynchronousSlot* synchronous_ = nullptr;
+
+  // monitors
+  FollowingErrorMonitor following_error_;
+  StandstillSignal standstill_;
+  limits::HardwareLimitMonitor hardware_limits_;
+  ClampingMonitor clamping_{};  // MC_TorqueLimiting (spec 01 §8.10/§8.11)
+  PassiveHomingJob passive_{};
+  InputEdges input_edges_{};  // edges of the homing digital input / cam, latched by MC_Servo
+  limits::SoftwareLimitMonitor software_limits_;
+  // ---- backlash compensation (spec 01 §5.9) ----
+  BacklashCompensation backlash_;
+
+  // motion and the components the cycle runs
+  Motion motion_{};
+  ActualValueExtrapolation extrapolation_{};  // the actual value as a leading value (spec 07 §1.4)
+  EncoderChannel
+      encoder_;  // the operative encoder, Sensor[OperativeSensor] (its mechanics: encoder_.chain())
+  // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
+  // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
+  std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
+  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
+  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
+  std::variant<VelocityProfile, PositionProfile> profile_;
+
+  // ---- cold: options that are off in the steady cycle, jobs and homing state, configuration ----
+  DynamicFilter dynamic_filter_;  // spec 02 §7.6
+  PositioningMonitor positioning_;
+  AdditionalEncoders additional_;        // the other Sensor[n].Existent encoders (spec 01 §3.8, decision B1)
+  std::optional<double> mark_position_;  // a reference mark captured by MC_Servo
+  RetainedEncoderData retained_{};
+  Motion pending_{};  // BufferMode 1
+  ActiveHomingJob homing_{};
+  PassiveHomingSearch passive_search_{};
+  double positioning_target_ = 0.0;
+  double limit_stop_position_ = 0.0;
+  double reference_mark_position_ = 0.0;
   std::unique_ptr<SuperimposingAxisTable> superimposing_axes_;  // configured only when used
 };
 
