@@ -198,14 +198,15 @@ int main(int argc, char** argv) {
       "%d devices, send clock %.0f us, %d s, fifo %d: %zu output frames of %zu FrameIDs captured\n"
       "send jitter |interval - send clock| (us): p50 %.1f, p99 %.1f, p99.9 %.1f, max %.1f\n"
       "cyclic thread: %llu cycles, %llu overruns, start latency p99 %.0f us, max %.0f us (whole run); wake "
-      "margin %d us: %.0f us spun per cycle, %llu late wake-ups\n"
+      "margin %d us: %.0f us spun per cycle, %llu late wake-ups, %llu early starts\n"
       "%d ARs for %d devices (%d lost), %llu setpoints applied; %s\n",
       o.devices, period_us, o.seconds, o.fifo, jitter.size() + times.size(), times.size(),
       percentile(jitter, 0.5), percentile(jitter, 0.99), percentile(jitter, 0.999),
       jitter.empty() ? 0.0 : jitter.back(), static_cast<unsigned long long>(after.cycles - before.cycles),
-      static_cast<unsigned long long>(after.overruns - before.overruns), after.wake_up_p99_us,
-      after.wake_up_max_us, o.wake_margin_us, after.spin_mean_us,
-      static_cast<unsigned long long>(after.late_wakeups), ars, o.devices, ars - o.devices,
+      static_cast<unsigned long long>(after.overruns - before.overruns), after.start_latency_p99_us,
+      after.start_latency_max_us, o.wake_margin_us, after.spin_mean_us,
+      static_cast<unsigned long long>(after.late_wakeups),
+      static_cast<unsigned long long>(after.early_starts), ars, o.devices, ars - o.devices,
       static_cast<unsigned long long>(after.setpoints_applied - before.setpoints_applied), summary.c_str());
   return times.size() == static_cast<std::size_t>(o.devices) ? 0 : 1;
 }

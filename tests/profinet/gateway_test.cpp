@@ -44,6 +44,7 @@
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 #include "tomc/scenario/scenario.hpp"
+#include "tomc/telegrams/codec.hpp"
 
 #ifndef TOMC_BINARY
 #error "TOMC_BINARY must name build/bin/tomc"
@@ -179,7 +180,7 @@ TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
                  { "name": "a6", "name_of_station": "d6", "ip": "10.0.0.7" } ] })");
   const std::string all = joined(lines);
   EXPECT_TRUE(has_line(lines,
-                       "devices[0].supplementary_telegram: supplementary_telegram: telegram 750 needs a "
+                       "devices[0].supplementary_telegram: telegram 750 needs a "
                        "drive telegram"))
       << all;
   // Only that line: a telegram that failed validation has no place to collide with (review finding).
@@ -187,8 +188,8 @@ TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
                           [](const std::string& l) { return l.starts_with("devices[0]"); }),
             1)
       << all;
-  EXPECT_TRUE(has_line(lines, "devices[1].encoder_telegram: encoder_telegrams[0]: 82 is not 81 or 83"))
-      << all;
+  EXPECT_TRUE(has_line(lines, "devices[1].encoder_telegram: 82 is not 81 or 83")) << all;
+  EXPECT_EQ(all.find("supplementary_telegram: supplementary_telegram"), std::string::npos) << all;
   EXPECT_TRUE(has_line(lines,
                        "devices[2].supplementary_subslot: slot 1 subslot 2 carries the drive telegram "
                        "already"))
@@ -243,11 +244,67 @@ TEST(GatewayConfig, ASecondEncoderHasItsSubmoduleBehindTheFirst) {
                    "encoder2_telegram": 81, "encoder2_slot": 2 } ] })");
   const std::string all = joined(lines);
   EXPECT_TRUE(has_line(lines, "devices[0].encoder2_telegram: a second encoder needs a first one")) << all;
-  EXPECT_TRUE(has_line(lines, "devices[1].encoder2_telegram: encoder_telegrams[1]: 82 is not 81 or 83"))
-      << all;
+  EXPECT_TRUE(has_line(lines, "devices[1].encoder2_telegram: 82 is not 81 or 83")) << all;
+  // The messages name the file's keys only, not drives::DeviceConfig's fields.
+  EXPECT_EQ(all.find("encoder_telegrams["), std::string::npos) << all;
   EXPECT_TRUE(
       has_line(lines, "devices[2].encoder2_subslot: slot 2 subslot 2 carries the encoder telegram already"))
       << all;
+}
+
+// Decision I26: the bytes the gateway watches for bit 15 (encoder error, spec 06 §3.7) of G1_ZSW/G2_ZSW of
+// the drive telegram and G1_ZSW of each encoder telegram (83 in kEncoder1 and kEncoder2), in every byte
+// order: each is the byte, and the bit in it, where the telegram codec of that slot writes Gx_ZSW bit 15.
+TEST(GatewayConfig, TheEncoderErrorBitsAreBit15OfEachEncoderStatusWordInTheByteOrder) {
+  namespace tg = tomc::telegrams;
+  using tomc::drives::Slot;
+  struct Word {
+    Slot slot;
+    tg::Signal signal;
+    const char* name;
+  };
+  const std::vector<Word> words{
+      {Slot::kDrive, tg::Signal::G1_ZSW, "G1_ZSW of the drive telegram"},
+      {Slot::kDrive, tg::Signal::G2_ZSW, "G2_ZSW of the drive telegram"},
+      {Slot::kEncoder1, tg::Signal::G1_ZSW, "G1_ZSW of the encoder telegram"},
+      {Slot::kEncoder2, tg::Signal::G1_ZSW, "G1_ZSW of the second encoder telegram"}};
+  for (const tg::ByteOrder order : {tg::ByteOrder::kBig, tg::ByteOrder::kLittleBytes,
+                                    tg::ByteOrder::kSwappedWords, tg::ByteOrder::kLittle}) {
+    SCOPED_TRACE(std::string(tg::to_string(order)));
+    sc::ProfinetDeviceConfig device;
+    device.byte_order = order;
+    device.telegram = 4;  // two encoders: G1_ZSW and G2_ZSW
+    device.encoder_telegram = 83;
+    device.encoder2_telegram = 83;
+    const auto bits = device.encoder_error_bits();
+    ASSERT_EQ(bits.size(), words.size());
+    for (std::size_t k = 0; k < words.size(); ++k) {
+      SCOPED_TRACE(words[k].name);
+      EXPECT_EQ(bits[k].slot, words[k].slot);
+      EXPECT_EQ(std::string(bits[k].name), words[k].name);
+      // The frame with the word's bit 15 set against the frame without it: one byte differs, by one bit.
+      const auto codec = tg::TelegramCodec::create(device.device_config().telegram(words[k].slot),
+                                                   tg::Direction::kActual, device.device_config().codec);
+      ASSERT_TRUE(codec);
+      tg::ActualSignals values{};
+      std::array<std::byte, tg::kMaxFrameBytes> without{};
+      std::array<std::byte, tg::kMaxFrameBytes> with{};
+      ASSERT_EQ(codec->encode(values, std::span(without.data(), codec->frame_size())),
+                tg::TelegramError::kNone);
+      values.set_raw(words[k].signal, 0x8000);
+      ASSERT_EQ(codec->encode(values, std::span(with.data(), codec->frame_size())), tg::TelegramError::kNone);
+      std::vector<std::size_t> differing;
+      for (std::size_t b = 0; b < codec->frame_size(); ++b)
+        if (with[b] != without[b]) differing.push_back(b);
+      ASSERT_EQ(differing.size(), 1u);
+      EXPECT_EQ(bits[k].byte, differing[0]);
+      EXPECT_EQ(bits[k].mask, std::to_integer<std::uint8_t>(with[differing[0]] ^ without[differing[0]]));
+    }
+  }
+  // The telegrams that carry no encoder status word add nothing: telegram 1 alone watches no byte.
+  sc::ProfinetDeviceConfig speed_only;
+  speed_only.telegram = 1;
+  EXPECT_TRUE(speed_only.encoder_error_bits().empty());
 }
 
 TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {

@@ -79,7 +79,10 @@ void RealTimeRunner::stop() {
 }
 
 void RealTimeRunner::record_jitter(std::int64_t ns) noexcept {
-  if (ns < 0) ns = 0;
+  if (ns < 0) {
+    early_starts_.fetch_add(1, std::memory_order_relaxed);
+    ns = 0;
+  }
   const auto bucket =
       static_cast<std::size_t>(ns / 1000) < kMaxJitterUs ? static_cast<std::size_t>(ns / 1000) : kMaxJitterUs;
   histogram_[bucket].fetch_add(1, std::memory_order_relaxed);
@@ -126,6 +129,7 @@ void RealTimeRunner::loop() noexcept {
       spin_ns_.fetch_add(static_cast<std::uint64_t>(start - woke), std::memory_order_relaxed);
     }
     record_jitter(start - deadline);
+    deadline_ns_.store(deadline, std::memory_order_relaxed);
     cycle_();
     cycles_.fetch_add(1, std::memory_order_relaxed);
     deadline += period;
@@ -147,6 +151,7 @@ RunnerStatistics RealTimeRunner::statistics() const {
   s.overruns = overruns_.load();
   s.skipped_periods = skipped_.load();
   s.late_wakeups = late_wakeups_.load();
+  s.early_starts = early_starts_.load();
   if (s.cycles > 0)
     s.spin_mean_us = static_cast<double>(spin_ns_.load()) / 1000.0 / static_cast<double>(s.cycles);
   if (setup_done_.load(std::memory_order_acquire)) s.setup_warnings = setup_warnings_;

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <thread>
 
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
@@ -75,7 +76,19 @@ TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   // 400 us early at 1 ms: each cycle spins what the kernel's wake-up latency left of the margin; a wake-up
   // later than the deadline is counted instead. Without a margin nothing spins.
   std::atomic<int> calls{0};
-  RealTimeRunner spinning(RealTimeRunnerConfig{1ms, 0, false, 400us}, [&] { ++calls; });
+  std::atomic<int> early{0};
+  std::atomic<std::int64_t> earliest_ns{0};
+  const RealTimeRunner* self = nullptr;
+  RealTimeRunner spinning(RealTimeRunnerConfig{1ms, 0, false, 400us}, [&] {
+    const std::int64_t before_deadline =
+        (self->cycle_deadline() - std::chrono::steady_clock::now().time_since_epoch()).count();
+    if (before_deadline > 0) {
+      ++early;
+      if (before_deadline > earliest_ns.load()) earliest_ns.store(before_deadline);
+    }
+    ++calls;
+  });
+  self = &spinning;
   spinning.start();
   ASSERT_TRUE(wait_for_calls(calls, 50));
   spinning.stop();
@@ -88,6 +101,10 @@ TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   // late it started (a preemption during the spin).
   EXPECT_LE(s.spin_mean_us, 400.0 + s.jitter_max_us + 1.0);
   EXPECT_LE(s.late_wakeups, s.cycles);
+  // The spin ends at the deadline, never before: no cycle starts early, as the cycles themselves saw it
+  // (their start on the clock against the runner's deadline) and as the runner counted it.
+  EXPECT_EQ(early.load(), 0) << "earliest start " << earliest_ns.load() << " ns before its deadline";
+  EXPECT_EQ(s.early_starts, 0u);
 
   calls = 0;
   RealTimeRunner sleeping(RealTimeRunnerConfig{1ms, 0, false}, [&] { ++calls; });
@@ -96,6 +113,7 @@ TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   sleeping.stop();
   EXPECT_EQ(sleeping.statistics().spin_mean_us, 0.0);
   EXPECT_EQ(sleeping.statistics().late_wakeups, 0u);
+  EXPECT_EQ(sleeping.statistics().early_starts, 0u);  // an absolute sleep does not end before its time
 }
 
 TEST(RealTimeRunner, RejectsBadConfiguration) {

@@ -36,8 +36,7 @@ using drives::Slot;
 
 namespace {
 
-constexpr std::uint16_t kZsw1Fault = 1u << 3;       // ZSW1 bit 3: fault present (spec 06 §3)
-constexpr std::uint8_t kGxZswErrorHighByte = 0x80;  // Gx_ZSW bit 15: encoder error (spec 06 §3.7)
+constexpr std::uint16_t kZsw1Fault = 1u << 3;  // ZSW1 bit 3: fault present (spec 06 §3)
 // How many send clocks an answer waits for the input frames sent after its setpoint: one is the normal case
 // (the frames arrive within the cycle), more cover a device (or a loaded machine) that answers late. A new
 // setpoint ends the wait at once (the answer goes out as it is, stale for the controller), so a controller in
@@ -136,12 +135,8 @@ struct ProfinetGateway::Impl {
     std::size_t zsw1_low_byte = 1;  // where ZSW1 bit 3 is in the telegram's first word (byte order)
     // Where bit 15 (encoder error) of each encoder status word is in the actual frames: G1_ZSW/G2_ZSW of the
     // drive telegram, G1_ZSW of each encoder telegram (spec 06 §3.7); what the status calls it.
-    struct EncoderStatusWord {
-      std::size_t slot = 0;
-      std::size_t high_byte = 0;
-      const char* name = "";
-    };
-    std::array<EncoderStatusWord, 4> encoder_words{};
+    std::array<scenario::ProfinetEncoderErrorBit, scenario::ProfinetDeviceConfig::kMaxEncoderErrorBits>
+        encoder_words{};
     std::size_t encoder_word_count = 0;
     std::atomic<std::uint32_t> encoder_errors{0};  // bit k: encoder_words[k] reports an encoder error
     std::array<scenario::ProfinetTelegramPlace, drives::kSlotCount> places{};  // config.place() per slot
@@ -358,9 +353,8 @@ struct ProfinetGateway::Impl {
       std::uint32_t encoder_errors = 0;
       for (std::size_t k = 0; k < d.encoder_word_count; ++k) {
         const auto& w = d.encoder_words[k];
-        const drives::Frame& f = image.actual[i].slots[w.slot];
-        if (f.length > w.high_byte &&
-            (std::to_integer<std::uint8_t>(f.bytes[w.high_byte]) & kGxZswErrorHighByte))
+        const drives::Frame& f = image.actual[i].slots[static_cast<std::size_t>(w.slot)];
+        if (f.length > w.byte && (std::to_integer<std::uint8_t>(f.bytes[w.byte]) & w.mask) != 0)
           encoder_errors |= 1u << k;
       }
       d.encoder_errors.store(encoder_errors, std::memory_order_relaxed);
@@ -587,18 +581,9 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     d->zsw1_low_byte =
         c.byte_order == telegrams::ByteOrder::kBig || c.byte_order == telegrams::ByteOrder::kSwappedWords ? 1
                                                                                                           : 0;
-    const auto add_encoder_word = [&d](Slot slot, telegrams::Signal word, const char* name) {
-      const auto layout =
-          telegrams::find_layout(d->device_config.telegram(slot), telegrams::Direction::kActual);
-      const int offset = layout ? layout->offset_of(word) : -1;
-      if (offset < 0 || d->encoder_word_count == d->encoder_words.size()) return;
-      d->encoder_words[d->encoder_word_count++] = {
-          static_cast<std::size_t>(slot), static_cast<std::size_t>(offset) + 1 - d->zsw1_low_byte, name};
-    };
-    add_encoder_word(Slot::kDrive, telegrams::Signal::G1_ZSW, "G1_ZSW of the drive telegram");
-    add_encoder_word(Slot::kDrive, telegrams::Signal::G2_ZSW, "G2_ZSW of the drive telegram");
-    add_encoder_word(Slot::kEncoder1, telegrams::Signal::G1_ZSW, "G1_ZSW of the encoder telegram");
-    add_encoder_word(Slot::kEncoder2, telegrams::Signal::G1_ZSW, "G1_ZSW of the second encoder telegram");
+    for (const scenario::ProfinetEncoderErrorBit& bit : c.encoder_error_bits()) {
+      if (d->encoder_word_count < d->encoder_words.size()) d->encoder_words[d->encoder_word_count++] = bit;
+    }
     pn::ControllerDeviceConfig pc;
     pc.name_of_station = c.name_of_station;
     pc.ip = {c.ip, c.netmask, {}};
@@ -687,8 +672,9 @@ GatewayCounters ProfinetGateway::counters() const {
   const techobjects::RunnerStatistics r = impl_->runner->statistics();
   c.cycles = r.cycles;
   c.overruns = r.overruns;
-  c.wake_up_p99_us = r.jitter_p99_us;
-  c.wake_up_max_us = r.jitter_max_us;
+  c.start_latency_p99_us = r.jitter_p99_us;
+  c.start_latency_max_us = r.jitter_max_us;
+  c.early_starts = r.early_starts;
   c.spin_mean_us = r.spin_mean_us;
   c.late_wakeups = r.late_wakeups;
   return c;

@@ -9,6 +9,7 @@
 #include "json_reader.hpp"
 #include "tomc/profinet/gsdml.hpp"
 #include "tomc/telegrams/codec.hpp"
+#include "tomc/telegrams/layout.hpp"
 
 namespace tomc::scenario {
 
@@ -166,7 +167,10 @@ void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& pro
                       : why.rfind("encoder_telegrams[1]", 0) == 0 ? "encoder2_telegram"
                       : why.rfind("encoder", 0) == 0              ? "encoder_telegram"
                                                                   : "telegram";
-    problems.add(r.path_of(key), why);
+    // The file's key names the field: without drives::DeviceConfig's own field name ("encoder_telegrams[1]:
+    // ").
+    const std::size_t colon = why.find(": ");
+    problems.add(r.path_of(key), colon == std::string::npos ? why : why.substr(colon + 2));
   }
   if (device.encoder2_telegram != 0 && device.encoder_telegram == 0)
     problems.add(r.path_of("encoder2_telegram"), "a second encoder needs a first one (encoder_telegram)");
@@ -286,6 +290,25 @@ drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
   c.encoder_telegrams[1] = encoder2_telegram;
   c.codec.byte_order = byte_order;
   return c;
+}
+
+std::vector<ProfinetEncoderErrorBit> ProfinetDeviceConfig::encoder_error_bits() const {
+  const drives::DeviceConfig config = device_config();
+  // The high byte of a 16-bit word is its second byte when every word is low byte first.
+  const bool low_byte_first =
+      byte_order == telegrams::ByteOrder::kLittleBytes || byte_order == telegrams::ByteOrder::kLittle;
+  std::vector<ProfinetEncoderErrorBit> bits;
+  const auto add = [&](drives::Slot slot, telegrams::Signal word, const char* name) {
+    const auto layout = telegrams::find_layout(config.telegram(slot), telegrams::Direction::kActual);
+    const int offset = layout ? layout->offset_of(word) : -1;
+    if (offset < 0) return;
+    bits.push_back({slot, static_cast<std::size_t>(offset) + (low_byte_first ? 1u : 0u), 0x80, name});
+  };
+  add(drives::Slot::kDrive, telegrams::Signal::G1_ZSW, "G1_ZSW of the drive telegram");
+  add(drives::Slot::kDrive, telegrams::Signal::G2_ZSW, "G2_ZSW of the drive telegram");
+  add(drives::Slot::kEncoder1, telegrams::Signal::G1_ZSW, "G1_ZSW of the encoder telegram");
+  add(drives::Slot::kEncoder2, telegrams::Signal::G1_ZSW, "G1_ZSW of the second encoder telegram");
+  return bits;
 }
 
 void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& config, Problems& problems,

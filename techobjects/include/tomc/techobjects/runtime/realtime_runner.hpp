@@ -38,6 +38,9 @@ struct RunnerStatistics {
   // deadline (wake-up latency above the margin).
   double spin_mean_us = 0.0;
   std::uint64_t late_wakeups = 0;
+  // Cycles that started before their deadline (the start latency above counts them as 0): none, unless the
+  // spin or the sleep ended early.
+  std::uint64_t early_starts = 0;
 };
 
 class RealTimeRunner {
@@ -54,6 +57,11 @@ class RealTimeRunner {
   void stop();  // joins the thread
   bool running() const noexcept { return running_.load(std::memory_order_acquire); }
   RunnerStatistics statistics() const;
+  // The deadline (CLOCK_MONOTONIC, as std::chrono::steady_clock) of the cycle running now: for the cycle
+  // function, to see when it started against it.
+  std::chrono::nanoseconds cycle_deadline() const noexcept {
+    return std::chrono::nanoseconds(deadline_ns_.load(std::memory_order_relaxed));
+  }
 
  private:
   void loop() noexcept;
@@ -69,6 +77,8 @@ class RealTimeRunner {
   std::atomic<std::uint64_t> skipped_{0};
   std::atomic<std::uint64_t> spin_ns_{0};
   std::atomic<std::uint64_t> late_wakeups_{0};
+  std::atomic<std::uint64_t> early_starts_{0};
+  std::atomic<std::int64_t> deadline_ns_{0};
   std::atomic<std::int64_t> jitter_min_ns_{INT64_MAX};
   std::atomic<std::int64_t> jitter_max_ns_{0};
   std::array<std::atomic<std::uint32_t>, kMaxJitterUs + 1> histogram_{};  // last bucket: >= kMaxJitterUs

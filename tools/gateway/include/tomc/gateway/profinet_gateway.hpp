@@ -41,10 +41,11 @@ struct GatewayCounters {
   std::uint64_t overruns = 0;  // cycles that ended after the next one was due
   // The cyclic thread's start latency (cycle start minus deadline, RealTimeRunner), µs: its wake-up latency,
   // or with "wake_margin_us" what the margin did not absorb.
-  double wake_up_p99_us = 0.0;
-  double wake_up_max_us = 0.0;
+  double start_latency_p99_us = 0.0;
+  double start_latency_max_us = 0.0;
   double spin_mean_us = 0.0;       // with "wake_margin_us": CPU spun per cycle
   std::uint64_t late_wakeups = 0;  // with "wake_margin_us": cycles woken after their send time
+  std::uint64_t early_starts = 0;  // cycles started before their send time (never, unless the spin fails)
 };
 
 class ProfinetGateway {

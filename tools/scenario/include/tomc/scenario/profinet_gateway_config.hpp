@@ -37,6 +37,15 @@ struct ProfinetModuleConfig {
 // Where a slot's telegram submodule is (slot, subslot); the default layout is drives::telegram_place().
 using ProfinetTelegramPlace = drives::TelegramPlace;
 
+// Where the gateway reads bit 15 (encoder error, its code in Gx_XIST2: spec 06 §3.7) of an encoder status
+// word in a device's actual frames (decision I26), and what its status calls the word.
+struct ProfinetEncoderErrorBit {
+  drives::Slot slot = drives::Slot::kDrive;
+  std::size_t byte = 0;  // in the slot's actual frame: the byte that holds bit 15 in the device's byte order
+  std::uint8_t mask = 0x80;  // bit 15 within that byte
+  const char* name = "";     // "G1_ZSW of the drive telegram", ...
+};
+
 struct ProfinetDeviceConfig {
   std::string name;  // the device's name on DDS (the contract's `device`)
   telegrams::ByteOrder byte_order = telegrams::ByteOrder::kBig;
@@ -62,6 +71,10 @@ struct ProfinetDeviceConfig {
   // device without base-mode parameter access.
   bool check_telegram = true;
   drives::DeviceConfig device_config() const;
+  // G1_ZSW and G2_ZSW of the drive telegram, G1_ZSW of each encoder telegram, where the telegrams carry them
+  // (at most kMaxEncoderErrorBits).
+  static constexpr std::size_t kMaxEncoderErrorBits = 4;
+  std::vector<ProfinetEncoderErrorBit> encoder_error_bits() const;
 };
 
 struct ProfinetGatewayConfig {
