@@ -100,6 +100,9 @@ Options parse(int argc, char** argv) {
     const auto known =
         std::find_if(std::begin(numbers), std::end(numbers), [&a](const auto& n) { return a == n.first; });
     if (known == std::end(numbers)) throw std::invalid_argument("unknown option " + a);
+    if (a == "--fault-period-cycles" && !(v >= 40.0 && v == std::floor(v)))
+      throw std::invalid_argument(a +
+                                  ": a whole number of at least 40 (the demo's fault injector refuses less)");
     *known->second = v;
     seconds_given = seconds_given || a == "--seconds";
   }
@@ -259,9 +262,10 @@ int main(int argc, char** argv) try {
   const std::string request = trace_request().dump();
   std::uint64_t traces = 0;
   std::uint64_t faults = 0;
-  // The figure judged: net of the trace in real time (its capture grows for 100 s after each re-arm); the
-  // whole VmRSS when free-running, where a capture fills in seconds, so that every sample after the first has
-  // seen the trace buffer at its peak (and the rows, read at another instant, would only add noise).
+  // The figure judged: net of the trace in real time (its capture grows for 100 s after each re-arm); when
+  // free-running, where a capture fills in seconds, the whole VmRSS at its peak: a sample can fall between a
+  // completed trace and its re-arm (94 MB against 142 MB once), so the highest sample of the second quarter
+  // of the run is compared with the highest of the last quarter.
   long first_after_warmup = -1;
   long last_judged = -1;
   std::size_t trace_rows = 0;
@@ -309,9 +313,14 @@ int main(int argc, char** argv) try {
       const long rss = demo.resident_kib();
       const double cpu = demo.cpu_seconds();
       const long net = rss - static_cast<long>(trace_rows * (kChannels + 1) * 8 / 1024);
-      last_judged = o.free_running ? rss : net;
-      const bool warm = o.free_running ? static_cast<double>(cycles) >= o.cycles / 4.0 : t >= o.seconds / 4.0;
-      if (first_after_warmup < 0 && warm) first_after_warmup = last_judged;
+      if (o.free_running) {
+        const double progress = std::max(static_cast<double>(cycles) / o.cycles, t / o.seconds);
+        if (progress >= 0.25 && progress < 0.5) first_after_warmup = std::max(first_after_warmup, rss);
+        if (progress >= 0.75 || last) last_judged = std::max(last_judged, rss);
+      } else {
+        last_judged = net;
+        if (first_after_warmup < 0 && t >= o.seconds / 4.0) first_after_warmup = net;
+      }
       if (history_max > kHistoryBound) ok = false;
       std::printf("%8.0f %12llu %9llu %9ld %9ld %7zu %8.1f %10.0f %7.2f %10zu %6llu %6llu  %s\n", t,
                   static_cast<unsigned long long>(cycles),
@@ -329,9 +338,9 @@ int main(int argc, char** argv) try {
   }
   const long growth = last_judged - first_after_warmup;
   std::printf("resident memory%s after the warm-up: %ld KiB -> %ld KiB (%+ld KiB, bound %ld)\n",
-              o.free_running ? "" : " net of the trace", first_after_warmup, last_judged, growth,
-              kRssGrowthBoundKib);
-  if (first_after_warmup < 0 || growth > kRssGrowthBoundKib) ok = false;
+              o.free_running ? " (peaks of the second and last quarters)" : " net of the trace",
+              first_after_warmup, last_judged, growth, kRssGrowthBoundKib);
+  if (first_after_warmup < 0 || last_judged < 0 || growth > kRssGrowthBoundKib) ok = false;
   std::printf("%s\n", ok ? "soak: passed" : "soak: FAILED");
   return ok ? 0 : 1;
 } catch (const std::exception& e) {

@@ -253,6 +253,21 @@ TEST(NetworkSettings, GatewaySimFileNetworkProblemsNameTheirPaths) {
   EXPECT_EQ(ok.network.interface, "lo");
 }
 
+// A number beyond a double is nlohmann's out_of_range.406, not a parse_error: the gateway-sim and PROFINET
+// gateway files (one reader) report it as malformed JSON instead of ending the program (reliability.md §2).
+TEST(NetworkSettings, GatewaySimFileWithANumberBeyondADoubleIsMalformed) {
+  const auto file =
+      std::filesystem::temp_directory_path() / ("tomc-overflow-" + std::to_string(::getpid()) + ".json");
+  std::ofstream(file) << R"({ "gateway": "gw", "domain": 7777e5777755555555555555555555552777 })";
+  tomc::scenario::GatewaySimConfig config;
+  tomc::scenario::Problems problems;
+  tomc::scenario::load_gateway_sim_config_file(file, config, problems);
+  std::filesystem::remove(file);
+  ASSERT_EQ(problems.lines().size(), 1u);
+  EXPECT_NE(problems.lines().front().find("malformed JSON: number overflow"), std::string::npos)
+      << problems.lines().front();
+}
+
 int run_tomc(const std::string& arguments, std::string& err) {
   const auto dir = std::filesystem::temp_directory_path() / ("tomc-net-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

@@ -637,15 +637,20 @@ int demo_command(std::span<const std::string_view> args, std::ostream& out) {
   DemoFaultInjector faults(
       o.fault_period_cycles ? std::move(simulated) : std::vector<drives::SimulatedDrive*>{},
       o.fault_period_cycles.value_or(0));
-  // The cycle: the faults due before this step, then the step (one thread, so the drives need no lock).
+  // The cycle: the faults due before this step, then the step (one thread, so the drives need no lock);
+  // without --inject-faults the real-time cycle is the step alone.
   std::uint64_t steps = 0;
+  techobjects::RealTimeRunner::Cycle cycle = [&runtime] { runtime->step(); };
+  if (o.fault_period_cycles) {
+    cycle = [&runtime, &faults, &steps] {
+      faults(steps++);
+      runtime->step();
+    };
+  }
   techobjects::RealTimeRunner runner(
       techobjects::RealTimeRunnerConfig{std::chrono::nanoseconds(std::llround(config.cycle_time_s * 1e9)), 0,
                                         false},
-      [&runtime, &faults, &steps] {
-        faults(steps++);
-        runtime->step();
-      });
+      std::move(cycle));
   FreeRunner free_runner([&runtime, &faults](std::uint64_t cycle) {
     faults(cycle);
     runtime->step();
