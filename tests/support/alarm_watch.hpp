@@ -11,10 +11,17 @@ namespace tomc::testing {
 
 struct RaisedAlarms {
   std::array<std::uint32_t, 16> numbers{};
+  std::array<std::uint32_t, 16> additional{};
   std::size_t n = 0;
   bool count(std::uint32_t x) const {
     for (std::size_t i = 0; i < n; ++i)
       if (numbers[i] == x) return true;
+    return false;
+  }
+  // Raised with another additional value than `except`.
+  bool count_except(std::uint32_t x, std::uint32_t except) const {
+    for (std::size_t i = 0; i < n; ++i)
+      if (numbers[i] == x && additional[i] != except) return true;
     return false;
   }
 };
@@ -29,6 +36,7 @@ class AlarmWatch {
     for (std::size_t i = 0; i < n; ++i) {
       sequence_ = events_[i].sequence;
       if (events_[i].kind == techobjects::AlarmEvent::Kind::kRaised && r.n < r.numbers.size()) {
+        r.additional[r.n] = events_[i].additional_value;
         r.numbers[r.n++] = events_[i].number;
         seen(events_[i]);
       }

@@ -230,7 +230,7 @@ bool SynchronousOperation::start_pending_cam(const LeadingValue& leader) noexcep
       const double estimate =
           axis_.setpoint().position + end.position - cam_target(job, leader.position, 0.0, 0.0).position;
       profile0_length(p, leader, choose_slave_sync(end.position, p.sync_direction, estimate), end.velocity);
-      if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
+      if (p.sized_length < 0.0) {  // cannot synchronize yet: alarm 501 shows it (spec 07 §6.8, decision C23)
         p.armed = false;
         return false;
       }

@@ -129,15 +129,24 @@ double SynchronousOperation::choose_slave_sync(double slave_sync, std::int32_t d
 // stay within the job's Velocity, Acceleration/Deceleration and Jerk (clipped to DynamicLimits) for the
 // present leader velocity (decisions Y6, C23). The blend runs onto the straight line through the synchronous
 // point with the function's slope there (a cam's tangent: its curvature is not part of the synchronization,
-// decision C23). The candidate is sampled at 17 points (2 % reserve for the peaks between them); the shortest
-// fitting length is bracketed by doubling and then bisected: a fixed number of steps, no allocation.
-// Negative: no length holds Velocity — e.g. the final velocity slope·v_leader is above it — and the
+// decision C23). The candidate is sampled at 17 points (2 % reserve for the interior peaks between them; the
+// end, the synchronous velocity slope·v_leader, is exact and judged without it); the shortest fitting length
+// is bracketed by doubling and then bisected: a fixed number of steps, no allocation. A synchronous velocity
+// above the job's Velocity but within MaxVelocity raises the blend's velocity cap to it (§6.8: only
+// MaxVelocity decides whether the synchronization may complete, decision C23).
+// Negative: the synchronous velocity is above MaxVelocity, or no length holds the cap, and the
 // synchronization may not start (§6.8: it completes only below MaxVelocity).
 double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader,
                                                   double y_target, double r) const noexcept {
   const double v = std::max(std::fabs(leader.velocity), 1e-9);
   const double v_leader = p.direction * v;
-  const double max_v = 0.98 * p.limits.velocity;
+  // The synchronous velocity is exact (the blend ends on the line), so it is judged without reserve against
+  // MaxVelocity (spec 07 §2.2 profile 0, §6.8); the job's Velocity only shapes the blend.
+  const double v_sync = std::fabs(r) * v;
+  const double max_velocity = axis_.data().DynamicLimits.MaxVelocity / axis_.units().velocity;
+  if (!(v_sync <= (1.0 + 1e-9) * max_velocity)) return -1.0;
+  const double shape_v = std::max(p.limits.velocity, v_sync);
+  const double max_v = 0.98 * shape_v;
   const double max_a = 0.98 * p.limits.acceleration;
   const double max_d = 0.98 * p.limits.deceleration;
   const double max_j = p.limits.jerk > 0.0 ? 0.98 * p.limits.jerk : std::numeric_limits<double>::infinity();
@@ -153,27 +162,26 @@ double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const 
     const double x_a = p.master_sync - p.direction * length;
     b.start(x_a, p.direction * length, p.master_sync, y_target, r, f, v_leader, 0.0);
     if (std::fabs(b.jerk(x_a, v_leader)) > max_j) return false;
-    const auto within = [&](double x) noexcept {
+    const auto within = [&](double x, bool end) noexcept {
       const MotionState m = b.at(x, v_leader, 0.0);
-      if (std::fabs(m.velocity) > cap_v) return false;
+      if (std::fabs(m.velocity) > (end ? std::max(cap_v, (1.0 + 1e-9) * shape_v) : cap_v)) return false;
       const bool decelerating = m.acceleration * m.velocity < 0.0;
       if (std::fabs(m.acceleration) > (decelerating ? cap_d : cap_a)) return false;
       return std::fabs(b.jerk(x, v_leader)) <= max_j;
     };
     for (int i = 1; i <= 16; ++i) {
-      if (!within(x_a + p.direction * length * (i / 16.0))) return false;
+      if (!within(x_a + p.direction * length * (i / 16.0), i == 16)) return false;
     }
     // The acceleration's and the jerk's peaks between the samples (a cubic and a quadratic in ξ).
     std::array<double, 3> peaks{};
     const std::size_t n = b.extrema(peaks);
     for (std::size_t i = 0; i < n; ++i) {
-      if (!within(peaks[i])) return false;
+      if (!within(peaks[i], false)) return false;
     }
     return true;
   };
   // The shortest distance over which the leader velocity alone could be taken up with Acceleration.
   const double base = std::max(std::fabs(r) * v * v / std::max(p.limits.acceleration, 1e-9), 1e-6);
-  if (!(std::fabs(r) * v <= max_v)) return -1.0;  // the final velocity alone exceeds Velocity
   if (fits(base)) return base;
   double low = base;
   double high = base;
@@ -205,6 +213,14 @@ double SynchronousOperation::profile0_length(PendingSyncIn& p, const LeadingValu
     p.sized_length = sync_length_profile0(p, leader, y_target, slope);
     p.sized_leader_velocity = leader.velocity;
     p.sized_follower = MotionState{gap, f.velocity, f.acceleration};
+  }
+  // A job that may not start synchronizing — its synchronous velocity above MaxVelocity, or no length holds
+  // the velocity — waits visibly: alarm 501 "velocity limited" (a warning without reaction, WarningWord.X6),
+  // additional value 1 (0: a job's dynamics clipped at its start), once per job (spec 07 §2.2 profile 0
+  // "violations raise 501/502/503", §6.8; spec 04 §5.4; decision C23).
+  if (p.sized_length < 0.0 && !p.limit_indicated) {
+    axis_.raise(kAlarmDynamicsLimitedVelocity, 1);
+    p.limit_indicated = true;
   }
   return p.sized_length;
 }
@@ -570,7 +586,7 @@ bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexce
     const double y_target = choose_slave_sync(
         p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
     profile0_length(p, leader, y_target, r);
-    if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
+    if (p.sized_length < 0.0) {  // cannot synchronize yet: alarm 501 shows it (spec 07 §6.8, decision C23)
       p.armed = false;
       return false;
     }

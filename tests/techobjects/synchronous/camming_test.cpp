@@ -452,6 +452,44 @@ TEST(Camming, ProfileZeroDynamicParameters) {
   EXPECT_LE(peak_a, 500.0);
 }
 
+// MC_CamIn profile 0 whose synchronous velocity equals the job's Velocity synchronizes (spec 07 §3.4 "dynamic
+// limits are as for MC_GearInPos", §2.2 profile 0, §6.8: only MaxVelocity 1000 decides; decision C23). C2
+// scaled by SlaveScaling 3.6 is a line of slope 1; the leader at 100 mm/s, Velocity 100: InSync at
+// x_sync = MasterOffset + 180 with F = 180 and 100 mm/s, about 9,800 cycles after the job, the blend within
+// 100 mm/s and no alarm 501. Before, the job stayed pending for ever (the 98 % reserve on the end velocity).
+TEST(Camming, ProfileZeroSynchronizesWhenTheSynchronousVelocityIsTheJobVelocity) {
+  CammingMachine m(virtual_linear(), virtual_linear());
+  m.leader_velocity(100.0);
+  auto& c = m.cam_in;
+  c.Cam = m.cams.C2;
+  c.SyncProfileReference = 0;
+  c.SlaveScaling = 3.6;
+  c.MasterSyncPosition = 180.0;
+  c.MasterOffset = m.l().Position + 800.0;
+  c.SlaveOffset = 0.0;
+  c.ApplicationMode = 0;
+  c.Velocity = 100.0;
+  c.Acceleration = c.Deceleration = 5000.0;
+  c.Jerk = 0.0;
+  const double x_sync = c.MasterOffset + c.MasterSyncPosition;
+  c.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(c.Busy) << std::hex << c.ErrorID;
+  double v_max = 0.0;
+  int cycles = 1;
+  for (; cycles < 12000 && !c.InSync; ++cycles) {
+    m.run(1);
+    v_max = std::max(v_max, std::fabs(m.F->setpoint().velocity));
+  }
+  ASSERT_TRUE(c.InSync) << "never synchronized";
+  EXPECT_NEAR(cycles, 9800, 20);
+  EXPECT_NEAR(m.l().Position, x_sync, 0.1 + 1e-9);
+  EXPECT_NEAR(m.F->setpoint().velocity, 100.0, 1e-6);
+  EXPECT_NEAR(m.F->setpoint().position - (m.l().Position - x_sync), 180.0, 1e-6);
+  EXPECT_LE(v_max, 100.0 * (1.0 + 1e-9));
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity));
+}
+
 // Profile 0 and the follower's DynamicLimits (spec 07 §3.4 "dynamic limits are as for MC_GearInPos",
 // §6.5, §6.8 table; SYNC8 "in advance using dynamic parameters", decision C23). Cam C3 compressed tenfold
 // (MasterScaling 0.1), the synchronous point at its steepest curvature ξ = 0.2113 (MasterSyncPosition

@@ -676,13 +676,21 @@ class Run {
       for (std::uint32_t n :
            {techobjects::kAlarmDynamicsLimitedVelocity, techobjects::kAlarmDynamicsLimitedAcceleration,
             techobjects::kAlarmDynamicsLimitedJerk}) {
-        EXPECT_FALSE(raised.count(n)) << where() << ": alarm " << n << " in synchronous travel";
+        // A pending MC_GearInPos/MC_CamIn profile 0 that may not start synchronizing shows its wait with 501,
+        // additional value 1 — that job's indication, not a limit of this synchronous travel (decision C23).
+        const bool pending_wait =
+            n == techobjects::kAlarmDynamicsLimitedVelocity && sm.WaitingFunctionState != 0;
+        EXPECT_FALSE(pending_wait ? raised.count_except(n, 1) : raised.count(n))
+            << where() << ": alarm " << n << " in synchronous travel";
       }
     }
     // MC_GearIn synchronization limits the velocity without alarm 501 (spec 07 §2.1, §6.3).
     if (now.function_state == 1 && synchronizing && prev_.valid && prev_.function_state == 1 &&
         prev_.epoch == now.epoch) {
-      EXPECT_FALSE(raised.count(techobjects::kAlarmDynamicsLimitedVelocity))
+      // (501 with additional value 1 is a pending profile-0 job's wait, decision C23.)
+      EXPECT_FALSE(sm.WaitingFunctionState != 0
+                       ? raised.count_except(techobjects::kAlarmDynamicsLimitedVelocity, 1)
+                       : raised.count(techobjects::kAlarmDynamicsLimitedVelocity))
           << where() << ": alarm 501 during MC_GearIn synchronization";
     }
     if (raised.count(techobjects::kAlarmSynchronizationError)) ++stats_.alarms_608;
@@ -721,8 +729,9 @@ class Run {
         // from the next cycle on it must not grow.
         // With a jerk limit an acceleration carried over outward is taken back with the jerk, so |v| still
         // grows by up to a0²/(2j) on the way (profiles.hpp, spec 01 §8.8 "tramite lo strappo"): admissible
-        // while that acceleration falls and |v| grows by no more than it carries it in the cycle.
-        const bool carried = sp.velocity * prev_.acceleration > 0.0 &&
+        // while that acceleration falls and |v| grows by no more than it carries it in the cycle. Without a
+        // jerk limit the acceleration is taken back at once: nothing is carried (decision C24).
+        const bool carried = l.MaxJerk > 0.0 && sp.velocity * prev_.acceleration > 0.0 &&
                              std::fabs(sp.acceleration) < std::fabs(prev_.acceleration) &&
                              std::fabs(sp.velocity) <=
                                  std::fabs(prev_.velocity) + std::fabs(prev_.acceleration) * kCycle + tol_v;

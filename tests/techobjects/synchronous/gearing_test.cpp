@@ -852,11 +852,20 @@ TEST(Gearing, GP9GearInPosProfile0WithinTheJobDynamics) {
   EXPECT_NEAR(m.f().Position - (m.l().Position - 200.0), 0.0, 1e-6);
 }
 
+// Alarm 501 with additional value 1: a pending MC_GearInPos/MC_CamIn profile 0 that may not start
+// synchronizing (decision C23); 0 is a job's dynamics clipped at its start.
+bool wait_indicated(const GearingMachine& m) {
+  for (const auto& a : m.F->alarms().alarms())
+    if (a.number == techobjects::kAlarmDynamicsLimitedVelocity && a.additional_value == 1) return true;
+  return false;
+}
+
 // MC_GearInPos profile 0 and MaxVelocity (spec 07 §2.2 "synchronization completes only below MaxVelocity",
 // §6.8; decision C23). F: MaxVelocity 150; ratio 2/1, the leader at 100 mm/s: the synchronous velocity
-// 200 mm/s lies above it, so the job waits (WaitingFunctionState 2, no StartSync, no alarm 501) instead of
-// running a synchronization the follower may not travel. When the leader slows to 60 mm/s (F: 120 mm/s) it
-// synchronizes within 150 mm/s and is InSync at MasterSyncPosition 1000 with F = SlaveSyncPosition 300.
+// 200 mm/s lies above it, so the job waits (WaitingFunctionState 2, no StartSync) instead of running a
+// synchronization the follower may not travel — visibly: alarm 501 (additional value 1, WarningWord.X6),
+// a warning without reaction. When the leader slows to 60 mm/s (F: 120 mm/s) it synchronizes within 150 mm/s
+// and is InSync at MasterSyncPosition 1000 with F = SlaveSyncPosition 300.
 TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocity) {
   auto f = virtual_linear();
   f.DynamicLimits.MaxVelocity = 150.0;
@@ -868,18 +877,24 @@ TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocit
   g.MasterSyncPosition = 1000.0;
   g.SlaveSyncPosition = 300.0;
   g.SyncProfileReference = 0;
-  g.Velocity = 150.0;  // within MaxVelocity: no alarm 501 for the job's own dynamics
+  g.Velocity = 150.0;  // within MaxVelocity: no alarm 501 (additional value 0) for the job's own dynamics
   g.Acceleration = g.Deceleration = 2000.0;
   g.Jerk = 0.0;
   g.Execute = true;
   m.run(1);
   ASSERT_TRUE(g.Busy) << std::hex << g.ErrorID;
-  m.run(3000);  // the leader at about 300 mm: far enough before its synchronous point for any length
+  m.run(1);
+  EXPECT_TRUE(wait_indicated(m));  // from the job's first pending cycle (spec 07 §6.8, decision C23)
+  m.run(2999);  // the leader at about 300 mm: far enough before its synchronous point for any length
   EXPECT_TRUE(g.Busy);
   EXPECT_FALSE(g.StartSync);
+  EXPECT_FALSE(g.Error);
   EXPECT_EQ(m.F->synchronized_motion().WaitingFunctionState, 2);
   EXPECT_EQ(m.f().Velocity, 0.0);
-  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity));
+  EXPECT_TRUE(wait_indicated(m));
+  EXPECT_EQ(m.F->alarms().alarms().size(), 1u);        // only the 501 of the wait
+  EXPECT_NE(m.F->data().WarningWord & (1u << 6), 0u);  // spec 04 §5.4: X6 DynamicWarning
+  EXPECT_EQ(m.F->data().StatusWord & (1u << 21), 0u);  // not Synchronizing
   leader_at(m, 60.0);
   double v_max = 0.0;
   int start = -1;
@@ -896,6 +911,59 @@ TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocit
   EXPECT_NEAR(m.f().Velocity, 120.0, 1e-9);
   EXPECT_NEAR(m.l().Position, 1000.0, 0.06 + 1e-9);
   EXPECT_NEAR(m.f().Position - 2.0 * (m.l().Position - 1000.0), 300.0, 1e-6);
+}
+
+// MC_GearInPos profile 0 whose synchronous velocity r·v_leader reaches or passes the job's Velocity but stays
+// within MaxVelocity 1000 synchronizes (spec 07 §2.2 profile 0, §6.8: only MaxVelocity decides whether the
+// synchronization may complete; the job's Velocity shapes the blend, capped at max(Velocity, r·v_leader),
+// decision C23). Ratio 1/1, F at rest at 0, onto (MasterSyncPosition 1000, SlaveSyncPosition 200). Until the
+// fix the job waited for ever when r·v_leader > 98 % of Velocity (leader 100, Velocity 100 / 101; defaulted
+// Velocity 500 with the leader at 495 / 500 mm/s).
+TEST(Gearing, GearInPosProfile0SynchronizesAtAndAboveTheJobVelocityBelowMaxVelocity) {
+  struct Case {
+    double leader;
+    double velocity;  // −1: DynamicDefaults.Velocity 500
+  };
+  for (const Case c :
+       {Case{100.0, 100.0}, Case{100.0, 101.0}, Case{150.0, 100.0}, Case{495.0, -1.0}, Case{500.0, -1.0}}) {
+    SCOPED_TRACE("leader " + std::to_string(c.leader) + " mm/s, Velocity " + std::to_string(c.velocity));
+    GearingMachine m;
+    leader_at(m, c.leader);
+    auto& g = m.gear_pos;
+    g.MasterSyncPosition = 1000.0;
+    g.SlaveSyncPosition = 200.0;
+    g.SyncProfileReference = 0;
+    g.Velocity = c.velocity;
+    g.Acceleration = g.Deceleration = 5000.0;
+    g.Jerk = 0.0;
+    g.Execute = true;
+    const double x0 = m.l().Position;
+    m.run(1);
+    ASSERT_TRUE(g.Busy) << std::hex << g.ErrorID;
+    double v_max = 0.0;
+    int start = -1;
+    int cycle = 0;
+    const int cycles = m.run_until(
+        [&] {
+          ++cycle;
+          v_max = std::max(v_max, std::fabs(m.f().Velocity));
+          if (g.StartSync && start < 0) start = cycle;
+          return g.InSync;
+        },
+        20000);
+    ASSERT_GT(cycles, 0) << "never synchronized";
+    // InSync when the leader reaches 1000 mm at its constant velocity: (1000 − x0)/v_L seconds of 1 ms.
+    EXPECT_NEAR(cycles, (1000.0 - x0) / c.leader * 1000.0, 2.0);
+    EXPECT_GT(start, 0);
+    EXPECT_LT(start, cycles);
+    const double cap = std::max(c.velocity < 0.0 ? 500.0 : c.velocity, c.leader);
+    EXPECT_LE(v_max, cap * (1.0 + 1e-9));  // the blend within max(Velocity, r·v_leader)
+    EXPECT_LT(v_max, 1000.0);              // MaxVelocity
+    EXPECT_NEAR(m.f().Velocity, c.leader, 1e-9);
+    EXPECT_NEAR(m.l().Position, 1000.0, c.leader * 0.001 + 1e-9);
+    EXPECT_NEAR(m.f().Position - (m.l().Position - 1000.0), 200.0, 1e-6);
+    EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity));
+  }
 }
 
 // Decision C24 (spec 07 §2.2: Velocity/Acceleration/Deceleration/Jerk are "profile 0 only"), as C20 for

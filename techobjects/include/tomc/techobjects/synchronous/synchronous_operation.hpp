@@ -285,7 +285,8 @@ class SynchronousOperation final : public SynchronousSlot {
     double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
     MotionState sized_follower{};  // position: the follower's distance to the target
     double sized_length = 0.0;
-    CamJob cam{};  // kind kCamIn
+    bool limit_indicated = false;  // profile 0: alarm 501 raised for a wait it cannot end (decision C23)
+    CamJob cam{};                  // kind kCamIn
   };
   // Phasing profile 0's time-based travel of the follower (spec 07 §6.6): a PositionProfile planned from
   // rest, kept as its segments only. From rest to rest needs at most 7 (jerk up, hold, down, cruise, and the
