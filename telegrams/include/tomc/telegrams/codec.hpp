@@ -41,9 +41,8 @@ class TelegramCodec {
   TelegramCodec() noexcept = default;  // empty codec: length 0, every call fails with kUnknownTelegram
   static Result<TelegramCodec> create(int telegram, Direction direction, CodecOptions options = {}) noexcept;
   // The same codec from a process-wide table of every valid (telegram, direction, options), built once on
-  // first use: a technology object keeps a pointer (8 bytes) instead of a copy (layout and routine pointers)
-  // per slot and direction, and thousands of axes share a few cache lines of layouts (issue 18 memory,
-  // decision U1).
+  // first use: a technology object keeps a pointer (8 bytes) instead of a copy (layout, routines) per slot
+  // and direction, and thousands of axes share a few cache lines of layouts (issue 18 memory, decision U1).
   // Configuration-time call (the first one builds the table); never fails for a create()-valid input.
   static Result<const TelegramCodec*> shared(int telegram, Direction direction,
                                              CodecOptions options = {}) noexcept;
