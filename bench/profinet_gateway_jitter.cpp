@@ -12,7 +12,7 @@
 // overruns, the ARs lost and the setpoints applied.
 //
 //   sudo build/bin/profinet_gateway_jitter [--devices 16] [--seconds 5] [--fifo 0] [--watchdog-factor 20]
-//                                          [--no-sim]
+//                                          [--wake-margin-us 0] [--no-sim]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +40,7 @@ struct Options {
   int seconds = 5;
   int fifo = 0;
   int watchdog_factor = 20;  // decision I7: the device threads are not real-time
+  int wake_margin_us = 0;    // the cyclic thread wakes this early and spins to the send time (decision I25)
   bool sim = true;
 };
 
@@ -64,6 +65,8 @@ int main(int argc, char** argv) {
       o.fifo = next();
     else if (a == "--watchdog-factor")
       o.watchdog_factor = next();
+    else if (a == "--wake-margin-us")
+      o.wake_margin_us = next();
     else if (a == "--no-sim")
       o.sim = false;
     else {
@@ -71,8 +74,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (o.devices < 1 || o.devices > 64 || o.seconds < 1) {
-    std::fprintf(stderr, "--devices 1..64, --seconds >= 1\n");
+  if (o.devices < 1 || o.devices > 64 || o.seconds < 1 || o.wake_margin_us < 0 || o.wake_margin_us > 500) {
+    std::fprintf(stderr, "--devices 1..64, --seconds >= 1, --wake-margin-us 0..500\n");
     return 2;
   }
   pn::testing::Namespaces hosts("tomc17j", "tomc17k");
@@ -104,6 +107,7 @@ int main(int argc, char** argv) {
   config.ip = {10, 218, 0, 1};
   config.watchdog_factor = static_cast<std::uint16_t>(o.watchdog_factor);
   config.fifo_priority = o.fifo;
+  config.wake_margin_us = o.wake_margin_us;
   for (int k = 0; k < o.devices; ++k) {
     const gh::DeviceOptions d = gh::bridged_device(k);
     sc::ProfinetDeviceConfig device;
@@ -193,13 +197,15 @@ int main(int argc, char** argv) {
   std::printf(
       "%d devices, send clock %.0f us, %d s, fifo %d: %zu output frames of %zu FrameIDs captured\n"
       "send jitter |interval - send clock| (us): p50 %.1f, p99 %.1f, p99.9 %.1f, max %.1f\n"
-      "cyclic thread: %llu cycles, %llu overruns, wake-up latency p99 %.0f us, max %.0f us (whole run)\n"
+      "cyclic thread: %llu cycles, %llu overruns, start latency p99 %.0f us, max %.0f us (whole run); wake "
+      "margin %d us: %.0f us spun per cycle, %llu late wake-ups\n"
       "%d ARs for %d devices (%d lost), %llu setpoints applied; %s\n",
       o.devices, period_us, o.seconds, o.fifo, jitter.size() + times.size(), times.size(),
       percentile(jitter, 0.5), percentile(jitter, 0.99), percentile(jitter, 0.999),
       jitter.empty() ? 0.0 : jitter.back(), static_cast<unsigned long long>(after.cycles - before.cycles),
       static_cast<unsigned long long>(after.overruns - before.overruns), after.wake_up_p99_us,
-      after.wake_up_max_us, ars, o.devices, ars - o.devices,
+      after.wake_up_max_us, o.wake_margin_us, after.spin_mean_us,
+      static_cast<unsigned long long>(after.late_wakeups), ars, o.devices, ars - o.devices,
       static_cast<unsigned long long>(after.setpoints_applied - before.setpoints_applied), summary.c_str());
   return times.size() == static_cast<std::size_t>(o.devices) ? 0 : 1;
 }

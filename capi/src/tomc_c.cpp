@@ -308,12 +308,16 @@ void install_user_program(tomc_runtime* rt) {
 struct Variable {
   const techobjects::VariableInfo* info = nullptr;
   std::optional<techobjects::BitReference> bit;
+  // A synchronous axis' StatusSynchronizedMotion.* (spec 07 §1.9): outside the variable table, RON.
+  std::optional<techobjects::VariableType> synchronized_motion;
 };
 
 tomc_status find(const tomc_object* o, const char* function, const char* path, Variable& v) {
   v.info = o->machine.find_variable(path);
   if (v.info == nullptr) v.bit = o->machine.find_bit(path);
-  if (v.info == nullptr && !v.bit) {
+  if (v.info == nullptr && !v.bit && o->machine.synchronous_axis != nullptr)
+    v.synchronized_motion = o->machine.synchronous_axis->synchronized_motion_type(path);
+  if (v.info == nullptr && !v.bit && !v.synchronized_motion) {
     return fail(TOMC_ERROR_UNKNOWN_PATH, std::string(function) + ": " + o->machine.name + "." + path +
                                              ": no such variable of " + std::string(o->machine.type_name()));
   }
@@ -322,7 +326,9 @@ tomc_status find(const tomc_object* o, const char* function, const char* path, V
 
 tomc_status wrong_type(const tomc_object* o, const char* function, const char* path, const Variable& v,
                        const char* wanted) {
-  const std::string_view type = v.bit ? "BOOL (a bit)" : techobjects::to_string(v.info->type);
+  const std::string_view type = v.bit                   ? "BOOL (a bit)"
+                                : v.synchronized_motion ? techobjects::to_string(*v.synchronized_motion)
+                                                        : techobjects::to_string(v.info->type);
   return fail(TOMC_ERROR_WRONG_TYPE, std::string(function) + ": " + o->machine.name + "." + path + " is " +
                                          std::string(type) + ", not " + wanted);
 }
@@ -1017,6 +1023,10 @@ tomc_status read_typed(const tomc_object* object, const char* function, const ch
     if (const auto s = find(object, function, path, v); s != TOMC_OK) return s;
     if (!accepts(v)) return wrong_type(object, function, path, v, wanted);
     if (task) {
+      if (v.synchronized_motion) {
+        return fail(TOMC_ERROR_STATE, std::string(function) + ": " + object->machine.name + "." + path +
+                                          ": StatusSynchronizedMotion is not mirrored for a user task");
+      }
       // The user task reads the data block of the last interpolator cycle (taken at its cycle's start).
       if (!object->snapshot) {
         // A TO_Cam's data block (points and segments) is not mirrored for the task (decision C22).
@@ -1045,19 +1055,28 @@ tomc_status write_typed(tomc_object* object, const char* function, const char* p
     if (v.bit)
       return fail(TOMC_ERROR_ACCESS, std::string(function) + ": " + object->machine.name + "." + path +
                                          ": a bit of a status word, written by the TO only");
+    if (v.synchronized_motion)
+      return fail(TOMC_ERROR_ACCESS, std::string(function) + ": " + object->machine.name + "." + path +
+                                         ": StatusSynchronizedMotion is read only (RON)");
     if (!accepts(v)) return wrong_type(object, function, path, v, wanted);
     return write(object, function, path, value);
   });
 }
 
+std::optional<techobjects::VariableType> type_of(const Variable& v) {
+  if (v.synchronized_motion) return v.synchronized_motion;
+  if (v.info != nullptr) return v.info->type;
+  return std::nullopt;
+}
 bool is_lreal(const Variable& v) {
-  return v.info != nullptr && v.info->type == techobjects::VariableType::kLreal;
+  return type_of(v) == techobjects::VariableType::kLreal;
 }
 bool is_bool(const Variable& v) {
-  return v.bit.has_value() || (v.info != nullptr && v.info->type == techobjects::VariableType::kBool);
+  return v.bit.has_value() || type_of(v) == techobjects::VariableType::kBool;
 }
 bool is_int(const Variable& v) {
-  return v.info != nullptr && techobjects::is_integer(v.info->type);
+  const auto t = type_of(v);
+  return t.has_value() && techobjects::is_integer(*t);
 }
 
 }  // namespace

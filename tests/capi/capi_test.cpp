@@ -580,6 +580,27 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
   EXPECT_NEAR(phasing.CoveredPhaseShift, 10.0, 1e-12);
   EXPECT_NEAR(read(follower, "Position"), 20.0, 1e-9);
   EXPECT_EQ(offset_error, 0x808A);
+  // StatusSynchronizedMotion by the manual's path (spec 07 §1.9), with its types, read only (RON).
+  EXPECT_DOUBLE_EQ(read(follower, "StatusSynchronizedMotion.PhaseShift"), 10.0);
+  EXPECT_DOUBLE_EQ(read(follower, "StatusSynchronizedMotion.FunctionLeadingValue.Position"),
+                   read(leader, "Position") + 10.0);
+  int64_t function_state = 0;
+  int64_t actual_master = 0;
+  EXPECT_EQ(tomc_read_int(follower, "StatusSynchronizedMotion.FunctionState", &function_state), TOMC_OK)
+      << last_error();
+  EXPECT_EQ(function_state, 1);  // MC_GearIn
+  EXPECT_EQ(tomc_read_int(follower, "StatusSynchronizedMotion.ActualMaster", &actual_master), TOMC_OK)
+      << last_error();
+  EXPECT_EQ(actual_master, 1);  // the first possible leading value
+  EXPECT_FALSE(read_bit(follower, "StatusSynchronizedMotion.StatusWord.X3"));
+  bool flag = false;
+  double x = 0.0;
+  EXPECT_EQ(tomc_read_bool(follower, "StatusSynchronizedMotion.PhaseShift", &flag), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_NE(last_error().find("is LREAL"), std::string::npos) << last_error();
+  EXPECT_EQ(tomc_read_lreal(follower, "StatusSynchronizedMotion.FunctionState", &x), TOMC_ERROR_WRONG_TYPE);
+  EXPECT_EQ(tomc_read_lreal(follower, "StatusSynchronizedMotion.NoSuchMember", &x), TOMC_ERROR_UNKNOWN_PATH);
+  EXPECT_EQ(tomc_read_lreal(leader, "StatusSynchronizedMotion.PhaseShift", &x), TOMC_ERROR_UNKNOWN_PATH);
+  EXPECT_EQ(tomc_write_lreal(follower, "StatusSynchronizedMotion.PhaseShift", 1.0), TOMC_ERROR_ACCESS);
   // MC_SynchronizedMotionSimulation through its generated struct (spec 07 §4.4): the gearing goes on while
   // the follower is disabled; a new MC_GearIn meanwhile is refused with 16#8076.
   tomc_MC_SynchronizedMotionSimulation simulation;
@@ -595,6 +616,7 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
   }
   EXPECT_FALSE(power_f.Status);
   EXPECT_TRUE(gear.InGear);
+  EXPECT_TRUE(read_bit(follower, "StatusSynchronizedMotion.StatusWord.X3"));  // InSimulation
   tomc_MC_GearIn again;
   tomc_MC_GearIn_init(&again);
   again.Master = leader;

@@ -101,6 +101,8 @@ class DeviceHost {
   }
   int ars() const { return ars_.load(); }
   void inject_fault() { fault_requested_ = true; }
+  // Encoder 1 of the drive reports an error (G1_ZSW bit 15, `code` in G1_XIST2); 0 clears it.
+  void set_encoder_error(std::uint16_t code) { encoder_error_requested_ = 0x10000u | code; }
   void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
   int alarm_acks() const { return alarm_acks_.load(); }
   // The controller's output frames taken by the device so far (the gateway sends them from its cyclic thread,
@@ -112,6 +114,19 @@ class DeviceHost {
   int m_add1_last() const { return m_add1_last_.load(); }
   // The simulated drive's active fault (0: none), e.g. 8501 after its setpoint timeout.
   std::uint32_t drive_fault() const { return drive_fault_.load(); }
+  // How each AR ended that the device had running ("" while none ended): by its own data-hold watchdog (the
+  // controller's output frames stopped) or by the controller (Release, or a new Connect after the
+  // controller's watchdog ended its side), with the time since the device's start and the silences behind it.
+  std::string ar_ends() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return ar_ends_;
+  }
+  // The longest silences while an AR ran: between two output frames taken, and between two passes of the
+  // device's loop (its own scheduling), microseconds.
+  std::uint64_t max_output_gap_us() const { return max_output_gap_us_.load(); }
+  std::uint64_t max_loop_gap_us() const { return max_loop_gap_us_.load(); }
+  std::uint64_t max_input_gap_us() const { return max_input_gap_us_.load(); }
+  std::uint64_t max_loop_gap_at_ms() const { return max_loop_gap_at_ms_.load(); }
 
  private:
   // An alarm notification of the telegram submodule to the AR's controller (IEC 61158-6-10 RTA DATA): a
@@ -181,8 +196,24 @@ class DeviceHost {
     std::uint64_t next_send = now_us();
     std::uint64_t last_step = now_us();
     pn::ArState last = pn::ArState::kNone;
+    const std::uint64_t start = now_us();
+    std::uint64_t last_output = 0;  // when the last output frame was taken (0: none in this AR)
+    std::uint64_t last_input = 0;
+    std::uint64_t last_loop = 0;
+    bool was_running = false;
+    const auto note_gap = [&](std::atomic<std::uint64_t>& max, std::uint64_t since, std::uint64_t now) {
+      if (since != 0 && now > since && now - since > max.load()) {
+        max = now - since;
+        if (&max == &max_loop_gap_us_) max_loop_gap_at_ms_ = (now - start) / 1000;
+      }
+    };
     const auto send_input = [&] {
-      if (const std::size_t n = device.next_input_frame(frame); n > 0) raw.send(std::span(frame).first(n));
+      if (const std::size_t n = device.next_input_frame(frame); n > 0) {
+        raw.send(std::span(frame).first(n));
+        const std::uint64_t t = now_us();
+        if (device.state() == pn::ArState::kRunning) note_gap(max_input_gap_us_, last_input, t);
+        last_input = t;
+      }
     };
     // Takes one frame if one comes within `timeout_us`; false if none came.
     const auto take = [&](int timeout_us) {
@@ -198,7 +229,9 @@ class DeviceHost {
               rta.has_block && rta.block.is_ack) {
             ++alarm_acks_;
           }
-        } else if (device.on_cyclic(in, now_us()) && (++output_frames_, host.follow_controller())) {
+        } else if (const std::uint64_t t = now_us();
+                   device.on_cyclic(in, t) && (++output_frames_, note_gap(max_output_gap_us_, last_output, t),
+                                               last_output = t, host.follow_controller())) {
           last_step = now_us();
           send_input();
           observe_m_add1(device);
@@ -207,11 +240,19 @@ class DeviceHost {
       return n > 0;
     };
     while (!stop_) {
+      if (device.state() == pn::ArState::kRunning) note_gap(max_loop_gap_us_, last_loop, now_us());
+      last_loop = now_us();
       (void)take(200);
       pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
       if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
       if (fault_requested_.exchange(false))
         host.drive().inject_fault(7900, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff2);
+      if (const std::uint32_t e = encoder_error_requested_.exchange(0); e != 0) {
+        if ((e & 0xFFFF) != 0)
+          host.drive().inject_encoder_error(1, static_cast<std::uint16_t>(e));
+        else
+          host.drive().clear_encoder_error(1);
+      }
       if (const std::uint16_t type = alarm_requested_.exchange(0);
           type != 0 && device.state() == pn::ArState::kRunning) {
         std::array<std::uint8_t, 256> alarm{};
@@ -240,9 +281,23 @@ class DeviceHost {
         for (int k = 0; k < 8 && take(0); ++k) {
         }
         if (device.state() != pn::ArState::kNone && now_us() - last_step > 5'000) send_input();
-        device.watchdog_expired(now_us());
+        const std::uint64_t checked = now_us();
+        if (device.watchdog_expired(checked)) {
+          note_end("by the device's data hold", checked - start, checked - last_output);
+          last_output = last_input = 0;
+        }
       }
+      if (was_running && device.state() != pn::ArState::kRunning && last_output != 0) {
+        note_end("by the controller", now_us() - start, now_us() - last_output);
+        last_output = last_input = 0;
+      }
+      was_running = device.state() == pn::ArState::kRunning;
     }
+  }
+  void note_end(const char* how, std::uint64_t at_us, std::uint64_t silence_us) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ar_ends_ += std::string("AR ended ") + how + " at " + std::to_string(at_us / 1000) +
+                " ms, the last output frame " + std::to_string(silence_us / 1000) + " ms before; ";
   }
 
   DeviceOptions options_;
@@ -250,12 +305,18 @@ class DeviceHost {
   std::atomic<bool> stop_{false};
   std::atomic<int> ars_{0};
   std::atomic<bool> fault_requested_{false};
+  std::atomic<std::uint32_t> encoder_error_requested_{0};  // 0x10000 | code; 0: nothing requested
   std::atomic<std::uint16_t> alarm_requested_{0};
   std::atomic<int> alarm_acks_{0};
   std::atomic<int> output_frames_{0};
   std::atomic<int> m_add1_max_{0};
   std::atomic<int> m_add1_last_{0};
   std::atomic<std::uint32_t> drive_fault_{0};
+  std::atomic<std::uint64_t> max_output_gap_us_{0};
+  std::atomic<std::uint64_t> max_loop_gap_us_{0};
+  std::atomic<std::uint64_t> max_input_gap_us_{0};
+  std::atomic<std::uint64_t> max_loop_gap_at_ms_{0};
+  std::string ar_ends_;               // under mutex_
   std::uint16_t alarm_sequence_ = 0;  // device thread only
   mutable std::mutex mutex_;
   std::string error_;

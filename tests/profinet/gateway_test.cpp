@@ -79,13 +79,15 @@ TEST(GatewayConfig, AValidFileLoads) {
   sc::ProfinetGatewayConfig config;
   sc::Problems problems;
   sc::load_profinet_gateway_config(sc::Json::parse(R"({ "gateway": "gw1", "domain": 42, "watchdog": 0.1,
-    "profinet": { "interface": "eth1", "ip": "192.168.0.1", "send_clock_factor": 64, "reduction_ratio": 2 },
+    "profinet": { "interface": "eth1", "ip": "192.168.0.1", "send_clock_factor": 64, "reduction_ratio": 2,
+                  "wake_margin_us": 200 },
     "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "192.168.0.10", "telegram": 3 } ] })"),
                                    config, problems);
   ASSERT_TRUE(problems.empty()) << joined(problems.lines());
   EXPECT_EQ(config.interface, "eth1");
   EXPECT_EQ(config.ip, (std::array<std::uint8_t, 4>{192, 168, 0, 1}));
   EXPECT_DOUBLE_EQ(config.cycle_time(), 0.004);  // 64 × 31.25 µs × 2
+  EXPECT_EQ(config.wake_margin_us, 200);
   ASSERT_EQ(config.devices.size(), 1u);
   EXPECT_EQ(config.devices[0].name_of_station, "drive-1");
   EXPECT_EQ(config.devices[0].device_config().drive_telegram, 3);
@@ -94,7 +96,7 @@ TEST(GatewayConfig, AValidFileLoads) {
 
 TEST(GatewayConfig, EveryProblemNamesItsKey) {
   const auto lines = problems_of(R"({ "gateway": "gw1", "domain": 300,
-    "profinet": { "interface": "eth1", "ip": "10.0.0", "send_clock_factor": 8, "speed": 1 },
+    "profinet": { "interface": "eth1", "ip": "10.0.0", "send_clock_factor": 8, "speed": 1, "wake_margin_us": 600 },
     "devices": [ { "name": "axis1", "name_of_station": "Drive_1", "ip": "10.0.0.2", "telegram": 7 },
                  { "name": "axis1", "name_of_station": "d2", "ip": "10.0.0.3", "telegram": 3, "telgram": 1,
                    "modules": [ { "slot": 0, "ident": 1, "submodules": [ { "subslot": 1, "ident": 1 } ] },
@@ -107,6 +109,7 @@ TEST(GatewayConfig, EveryProblemNamesItsKey) {
   EXPECT_TRUE(has_line(lines, "profinet.ip: '10.0.0' is not an IPv4 address")) << all;
   EXPECT_TRUE(has_line(lines, "profinet.send_clock_factor:")) << all;  // RT_CLASS_1: 32..128
   EXPECT_TRUE(has_line(lines, "profinet.speed:")) << all;              // unknown key
+  EXPECT_TRUE(has_line(lines, "profinet.wake_margin_us:")) << all;     // 0..500 (half of 1 ms)
   EXPECT_TRUE(has_line(lines, "devices[0].name_of_station: 'Drive_1': only a-z")) << all;
   EXPECT_TRUE(has_line(lines, "devices[0].telegram:")) << all;  // 7 is no PROFIdrive telegram here
   EXPECT_TRUE(has_line(lines, "devices[1].name: 'axis1' is defined twice")) << all;
@@ -200,6 +203,51 @@ TEST(GatewayConfig, SupplementaryAndEncoderTelegramsHaveTheirSubmodules) {
                        "encoder_subslot)"))
       << all;
   EXPECT_TRUE(has_line(lines, "devices[5].telegram:")) << all;  // neither a drive nor an encoder telegram
+}
+
+// docs/gateway.md §2: the contract's second encoder slot (kEncoder2, telegram 81/83) in the gateway's file,
+// like the first: "encoder2_telegram" with "encoder2_slot"/"encoder2_subslot", by default the encoder object
+// behind the first one; the modules the gateway expects are the emulated device's (a Connect without a module
+// difference).
+TEST(GatewayConfig, ASecondEncoderHasItsSubmoduleBehindTheFirst) {
+  sc::ProfinetGatewayConfig config;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config(sc::Json::parse(R"({ "domain": 42,
+    "profinet": { "interface": "eth1", "ip": "192.168.0.1" },
+    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "192.168.0.10", "telegram": 3,
+                   "encoder_telegram": 81, "encoder2_telegram": 83 },
+                 { "name": "enc1", "name_of_station": "encoder-1", "ip": "192.168.0.11", "encoder_telegram": 83,
+                   "encoder2_telegram": 81 } ] })"),
+                                   config, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  using tomc::drives::Slot;
+  const auto& axis = config.devices[0];
+  EXPECT_EQ(axis.device_config().encoder_telegrams[1], 83);
+  EXPECT_EQ(axis.place(Slot::kEncoder1), (sc::ProfinetTelegramPlace{2, 2}));
+  EXPECT_EQ(axis.place(Slot::kEncoder2), (sc::ProfinetTelegramPlace{3, 2}));
+  EXPECT_EQ(config.devices[1].place(Slot::kEncoder1), (sc::ProfinetTelegramPlace{1, 2}));  // encoder-only
+  EXPECT_EQ(config.devices[1].place(Slot::kEncoder2), (sc::ProfinetTelegramPlace{2, 2}));
+  const auto modules = tomc::drives::profidrive_modules(axis.device_config());
+  ASSERT_EQ(modules.size(), 4u);  // DAP, drive object, two encoder objects
+  EXPECT_EQ(modules[3].slot, 3);
+  EXPECT_EQ(modules[3].ident, tomc::drives::kEncoderObjectIdent);
+  EXPECT_EQ(modules[3].submodules.at(0).ident, tomc::drives::telegram_submodule_ident(83));
+  EXPECT_EQ(modules[3].submodules.at(0).input_length, 16);  // telegram 83: PZD-2/8 (spec 06 §2.13)
+  EXPECT_EQ(modules[3].submodules.at(0).output_length, 4);
+
+  const auto lines = problems_of(R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a1", "name_of_station": "d1", "ip": "10.0.0.2", "telegram": 3, "encoder2_telegram": 81 },
+                 { "name": "a2", "name_of_station": "d2", "ip": "10.0.0.3", "telegram": 3, "encoder_telegram": 81,
+                   "encoder2_telegram": 82 },
+                 { "name": "a3", "name_of_station": "d3", "ip": "10.0.0.4", "telegram": 3, "encoder_telegram": 81,
+                   "encoder2_telegram": 81, "encoder2_slot": 2 } ] })");
+  const std::string all = joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].encoder2_telegram: a second encoder needs a first one")) << all;
+  EXPECT_TRUE(has_line(lines, "devices[1].encoder2_telegram: encoder_telegrams[1]: 82 is not 81 or 83"))
+      << all;
+  EXPECT_TRUE(
+      has_line(lines, "devices[2].encoder2_subslot: slot 2 subslot 2 carries the encoder telegram already"))
+      << all;
 }
 
 TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
@@ -408,6 +456,37 @@ TEST(GatewayNetns, ADriveFaultAndDeviceAlarmsReachTomc) {
   EXPECT_EQ(
       seen.device.detail,
       "ZSW1 bit 3: the drive reports a fault; alarm 2 acknowledged: process, slot 1 subslot 2, USI 0x0001");
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// An encoder's error bit reaches the gateway's status too: G1_ZSW bit 15 (encoder error, its code in
+// G1_XIST2: spec 06 §3.7) of the drive telegram makes the device DEVICE_FAULTED with the word named in its
+// detail, as ZSW1 bit 3 does (docs/gateway.md §6); the telegram bytes pass unchanged, so the TO raises its
+// own encoder alarm from them.
+TEST(GatewayNetns, AnEncoderErrorMakesTheDeviceFaulted) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceHost device(hosts.second);  // the device first: the gateway finds it at its first Identify
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  const DdsObserver observer(hosts.first);
+  // Conditions, not times: the gateway's cyclic thread exchanges with the device (its output frames arrive;
+  // the start-up takes longer under the sanitizers and load), then the status says so.
+  for (int i = 0; i < 2000 && device.output_frames() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_GT(device.output_frames(), 0) << gateway.log();
+  const SeenOverDds connected =
+      observer.until([](const SeenOverDds& s) { return s.device.state == "connected"; });
+  ASSERT_EQ(connected.device.state, "connected") << gateway.log();
+  EXPECT_EQ(connected.device.detail, "");
+  device.set_encoder_error(0x0001);
+  const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
+    return s.device.detail.find("G1_ZSW of the drive telegram bit 15: encoder error") != std::string::npos;
+  });
+  EXPECT_EQ(seen.device.state, "faulted") << gateway.log();
+  EXPECT_NE(seen.device.detail.find("G1_ZSW of the drive telegram bit 15: encoder error"), std::string::npos)
+      << seen.device.detail;
   EXPECT_EQ(device.error(), "");
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
@@ -733,7 +812,15 @@ TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
     EXPECT_EQ(rows.back()[column + 1], 0.0);      // no alarm
     EXPECT_EQ(rows.back()[column + 2], 1.0);      // CommunicationOK
     EXPECT_EQ(drives[static_cast<std::size_t>(k)]->error(), "");
-    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->ars(), 1);  // one AR, never lost
+    EXPECT_EQ(drives[static_cast<std::size_t>(k)]->ars(), 1)
+        << drives[static_cast<std::size_t>(k)]->ar_ends();
+    std::printf("axis%d: longest output gap %llu us, input gap %llu us, loop gap %llu us at %llu ms; %s\n",
+                k + 1,
+                static_cast<unsigned long long>(drives[static_cast<std::size_t>(k)]->max_output_gap_us()),
+                static_cast<unsigned long long>(drives[static_cast<std::size_t>(k)]->max_input_gap_us()),
+                static_cast<unsigned long long>(drives[static_cast<std::size_t>(k)]->max_loop_gap_us()),
+                static_cast<unsigned long long>(drives[static_cast<std::size_t>(k)]->max_loop_gap_at_ms()),
+                drives[static_cast<std::size_t>(k)]->ar_ends().c_str());
   }
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }

@@ -179,7 +179,9 @@ TOMC_API tomc_status tomc_object_type_of(const tomc_object* object, tomc_object_
  * ---- Reads: any variable. tomc_read_lreal takes LREAL variables, tomc_read_bool BOOL variables and bits of
  * status words ("StatusWord.X5"), tomc_read_int the integer and bit-string types. Writes follow the manual's
  * access rules for the user program (spec 04 §0.2): DIR and CAL variables only; status, read-only (RON) and
- * restart-relevant (RES) variables give TOMC_ERROR_ACCESS. */
+ * restart-relevant (RES) variables give TOMC_ERROR_ACCESS. A synchronous axis' StatusSynchronizedMotion.*
+ * ("StatusSynchronizedMotion.PhaseShift", ".FunctionState", ".StatusWord.X3") is read the same way, from the
+ * runtime's thread; a user task (tomc_task_*) gets TOMC_ERROR_STATE for it (not in its snapshot). */
 TOMC_API tomc_status tomc_read_lreal(const tomc_object* object, const char* path, double* value);
 TOMC_API tomc_status tomc_read_bool(const tomc_object* object, const char* path, bool* value);
 TOMC_API tomc_status tomc_read_int(const tomc_object* object, const char* path, int64_t* value);

@@ -35,22 +35,6 @@ profinet::DeviceIdentity with_modules(profinet::DeviceIdentity identity, const D
 
 }  // namespace
 
-TelegramPlace telegram_place(const DeviceConfig& config, Slot slot) noexcept {
-  if (config.telegram(slot) == 0) return {};
-  const auto first_encoder = static_cast<std::uint16_t>(config.drive_telegram != 0 ? 2 : 1);
-  switch (slot) {
-    case Slot::kDrive:
-      return {kDriveObjectSlot, kTelegramSubslot};
-    case Slot::kSupplementary:
-      return {kDriveObjectSlot, kSupplementarySubslot};
-    case Slot::kEncoder1:
-      return {first_encoder, kTelegramSubslot};
-    case Slot::kEncoder2:
-      return {static_cast<std::uint16_t>(first_encoder + 1), kTelegramSubslot};
-  }
-  return {};
-}
-
 std::vector<profinet::ExpectedModule> profidrive_modules(const DeviceConfig& config) {
   std::vector<profinet::ExpectedModule> modules{
       {0, 0, kDapIdent, {{1, kDapIdent, profinet::SubmoduleDirection::kNoIo, 0, 0}}}};

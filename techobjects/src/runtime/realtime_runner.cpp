@@ -29,6 +29,15 @@ std::int64_t now_ns() {
   return to_ns(t);
 }
 
+// A spin-wait hint to the core (no system call).
+inline void cpu_relax() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
 void prefault_stack() {
   volatile unsigned char buffer[256 * 1024];
   for (std::size_t i = 0; i < sizeof buffer; i += 4096)
@@ -43,6 +52,9 @@ RealTimeRunner::RealTimeRunner(RealTimeRunnerConfig config, Cycle cycle)
   if (!cycle_) throw std::invalid_argument("RealTimeRunner: no cycle function");
   if (config_.fifo_priority < 0 || config_.fifo_priority > 99) {
     throw std::invalid_argument("RealTimeRunner: fifo_priority must be 0..99");
+  }
+  if (config_.wake_margin.count() < 0 || config_.wake_margin >= config_.period) {
+    throw std::invalid_argument("RealTimeRunner: wake_margin must be 0 or more and less than the period");
   }
 }
 
@@ -96,12 +108,24 @@ void RealTimeRunner::loop() noexcept {
   running_.store(true, std::memory_order_release);
 
   const std::int64_t period = config_.period.count();
+  const std::int64_t margin = config_.wake_margin.count();
   std::int64_t deadline = now_ns() + period;
   while (!stop_requested_.load(std::memory_order_relaxed)) {
-    const timespec wake = from_ns(deadline);
+    const timespec wake = from_ns(deadline - margin);
     while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &wake, nullptr) == EINTR) {
     }
-    record_jitter(now_ns() - deadline);
+    std::int64_t start = now_ns();
+    if (margin > 0) {
+      // Bounded: at most `margin` past the wake-up time; the clock read is a vDSO call, no system call.
+      const std::int64_t woke = start;
+      if (woke > deadline) late_wakeups_.fetch_add(1, std::memory_order_relaxed);
+      while (start < deadline) {
+        cpu_relax();
+        start = now_ns();
+      }
+      spin_ns_.fetch_add(static_cast<std::uint64_t>(start - woke), std::memory_order_relaxed);
+    }
+    record_jitter(start - deadline);
     cycle_();
     cycles_.fetch_add(1, std::memory_order_relaxed);
     deadline += period;
@@ -122,6 +146,9 @@ RunnerStatistics RealTimeRunner::statistics() const {
   s.cycles = cycles_.load();
   s.overruns = overruns_.load();
   s.skipped_periods = skipped_.load();
+  s.late_wakeups = late_wakeups_.load();
+  if (s.cycles > 0)
+    s.spin_mean_us = static_cast<double>(spin_ns_.load()) / 1000.0 / static_cast<double>(s.cycles);
   if (setup_done_.load(std::memory_order_acquire)) s.setup_warnings = setup_warnings_;
   std::uint64_t total = 0;
   for (const auto& b : histogram_)

@@ -225,14 +225,14 @@ bool SynchronousOperation::start_pending_cam(const LeadingValue& leader) noexcep
     }
   } else {
     if (p.profile == 0) {
-      if (leader.velocity != p.sized_leader_velocity ||
-          axis_.setpoint().position != p.sized_follower.position ||
-          axis_.setpoint().velocity != p.sized_follower.velocity ||
-          axis_.setpoint().acceleration != p.sized_follower.acceleration) {
-        const MotionState end = cam_target(job, x_sync, 1.0, 0.0);
-        p.sized_length = sync_length_profile0(p, leader, end.position, end.velocity);
-        p.sized_leader_velocity = leader.velocity;
-        p.sized_follower = axis_.setpoint();
+      // Sized onto the occurrence of the cam that SyncDirection will choose at the start (below).
+      const MotionState end = cam_target(job, x_sync, 1.0, 0.0);
+      const double estimate =
+          axis_.setpoint().position + end.position - cam_target(job, leader.position, 0.0, 0.0).position;
+      profile0_length(p, leader, choose_slave_sync(end.position, p.sync_direction, estimate), end.velocity);
+      if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
+        p.armed = false;
+        return false;
       }
       p.length = p.sized_length;
     }
@@ -273,14 +273,25 @@ bool SynchronousOperation::start_pending_cam(const LeadingValue& leader) noexcep
     k.SlaveOffset += chosen - y_end;
     job.function.start(cam, k, job.function.mode());
   }
-  const MotionState at_start = cam_target(job, x_a, 1.0, 0.0);  // Y, Y', Y'' at the start
+  const MotionState at_start = cam_target(job, x_a, 1.0, 0.0);    // Y, Y', Y'' at the start
+  const MotionState at_sync = cam_target(job, x_sync, 1.0, 0.0);  // Y, Y' at the synchronous point
   const double signed_length = p.direction * p.length;
+  const bool dynamic = p.profile == 0;
   if (!activate_pending(JobKind::kCamIn)) return false;
   active_.x_sync = x_sync;
+  active_.line_blend = dynamic;
   // The blend starts at the nominal start position, so that it ends exactly at the synchronous point.
-  active_.blend.start_deviation(x_a, signed_length, at_start.position, at_start.velocity,
-                                at_start.acceleration, axis_.setpoint(), leader.velocity,
-                                leader.acceleration);
+  // Profile 0 runs onto the cam's tangent at the synchronous point, the line its length was sized for:
+  // within the job's dynamics at the present leader velocity, the cam's curvature taken up only when the
+  // synchronous travel begins (spec 07 §6.8, decision C23). The others blend onto the cam itself (§6.4).
+  if (dynamic) {
+    active_.blend.start(x_a, signed_length, x_sync, at_sync.position, at_sync.velocity, axis_.setpoint(),
+                        leader.velocity, leader.acceleration);
+  } else {
+    active_.blend.start_deviation(x_a, signed_length, at_start.position, at_start.velocity,
+                                  at_start.acceleration, axis_.setpoint(), leader.velocity,
+                                  leader.acceleration);
+  }
   return true;
 }
 
@@ -295,13 +306,18 @@ void SynchronousOperation::step_cam(const LeadingValue& leader) noexcept {
       return;
     }
     const MotionState y = cam_target(job, leader.position, leader.velocity, leader.acceleration);
-    const MotionState d = a.blend.at(leader.position, leader.velocity, leader.acceleration);
-    sync_setpoint_ =
-        MotionState{y.position + d.position, y.velocity + d.velocity, y.acceleration + d.acceleration};
     if (a.blend.progress(leader.position) >= 1.0 - 1e-12) {
+      // Synchronous from this cycle on: the follower is on the cam (a line blend reached its tangent at the
+      // synchronous point, up to one cycle ago).
+      sync_setpoint_ = y;
       a.phase = Phase::kSynchronous;
       a.in_sync = true;
+      return;
     }
+    const MotionState d = a.blend.at(leader.position, leader.velocity, leader.acceleration);
+    sync_setpoint_ = a.line_blend ? d
+                                  : MotionState{y.position + d.position, y.velocity + d.velocity,
+                                                y.acceleration + d.acceleration};
     return;
   }
   const CamFollowingValue f = job.function.evaluate(leader.position, leader.velocity, leader.acceleration);

@@ -1,6 +1,7 @@
 // TO_SynchronousAxis: a positioning axis with its synchronous operation in the synchronous slot.
 #include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
+#include <cmath>
 #include <utility>
 
 namespace tomc::techobjects {
@@ -24,6 +25,18 @@ double SynchronousAxis::read(std::string_view path) const noexcept {
   constexpr std::string_view kPrefix = "StatusSynchronizedMotion.";
   return path.starts_with(kPrefix) ? operation_.read(path.substr(kPrefix.size()))
                                    : PositioningAxis::read(path);
+}
+
+std::optional<VariableType> SynchronousAxis::synchronized_motion_type(std::string_view path) const noexcept {
+  constexpr std::string_view kPrefix = "StatusSynchronizedMotion.";
+  if (!path.starts_with(kPrefix)) return std::nullopt;
+  const std::string_view m = path.substr(kPrefix.size());
+  if (std::isnan(operation_.read(m))) return std::nullopt;
+  if (m == "FunctionState" || m == "WaitingFunctionState") return VariableType::kDint;
+  if (m == "ActualMaster" || m == "ActualCam") return VariableType::kDbAny;
+  if (m == "StatusWord") return VariableType::kDword;
+  if (m.starts_with("StatusWord.X")) return VariableType::kBool;
+  return VariableType::kLreal;
 }
 
 }  // namespace tomc::techobjects

@@ -173,4 +173,40 @@ MotionState LeaderDomainBlend::at(double x, double v_x, double a_x) const noexce
   return MotionState{y, dy * v_x, ddy * v_x * v_x + dy * a_x};
 }
 
+std::size_t LeaderDomainBlend::extrema(std::array<double, 3>& x) const noexcept {
+  // d³y/dx³ as c0 + c1·ξ + c2·ξ² (the ξ-derivatives of dd0, dd1, dd2 above, scaled by L).
+  const double L = length_;
+  const double k0 = d0_ / (L * L * L), k1 = d1_ / (L * L), k2 = d2_ / L;
+  const double c0 = -60.0 * k0 - 36.0 * k1 - 9.0 * k2;
+  const double c1 = 360.0 * k0 + 192.0 * k1 + 36.0 * k2;
+  const double c2 = -360.0 * k0 - 180.0 * k1 - 30.0 * k2;
+  std::size_t n = 0;
+  const auto add = [&](double xi) noexcept {
+    if (xi > 0.0 && xi < 1.0 && std::isfinite(xi)) x[n++] = x_a_ + xi * L;
+  };
+  if (c2 != 0.0) {
+    add(-c1 / (2.0 * c2));  // the jerk's extremum
+    const double disc = c1 * c1 - 4.0 * c0 * c2;
+    if (disc >= 0.0) {
+      const double r = std::sqrt(disc);
+      add((-c1 + r) / (2.0 * c2));
+      add((-c1 - r) / (2.0 * c2));
+    }
+  } else if (c1 != 0.0) {
+    add(-c0 / c1);
+  }
+  return n;
+}
+
+double LeaderDomainBlend::jerk(double x, double v_x) const noexcept {
+  const double xi = progress(x);
+  if (xi >= 1.0) return 0.0;
+  const double L = length_;
+  const double ddd0 = -60.0 + 360.0 * xi - 360.0 * xi * xi;
+  const double ddd1 = -36.0 + 192.0 * xi - 180.0 * xi * xi;
+  const double ddd2 = -9.0 + 36.0 * xi - 30.0 * xi * xi;
+  const double dddy = d0_ * ddd0 / (L * L * L) + d1_ * ddd1 / (L * L) + d2_ * ddd2 / L;
+  return dddy * v_x * v_x * v_x;
+}
+
 }  // namespace tomc::techobjects

@@ -124,12 +124,15 @@ double SynchronousOperation::choose_slave_sync(double slave_sync, std::int32_t d
   return (estimate - below) <= (above - estimate) ? below : above;
 }
 
-// Profile 0 (in advance, dynamic parameters, spec 07 §2.2, §6.5): tomc synchronizes over a leading-value
-// distance just long enough that the follower's velocity and acceleration stay within the job's Velocity and
-// Acceleration/Deceleration for the present leader velocity (decision Y6). The candidate blend is the one
-// start_pending_sync would run; it is sampled at 17 points (2 % reserve for the peaks between them). The
-// shortest fitting length is bracketed by doubling and then bisected: a fixed number of steps, no allocation.
-// A cam is sized by its tangent at the synchronous point (`slope`; decision C9).
+// Profile 0 (in advance, dynamic parameters, spec 07 §2.2, §3.4, §6.5, §6.8): tomc synchronizes over a
+// leading-value distance just long enough that the follower's velocity, acceleration/deceleration and jerk
+// stay within the job's Velocity, Acceleration/Deceleration and Jerk (clipped to DynamicLimits) for the
+// present leader velocity (decisions Y6, C23). The blend runs onto the straight line through the synchronous
+// point with the function's slope there (a cam's tangent: its curvature is not part of the synchronization,
+// decision C23). The candidate is sampled at 17 points (2 % reserve for the peaks between them); the shortest
+// fitting length is bracketed by doubling and then bisected: a fixed number of steps, no allocation.
+// Negative: no length holds Velocity — e.g. the final velocity slope·v_leader is above it — and the
+// synchronization may not start (§6.8: it completes only below MaxVelocity).
 double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader,
                                                   double y_target, double r) const noexcept {
   const double v = std::max(std::fabs(leader.velocity), 1e-9);
@@ -137,42 +140,73 @@ double SynchronousOperation::sync_length_profile0(const PendingSyncIn& p, const 
   const double max_v = 0.98 * p.limits.velocity;
   const double max_a = 0.98 * p.limits.acceleration;
   const double max_d = 0.98 * p.limits.deceleration;
-  const auto fits = [&](double length, bool with_velocity) noexcept {
+  const double max_j = p.limits.jerk > 0.0 ? 0.98 * p.limits.jerk : std::numeric_limits<double>::infinity();
+  // The follower's present motion is where the blend starts (ξ = 0 is not judged): a velocity or
+  // acceleration it already has above the limits may stay, not grow ("current dynamics are blended into the
+  // new job", spec 07 §2.1).
+  const MotionState f = axis_.setpoint();
+  const double cap_v = std::max(max_v, 0.98 * std::fabs(f.velocity));
+  const double cap_a = std::max(max_a, 0.98 * std::fabs(f.acceleration));
+  const double cap_d = std::max(max_d, 0.98 * std::fabs(f.acceleration));
+  const auto fits = [&](double length) noexcept {
     LeaderDomainBlend b;
     const double x_a = p.master_sync - p.direction * length;
-    b.start(x_a, p.direction * length, p.master_sync, y_target, r, axis_.setpoint(), v_leader, 0.0);
-    for (int i = 0; i <= 16; ++i) {
-      const MotionState m = b.at(x_a + p.direction * length * (i / 16.0), v_leader, 0.0);
-      if (with_velocity && std::fabs(m.velocity) > max_v) return false;
+    b.start(x_a, p.direction * length, p.master_sync, y_target, r, f, v_leader, 0.0);
+    if (std::fabs(b.jerk(x_a, v_leader)) > max_j) return false;
+    const auto within = [&](double x) noexcept {
+      const MotionState m = b.at(x, v_leader, 0.0);
+      if (std::fabs(m.velocity) > cap_v) return false;
       const bool decelerating = m.acceleration * m.velocity < 0.0;
-      if (std::fabs(m.acceleration) > (decelerating ? max_d : max_a)) return false;
+      if (std::fabs(m.acceleration) > (decelerating ? cap_d : cap_a)) return false;
+      return std::fabs(b.jerk(x, v_leader)) <= max_j;
+    };
+    for (int i = 1; i <= 16; ++i) {
+      if (!within(x_a + p.direction * length * (i / 16.0))) return false;
+    }
+    // The acceleration's and the jerk's peaks between the samples (a cubic and a quadratic in ξ).
+    std::array<double, 3> peaks{};
+    const std::size_t n = b.extrema(peaks);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!within(peaks[i])) return false;
     }
     return true;
   };
   // The shortest distance over which the leader velocity alone could be taken up with Acceleration.
   const double base = std::max(std::fabs(r) * v * v / std::max(p.limits.acceleration, 1e-9), 1e-6);
-  const auto shortest = [&](bool with_velocity) noexcept {
-    if (fits(base, with_velocity)) return base;
-    double low = base;
-    double high = base;
-    bool found = false;
-    for (int i = 0; i < 40 && !found; ++i) {
-      low = high;
-      high = 2.0 * low;
-      found = fits(high, with_velocity);
-    }
-    if (!found) return -1.0;
-    for (int i = 0; i < 20; ++i) {  // 1e-6 of the bracket
-      const double mid = 0.5 * (low + high);
-      (fits(mid, with_velocity) ? high : low) = mid;
-    }
-    return high;
-  };
-  // A follower starting at rest overshoots the line's velocity by up to half of it in the blend: when no
-  // length keeps that within Velocity, only the acceleration decides (and failing that the base length).
-  double length = shortest(true);
-  if (length < 0.0) length = shortest(false);
-  return length < 0.0 ? base : length;
+  if (!(std::fabs(r) * v <= max_v)) return -1.0;  // the final velocity alone exceeds Velocity
+  if (fits(base)) return base;
+  double low = base;
+  double high = base;
+  bool found = false;
+  for (int i = 0; i < 40 && !found; ++i) {
+    low = high;
+    high = 2.0 * low;
+    found = fits(high);
+  }
+  if (!found) return -1.0;
+  for (int i = 0; i < 20; ++i) {  // 1e-6 of the bracket
+    const double mid = 0.5 * (low + high);
+    (fits(mid) ? high : low) = mid;
+  }
+  return high;
+}
+
+// Profile 0's synchronization length onto (y_target, slope), searched again (a few hundred blend evaluations)
+// only when what it depends on changed: the leader velocity, the follower's velocity and acceleration and
+// its distance to the target — a modulo follower's occurrence of the target moves with the leader, so the
+// follower's own position is not the key. A new pass of a modulo leader clears it (the slope of a cam may
+// differ there).
+double SynchronousOperation::profile0_length(PendingSyncIn& p, const LeadingValue& leader, double y_target,
+                                             double slope) noexcept {
+  const MotionState f = axis_.setpoint();
+  const double gap = f.position - y_target;
+  if (leader.velocity != p.sized_leader_velocity || gap != p.sized_follower.position ||
+      f.velocity != p.sized_follower.velocity || f.acceleration != p.sized_follower.acceleration) {
+    p.sized_length = sync_length_profile0(p, leader, y_target, slope);
+    p.sized_leader_velocity = leader.velocity;
+    p.sized_follower = MotionState{gap, f.velocity, f.acceleration};
+  }
+  return p.sized_length;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -407,8 +441,12 @@ Submission SynchronousOperation::gear_in_pos(const GearInPosInputs& in) noexcept
   if (!std::isfinite(in.SlaveSyncPosition)) return Submission::reject(error_id::kInvalidPosition);
   if (in.SyncDirection < 1 || in.SyncDirection > 3) return Submission::reject(error_id::kInvalidDirection);
   ProfileLimits limits;
-  if (const auto e = axis_.resolve_dynamics(in.SyncProfileReference == 0 ? in.Velocity : -1.0,
-                                            in.Acceleration, in.Deceleration, in.Jerk, limits))
+  // Velocity, Acceleration, Deceleration and Jerk belong to profile 0 alone (spec 07 §2.2): the distance
+  // profiles neither check them nor raise 501/502/503 for them (decisions C20, C24).
+  const bool dynamic = in.SyncProfileReference == 0;
+  if (const auto e =
+          axis_.resolve_dynamics(dynamic ? in.Velocity : -1.0, dynamic ? in.Acceleration : -1.0,
+                                 dynamic ? in.Deceleration : -1.0, dynamic ? in.Jerk : -1.0, limits))
     return Submission::reject(*e);
   if (const auto e = axis_.motion_prerequisites()) return Submission::reject(e);
   if (!axis_.homed()) return Submission::reject(error_id::kAxisNotHomed);  // spec 07 §2.2 requirements
@@ -529,16 +567,12 @@ bool SynchronousOperation::start_pending_sync(const LeadingValue& leader) noexce
   double x_a = 0.0;
   double x_target = p.master_sync;
   if (p.profile == 0) {
-    // The search costs a few hundred blend evaluations: done again only when its inputs change.
-    if (leader.velocity != p.sized_leader_velocity ||
-        axis_.setpoint().position != p.sized_follower.position ||
-        axis_.setpoint().velocity != p.sized_follower.velocity ||
-        axis_.setpoint().acceleration != p.sized_follower.acceleration) {
-      const double y_target = choose_slave_sync(
-          p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
-      p.sized_length = sync_length_profile0(p, leader, y_target, r);
-      p.sized_leader_velocity = leader.velocity;
-      p.sized_follower = axis_.setpoint();
+    const double y_target = choose_slave_sync(
+        p.slave_sync, p.sync_direction, axis_.setpoint().position + r * (p.master_sync - leader.position));
+    profile0_length(p, leader, y_target, r);
+    if (p.sized_length < 0.0) {  // Velocity cannot hold: not yet (spec 07 §6.8, decision C23)
+      p.armed = false;
+      return false;
     }
     length = p.sized_length;
     x_a = p.master_sync - p.direction * length;
@@ -585,6 +619,7 @@ bool SynchronousOperation::profile0_start_crossed(PendingSyncIn& p, const Leadin
         interconnections_[static_cast<std::size_t>(p.source)].source->leading_value_modulo();
     if (range.enabled && range.length > 0.0) {
       p.master_sync += p.direction * (std::floor(past / range.length) + 1.0) * range.length;
+      p.sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();  // sized again for that pass
     }
     return false;
   }

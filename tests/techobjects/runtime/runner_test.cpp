@@ -71,10 +71,39 @@ TEST(RealTimeRunner, ReportsWhatItCouldNotSetUp) {
   }
 }
 
+TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
+  // 400 us early at 1 ms: each cycle spins what the kernel's wake-up latency left of the margin; a wake-up
+  // later than the deadline is counted instead. Without a margin nothing spins.
+  std::atomic<int> calls{0};
+  RealTimeRunner spinning(RealTimeRunnerConfig{1ms, 0, false, 400us}, [&] { ++calls; });
+  spinning.start();
+  ASSERT_TRUE(wait_for_calls(calls, 50));
+  spinning.stop();
+  const auto s = spinning.statistics();
+  EXPECT_GE(s.cycles, 50u);
+  if (s.late_wakeups < s.cycles) {
+    EXPECT_GT(s.spin_mean_us, 0.0);  // some cycle woke within the margin
+  }
+  // A cycle spins from its wake-up (at or after deadline − margin) to its start: at most the margin plus how
+  // late it started (a preemption during the spin).
+  EXPECT_LE(s.spin_mean_us, 400.0 + s.jitter_max_us + 1.0);
+  EXPECT_LE(s.late_wakeups, s.cycles);
+
+  calls = 0;
+  RealTimeRunner sleeping(RealTimeRunnerConfig{1ms, 0, false}, [&] { ++calls; });
+  sleeping.start();
+  ASSERT_TRUE(wait_for_calls(calls, 20));
+  sleeping.stop();
+  EXPECT_EQ(sleeping.statistics().spin_mean_us, 0.0);
+  EXPECT_EQ(sleeping.statistics().late_wakeups, 0u);
+}
+
 TEST(RealTimeRunner, RejectsBadConfiguration) {
   EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{0ms, 0, false}, [] {}), std::invalid_argument);
   EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 100, false}, [] {}), std::invalid_argument);
   EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 0, false}, nullptr), std::invalid_argument);
+  EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 0, false, 1ms}, [] {}), std::invalid_argument);
+  EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 0, false, -1us}, [] {}), std::invalid_argument);
 }
 
 }  // namespace

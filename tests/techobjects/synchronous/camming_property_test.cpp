@@ -9,8 +9,8 @@
 // random scalings (negative too), offsets, MasterSyncPosition and MasterStartDistance, now and then an
 // illegal parameter; MC_CamOut (profiles 0, 1, 5), MC_Halt, MC_MoveVelocity, MC_Power off/on and MC_Reset.
 // The leading value is a linear virtual positioning axis with random MC_MoveVelocity / MC_MoveAbsolute /
-// MC_Halt jobs (reversals and stops), or an external encoder turned at random speeds (actual-value coupling)
-// whose encoder fails now and then.
+// MC_Halt jobs (reversals and stops), a rotary modulo one (0…360°; the fifth run), or an external encoder
+// turned at random speeds (actual-value coupling) whose encoder fails now and then.
 //
 // Checked every cycle after the user program (the instances' outputs then show this cycle's MC_Interpolator):
 //  K1 spec 07 §3.3, §6.2  while StatusWord.X22 and FunctionState 3 the follower's setpoint is the scaled and
@@ -34,10 +34,11 @@
 //     and raises no alarm 501/502/503; X0…X2 are FALSE without synchronous operation. MC_CamOut profile 0
 //     (desynchronization with dynamic parameters) keeps |a| within max(MaxAcceleration, MaxDeceleration)
 //     and |v| within MaxVelocity, except that an excess carried over from synchronous travel may only fall
-//     (the velocity grows at most by the previous cycle's acceleration). Not checked: profile 0
-//     synchronization, which §6.8 limits to DynamicLimits: tomc sizes its leader-domain blend against the
-//     cam's tangent (decision C9), so the cam's curvature — and the blend's curvature term that takes it up
-//     — pass through unlimited (seed 20261130 showed 52,600 mm/s² of blend beside 87,800 of the cam's own).
+//     (the velocity grows at most by the previous cycle's acceleration). Profile 0 synchronization (§6.8:
+//     DynamicLimits) keeps |v| within MaxVelocity and |a| within MaxAcceleration / MaxDeceleration (by the
+//     direction of |v|), above them only what the follower carried in at its start, in every cycle in which
+//     the leader still has its velocity of the start and does not accelerate (the manual superimposes later
+//     leader dynamics; decision C23). Before C23 seed 20261130 showed 52,600 mm/s² of blend against 8,000.
 //  K5 spec 07 §1.9, §3.4, spec 03 §3.2  StatusWord.X21 and X22 not both; FunctionState 3 with X21 or X22;
 //     the instance showing InSync (exactly one while X22 and FunctionState 3) or StartSync names
 //     StatusSynchronizedMotion.ActualCam and shows X22 respectively X21; Busy without StartSync/InSync is
@@ -55,6 +56,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -62,6 +64,7 @@
 
 #include "alarm_watch.hpp"
 #include "gearing_fixture.hpp"
+#include "property_harness.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_cam_in.hpp"
 #include "tomc/instructions/mc_cam_out.hpp"
@@ -85,8 +88,7 @@ constexpr int kCycles = 60'000;  // per run: 240,000 cycles in all (about 1 s of
 #endif
 constexpr std::uint32_t kDefaultSeed = 20261128;
 std::uint32_t base_seed() {
-  const char* s = std::getenv("TOMC_PROPERTY_SEED");
-  return s != nullptr ? static_cast<std::uint32_t>(std::strtoul(s, nullptr, 10)) : kDefaultSeed;
+  return tomc::testing::property_base_seed(kDefaultSeed);
 }
 constexpr double kCycle = 0.001;
 constexpr std::size_t kCams = 3;
@@ -95,7 +97,8 @@ struct Stats {
   long synchronous_cycles = 0;    // K1
   long synchronizing_cycles = 0;  // over a distance (K4, not limited)
   long distance_syncs = 0;        // K3
-  long limited_cycles = 0;        // K4 (CamOut profile 0, profile-0 synchronization)
+  long limited_cycles = 0;        // K4 (CamOut profile 0)
+  long dynamic_sync_cycles = 0;   // K4 (profile-0 synchronization at the start's leader velocity)
   long indicated_cycles = 0;      // X0..X2 set
   long cam_in = 0, accepted = 0, rejected = 0, aborted = 0, ends = 0, non_cyclic_ends = 0, switches = 0;
   long cam_out_done = 0;
@@ -108,13 +111,17 @@ struct Stats {
 
 class CamRun {
  public:
-  CamRun(bool encoder_leader, std::uint32_t seed)
-      : encoder_leader_(encoder_leader), rng_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
+  CamRun(bool encoder_leader, std::uint32_t seed, bool modulo_leader = false)
+      : encoder_leader_(encoder_leader),
+        modulo_leader_(modulo_leader),
+        random_(seed),
+        runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
     auto follower_data = virtual_linear();
     follower_data.DynamicLimits.MaxVelocity = 800.0;  // cams often ask for more in synchronous travel (X0)
     follower_data.DynamicLimits.MaxAcceleration = 8000.0;
     follower_data.DynamicLimits.MaxDeceleration = 10000.0;
-    auto l = std::make_unique<techobjects::PositioningAxis>("L", nullptr, virtual_linear());
+    auto l = std::make_unique<techobjects::PositioningAxis>(
+        "L", nullptr, modulo_leader ? tomc::testing::virtual_rotary_modulo() : virtual_linear());
     L_ = l.get();
     std::vector<techobjects::LeadingValueInterconnection> leaders{
         {L_, L_, techobjects::LeadingValueCoupling::kSetpoint}};
@@ -168,50 +175,38 @@ class CamRun {
 
  private:
   // ---- bookkeeping for the printout of a failure (fixed rings) ----
-  struct Event {
-    int cycle = 0;
-    const char* what = "";
-    std::array<double, 6> v{};
-  };
   struct State {
     int cycle = 0;
     double y = 0, v = 0, a = 0, x = 0, vx = 0;
     std::uint32_t status_word = 0;
     int function_state = 0, waiting = 0, cam = 0;
   };
-  void note(const char* what, std::array<double, 6> v = {}) {
-    events_[static_cast<std::size_t>(event_count_++) % events_.size()] = Event{cycle_, what, v};
-  }
+  void note(const char* what, std::initializer_list<double> v = {}) { events_.note(cycle_, what, v); }
   void dump() {
     dumped_ = true;
-    std::printf("last events (cycle, what, values):\n");
-    for (int i = std::max(0, event_count_ - static_cast<int>(events_.size())); i < event_count_; ++i) {
-      const Event& e = events_[static_cast<std::size_t>(i) % events_.size()];
-      std::printf("  %d %s %g %g %g %g %g %g\n", e.cycle, e.what, e.v[0], e.v[1], e.v[2], e.v[3], e.v[4],
-                  e.v[5]);
-    }
+    events_.print();
     for (std::size_t i = 0; i < cam_in_.size(); ++i) {
       const auto& c = cam_in_[i];
       std::printf(
           "MC_CamIn %zu: Execute %d Busy %d StartSync %d InSync %d CommandAborted %d Error %d ErrorID %x\n",
           i, c.Execute, c.Busy, c.StartSync, c.InSync, c.CommandAborted, c.Error, c.ErrorID);
     }
-    std::printf(
-        "last cycles (cycle, F y v a, leading value x v, StatusWord, FunctionState, Waiting, Cam):\n");
-    for (int i = std::max(0, state_count_ - static_cast<int>(states_.size())); i < state_count_; ++i) {
-      const State& t = states_[static_cast<std::size_t>(i) % states_.size()];
-      std::printf("  %d %.9f %.6f %.3f %.9f %.6f %08x %d %d %d\n", t.cycle, t.y, t.v, t.a, t.x, t.vx,
-                  t.status_word, t.function_state, t.waiting, t.cam);
-    }
+    states_.print("cycle, F y v a, leading value x v, StatusWord, FunctionState, Waiting, Cam",
+                  [](const State& t) {
+                    std::printf("  %d %.9f %.6f %.3f %.9f %.6f %08x %d %d %d\n", t.cycle, t.y, t.v, t.a, t.x,
+                                t.vx, t.status_word, t.function_state, t.waiting, t.cam);
+                  });
   }
   std::string where() const {
-    return std::string(encoder_leader_ ? "encoder leader" : "axis leader") + ", cycle " +
-           std::to_string(cycle_);
+    return std::string(encoder_leader_  ? "encoder leader"
+                       : modulo_leader_ ? "modulo axis leader"
+                                        : "axis leader") +
+           ", cycle " + std::to_string(cycle_);
   }
 
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
-  bool chance(double p) { return uniform(0.0, 1.0) < p; }
-  int pick(int n) { return static_cast<int>(rng_() % static_cast<std::uint32_t>(n)); }
+  double uniform(double lo, double hi) { return random_.uniform(lo, hi); }
+  bool chance(double p) { return random_.chance(p); }
+  int pick(int n) { return random_.pick(n); }
   double dynamic(double high) { return chance(0.25) ? -1.0 : uniform(0.05, 1.0) * high; }
 
   // ---- random cams (spec 07 §3.1, §3.2) ----
@@ -349,7 +344,7 @@ class CamRun {
     switch (pick(4)) {
       case 0:
         if (p.move_absolute.Execute) break;
-        p.move_absolute.Position = uniform(-2000.0, 2000.0);
+        p.move_absolute.Position = modulo_leader_ ? uniform(0.0, 360.0) : uniform(-2000.0, 2000.0);
         p.move_absolute.Velocity = uniform(5.0, 300.0);
         p.move_absolute.Acceleration = dynamic(6000.0);
         p.move_absolute.Deceleration = dynamic(6000.0);
@@ -558,13 +553,14 @@ class CamRun {
     bool near_boundary = false;
   };
   static Reference reference(const Cam& cam, int mode, const techobjects::StatusSynchronizedMotion& sm,
-                             const techobjects::LeadingValue& lv, double shift_periods = 0.0) {
+                             double master_offset, const techobjects::LeadingValue& lv,
+                             double shift_periods = 0.0) {
     const auto& f = cam.profile();
     const double start = f.start();
     const double end = f.end();
     const double period = end - start;
     Reference r;
-    r.u = (lv.position - sm.MasterOffset) / sm.MasterScaling;
+    r.u = (lv.position - master_offset) / sm.MasterScaling;
     double u = r.u;
     double n = 0.0;
     if (mode == 0) {
@@ -593,9 +589,8 @@ class CamRun {
     const bool synchronizing = techobjects::test(d.StatusWord, StatusWordBit::kSynchronizing);
     const int fs = sm.FunctionState;
     const techobjects::LeadingValue lv = function_leader(sm.ActualMaster);
-    states_[static_cast<std::size_t>(state_count_++) % states_.size()] =
-        State{cycle_,      sp.position,  sp.velocity, sp.acceleration,         lv.position,
-              lv.velocity, d.StatusWord, fs,          sm.WaitingFunctionState, sm.ActualCam};
+    states_.push(State{cycle_, sp.position, sp.velocity, sp.acceleration, lv.position, lv.velocity,
+                       d.StatusWord, fs, sm.WaitingFunctionState, sm.ActualCam});
     for (double x : {d.Position, d.Velocity, d.Acceleration, sp.position, sp.velocity, sp.acceleration}) {
       ASSERT_TRUE(std::isfinite(x)) << where();
     }
@@ -671,25 +666,47 @@ class CamRun {
       const int mode = mode_of(&cam);
       ++stats_.synchronous_cycles;
       const int profile = active->SyncProfileReference;
-      if (!started_[static_cast<std::size_t>(in_sync)]) {
+      // A modulo leader: StatusSynchronizedMotion.MasterOffset is shown in the leader's modulo range
+      // (decision C9) while the cam runs on the continuous leading value, MasterOffset + k·Length. k is
+      // taken at the coupling's first synchronous cycle (the whole number of lengths that puts the follower
+      // on the cam there) and then held: every later cycle is judged with it.
+      const bool first = !started_[static_cast<std::size_t>(in_sync)];
+      if (modulo_leader_ && first) {
+        double best = std::numeric_limits<double>::infinity();
+        const int around = static_cast<int>(std::fabs(lv.position - sm.MasterOffset) / 360.0) + 3;
+        for (int k = -around; k <= around; ++k) {
+          const double e = std::fabs(reference(cam, mode, sm, sm.MasterOffset + 360.0 * k, lv).y -
+                                     F_->setpoint().position);
+          if (e < best) {
+            best = e;
+            modulo_turns_ = k;
+          }
+        }
+      }
+      const double master_offset = sm.MasterOffset + (modulo_leader_ ? 360.0 * modulo_turns_ : 0.0);
+      if (first) {
         started_[static_cast<std::size_t>(in_sync)] = true;
         ++stats_.in_sync_by_profile[static_cast<std::size_t>(profile)];
       }
       EXPECT_EQ(sm.MasterScaling, active->MasterScaling) << where();
       EXPECT_EQ(sm.SlaveScaling, active->SlaveScaling) << where();
       if (profile == 0 || profile == 1 || profile == 3 || profile == 4) {
-        EXPECT_EQ(sm.MasterOffset, active->MasterOffset) << where() << ": profile " << profile;
+        // (a modulo leader: the given offset's occurrence in the modulo range)
+        EXPECT_NEAR(modulo_leader_ ? std::remainder(sm.MasterOffset - active->MasterOffset, 360.0)
+                                   : sm.MasterOffset - active->MasterOffset,
+                    0.0, modulo_leader_ ? 1e-9 * std::max(1.0, std::fabs(active->MasterOffset)) : 0.0)
+            << where() << ": profile " << profile;
       }
       if (profile != 2 && profile != 5) {
         EXPECT_EQ(sm.SlaveOffset, active->SlaveOffset) << where();
       }
-      Reference r = reference(cam, mode, sm, lv);
+      Reference r = reference(cam, mode, sm, master_offset, lv);
       const double tol = 1e-7 + 1e-12 * std::fabs(r.y);
       if (r.near_boundary && std::fabs(sp.position - r.y) > tol) {
         // The other side of the period boundary (spec 07 §6.2: n is a floor; rounding may take either).
         const double side =
             std::fabs(r.u - cam.profile().start()) < std::fabs(r.u - cam.profile().end()) ? -1.0 : 1.0;
-        r = reference(cam, mode, sm, lv, side);
+        r = reference(cam, mode, sm, master_offset, lv, side);
       }
       EXPECT_TRUE(r.inside) << where() << ": synchronous outside a non-cyclic cam, u " << r.u;
       EXPECT_NEAR(sp.position, r.y, tol)
@@ -760,6 +777,20 @@ class CamRun {
     } else if (!sync_operation && fs != 5 && fs != 4) {
       EXPECT_EQ(sm.StatusWord & 7u, 0u) << where() << ": X0..X2 without synchronous operation";
     }
+    // K4, profile 0 (spec 07 §6.8; SYNC8 "in advance using dynamic parameters"): MaxVelocity and
+    // MaxAcceleration / MaxDeceleration hold, above them only what the follower carried in at the start (not
+    // growing). Changes of the leader's dynamics after the start are superimposed according to the function
+    // (the manual), so a cycle is judged while the leader keeps its velocity of the start and does not
+    // accelerate.
+    const bool dynamic_sync = synchronizing && fs == 3 && active_profile == 0;
+    if (dynamic_sync && !prev_.dynamic_sync)
+      note("profile-0 synchronization starts (leader velocity, follower v, a)",
+           {lv.velocity, prev_.v, prev_.a});
+    const auto verdict = dynamic_sync_.judge(
+        dynamic_sync, lv.velocity, lv.acceleration, sp.velocity, sp.acceleration, prev_.v, prev_.a,
+        {l.MaxVelocity, l.MaxAcceleration, l.MaxDeceleration, l.MaxJerk}, kCycle);
+    if (verdict.judged) ++stats_.dynamic_sync_cycles;
+    EXPECT_TRUE(verdict.problem.empty()) << where() << ": profile-0 synchronization " << verdict.problem;
     const double bound_a = std::max(l.MaxAcceleration, l.MaxDeceleration) * (1.0 + 1e-9);
     const bool enabled = techobjects::test(d.StatusWord, StatusWordBit::kEnable);
     if (fs == 5 && prev_.function_state != 5) {
@@ -782,7 +813,7 @@ class CamRun {
     }
     prev_ = Previous{
         sp.position, sp.velocity,  sp.acceleration, lv.position, lv.velocity, fs, sm.WaitingFunctionState,
-        in_sync,     leader_valid, enabled,         free_phase};
+        in_sync,     leader_valid, enabled,         free_phase,  dynamic_sync};
   }
 
   // Right after MC_Interpolator (before the user program starts or ends jobs): the alarms this cycle's
@@ -807,7 +838,10 @@ class CamRun {
   }
 
   bool encoder_leader_;
-  std::mt19937 rng_;
+  bool modulo_leader_;
+  int modulo_turns_ =
+      0;  // K1 with a modulo leader: whole lengths between the shown and the used MasterOffset
+  tomc::testing::PropertyRandom random_;
   techobjects::Runtime runtime_;
   techobjects::PositioningAxis* L_ = nullptr;
   SynchronousAxis* F_ = nullptr;
@@ -847,39 +881,50 @@ class CamRun {
   struct Previous {
     double y = 0, v = 0, a = 0, x = 0, vx = 0;
     int function_state = 0, waiting = 0, in_sync = -1;
-    bool leader_valid = true, enabled = false, free_phase = false;
+    bool leader_valid = true, enabled = false, free_phase = false, dynamic_sync = false;
   } prev_{};
+  tomc::testing::DynamicSyncJudge dynamic_sync_;
   Raised interpolator_alarms_{};
   bool checking_ = false;
   tomc::testing::AlarmWatch alarm_watch_;
   Stats stats_{};
   int cycle_ = 0;
-  std::array<Event, 80> events_{};
-  int event_count_ = 0;
-  std::array<State, 40> states_{};
-  int state_count_ = 0;
+  tomc::testing::EventRing<80> events_;
+  tomc::testing::StateRing<State, 40> states_;
   bool dumped_ = false;
 };
 
 TEST(CammingProperty, RandomCamsLeadersAndJobs) {
-  std::printf("base seed %u, 4 runs (3 axis leaders, 1 encoder leader with encoder faults) x %d cycles\n",
-              base_seed(), kCycles);
+  std::printf(
+      "base seed %u, 5 runs (3 axis leaders, 1 encoder leader with encoder faults, 1 modulo axis leader) x "
+      "%d "
+      "cycles\n",
+      base_seed(), kCycles);
   Stats total;
-  for (int i = 0; i < 4 && !HasFailure(); ++i) {
+  for (int i = 0; i < 5 && !HasFailure(); ++i) {
     const std::uint32_t seed = base_seed() + static_cast<std::uint32_t>(i);
     const bool encoder = i == 3;
-    SCOPED_TRACE("seed " + std::to_string(seed) + (encoder ? ", encoder leader" : ", axis leader"));
-    CamRun run(encoder, seed);
+    const bool modulo = i == 4;
+    SCOPED_TRACE("seed " + std::to_string(seed) +
+                 (encoder  ? ", encoder leader"
+                  : modulo ? ", modulo axis leader"
+                           : ", axis leader"));
+    CamRun run(encoder, seed, modulo);
     ASSERT_TRUE(run.enabled()) << "enabled at the start";
     for (int k = 0; k < kCycles && !HasFailure(); ++k)
       run.cycle(k);
     const Stats& s = run.stats();
     std::printf(
-        "seed %u (%s): %ld synchronous cycles on the cam, %ld synchronizing over a distance, %ld limited, "
+        "seed %u (%s): %ld synchronous cycles on the cam, %ld synchronizing over a distance, %ld profile-0 "
+        "synchronizing at a constant leader, %ld limited, "
         "%ld indicated; MC_CamIn %ld (%ld accepted, %ld rejected, %ld aborted), InSync by profile 0-6: %ld "
         "%ld %ld %ld %ld %ld %ld; %ld distance checks, %ld ends of a non-cyclic cam, %ld EndOfProfile; "
         "%ld MC_CamOut Done, %ld desynchronizations; %ld leader faults; cams built %ld, refused %ld\n",
-        seed, encoder ? "encoder" : "axis", s.synchronous_cycles, s.synchronizing_cycles, s.limited_cycles,
+        seed,
+        encoder  ? "encoder"
+        : modulo ? "modulo axis"
+                 : "axis",
+        s.synchronous_cycles, s.synchronizing_cycles, s.dynamic_sync_cycles, s.limited_cycles,
         s.indicated_cycles, s.cam_in, s.accepted, s.rejected, s.aborted, s.in_sync_by_profile[0],
         s.in_sync_by_profile[1], s.in_sync_by_profile[2], s.in_sync_by_profile[3], s.in_sync_by_profile[4],
         s.in_sync_by_profile[5], s.in_sync_by_profile[6], s.distance_syncs, s.non_cyclic_ends, s.ends,
@@ -887,6 +932,7 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
     total.synchronous_cycles += s.synchronous_cycles;
     total.synchronizing_cycles += s.synchronizing_cycles;
     total.limited_cycles += s.limited_cycles;
+    total.dynamic_sync_cycles += s.dynamic_sync_cycles;
     total.distance_syncs += s.distance_syncs;
     total.leader_faults += s.leader_faults;
     total.non_cyclic_ends += s.non_cyclic_ends;
@@ -908,6 +954,7 @@ TEST(CammingProperty, RandomCamsLeadersAndJobs) {
   for (std::size_t p = 1; p < 7; ++p)
     EXPECT_GT(total.in_sync_by_profile[p], 0) << "profile " << p;
   EXPECT_GT(total.limited_cycles, 0);
+  EXPECT_GT(total.dynamic_sync_cycles, 0);
   EXPECT_GT(total.leader_faults, 0);
   EXPECT_GT(total.non_cyclic_ends, 0);
 #endif

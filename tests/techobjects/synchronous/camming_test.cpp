@@ -452,6 +452,82 @@ TEST(Camming, ProfileZeroDynamicParameters) {
   EXPECT_LE(peak_a, 500.0);
 }
 
+// Profile 0 and the follower's DynamicLimits (spec 07 §3.4 "dynamic limits are as for MC_GearInPos",
+// §6.5, §6.8 table; SYNC8 "in advance using dynamic parameters", decision C23). Cam C3 compressed tenfold
+// (MasterScaling 0.1), the synchronous point at its steepest curvature ξ = 0.2113 (MasterSyncPosition
+// 7.607 mm): slope 100·S'(ξ)/36 = 2.314, curvature 100·S''(ξ)/36² = 0.4452/mm, so at a leader of 100 mm/s
+// the cam itself asks 231.4 mm/s and 4,452 mm/s² there. F: MaxAcceleration 2000, MaxDeceleration 1500,
+// MaxJerk 1e6. The job's Velocity 5000, Acceleration 3000, Jerk 2e6 exceed them: alarms 501, 502, 503 and
+// the job runs with 1000 / 2000 / 1e6. The synchronization holds them at every cycle (before decision C23
+// the blend onto the cam itself passed the cam's 4,452 mm/s² through); InSync when the leader reaches
+// x_sync = MasterOffset + 7.607, 2,076 cycles after the job at 100 mm/s; from there the follower is on the
+// cam with its own acceleration, indicated by StatusSynchronizedMotion.StatusWord.X1 (synchronous travel).
+TEST(Camming, ProfileZeroHoldsTheDynamicLimitsOnACurvedCam) {
+  auto f = virtual_linear();
+  f.DynamicLimits.MaxAcceleration = 2000.0;
+  f.DynamicLimits.MaxDeceleration = 1500.0;
+  f.DynamicLimits.MaxJerk = 1.0e6;
+  CammingMachine m(virtual_linear(), f);
+  m.leader_velocity(100.0);
+  auto& c = m.cam_in;
+  const double xi = 0.2113;  // S''(ξ) = 60ξ − 180ξ² + 120ξ³ is largest at ξ = (3 − √3)/6
+  c.Cam = m.cams.C3;
+  c.SyncProfileReference = 0;
+  c.MasterScaling = 0.1;
+  c.MasterSyncPosition = 0.1 * 360.0 * xi;
+  c.MasterOffset = m.l().Position + 200.0;
+  c.SlaveOffset = 50.0;
+  c.ApplicationMode = 0;
+  c.Velocity = 5000.0;
+  c.Acceleration = 3000.0;
+  c.Deceleration = 1000.0;
+  c.Jerk = 2.0e6;
+  const double x_sync = c.MasterOffset + c.MasterSyncPosition;
+  c.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(c.Busy) << std::hex << c.ErrorID;
+  for (auto n : {techobjects::kAlarmDynamicsLimitedVelocity, techobjects::kAlarmDynamicsLimitedAcceleration,
+                 techobjects::kAlarmDynamicsLimitedJerk}) {
+    EXPECT_TRUE(m.F->alarms().pending(n)) << n;
+  }
+  double peak_v = 0.0, peak_acc = 0.0, peak_dec = 0.0, peak_jerk = 0.0, x_start = 0.0;
+  double previous_a = m.F->setpoint().acceleration;
+  int cycles = 1;
+  bool synchronizing = false;
+  for (; cycles < 4000 && !c.InSync; ++cycles) {
+    m.run(1);
+    const auto& sp = m.F->setpoint();
+    if (c.StartSync && !c.InSync) {
+      if (!synchronizing) x_start = m.l().Position;
+      synchronizing = true;
+      peak_v = std::max(peak_v, std::fabs(sp.velocity));
+      (sp.acceleration * sp.velocity < 0.0 ? peak_dec : peak_acc) =
+          std::max(sp.acceleration * sp.velocity < 0.0 ? peak_dec : peak_acc, std::fabs(sp.acceleration));
+      peak_jerk = std::max(peak_jerk, std::fabs(sp.acceleration - previous_a) / 0.001);
+    }
+    previous_a = sp.acceleration;
+  }
+  ASSERT_TRUE(c.InSync);
+  ASSERT_TRUE(synchronizing);
+  EXPECT_NEAR(cycles, 2076, 2);
+  EXPECT_NEAR(m.l().Position, x_sync, 0.1 + 1e-9);
+  EXPECT_GT(x_sync - x_start, 10.0);  // a synchronization length (31.5 mm), not a step
+  EXPECT_LE(peak_v, 1000.0);
+  EXPECT_LE(peak_acc, 2000.0);
+  EXPECT_LE(peak_dec, 1000.0);  // the job's Deceleration (below MaxDeceleration: no alarm for it)
+  EXPECT_LE(peak_jerk, 1.0e6 * (1.0 + 1e-6));
+  EXPECT_GT(peak_acc, 1000.0);  // and not needlessly slow
+  // On the cam from the synchronous point: y = f((x − MO)/MS) + SO with the cam's own acceleration.
+  m.run(1);
+  const double u = (m.l().Position - c.MasterOffset) / 0.1;
+  const auto cam = m.cams.C3->profile().evaluate(u);
+  EXPECT_NEAR(m.F->setpoint().position, cam.y + 50.0, 1e-6);
+  EXPECT_NEAR(m.F->setpoint().velocity, cam.dy * 100.0 / 0.1, 1e-6);
+  EXPECT_NEAR(m.F->setpoint().acceleration, cam.ddy * 1.0e4 / 0.01, 1e-3);
+  EXPECT_NEAR(m.F->setpoint().acceleration, 4452.0, 5.0);
+  EXPECT_EQ(m.sync().StatusWord & 2u, 2u);  // X1 MaxAccelerationExceeded: indicated, not limited
+}
+
 // Profile 0 over the next modulo pass (spec 07 §3.4 profile 0, §6.5; decision Y12 as for MC_GearInPos): a
 // modulo leader at 100 deg/s, the synchronous point 1 deg ahead — closer than the synchronization length
 // (>= 100²/1000 = 10 deg), so its start lies behind the leader. The job waits for the next pass (the cam

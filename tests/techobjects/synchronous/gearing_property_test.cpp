@@ -27,9 +27,11 @@
 //     (EmergencyDeceleration under an emergency ramp: MC_Stop Mode 0, MC_Power StopMode 0, spec 02 §3.1).
 //     Not limited (the leader's dynamics pass through, §6.8): synchronous travel, MC_GearInPos
 //     synchronization over a leading-value distance (profiles 1, 3), MC_GearOut profile 1, the velocity
-//     during MC_GearInVelocity synchronization. Not checked either: MC_GearInPos profile 0, which tomc also
-//     runs as a leader-domain blend (decision Y6) whose length is sized for the leader's velocity at the
-//     start, so that later leader dynamics pass through scaled (spec 07 §6.5 "superimposed"). Leaving such a
+//     during MC_GearInVelocity synchronization. MC_GearInPos profile 0, a leader-domain blend (decision Y6)
+//     sized for the leader's velocity at the start (later leader dynamics pass through scaled, spec 07 §6.5
+//     "superimposed"), is judged on its own (decision C23): MaxVelocity, MaxAcceleration / MaxDeceleration
+//     and MaxJerk while the leader keeps its velocity of the start, above them only what the follower
+//     carried in at its start. Leaving such a
 //     phase the follower keeps its dynamics and the new motion brings them back (§2.1 "current dynamics are
 //     blended into the new job"): the hand-over cycle (one step of the new motion from the synchronous state
 //     of the same cycle, which is not observable) is not judged, and from then on a velocity or acceleration
@@ -61,6 +63,7 @@
 
 #include "alarm_watch.hpp"
 #include "gearing_fixture.hpp"
+#include "property_harness.hpp"
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/external_encoder/external_encoder.hpp"
@@ -81,8 +84,7 @@ constexpr int kCycles = 200'000;  // per run: 1.6 million cycles in all
 #endif
 constexpr std::uint32_t kDefaultSeed = 20261124;
 std::uint32_t base_seed() {
-  const char* s = std::getenv("TOMC_PROPERTY_SEED");
-  return s != nullptr ? static_cast<std::uint32_t>(std::strtoul(s, nullptr, 10)) : kDefaultSeed;
+  return tomc::testing::property_base_seed(kDefaultSeed);
 }
 constexpr double kCycle = 0.001;
 
@@ -107,6 +109,7 @@ struct Stats {
   long velocity_gearing_cycles = 0;  // G1 checks (velocity gearing)
   long limited_cycles = 0;           // G2 checks
   long synchronizing_cycles = 0;     // MC_GearIn synchronization, limited
+  long dynamic_sync_cycles = 0;      // MC_GearInPos profile 0 synchronization at a constant leader (G2)
   long elevated_cycles = 0;          // above a limit, admissibly (not growing after a pass-through phase)
   long indicated_cycles = 0;         // synchronous travel with X0 set
   long indicated_acceleration_cycles = 0;  // ... with X1 or X2 set
@@ -119,7 +122,7 @@ struct Stats {
 class Run {
  public:
   Run(LeaderKind kind, std::uint32_t seed, bool jerk_limit)
-      : kind_(kind), rng_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
+      : kind_(kind), random_(seed), runtime_(techobjects::RuntimeConfig{kCycle, 1, 1}) {
     const bool modulo = kind == LeaderKind::kModulo;
     auto leader_data = modulo ? virtual_rotary_modulo() : virtual_linear();
     auto follower_data = modulo ? virtual_rotary_modulo() : virtual_linear();
@@ -187,11 +190,6 @@ class Run {
 
  private:
   // ---- bookkeeping for the printout of a failure (fixed rings) ----
-  struct Event {
-    int cycle = 0;
-    const char* what = "";
-    double x = 0, y = 0, z = 0;
-  };
   struct State {
     int cycle = 0;
     double position = 0, velocity = 0, acceleration = 0, leader = 0, leader_velocity = 0;
@@ -199,28 +197,22 @@ class Run {
     int function_state = 0, master = 0;
   };
   void note(const char* what, double x = 0, double y = 0, double z = 0) {
-    events_[static_cast<std::size_t>(event_count_++) % events_.size()] = Event{cycle_, what, x, y, z};
+    events_.note(cycle_, what, {x, y, z});
   }
   void dump() {
     dumped_ = true;
-    std::printf("last events (cycle, what, values):\n");
-    for (int i = std::max(0, event_count_ - static_cast<int>(events_.size())); i < event_count_; ++i) {
-      const Event& e = events_[static_cast<std::size_t>(i) % events_.size()];
-      std::printf("  %d %s %g %g %g\n", e.cycle, e.what, e.x, e.y, e.z);
-    }
-    std::printf(
-        "last cycles (cycle, F x v a, leading value x v, StatusWord, FunctionState, ActualMaster):\n");
-    for (int i = std::max(0, state_count_ - static_cast<int>(states_.size())); i < state_count_; ++i) {
-      const State& t = states_[static_cast<std::size_t>(i) % states_.size()];
-      std::printf("  %d %.6f %.6f %.3f %.6f %.6f %08x %d %d\n", t.cycle, t.position, t.velocity,
-                  t.acceleration, t.leader, t.leader_velocity, t.status_word, t.function_state, t.master);
-    }
+    events_.print();
+    states_.print(
+        "cycle, F x v a, leading value x v, StatusWord, FunctionState, ActualMaster", [](const State& t) {
+          std::printf("  %d %.6f %.6f %.3f %.6f %.6f %08x %d %d\n", t.cycle, t.position, t.velocity,
+                      t.acceleration, t.leader, t.leader_velocity, t.status_word, t.function_state, t.master);
+        });
   }
   std::string where() const { return std::string(name_of(kind_)) + ", cycle " + std::to_string(cycle_); }
 
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
-  bool chance(double p) { return uniform(0.0, 1.0) < p; }
-  int pick(int n) { return static_cast<int>(rng_() % static_cast<std::uint32_t>(n)); }
+  double uniform(double lo, double hi) { return random_.uniform(lo, hi); }
+  bool chance(double p) { return random_.chance(p); }
+  int pick(int n) { return random_.pick(n); }
   double dynamic(double high) { return chance(0.25) ? -1.0 : uniform(0.02, 1.0) * high; }
   double jerk() {
     const double r = uniform(0.0, 1.0);
@@ -590,7 +582,11 @@ class Run {
     bool elevated = false;    // above a limit, admissibly
     bool recovering = false;  // after a phase without limits, the acceleration falling back into them
     bool velocity_unlimited = false;
+    bool dynamic_sync = false;  // MC_GearInPos profile 0 synchronizing
   };
+  tomc::testing::DynamicSyncJudge dynamic_sync_;
+  int prev_waiting_ = 0;
+  int active_pos_profile_ = -1;
 
   void check() {
     if (!checking_) return;
@@ -612,9 +608,8 @@ class Run {
       const auto& c = F_->interconnections()[static_cast<std::size_t>(now.master - 1)];
       lv = c.source->leading_value(c.coupling);
     }
-    states_[static_cast<std::size_t>(state_count_++) % states_.size()] =
-        State{cycle_,      sp.position,  sp.velocity,        sp.acceleration, lv.position,
-              lv.velocity, d.StatusWord, now.function_state, now.master};
+    states_.push(State{cycle_, sp.position, sp.velocity, sp.acceleration, lv.position, lv.velocity,
+                       d.StatusWord, now.function_state, now.master});
 
     // G4: finite values.
     for (double x : {d.Position, d.Velocity, d.Acceleration, sp.position, sp.velocity, sp.acceleration,
@@ -724,8 +719,16 @@ class Run {
         // The cycle that hands over from a phase without the limit: its setpoint is one step of the new
         // motion from the synchronous state of this same cycle (the leader's dynamics, not observable here);
         // from the next cycle on it must not grow.
-        const bool admissible = prev_.velocity_unlimited ||
-                                (after_free && std::fabs(sp.velocity) <= std::fabs(prev_.velocity) + tol_v);
+        // With a jerk limit an acceleration carried over outward is taken back with the jerk, so |v| still
+        // grows by up to a0²/(2j) on the way (profiles.hpp, spec 01 §8.8 "tramite lo strappo"): admissible
+        // while that acceleration falls and |v| grows by no more than it carries it in the cycle.
+        const bool carried = sp.velocity * prev_.acceleration > 0.0 &&
+                             std::fabs(sp.acceleration) < std::fabs(prev_.acceleration) &&
+                             std::fabs(sp.velocity) <=
+                                 std::fabs(prev_.velocity) + std::fabs(prev_.acceleration) * kCycle + tol_v;
+        const bool admissible =
+            prev_.velocity_unlimited ||
+            (after_free && (std::fabs(sp.velocity) <= std::fabs(prev_.velocity) + tol_v || carried));
         EXPECT_TRUE(admissible) << where() << ": |v| " << sp.velocity << " above MaxVelocity "
                                 << l.MaxVelocity;
         elevated = true;
@@ -763,6 +766,26 @@ class Run {
       now.elevated = elevated;
       if (elevated) ++stats_.elevated_cycles;
     }
+    // G2, MC_GearInPos profile 0 (spec 07 §2.2, §6.8; SYNC8 "in advance using dynamic parameters"):
+    // MaxVelocity, MaxAcceleration / MaxDeceleration and MaxJerk hold during the synchronization, above them
+    // only what the follower carried in at its start (not growing). Changes of the leader's dynamics after
+    // the start are superimposed according to the gear ratio (the manual): a cycle is judged while the leader
+    // keeps its velocity of the start and does not accelerate.
+    // Which MC_GearInPos synchronizes: a pending job (the instance's last accepted one) becomes the active
+    // one in the cycle its WaitingFunctionState 2 ends with FunctionState 2; until then an older job of the
+    // same instance may still be active (spec 07 §5.1: a pending MC_GearInPos does not abort it).
+    if (now.function_state == 2 && prev_waiting_ == 2 && sm.WaitingFunctionState != 2)
+      active_pos_profile_ = pending_pos_profile_;
+    prev_waiting_ = sm.WaitingFunctionState;
+    now.dynamic_sync = now.function_state == 2 && synchronizing && active_pos_profile_ == 0 && enabled;
+    if (now.dynamic_sync && !prev_.dynamic_sync)
+      note("GearInPos profile 0 synchronizes (leader velocity, follower v, a)", lv.velocity, prev_.velocity,
+           prev_.acceleration);
+    const auto verdict = dynamic_sync_.judge(
+        now.dynamic_sync, lv.velocity, lv.acceleration, sp.velocity, sp.acceleration, prev_.velocity,
+        prev_.acceleration, {l.MaxVelocity, l.MaxAcceleration, l.MaxDeceleration, l.MaxJerk}, kCycle);
+    if (verdict.judged) ++stats_.dynamic_sync_cycles;
+    EXPECT_TRUE(verdict.problem.empty()) << where() << ": MC_GearInPos profile 0 " << verdict.problem;
     prev_enabled_ = enabled;
     prev_ = now;
   }
@@ -809,7 +832,7 @@ class Run {
   }
 
   LeaderKind kind_;
-  std::mt19937 rng_;
+  tomc::testing::PropertyRandom random_;
   techobjects::Runtime runtime_;
   techobjects::PositioningAxis* L_ = nullptr;
   techobjects::PositioningAxis* L2_ = nullptr;
@@ -868,10 +891,8 @@ class Run {
   tomc::testing::AlarmWatch alarm_watch_;
   Stats stats_{};
   int cycle_ = 0;
-  std::array<Event, 120> events_{};
-  int event_count_ = 0;
-  std::array<State, 60> states_{};
-  int state_count_ = 0;
+  tomc::testing::EventRing<120> events_;
+  tomc::testing::StateRing<State, 60> states_;
   bool dumped_ = false;
 };
 
@@ -887,11 +908,11 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
       "limited "
       "cycles (%ld MC_GearIn synchronizing, %ld above a limit on the way down), %ld with X0; %ld GearIn, %ld "
       "GearInVelocity, %ld GearInPos synchronous, %ld GearOut Done, %ld aborted, %ld rejected, %ld alarms "
-      "608; GearInPos %ld accepted, %ld rejected, %ld started\n",
+      "608; GearInPos %ld accepted, %ld rejected, %ld started, %ld profile-0 cycles at a constant leader\n",
       seed, name_of(kind), s.synchronous_cycles, s.velocity_gearing_cycles, s.limited_cycles,
       s.synchronizing_cycles, s.elevated_cycles, s.indicated_cycles, s.gear_in, s.gear_in_velocity,
       s.gear_in_pos_synchronous, s.gear_out_done, s.aborted, s.rejected, s.alarms_608, s.gear_in_pos,
-      s.gear_in_pos_rejected, s.gear_in_pos_started);
+      s.gear_in_pos_rejected, s.gear_in_pos_started, s.dynamic_sync_cycles);
   total.synchronous_cycles += s.synchronous_cycles;
   total.velocity_gearing_cycles += s.velocity_gearing_cycles;
   total.limited_cycles += s.limited_cycles;
@@ -901,6 +922,7 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
   total.gear_in_pos_synchronous += s.gear_in_pos_synchronous;
   total.gear_out_done += s.gear_out_done;
   total.aborted += s.aborted;
+  total.dynamic_sync_cycles += s.dynamic_sync_cycles;
 }
 
 TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
@@ -923,6 +945,7 @@ TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
   EXPECT_GT(total.indicated_acceleration_cycles, 0);
   EXPECT_GT(total.gear_in_pos_synchronous, 4);
   EXPECT_GT(total.gear_out_done, 2);
+  EXPECT_GT(total.dynamic_sync_cycles, 0);
 #endif
 }
 

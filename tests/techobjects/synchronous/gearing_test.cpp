@@ -852,6 +852,86 @@ TEST(Gearing, GP9GearInPosProfile0WithinTheJobDynamics) {
   EXPECT_NEAR(m.f().Position - (m.l().Position - 200.0), 0.0, 1e-6);
 }
 
+// MC_GearInPos profile 0 and MaxVelocity (spec 07 §2.2 "synchronization completes only below MaxVelocity",
+// §6.8; decision C23). F: MaxVelocity 150; ratio 2/1, the leader at 100 mm/s: the synchronous velocity
+// 200 mm/s lies above it, so the job waits (WaitingFunctionState 2, no StartSync, no alarm 501) instead of
+// running a synchronization the follower may not travel. When the leader slows to 60 mm/s (F: 120 mm/s) it
+// synchronizes within 150 mm/s and is InSync at MasterSyncPosition 1000 with F = SlaveSyncPosition 300.
+TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocity) {
+  auto f = virtual_linear();
+  f.DynamicLimits.MaxVelocity = 150.0;
+  f.DynamicLimits.Velocity = 150.0;
+  GearingMachine m(virtual_linear(), f);
+  leader_at(m, 100.0);
+  auto& g = m.gear_pos;
+  g.RatioNumerator = 2;
+  g.MasterSyncPosition = 1000.0;
+  g.SlaveSyncPosition = 300.0;
+  g.SyncProfileReference = 0;
+  g.Velocity = 150.0;  // within MaxVelocity: no alarm 501 for the job's own dynamics
+  g.Acceleration = g.Deceleration = 2000.0;
+  g.Jerk = 0.0;
+  g.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(g.Busy) << std::hex << g.ErrorID;
+  m.run(3000);  // the leader at about 300 mm: far enough before its synchronous point for any length
+  EXPECT_TRUE(g.Busy);
+  EXPECT_FALSE(g.StartSync);
+  EXPECT_EQ(m.F->synchronized_motion().WaitingFunctionState, 2);
+  EXPECT_EQ(m.f().Velocity, 0.0);
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedVelocity));
+  leader_at(m, 60.0);
+  double v_max = 0.0;
+  int start = -1;
+  const int cycles = m.run_until(
+      [&] {
+        v_max = std::max(v_max, std::fabs(m.f().Velocity));
+        if (g.StartSync && start < 0) start = 1;
+        return g.InSync;
+      },
+      20000);
+  ASSERT_GT(cycles, 0);
+  EXPECT_EQ(start, 1);
+  EXPECT_LE(v_max, 150.0);
+  EXPECT_NEAR(m.f().Velocity, 120.0, 1e-9);
+  EXPECT_NEAR(m.l().Position, 1000.0, 0.06 + 1e-9);
+  EXPECT_NEAR(m.f().Position - 2.0 * (m.l().Position - 1000.0), 300.0, 1e-6);
+}
+
+// Decision C24 (spec 07 §2.2: Velocity/Acceleration/Deceleration/Jerk are "profile 0 only"), as C20 for
+// MC_CamIn: a distance profile (1, 3) ignores them — an Acceleration of 20,000 above MaxAcceleration 10,000
+// raises no alarm 502, a Deceleration of 0.0 and a Jerk that is not a number are not refused, and the job
+// synchronizes over MasterStartDistance as GP-2 does (InSync at L = 150, F = L − 100); profile 0 still checks
+// them (Deceleration 0.0: 16#8112).
+TEST(Gearing, GearInPosDynamicParametersAreProfileZerosOnly) {
+  GearingMachine m;
+  auto& g = m.gear_pos;
+  g.SyncProfileReference = 3;
+  g.MasterSyncPosition = 100.0;
+  g.SlaveSyncPosition = 0.0;
+  g.MasterStartDistance = 50.0;
+  g.Acceleration = 20000.0;
+  g.Deceleration = 0.0;
+  g.Jerk = std::nan("");
+  g.Execute = true;
+  m.run(1);
+  ASSERT_TRUE(g.Busy) << std::hex << g.ErrorID;
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedAcceleration));
+  leader_at(m, 100.0);
+  ASSERT_GT(m.run_until([&] { return g.InSync; }, 3000), 0);
+  EXPECT_NEAR(m.l().Position, 150.0, 0.11);
+  EXPECT_NEAR(m.f().Position - (m.l().Position - 100.0), 0.0, 1e-6);
+  EXPECT_FALSE(m.F->alarms().pending(techobjects::kAlarmDynamicsLimitedAcceleration));
+  g.Execute = false;
+  m.run(1);
+  g.SyncProfileReference = 0;
+  g.MasterSyncPosition = 2000.0;
+  g.Execute = true;
+  m.run(1);
+  EXPECT_TRUE(g.Error);
+  EXPECT_EQ(g.ErrorID, eid::kInvalidDeceleration);
+}
+
 // GV-1: MC_GearInVelocity(100/100, ContinuousUpdate, Acceleration 1000), L at 100, F at rest: InSync after
 // 0.100 s, FunctionState 6; numerator 110 -> F.Velocity = 110 on the next cycle, InSync stays,
 // ContinuousUpdateActive. GV-2: PositionControlled FALSE -> X28.

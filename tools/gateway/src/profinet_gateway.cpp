@@ -23,6 +23,7 @@
 #include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
+#include "tomc/telegrams/layout.hpp"
 
 namespace tomc::profinet_gateway {
 
@@ -35,7 +36,8 @@ using drives::Slot;
 
 namespace {
 
-constexpr std::uint16_t kZsw1Fault = 1u << 3;  // ZSW1 bit 3: fault present (spec 06 §3)
+constexpr std::uint16_t kZsw1Fault = 1u << 3;       // ZSW1 bit 3: fault present (spec 06 §3)
+constexpr std::uint8_t kGxZswErrorHighByte = 0x80;  // Gx_ZSW bit 15: encoder error (spec 06 §3.7)
 // How many send clocks an answer waits for the input frames sent after its setpoint: one is the normal case
 // (the frames arrive within the cycle), more cover a device (or a loaded machine) that answers late. A new
 // setpoint ends the wait at once (the answer goes out as it is, stale for the controller), so a controller in
@@ -132,6 +134,16 @@ struct ProfinetGateway::Impl {
     gw::ByteOrder byte_order = gw::BYTE_ORDER_BIG;
     std::unique_ptr<pn::IoController> controller;
     std::size_t zsw1_low_byte = 1;  // where ZSW1 bit 3 is in the telegram's first word (byte order)
+    // Where bit 15 (encoder error) of each encoder status word is in the actual frames: G1_ZSW/G2_ZSW of the
+    // drive telegram, G1_ZSW of each encoder telegram (spec 06 §3.7); what the status calls it.
+    struct EncoderStatusWord {
+      std::size_t slot = 0;
+      std::size_t high_byte = 0;
+      const char* name = "";
+    };
+    std::array<EncoderStatusWord, 4> encoder_words{};
+    std::size_t encoder_word_count = 0;
+    std::atomic<std::uint32_t> encoder_errors{0};  // bit k: encoder_words[k] reports an encoder error
     std::array<scenario::ProfinetTelegramPlace, drives::kSlotCount> places{};  // config.place() per slot
     // Who may touch `controller`: the start-up thread (false) or the cyclic thread (true).
     std::atomic<bool> cyclic{false};
@@ -266,6 +278,7 @@ struct ProfinetGateway::Impl {
       if (d.controller->watchdog_expired(now)) {
         d.has_setpoint = d.answered = false;
         d.faulted.store(false, std::memory_order_relaxed);
+        d.encoder_errors.store(0, std::memory_order_relaxed);
         d.cyclic.store(false, std::memory_order_release);  // back to the start-up thread: reconnect
         wake();
       }
@@ -342,6 +355,15 @@ struct ProfinetGateway::Impl {
       d.faulted.store(
           drive.length > 1 && (std::to_integer<std::uint8_t>(drive.bytes[d.zsw1_low_byte]) & kZsw1Fault) != 0,
           std::memory_order_relaxed);
+      std::uint32_t encoder_errors = 0;
+      for (std::size_t k = 0; k < d.encoder_word_count; ++k) {
+        const auto& w = d.encoder_words[k];
+        const drives::Frame& f = image.actual[i].slots[w.slot];
+        if (f.length > w.high_byte &&
+            (std::to_integer<std::uint8_t>(f.bytes[w.high_byte]) & kGxZswErrorHighByte))
+          encoder_errors |= 1u << k;
+      }
+      d.encoder_errors.store(encoder_errors, std::memory_order_relaxed);
     }
     answers.publish();
     wake();
@@ -458,9 +480,19 @@ struct ProfinetGateway::Impl {
         } else if (!d.cyclic.load(std::memory_order_acquire)) {
           s.state(gw::DEVICE_DISCONNECTED);
           if (detail.empty()) detail = "no AR with '" + d.config.name_of_station + "'";
-        } else if (d.faulted.load(std::memory_order_relaxed)) {
-          s.state(gw::DEVICE_FAULTED);  // ZSW1.3; the fault number needs parameter access (r0945)
-          detail = "ZSW1 bit 3: the drive reports a fault" + (detail.empty() ? "" : "; " + detail);
+        } else if (const std::uint32_t encoder_errors = d.encoder_errors.load(std::memory_order_relaxed);
+                   d.faulted.load(std::memory_order_relaxed) || encoder_errors != 0) {
+          // ZSW1.3 (the fault number needs parameter access, r0945) or an encoder's Gx_ZSW.15 (its error code
+          // is in Gx_XIST2, which the TO reads: spec 06 §3.7).
+          s.state(gw::DEVICE_FAULTED);
+          std::string what =
+              d.faulted.load(std::memory_order_relaxed) ? "ZSW1 bit 3: the drive reports a fault" : "";
+          for (std::size_t k = 0; k < d.encoder_word_count; ++k) {
+            if ((encoder_errors >> k & 1u) != 0)
+              what += (what.empty() ? "" : "; ") + std::string(d.encoder_words[k].name) +
+                      " bit 15: encoder error";
+          }
+          detail = what + (detail.empty() ? "" : "; " + detail);
         } else {
           s.state(gw::DEVICE_CONNECTED);
         }
@@ -555,6 +587,18 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     d->zsw1_low_byte =
         c.byte_order == telegrams::ByteOrder::kBig || c.byte_order == telegrams::ByteOrder::kSwappedWords ? 1
                                                                                                           : 0;
+    const auto add_encoder_word = [&d](Slot slot, telegrams::Signal word, const char* name) {
+      const auto layout =
+          telegrams::find_layout(d->device_config.telegram(slot), telegrams::Direction::kActual);
+      const int offset = layout ? layout->offset_of(word) : -1;
+      if (offset < 0 || d->encoder_word_count == d->encoder_words.size()) return;
+      d->encoder_words[d->encoder_word_count++] = {
+          static_cast<std::size_t>(slot), static_cast<std::size_t>(offset) + 1 - d->zsw1_low_byte, name};
+    };
+    add_encoder_word(Slot::kDrive, telegrams::Signal::G1_ZSW, "G1_ZSW of the drive telegram");
+    add_encoder_word(Slot::kDrive, telegrams::Signal::G2_ZSW, "G2_ZSW of the drive telegram");
+    add_encoder_word(Slot::kEncoder1, telegrams::Signal::G1_ZSW, "G1_ZSW of the encoder telegram");
+    add_encoder_word(Slot::kEncoder2, telegrams::Signal::G1_ZSW, "G1_ZSW of the second encoder telegram");
     pn::ControllerDeviceConfig pc;
     pc.name_of_station = c.name_of_station;
     pc.ip = {c.ip, c.netmask, {}};
@@ -604,6 +648,7 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
   rt.period = m.cycle;
   rt.fifo_priority = config.fifo_priority;
   rt.lock_memory = config.lock_memory;
+  rt.wake_margin = std::chrono::microseconds(config.wake_margin_us);
   // The cyclic thread is named "tomc-pn-cyclic" (top -H, perf, ps -L on a gateway box; the allocation test
   // counts on it by name) once, on its first cycle.
   m.runner = std::make_unique<techobjects::RealTimeRunner>(rt, [&m, named = false]() mutable {
@@ -644,6 +689,8 @@ GatewayCounters ProfinetGateway::counters() const {
   c.overruns = r.overruns;
   c.wake_up_p99_us = r.jitter_p99_us;
   c.wake_up_max_us = r.jitter_max_us;
+  c.spin_mean_us = r.spin_mean_us;
+  c.late_wakeups = r.late_wakeups;
   return c;
 }
 

@@ -2,6 +2,7 @@
 #include "tomc/scenario/profinet_gateway_config.hpp"
 
 #include <charconv>
+#include <iterator>
 #include <map>
 
 #include "gateway_adapter_detail.hpp"
@@ -107,7 +108,9 @@ struct SlotKeys {
 };
 constexpr SlotKeys kSlotKeys[] = {{"telegram", "the telegram submodule"},
                                   {"supplementary", "the supplementary telegram submodule"},
-                                  {"encoder", "the encoder telegram submodule"}};
+                                  {"encoder", "the encoder telegram submodule"},
+                                  {"encoder2", "the second encoder telegram submodule"}};
+static_assert(std::size(kSlotKeys) == drives::kSlotCount);
 
 // Each used slot's telegram submodule must carry the telegram: its lengths are the telegram's PZD bytes (spec
 // 06 §2.15). `by_hand`: the modules are the file's "modules" array (the path names the entry); otherwise
@@ -132,64 +135,55 @@ void check_telegram_submodule(const ProfinetDeviceConfig& device, std::size_t sl
             std::string(by_hand ? ""
                                 : "slot " + std::to_string(module.slot) + " subslot " +
                                       std::to_string(sub.subslot) + ": ") +
-                kSlotKeys[std::min<std::size_t>(slot_index, 2)].submodule + " has input_length " +
-                std::to_string(sub.input_length) + " and output_length " + std::to_string(sub.output_length) +
-                "; telegram " + std::to_string(telegram) + " needs " + std::to_string(in) + " and " +
-                std::to_string(out));
+                kSlotKeys[slot_index].submodule + " has input_length " + std::to_string(sub.input_length) +
+                " and output_length " + std::to_string(sub.output_length) + "; telegram " +
+                std::to_string(telegram) + " needs " + std::to_string(in) + " and " + std::to_string(out));
       }
       return;
     }
   }
-  const std::string key = kSlotKeys[std::min<std::size_t>(slot_index, 2)].key;
+  const std::string key = kSlotKeys[slot_index].key;
   problems.add(path, "no submodule in slot " + std::to_string(place.slot) + " subslot " +
                          std::to_string(place.subslot) + " (" + key + "_slot, " + key + "_subslot)");
 }
 
-// The emulated drive's layout (drives/profinet, telegram_place()): the drive object in slot 1 (drive telegram
-// subslot 2, 750 subslot 3), an encoder object behind it (slot 2, 3) or alone (slot 1, 2), telegram
-// subslot 2.
+// The emulated drive's layout (drives::telegram_place()).
 ProfinetTelegramPlace default_place(const ProfinetDeviceConfig& device, drives::Slot slot) noexcept {
-  const auto first_encoder = static_cast<std::uint16_t>(device.telegram != 0 ? 2 : 1);
-  switch (slot) {
-    case drives::Slot::kDrive:
-      return {1, 2};
-    case drives::Slot::kSupplementary:
-      return {1, 3};
-    case drives::Slot::kEncoder1:
-      return {first_encoder, 2};
-    case drives::Slot::kEncoder2:
-      return {static_cast<std::uint16_t>(first_encoder + 1), 2};
-  }
-  return {};
+  return drives::telegram_place(device.device_config(), slot);
 }
 
 // The telegrams of the slots and where their submodules are: "telegram" (required unless "encoder_telegram"
-// is given), "supplementary_telegram", "encoder_telegram", each with "<key>_slot" and "<key>_subslot".
+// is given), "supplementary_telegram", "encoder_telegram", "encoder2_telegram" (only beside
+// "encoder_telegram"), each with "<key>_slot" and "<key>_subslot".
 void read_telegrams(ObjectReader& r, ProfinetDeviceConfig& device, Problems& problems) {
   r.integer("telegram", device.telegram, 1, 999, false, !r.has("encoder_telegram"));
   r.integer("supplementary_telegram", device.supplementary_telegram, 1, 999, false);
   r.integer("encoder_telegram", device.encoder_telegram, 1, 999, false);
+  r.integer("encoder2_telegram", device.encoder2_telegram, 1, 999, false);
   const std::size_t before = problems.size();
   if (const std::string why = drives::validate(device.device_config()); !why.empty()) {
-    const char* key = why.rfind("supplementary", 0) == 0 ? "supplementary_telegram"
-                      : why.rfind("encoder", 0) == 0     ? "encoder_telegram"
-                                                         : "telegram";
+    const char* key = why.rfind("supplementary", 0) == 0          ? "supplementary_telegram"
+                      : why.rfind("encoder_telegrams[1]", 0) == 0 ? "encoder2_telegram"
+                      : why.rfind("encoder", 0) == 0              ? "encoder_telegram"
+                                                                  : "telegram";
     problems.add(r.path_of(key), why);
   }
+  if (device.encoder2_telegram != 0 && device.encoder_telegram == 0)
+    problems.add(r.path_of("encoder2_telegram"), "a second encoder needs a first one (encoder_telegram)");
   const bool valid = problems.size() == before;
-  const std::array<std::uint16_t, 3> numbers{device.telegram, device.supplementary_telegram,
-                                             device.encoder_telegram};
-  for (std::size_t k = 0; k < 3; ++k) {
+  const std::array<std::uint16_t, drives::kSlotCount> numbers{
+      device.telegram, device.supplementary_telegram, device.encoder_telegram, device.encoder2_telegram};
+  for (std::size_t k = 0; k < drives::kSlotCount; ++k) {
     const std::string key = kSlotKeys[k].key;
     ProfinetTelegramPlace place = default_place(device, static_cast<drives::Slot>(k));
     r.integer(key + "_slot", place.slot, 0, 0x7FFF);
     r.integer(key + "_subslot", place.subslot, 1, 0x9FFF, true);
     if (numbers[k] != 0 && valid) device.places[k] = place;
   }
-  static constexpr const char* kNames[] = {"drive", "supplementary", "encoder"};
+  static constexpr const char* kNames[] = {"drive", "supplementary", "encoder", "second encoder"};
   // Only for telegrams that passed validate(): the places of the others were never set.
-  for (std::size_t a = 0; a < 3 && valid; ++a) {
-    for (std::size_t b = a + 1; b < 3; ++b) {
+  for (std::size_t a = 0; a < drives::kSlotCount && valid; ++a) {
+    for (std::size_t b = a + 1; b < drives::kSlotCount; ++b) {
       if (numbers[a] != 0 && numbers[b] != 0 && device.places[a].slot == device.places[b].slot &&
           device.places[a].subslot == device.places[b].subslot)
         problems.add(r.path_of(std::string(kSlotKeys[b].key) + "_subslot"),
@@ -278,7 +272,7 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
 }  // namespace
 
 ProfinetTelegramPlace ProfinetDeviceConfig::place(drives::Slot s) const noexcept {
-  const std::uint16_t numbers[] = {telegram, supplementary_telegram, encoder_telegram, 0};
+  const std::uint16_t numbers[] = {telegram, supplementary_telegram, encoder_telegram, encoder2_telegram};
   const auto i = static_cast<std::size_t>(s);
   if (numbers[i] == 0) return {};
   return places[i].subslot != 0 ? places[i] : default_place(*this, s);
@@ -289,6 +283,7 @@ drives::DeviceConfig ProfinetDeviceConfig::device_config() const {
   c.drive_telegram = telegram;
   c.supplementary_telegram = supplementary_telegram;
   c.encoder_telegrams[0] = encoder_telegram;
+  c.encoder_telegrams[1] = encoder2_telegram;
   c.codec.byte_order = byte_order;
   return c;
 }
@@ -318,6 +313,7 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       p.integer("reduction_ratio", config.reduction_ratio, 1, 512);
       p.integer("watchdog_factor", config.watchdog_factor, 3, 255);
       p.integer("fifo_priority", config.fifo_priority, 0, 99);
+      p.integer("wake_margin_us", config.wake_margin_us, 0, 500);  // half the shortest send clock (1 ms)
       p.boolean("lock_memory", config.lock_memory);
       p.finish();
     }
@@ -356,7 +352,7 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       } else if (const Json* m = r.get("modules")) {
         read_modules(*m, r.path_of("modules"), device, problems);
       }
-      for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t k = 0; k < drives::kSlotCount; ++k)
         check_telegram_submodule(device, k, r.path_of("modules"), !r.has("gsdml"), problems);
       r.finish();
       config.devices.push_back(std::move(device));

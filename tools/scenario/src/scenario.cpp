@@ -1028,17 +1028,13 @@ std::optional<Column> Scenario::Impl::resolve(std::string_view name, const std::
       return column;
     }
     // A synchronous axis' StatusSynchronizedMotion.* (spec 07 §1.9) is not in the positioning axis' variable
-    // table: read it through SynchronousAxis::read, which answers NaN for a path it does not know.
-    constexpr std::string_view kSync = "StatusSynchronizedMotion.";
-    if (entry.synchronous_axis != nullptr && rest.starts_with(kSync) && !std::isnan(entry.read(rest))) {
-      const std::string_view member = rest.substr(kSync.size());
-      column.format = member.starts_with("StatusWord.X") ? Format::kBool
-                      : member == "FunctionState" || member == "WaitingFunctionState" ||
-                              member == "ActualMaster" || member == "StatusWord"
-                          ? Format::kInteger
-                          : Format::kReal;
-      column.read = [axis = entry.synchronous_axis, path = std::string(rest)] { return axis->read(path); };
-      return column;
+    // table: read it through SynchronousAxis::read.
+    if (entry.synchronous_axis != nullptr) {
+      if (const auto type = entry.synchronous_axis->synchronized_motion_type(rest)) {
+        column.format = format_of(*type);
+        column.read = [axis = entry.synchronous_axis, path = std::string(rest)] { return axis->read(path); };
+        return column;
+      }
     }
     problems.add(path, "'" + std::string(rest) + "' is not a variable of " + std::string(entry.type_name()) +
                            " " + entry.name);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/drives/telegram_place.hpp"
 #include "tomc/profinet/io_device.hpp"
 #include "tomc/telegrams/codec.hpp"
 
@@ -19,21 +20,9 @@ namespace tomc::drives {
 inline constexpr std::uint32_t kDapIdent = 0x00000001;
 inline constexpr std::uint32_t kDriveObjectIdent = 0x00000100;
 inline constexpr std::uint32_t kEncoderObjectIdent = 0x00000200;
-inline constexpr std::uint16_t kDriveObjectSlot = 1;
-inline constexpr std::uint16_t kTelegramSubslot = 2;
-inline constexpr std::uint16_t kSupplementarySubslot = 3;
 constexpr std::uint32_t telegram_submodule_ident(std::uint16_t telegram) noexcept {
   return 0x00010000u + telegram;
 }
-
-// Where the emulated device carries the telegram of a contract slot (docs/gateway.md §2); slot 0 when the
-// configuration has no telegram there.
-struct TelegramPlace {
-  std::uint16_t slot = 0;
-  std::uint16_t subslot = 0;
-  friend bool operator==(const TelegramPlace&, const TelegramPlace&) = default;
-};
-TelegramPlace telegram_place(const DeviceConfig& config, Slot slot) noexcept;
 
 // The modules a controller expects for the emulated device of `config` (the same the emulator has); the
 // second form for a drive telegram alone.

@@ -10,11 +10,13 @@
 // values of the same MC_Interpolator cycle (spec 07 §6.1). Positions are continuous on both sides: a modulo
 // leader needs no unwrapping, and user positions in leader coordinates are mapped onto the next occurrence.
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "tomc/techobjects/datablocks/variables.hpp"
 #include "tomc/techobjects/positioning_axis/positioning_axis.hpp"
 #include "tomc/techobjects/synchronous/synchronous_operation.hpp"
 
@@ -84,6 +86,9 @@ class SynchronousAxis final : public PositioningAxis {
   const StatusSynchronizedMotion& synchronized_motion() const noexcept { return operation_.status(); }
   // As PositioningAxis::read, plus "StatusSynchronizedMotion.*".
   double read(std::string_view path) const noexcept;
+  // The data type of a "StatusSynchronizedMotion.*" path (spec 07 §1.9; all RON), nullopt for any other
+  // path: that part of the data block is not in the positioning axis' variable table.
+  std::optional<VariableType> synchronized_motion_type(std::string_view path) const noexcept;
 
  private:
   // Tells each leading value it is one (spec 01 §8.6), before the operation takes the list over.

@@ -4,6 +4,9 @@
 // profiles 1/3, MC_GearOut profile 1, §6.4, §6.7). Pure functions of the given states; noexcept, no
 // allocation.
 
+#include <array>
+#include <cstddef>
+
 #include "tomc/techobjects/motion/profiles.hpp"
 
 namespace tomc::techobjects {
@@ -36,6 +39,12 @@ class LeaderDomainBlend {
                        double leader_acceleration) noexcept;
   // The follower at leader state (x, v_x, a_x). Beyond ξ = 1 the line itself.
   MotionState at(double x, double v_x, double a_x) const noexcept;
+  // The follower's jerk at x for a leader at constant velocity v_x: d³y/dx³·v_x³ (the line and the
+  // deviation's target add none: MC_GearInPos / MC_CamIn profile 0 blend onto a straight line, spec 07 §6.8).
+  double jerk(double x, double v_x) const noexcept;
+  // The leader positions inside the blend where, at a constant leader velocity, the follower's acceleration
+  // (d³y/dx³ = 0: at most 2) or its jerk (the vertex of d³y/dx³) has an extremum, for checks between samples.
+  std::size_t extrema(std::array<double, 3>& x) const noexcept;
   // Fraction of the leading-value distance covered (0 ... 1, clamped).
   double progress(double x) const noexcept;
   double line(double x) const noexcept { return y_target_ + slope_ * (x - x_target_); }

@@ -259,6 +259,7 @@ class SynchronousOperation final : public SynchronousSlot {
     bool continuous_update = false;
     bool start_sync = false;
     bool in_sync = false;
+    bool line_blend = false;  // MC_CamIn profile 0: the blend runs onto the cam's tangent (decision C23)
     ProfileLimits limits{};
     double x_sync = 0.0;  // leader and follower positions of the gear line y = y_sync + r·(x − x_sync)
     double y_sync = 0.0;
@@ -282,7 +283,7 @@ class SynchronousOperation final : public SynchronousSlot {
     ProfileLimits limits{};    // profile 0
     // Profile 0: the last synchronization length and what it was computed from (reused while they stay).
     double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
-    MotionState sized_follower{};
+    MotionState sized_follower{};  // position: the follower's distance to the target
     double sized_length = 0.0;
     CamJob cam{};  // kind kCamIn
   };
@@ -377,6 +378,8 @@ class SynchronousOperation final : public SynchronousSlot {
                            double follower_end_estimate) const noexcept;
   double sync_length_profile0(const PendingSyncIn& p, const LeadingValue& leader, double y_target,
                               double slope) const noexcept;
+  double profile0_length(PendingSyncIn& p, const LeadingValue& leader, double y_target,
+                         double slope) noexcept;
   bool profile0_start_crossed(PendingSyncIn& p, const LeadingValue& leader, double x_a) noexcept;
   bool activate_pending(JobKind kind) noexcept;
   Submission desynchronize(const GearOutInputs& in, JobKind kind) noexcept;

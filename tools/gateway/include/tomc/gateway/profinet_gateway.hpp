@@ -39,9 +39,12 @@ struct GatewayCounters {
   std::uint64_t answers_published = 0;
   std::uint64_t cycles = 0;    // of the cyclic thread
   std::uint64_t overruns = 0;  // cycles that ended after the next one was due
-  // The cyclic thread's wake-up latency (wake-up minus deadline, RealTimeRunner), µs.
+  // The cyclic thread's start latency (cycle start minus deadline, RealTimeRunner), µs: its wake-up latency,
+  // or with "wake_margin_us" what the margin did not absorb.
   double wake_up_p99_us = 0.0;
   double wake_up_max_us = 0.0;
+  double spin_mean_us = 0.0;       // with "wake_margin_us": CPU spun per cycle
+  std::uint64_t late_wakeups = 0;  // with "wake_margin_us": cycles woken after their send time
 };
 
 class ProfinetGateway {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tomc/drives/dds/network.hpp"
+#include "tomc/drives/telegram_place.hpp"
 #include "tomc/scenario/config.hpp"
 
 namespace tomc::scenario {
@@ -33,10 +34,8 @@ struct ProfinetModuleConfig {
   std::vector<ProfinetSubmoduleConfig> submodules;
 };
 
-struct ProfinetTelegramPlace {
-  std::uint16_t slot = 0;
-  std::uint16_t subslot = 0;
-};
+// Where a slot's telegram submodule is (slot, subslot); the default layout is drives::telegram_place().
+using ProfinetTelegramPlace = drives::TelegramPlace;
 
 struct ProfinetDeviceConfig {
   std::string name;  // the device's name on DDS (the contract's `device`)
@@ -49,6 +48,7 @@ struct ProfinetDeviceConfig {
   std::uint16_t telegram = 0;
   std::uint16_t supplementary_telegram = 0;
   std::uint16_t encoder_telegram = 0;
+  std::uint16_t encoder2_telegram = 0;  // a second encoder (slot kEncoder2), only beside encoder_telegram
   // Where each slot's telegram submodule is; subslot 0: the emulated drive's layout (drive 1/2, supplementary
   // 1/3, encoder 2/2, or 1/2 in an encoder-only device). Its input/output lengths must be the telegram's.
   std::array<ProfinetTelegramPlace, drives::kSlotCount> places{};
@@ -77,6 +77,9 @@ struct ProfinetGatewayConfig {
   std::uint16_t reduction_ratio = 1;
   std::uint16_t watchdog_factor = 3;  // the data-hold watchdog, in send clock × reduction ratio
   int fifo_priority = 0;              // the cyclic thread: 1..99 SCHED_FIFO, 0 normal
+  // The cyclic thread wakes this early and spins to its send time (RealTimeRunnerConfig::wake_margin):
+  // 0 = no spin; at most half the cycle.
+  int wake_margin_us = 0;
   bool lock_memory = false;
   std::vector<ProfinetDeviceConfig> devices;
 
