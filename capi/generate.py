@@ -59,6 +59,9 @@ CAM_SCALING = [("MasterOffset", "LREAL", "0.0"), ("SlaveOffset", "LREAL", "0.0")
                ("SlaveScaling", "LREAL", "1.0")]
 # Inputs of tomc's own beside the manual's (not in the C++ class): the length of an array given by pointer.
 ARRAY_LENGTHS = {"ArrayOfPointsLength", "ArrayOfSegmentsLength"}
+# A TO_Cam given as the C++ class's input named here (decision U15): MC_PositionProfile.TimePosition is a TO_Cam
+# or tomc's point structure in the manual's DB_ANY, two pointers of different types in C; one of them, not both.
+CAM_AS = {"TimePositionCam": "TimePosition"}
 
 # The implemented instructions in the manual's order (spec 01 §1.3). Inputs: (name, IEC type, default);
 # outputs: (name, IEC type). A "master" instruction also has the input Master (the leading TO), or the TO input
@@ -142,7 +145,7 @@ TABLE = [
        [("Busy", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"), ("ErrorID", "WORD")],
        master="SuperimposingAxis"),
     fb("MC_PositionProfile", "spec 03 §4.7", "PY",
-       [("TimePosition", "PROFILE", "NULL"), ("Execute", "BOOL", "FALSE"), ("BufferMode", "DINT", "0"),
+       [("TimePosition", "PROFILE", "NULL"), ("TimePositionCam", "CAM", "NULL"), ("Execute", "BOOL", "FALSE"), ("BufferMode", "DINT", "0"),
         ("StartTime", "LREAL", "0.0"), ("ProfileReference", "DINT", "0"), ("Velocity", "LREAL", "-1.0")] + DYN,
        [("Done", "BOOL"), ("Busy", "BOOL"), ("Active", "BOOL"), ("CommandAborted", "BOOL"), ("Error", "BOOL"),
         ("ErrorID", "WORD")]),
@@ -281,7 +284,7 @@ def c_header():
         elif f["master"]:
             out.append(f"  const tomc_object* {f['master']}; /* a positioning or synchronous axis */")
         for name, t, _ in f["inputs"]:
-            note = {"CAM": " /* a TO_Cam */", "POINTS": " /* ArrayOfPointsLength elements */",
+            note = {"CAM": f" /* a TO_Cam{' (tomc: instead of ' + CAM_AS[name] + ')' if name in CAM_AS else ''} */", "POINTS": " /* ArrayOfPointsLength elements */",
                     "SEGMENTS": " /* ArrayOfSegmentsLength elements */"}.get(t, "")
             if name in ARRAY_LENGTHS:
                 note = " /* tomc: the number of elements the array above holds */"
@@ -327,9 +330,18 @@ def cpp_glue():
         # MC_InterpolateCam allocates, MC_CopyCamData reads the caller's arrays: not from a user task (decision C22).
         user_program = n in ("MC_InterpolateCam", "MC_CopyCamData")
         out.append(f"  static constexpr bool kUserProgramOnly = {'true' if user_program else 'false'};")
+        # The input and what is wrong with it: a handle that is not a TO_Cam, or a cam given beside the point
+        # structure it stands in for.
         cams = [name for name, t, _ in f["inputs"] if t == "CAM"]
         if cams:
-            out.append(f"  static const char* wrong_object(const C& c) noexcept {{ return cam_of(c.{cams[0]}) == nullptr && c.{cams[0]} != nullptr ? \"{cams[0]}\" : nullptr; }}")
+            out.append("  static const char* wrong_object(const C& c) noexcept {")
+            for cam in cams:
+                out.append(f'    if (c.{cam} != nullptr && cam_of(c.{cam}) == nullptr) return "{cam}: not a TO_Cam";')
+                if cam in CAM_AS:
+                    out.append(f"    if (c.{cam} != nullptr && c.{CAM_AS[cam]} != nullptr)")
+                    out.append(f'      return "{cam}: {CAM_AS[cam]} is given too (a profile is a TO_Cam or the point structure)";')
+            out.append("    return nullptr;")
+            out.append("  }")
         else:
             out.append("  static const char* wrong_object(const C&) noexcept { return nullptr; }")
         if f["master"]:
@@ -341,6 +353,9 @@ def cpp_glue():
         for name, t, _ in f["inputs"]:
             if t == "PROFILE":  # the same layout (static_asserts below the table)
                 out.append(f"    t.{name} = reinterpret_cast<const techobjects::TimePositionProfile*>(c.{name});")
+                continue
+            if t == "CAM" and name in CAM_AS:  # after the input it stands in for (the table's order)
+                out.append(f"    if (c.{name} != nullptr) t.{CAM_AS[name]} = cam_of(c.{name});")
                 continue
             if t == "CAM":
                 out.append(f"    t.{name} = cam_of(c.{name});")
@@ -406,7 +421,8 @@ def st_declarations():
                 out.append(f"  {name} : LWORD; (* a tomc_time_position_profile* *)")
                 continue
             if t == "CAM":
-                out.append(f"  {name} : TO_Object; (* a TO_Cam *)")
+                instead = f" (tomc: instead of {CAM_AS[name]})" if name in CAM_AS else ""
+                out.append(f"  {name} : TO_Object; (* a TO_Cam{instead} *)")
                 continue
             if t in ("POINTS", "SEGMENTS"):
                 out.append(f"  {name} : LWORD; (* a {TYPES[t][6:-1]}* *)")

@@ -371,7 +371,8 @@ Kind kind_of(const tomc_object& o) noexcept {
   return kSpeed;
 }
 
-// MC_CamIn.Cam: the TO_Cam of a handle; nullptr for none or another TO type (call_fb refuses that).
+// MC_CamIn.Cam, MC_PositionProfile.TimePositionCam: the TO_Cam of a handle; nullptr for none or another TO
+// type (call_fb refuses that).
 techobjects::Cam* cam_of(const tomc_object* o) noexcept {
   return o != nullptr && o->machine.built ? o->machine.cam : nullptr;
 }
@@ -504,8 +505,8 @@ tomc_status call_fb(tomc_object* axis, typename Fb::C* c) noexcept {
                         std::string(master->machine.type_name()) + ") is not a leading value");
       }
     }
-    if (const char* input = Fb::wrong_object(*c)) {
-      return fail(TOMC_ERROR_WRONG_OBJECT_TYPE, std::string(Fb::kName) + "." + input + ": not a TO_Cam");
+    if (const char* problem = Fb::wrong_object(*c)) {  // "<input>: <what is wrong>"
+      return fail(TOMC_ERROR_WRONG_OBJECT_TYPE, std::string(Fb::kName) + "." + problem);
     }
     if (!axis->machine.built)
       return fail(TOMC_ERROR_STATE, std::string(Fb::kName) + ": " + axis->machine.name + " was not built");

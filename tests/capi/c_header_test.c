@@ -21,6 +21,14 @@ int main(void) {
             (unsigned)move.header.version, move.Velocity, (int)move.Direction);
     return 1;
   }
+  /* MC_PositionProfile's two profile inputs (decision U15): the point structure, or a TO_Cam's handle. */
+  tomc_MC_PositionProfile profile;
+  tomc_MC_PositionProfile_init(&profile);
+  if (profile.TimePosition != NULL || profile.TimePositionCam != NULL ||
+      tomc_MC_PositionProfile_call(NULL, &profile) != TOMC_ERROR_NULL_ARGUMENT) {
+    fprintf(stderr, "MC_PositionProfile: inputs not NULL after init, or a NULL axis accepted\n");
+    return 1;
+  }
   tomc_runner_config config = {TOMC_STRUCT_HEADER(tomc_runner_config), 0, 0, -1, false};
   if (tomc_runtime_run_realtime(NULL, &config) != TOMC_ERROR_NULL_ARGUMENT ||
       strlen(tomc_last_error()) == 0) {

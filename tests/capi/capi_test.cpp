@@ -1071,3 +1071,86 @@ TEST(CApi, CammingAFollowerFromC) {
   EXPECT_DOUBLE_EQ(following.Value, 90.0);
   tomc_runtime_destroy(runtime);
 }
+
+// MC_PositionProfile with the manual's TimePosition, a TO_Cam (spec 03 §4.7, seed 004 §6.8.4, decision L8),
+// from C: the cam handle goes into tomc's input TimePositionCam (decision U15). Cam P5 is the VDI 2143
+// Polynomial5 from (0 s, 0 mm) to (1 s, 40 mm), y(t) = 40 (10t³ − 15t⁴ + 6t⁵), at rest at both ends; the
+// relative job follows it at once: profile time n ms after the n-th cycle following the edge, y(0.25) =
+// 4.140625 mm, y(0.5) = 20 mm at 75 mm/s, 40 mm at rest after 1 s. A cam not interpolated: 16#8150. Not a
+// TO_Cam, or a cam beside the point structure: TOMC_ERROR_WRONG_OBJECT_TYPE with the input's name.
+TEST(CApi, PositionProfileFollowsATOCamFromC) {
+  constexpr const char* kProfile = R"({
+    "cycle_time": 0.001,
+    "technology_objects": [
+      {"name": "P5", "type": "TO_Cam",
+       "MotionLaws": [{"law": "Polynomial5", "x0": 0, "y0": 0, "x1": 1, "y1": 40}], "Interpolate": true},
+      {"name": "Raw", "type": "TO_Cam", "Points": [[0, 0], [1, 10]]},
+      {"name": "Slide", "type": "TO_PositioningAxis", "config": {"VirtualAxis.Mode": 1, "DynamicLimits.MaxJerk": 0.0}}
+    ]
+  })";
+  tomc_runtime* runtime = nullptr;
+  ASSERT_EQ(tomc_runtime_create(kProfile, &runtime), TOMC_OK) << last_error();
+  tomc_object* p5 = nullptr;
+  tomc_object* raw = nullptr;
+  tomc_object* slide = nullptr;
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "P5", &p5), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Raw", &raw), TOMC_OK) << last_error();
+  ASSERT_EQ(tomc_runtime_find_object(runtime, "Slide", &slide), TOMC_OK) << last_error();
+  tomc_MC_Power power;
+  tomc_MC_Power_init(&power);
+  power.Enable = true;
+  for (int i = 0; i < 5; ++i)
+    cycle(runtime, [&] { return tomc_MC_Power_call(slide, &power); });
+  ASSERT_TRUE(power.Status);
+
+  tomc_MC_PositionProfile profile;
+  tomc_MC_PositionProfile_init(&profile);
+  EXPECT_EQ(profile.TimePositionCam, nullptr);  // default: the point structure's input decides
+  profile.Execute = true;
+  profile.TimePositionCam = slide;
+  EXPECT_EQ(tomc_MC_PositionProfile_call(slide, &profile), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  EXPECT_NE(last_error().find("MC_PositionProfile.TimePositionCam: not a TO_Cam"), std::string::npos)
+      << last_error();
+  tomc_time_position_profile points;
+  std::memset(&points, 0, sizeof(points));
+  points.NumberOfPoints = 2;
+  points.Point[1] = {1.0, 10.0};
+  profile.TimePosition = &points;
+  profile.TimePositionCam = p5;
+  EXPECT_EQ(tomc_MC_PositionProfile_call(slide, &profile), TOMC_ERROR_WRONG_OBJECT_TYPE);
+  EXPECT_NE(last_error().find("MC_PositionProfile.TimePositionCam: TimePosition is given too"),
+            std::string::npos)
+      << last_error();
+  profile.TimePosition = nullptr;
+
+  profile.TimePositionCam = raw;  // not interpolated (spec 07 §3.2)
+  ASSERT_EQ(tomc_MC_PositionProfile_call(slide, &profile), TOMC_OK) << last_error();
+  EXPECT_TRUE(profile.Error);
+  EXPECT_EQ(profile.ErrorID, 0x8150);
+  profile.Execute = false;
+  cycle(runtime, [&] { return tomc_MC_PositionProfile_call(slide, &profile); });
+
+  profile.TimePositionCam = p5;
+  profile.Execute = true;
+  const double x0 = read(slide, "Position");
+  ASSERT_EQ(tomc_MC_PositionProfile_call(slide, &profile), TOMC_OK) << last_error();
+  ASSERT_TRUE(profile.Busy) << std::hex << profile.ErrorID;
+  const auto follow = [&](int cycles) {
+    for (int i = 0; i < cycles; ++i)
+      cycle(runtime, [&] { return tomc_MC_PositionProfile_call(slide, &profile); });
+  };
+  follow(250);
+  EXPECT_TRUE(read_bit(slide, "StatusWord2.X9"));  // PositionProfile active
+  EXPECT_NEAR(read(slide, "Position") - x0, 4.140625, 1e-9);
+  follow(250);
+  EXPECT_NEAR(read(slide, "Position") - x0, 20.0, 1e-9);
+  EXPECT_NEAR(read(slide, "Velocity"), 75.0, 1e-9);
+  follow(500);
+  EXPECT_NEAR(read(slide, "Position") - x0, 40.0, 1e-9);
+  EXPECT_NEAR(read(slide, "Velocity"), 0.0, 1e-9);
+  for (int i = 0; i < 200 && !profile.Done; ++i)
+    follow(1);
+  EXPECT_TRUE(profile.Done) << std::hex << profile.ErrorID;
+  EXPECT_FALSE(profile.Error);
+  tomc_runtime_destroy(runtime);
+}

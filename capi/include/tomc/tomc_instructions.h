@@ -441,6 +441,7 @@ typedef struct tomc_MC_PositionProfile {
   tomc_struct_header header; /* set by the init function */
   /* inputs */
   const tomc_time_position_profile* TimePosition;
+  const tomc_object* TimePositionCam; /* a TO_Cam (tomc: instead of TimePosition) */
   bool Execute;
   int32_t BufferMode;
   double StartTime;

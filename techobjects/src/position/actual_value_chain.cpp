@@ -283,7 +283,20 @@ std::int32_t SetpointScaling::xerr(double position_error) const noexcept {
 
 ActualValueChain::ActualValueChain(const AxisMechanics& axis, const EncoderMechanics& encoder,
                                    double servo_cycle_s) noexcept
-    : modulo_(axis.Modulo), encoder_(encoder), servo_cycle_s_(servo_cycle_s) {
+    : modulo_start_(axis.Modulo.StartValue),
+      modulo_length_(axis.Modulo.Length),
+      servo_cycle_s_(servo_cycle_s),
+      nist_reference_(encoder.System == EncoderSystem::kRotary ? encoder.Parameter.ReferenceSpeed
+                                                               : encoder.Parameter.ReferenceVelocity),
+      steps_per_revolution_(encoder.Parameter.StepsPerRevolution),
+      fine_xist1_(static_cast<std::uint8_t>(encoder.Parameter.FineResolutionXist1)),
+      fine_xist2_(static_cast<std::uint8_t>(encoder.Parameter.FineResolutionXist2)),
+      type_(static_cast<std::uint8_t>(encoder.Type)),
+      nist_velocity_(encoder.VelocityMode == ActualVelocityMode::kProfidriveNist),
+      nist_from_drive_(encoder.Nist == NistSource::kDriveTelegram),
+      rotary_(encoder.System == EncoderSystem::kRotary),
+      inverse_(encoder.InverseDirection),
+      modulo_enable_(axis.Modulo.Enable) {
   auto problem = validate(axis, encoder);
   if (!problem && !positive_finite(servo_cycle_s))
     problem = ConfigProblem{"ServoCycle", "servo cycle time must be > 0"};
@@ -300,23 +313,21 @@ ActualValueChain::ActualValueChain(const AxisMechanics& axis, const EncoderMecha
 }
 
 std::int64_t ActualValueChain::xist2_to_xist1_counts(std::int64_t c) const noexcept {
-  const int shift = static_cast<int>(encoder_.Parameter.FineResolutionXist1) -
-                    static_cast<int>(encoder_.Parameter.FineResolutionXist2);
+  const int shift = static_cast<int>(fine_xist1_) - static_cast<int>(fine_xist2_);
   if (shift >= 0) return wrapping_mul(c, std::int64_t{1} << shift);
   // XIST1 is coarser: round to the nearest XIST1 count (arithmetic shift = floor in C++20).
   return wrapping_add(c, std::int64_t{1} << (-shift - 1)) >> (-shift);
 }
 
 std::int64_t ActualValueChain::xist1_to_xist2_counts(std::int64_t c) const noexcept {
-  const int shift = static_cast<int>(encoder_.Parameter.FineResolutionXist1) -
-                    static_cast<int>(encoder_.Parameter.FineResolutionXist2);
+  const int shift = static_cast<int>(fine_xist1_) - static_cast<int>(fine_xist2_);
   if (shift <= 0) return wrapping_mul(c, std::int64_t{1} << (-shift));
   return wrapping_add(c, std::int64_t{1} << (shift - 1)) >> shift;
 }
 
 std::int64_t ActualValueChain::cycle_index(double continuous) const noexcept {
-  if (!modulo_.Enable) return 0;
-  return modulo_wrap(continuous, modulo_.StartValue, modulo_.Length).cycle;
+  if (!modulo_enable_) return 0;
+  return modulo_wrap(continuous, modulo_start_, modulo_length_).cycle;
 }
 
 void ActualValueChain::add_cycles(std::int64_t delta) noexcept {
@@ -338,7 +349,7 @@ void ActualValueChain::power_up(const RetainedSensorState* retained) noexcept {
   restored_xist2_counts_ = 0;
   if (retained != nullptr && absolute_type()) {
     if (std::isfinite(retained->AbsEncoderOffset)) offset_ = retained->AbsEncoderOffset;
-    if (encoder_.Type == EncoderType::kCyclicAbsolute && range_ != 0) {
+    if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
       restored_ = true;
       restored_xist2_counts_ =
           wrapping_add(wrapping_mul(retained->MeasuringRangeCount, static_cast<std::int64_t>(range_)),
@@ -354,7 +365,7 @@ void ActualValueChain::restart() noexcept {
   }
   // Absolute types: offset and counter are kept; the next Gx_XIST2 re-anchors the position, a cyclic absolute
   // encoder continuing from the current measuring range.
-  if (encoder_.Type == EncoderType::kCyclicAbsolute && anchored_) {
+  if (type() == EncoderType::kCyclicAbsolute && anchored_) {
     restored_ = true;
     restored_xist2_counts_ = xist1_to_xist2_counts(tracker_.counts());
   }
@@ -377,7 +388,7 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
     std::int64_t value = static_cast<std::int64_t>(*sample.xist2_absolute);
     if (range_ != 0) value %= static_cast<std::int64_t>(range_);
     std::int64_t absolute = value;
-    if (encoder_.Type == EncoderType::kCyclicAbsolute && range_ != 0) {
+    if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
       // Measuring range nearest to the known position: overflow/underflow counting (spec 01 §3.7).
       std::int64_t k = 0;
       if (anchored_ || restored_) {
@@ -399,18 +410,15 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
   if (!first_sample && !anchored_now) {
     v = static_cast<double>(tracker_.counts() - previous_counts) * units_per_count_ / servo_cycle_s_;
   }
-  if (encoder_.VelocityMode == ActualVelocityMode::kProfidriveNist && sample.nist_b) {
-    if (encoder_.Nist == NistSource::kDriveTelegram) {
+  if (nist_velocity_ && sample.nist_b) {
+    if (nist_from_drive_) {
       v = scaling_.load_velocity_from_nist_b(*sample.nist_b);  // motor speed through the mechanics
-    } else if (encoder_.System == EncoderSystem::kRotary) {
-      const double rev_per_s = tg::n4_to_speed(*sample.nist_b, encoder_.Parameter.ReferenceSpeed) / 60.0;
-      v = rev_per_s *
-          tg::counts_per_revolution(encoder_.Parameter.StepsPerRevolution,
-                                    static_cast<std::uint8_t>(encoder_.Parameter.FineResolutionXist1)) *
-          units_per_count_;
+    } else if (rotary_) {
+      const double rev_per_s = tg::n4_to_speed(*sample.nist_b, nist_reference_) / 60.0;
+      v = rev_per_s * tg::counts_per_revolution(steps_per_revolution_, fine_xist1_) * units_per_count_;
     } else {
-      const double lin = tg::n4_to_speed(*sample.nist_b, encoder_.Parameter.ReferenceVelocity);
-      v = encoder_.InverseDirection ? -lin : lin;
+      const double lin = tg::n4_to_speed(*sample.nist_b, nist_reference_);
+      v = inverse_ ? -lin : lin;
     }
   }
   velocity_ = v;
@@ -432,9 +440,9 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule, double h
   if (problem_path_ != nullptr || !std::isfinite(value)) return;
   const double old_position = position();
   offset_ = value - static_cast<double>(tracker_.counts()) * units_per_count_;
-  if (modulo_.Enable) {
-    const double start = modulo_.StartValue;
-    const double length = modulo_.Length;
+  if (modulo_enable_) {
+    const double start = modulo_start_;
+    const double length = modulo_length_;
     const double new_position = modulo_wrap(value, start, length).position;
     switch (rule) {
       case ModuloCycleRule::kShortestDistance:
@@ -460,7 +468,7 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule, double h
 void ActualValueChain::shift_offset(double delta) noexcept {
   if (problem_path_ != nullptr || !std::isfinite(delta) || delta == 0.0) return;
   offset_ += delta;
-  if (!modulo_.Enable) return;
+  if (!modulo_enable_) return;
   const std::int64_t k = cycle_index(continuous_position());
   add_cycles(k - cycle_index_);
   cycle_index_ = k;
@@ -472,19 +480,19 @@ double ActualValueChain::continuous_position() const noexcept {
 
 double ActualValueChain::position() const noexcept {
   const double p = continuous_position();
-  if (!modulo_.Enable) return p;
-  return modulo_wrap(p, modulo_.StartValue, modulo_.Length).position;
+  if (!modulo_enable_) return p;
+  return modulo_wrap(p, modulo_start_, modulo_length_).position;
 }
 
 std::int64_t ActualValueChain::measuring_range_count() const noexcept {
-  if (encoder_.Type != EncoderType::kCyclicAbsolute || range_ == 0) return 0;
+  if (type() != EncoderType::kCyclicAbsolute || range_ == 0) return 0;
   return floor_div(xist1_to_xist2_counts(tracker_.counts()), static_cast<std::int64_t>(range_));
 }
 
 RetainedSensorState ActualValueChain::retained_state() const noexcept {
   RetainedSensorState s{};
   s.AbsEncoderOffset = abs_encoder_offset();
-  if (encoder_.Type == EncoderType::kCyclicAbsolute && range_ != 0) {
+  if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
     if (!anchored_ && restored_) {  // nothing new since the restore: hand the restored values back
       const auto r = static_cast<std::int64_t>(range_);
       s.MeasuringRangeCount = floor_div(restored_xist2_counts_, r);

@@ -2,6 +2,7 @@
 // superimposed MotionIn jobs MC_MotionInSuperimposed / MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4,
 // seed 004 §6.14.3) on the positioning axis: the jobs, their §9.19.1 row R6 / column C7, and the superimposed
 // part of the setpoint.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -197,8 +198,24 @@ void PositioningAxis::advance_superimposed() noexcept {
       return;
     }
   }
-  if (superimposed_.advance(core_.ipo_cycle_s, limited ? v_limit - v_base : inf,
-                            limited ? v_limit + v_base : inf)) {
+  // Acceleration (seed 004 §6.7.10.1, U16): MaxAcceleration where the total speeds up, MaxDeceleration where
+  // it slows down, minus the base's present acceleration: its sample and its mean over the cycle (the base's
+  // velocity step: a ramp that ends within the cycle samples 0 yet moved), the larger in each direction. The
+  // last cycle's total is the data block's Velocity; the total's direction is that one's.
+  const double v_sup = superimposed_.state().velocity;
+  const double v_total_before = db_.Velocity / units_.velocity;
+  const double a_mean = (v_base - (v_total_before - v_sup)) / core_.ipo_cycle_s;
+  const double a_base_up = std::max(setpoint_.acceleration, a_mean);
+  const double a_base_down = std::min(setpoint_.acceleration, a_mean);
+  const bool forward = v_total_before >= 0.0;
+  const double a_max = db_.DynamicLimits.MaxAcceleration / units_.acceleration;
+  const double d_max = db_.DynamicLimits.MaxDeceleration / units_.acceleration;
+  const SuperimposedMotion::Headroom headroom =
+      limited ? SuperimposedMotion::Headroom{v_limit - v_base, v_limit + v_base,
+                                             (forward ? a_max : d_max) - a_base_up,
+                                             (forward ? d_max : a_max) + a_base_down}
+              : SuperimposedMotion::Headroom{inf, inf, inf, inf};
+  if (superimposed_.advance(core_.ipo_cycle_s, headroom)) {
     // MoveSuperimposed: the distance is travelled; Halt: standing (id 0: the braking after a MotionIn
     // setpoint that was not a number).
     if (id != 0) core_.jobs.set(id, JobState::kDone);

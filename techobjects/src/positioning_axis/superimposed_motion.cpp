@@ -76,7 +76,24 @@ void SuperimposedMotion::end_motion_in() noexcept {
   end_job();
 }
 
-bool SuperimposedMotion::advance(double dt, double headroom_positive, double headroom_negative) noexcept {
+void SuperimposedMotion::limit_acceleration(const MotionState& before, double dt,
+                                            const Headroom& headroom) noexcept {
+  const double low = -std::max(headroom.acceleration_negative, 0.0);
+  const double high = std::max(headroom.acceleration_positive, 0.0);
+  // The sample and the cycle's mean (its velocity step) both: a profile's acceleration changes within a
+  // cycle.
+  const double mean = (state_.velocity - before.velocity) / dt;
+  if (state_.acceleration >= low && state_.acceleration <= high && mean >= low && mean <= high) return;
+  const double a = std::clamp(state_.acceleration, low, high);
+  // No headroom in a direction: the superimposed velocity cannot change that way and is held (U16).
+  state_ =
+      MotionState{before.position + before.velocity * dt + 0.5 * a * dt * dt, before.velocity + a * dt, a};
+  replan(planned_velocity_);  // from the cut state: the next cycle continues from where the axis is
+}
+
+bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
+  const double headroom_positive = headroom.velocity_positive;
+  const double headroom_negative = headroom.velocity_negative;
   if (job_ == Job::kMotionIn) {
     if (const auto* input = std::get_if<MotionState>(&profile_)) follow(*input);
     return false;
@@ -104,8 +121,10 @@ bool SuperimposedMotion::advance(double dt, double headroom_positive, double hea
   const double duration = position ? std::get<PositionProfile>(profile_).duration()
                                    : std::get<VelocityProfile>(profile_).duration();
   if (time_ < duration - 1e-9) {
+    const MotionState before = state_;
     state_ = position ? std::get<PositionProfile>(profile_).at(time_)
                       : std::get<VelocityProfile>(profile_).at(time_);
+    if (job_ == Job::kMove) limit_acceleration(before, dt, headroom);
     return false;
   }
   planned_ = false;

@@ -5,6 +5,7 @@
 // function (synchronous_operation.cpp).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
 #include "tomc/techobjects/synchronous/synchronous_operation.hpp"
@@ -85,9 +86,7 @@ Submission SynchronousOperation::phasing(const PhasingInputs& in, bool absolute)
     // A time-based positioning of the follower's extra travel r·Δφ (spec 07 §6.6); φ = travel / r. A new job
     // starts from the phase shift reached (a running one is aborted below, S5 "A").
     const double delta = absolute ? in.PhaseShift - phase_shift_.value : in.PhaseShift;
-    PositionProfile plan;
-    if (!plan.plan(MotionState{}, job.ratio * delta, limits) || !job.travel.take(plan, job.ratio * delta))
-      return Submission::reject(error_id::kInvalidVelocity);
+    if (!job.travel.plan(job.ratio * delta, limits)) return Submission::reject(error_id::kInvalidVelocity);
   }
   if (const auto e = arbitrate_row(NewSyncRow::kPhasing)) return Submission::reject(e);  // S5 "A"
   return start_shift(job, in.PhaseShift, absolute);
@@ -166,22 +165,36 @@ void SynchronousOperation::end_shifts() noexcept {
   offset_ = Shift{};
 }
 
-bool SynchronousOperation::RestToRestTravel::take(const PositionProfile& plan, double to) noexcept {
-  const auto from = plan.segments();
-  if (from.size() > segments.size()) return false;
-  std::copy(from.begin(), from.end(), segments.begin());
-  count = static_cast<std::uint32_t>(from.size());
-  duration = plan.duration();
+bool SynchronousOperation::RestToRestTravel::plan(double to, const ProfileLimits& l) noexcept {
+  PositionProfile p;
+  if (!p.plan(MotionState{}, to, l) || p.segments().size() > kMaxSegments) return false;
+  limits = l;
   target = to;
+  duration = p.duration();
+  select(p, 0.0);
   return true;
 }
 
-MotionState SynchronousOperation::RestToRestTravel::at(double t) const noexcept {
-  if (count == 0 || !(t < duration)) return MotionState{target, 0.0, 0.0};
-  std::uint32_t i = count - 1;
+void SynchronousOperation::RestToRestTravel::select(const PositionProfile& p, double t) noexcept {
+  const auto segments = p.segments();
+  next_start = std::numeric_limits<double>::infinity();
+  segment = ProfileSegment{};
+  if (segments.empty()) return;
+  std::size_t i = segments.size() - 1;
   while (i > 0 && segments[i].start_time > t)
     --i;
-  const ProfileSegment& k = segments[i];
+  segment = segments[i];
+  if (i + 1 < segments.size()) next_start = segments[i + 1].start_time;
+}
+
+MotionState SynchronousOperation::RestToRestTravel::at(double t) noexcept {
+  if (!(t < duration)) return MotionState{target, 0.0, 0.0};
+  if (t >= next_start) {  // the next segment: the same plan again (bounded, allocation-free)
+    PositionProfile p;
+    (void)p.plan(MotionState{}, target, limits);
+    select(p, t);
+  }
+  const ProfileSegment& k = segment;
   const double d = std::max(0.0, t - k.start_time);
   const double a = k.acceleration + d * k.jerk;  // the cubic in the segment's local time
   const double v = k.velocity + d * (k.acceleration + a) / 2.0;

@@ -342,6 +342,93 @@ TEST(MoveSuperimposed, TotalVelocityStaysWithinTheLimitAndTheDistanceIsShown) {
   EXPECT_EQ(m.db().Position, stopped_at);  // folding into the base moves nothing
 }
 
+// Seed 004 §6.7.10.1 (spec 01 §8.14, decision U16): the superimposed motion's acceleration is at most what
+// the base motion's present acceleration leaves of MaxAcceleration (total speeding up) / MaxDeceleration
+// (total slowing down); with no headroom it cannot change its velocity that way. Limits 1000 mm/s² both,
+// MaxVelocity 1000 mm/s; MoveSuperimposed with Acceleration = Deceleration = 1000 mm/s², VelocityDiff 100.
+// The base ramps with `base_ramp` mm/s² for 100 mm/s; the superimposed job starts `delay` ms into the ramp.
+// Every cycle: |total acceleration| <= 1000 and the total's velocity change <= 1000 mm/s² x 1 ms.
+struct AccelerationHeadroomCase {
+  const char* name;
+  double base_from, base_to, base_ramp;  // MoveVelocity from -> to (mm/s) at base_ramp mm/s²
+  int delay;                             // ms into the base ramp
+  double distance;                       // MoveSuperimposed.Distance, mm
+  double still_for;                      // ms the superimposed part cannot move (headroom 0)
+  double done_after;  // ms from the job's start to Done, computed below (< 0: not computed)
+  double jerk = 0.0;  // of the base and the superimposed job, mm/s³ (0: none)
+};
+
+TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
+  const AccelerationHeadroomCase cases[] = {
+      // Headroom 1000 - 800 = 200 for the 100 ms left of the ramp (v 20 mm/s, 1 mm), then 9 mm from 20 mm/s
+      // at 1000: peak sqrt((2·1000·9 + 20²)/2) = 95.92 -> 75.92 + 95.92 ms. Without U16: 200 ms.
+      {"base accelerates at 800", 0.0, 100.0, 800.0, 25, 10.0, 0.0, 100.0 + 75.92 + 95.92},
+      // Base at MaxAcceleration: headroom 0 for the 75 ms left of the ramp, the superimposed part stays at 0;
+      // then 10 mm at 1000 mm/s², peak 100 = VelocityDiff: 200 ms.
+      {"base accelerates at the limit", 0.0, 100.0, 1000.0, 25, 10.0, 75.0, 75.0 + 200.0},
+      // Base slows from 100 to 20 mm/s at 800: a negative superimposed job may slow the total by only 200
+      // more for the 100 ms of the ramp (-20 mm/s, -1 mm), then -1 mm from -20 mm/s at 1000:
+      // peak sqrt((2·1000·1 + 20²)/2) = 34.64 -> 14.64 + 34.64 ms. Without U16: 2·sqrt(2/1000) s = 89.44 ms.
+      {"base decelerates at 800", 100.0, 20.0, 800.0, 0, -2.0, 0.0, 100.0 + 14.64 + 34.64},
+      // Jerk-limited base ramp and job (10^5 mm/s³): the headroom changes in every cycle of the base's jerk
+      // phases; the limit of the total holds there too (no closed-form Done time).
+      {"base and job jerk-limited", 0.0, 100.0, 800.0, 5, 10.0, 0.0, -1.0, 1e5},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    auto data = tomc::testing::linear_axis_data();
+    data.DynamicLimits.MaxVelocity = 1000.0;
+    data.DynamicLimits.MaxAcceleration = 1000.0;
+    data.DynamicLimits.MaxDeceleration = 1000.0;
+    SuperimposedMachine m(data);
+    ASSERT_GT(m.enable(), 0);
+    m.move_velocity.Acceleration = 1000.0;
+    m.move_velocity.Deceleration = 1000.0;
+    if (c.base_from != 0.0) {
+      m.move_velocity.Velocity = c.base_from;
+      m.move_velocity.Execute = true;
+      ASSERT_GT(m.run_until([&] { return m.move_velocity.InVelocity; }, 500), 0);
+      m.move_velocity.Execute = false;
+      m.run(1);
+    }
+    m.move_velocity.Velocity = c.base_to;
+    m.move_velocity.Acceleration = c.base_ramp;
+    m.move_velocity.Deceleration = c.base_ramp;
+    m.move_velocity.Jerk = c.jerk;
+    m.move_velocity.Execute = true;
+    m.run(c.delay);
+    m.move_superimposed.Distance = c.distance;
+    m.move_superimposed.VelocityDiff = 100.0;
+    m.move_superimposed.Acceleration = 1000.0;
+    m.move_superimposed.Deceleration = 1000.0;
+    m.move_superimposed.Jerk = c.jerk;
+    m.move_superimposed.Execute = true;
+    double steepest = 0.0, steepest_change = 0.0, velocity = m.db().Velocity;
+    int cycles = 0;
+    ASSERT_GT(m.run_until(
+                  [&] {
+                    ++cycles;
+                    steepest = std::max(steepest, std::fabs(m.db().Acceleration));
+                    steepest_change =
+                        std::max(steepest_change, std::fabs(m.db().Velocity - velocity) / 0.001);
+                    velocity = m.db().Velocity;
+                    if (cycles < c.still_for - 1) {
+                      EXPECT_EQ(m.db().StatusPositioning.SuperimposedDistance, 0.0) << cycles;
+                    }
+                    return m.move_superimposed.Done;
+                  },
+                  1000),
+              0);
+    EXPECT_LE(steepest, 1000.0 + 1e-6);
+    EXPECT_LE(steepest_change, 1000.0 + 1e-6);
+    if (c.done_after >= 0.0) {
+      EXPECT_NEAR(cycles, c.done_after, 3.0);
+    }
+    EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, c.distance, 1e-9);
+    EXPECT_NEAR(m.db().Velocity, c.base_to, 1e-9);
+  }
+}
+
 // Limits apply to the total motion (spec 01 §8.14, spec 02 §4.5): a base move to 150 mm plus 100 mm
 // superimposed runs into the software limit at 200 mm; the look-ahead stops the total exactly there with 533
 // and both jobs end with 16#8001.

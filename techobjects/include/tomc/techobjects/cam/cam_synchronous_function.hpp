@@ -49,10 +49,10 @@ class CamSynchronousFunction {
  private:
   const CamProfile* cam_ = nullptr;
   CamScaling scaling_{};
-  CamApplicationMode mode_ = CamApplicationMode::kNotCyclic;
   double period_gain_ = 0.0;  // f(End) − f(Start): what cyclic appending adds per period
   std::int64_t last_period_ = 0;
   std::size_t piece_ = 0;  // the piece of the last evaluation (CamProfile::find's hint)
+  CamApplicationMode mode_ = CamApplicationMode::kNotCyclic;  // next to first_: no padding (decision M6)
   bool first_ = true;
 };
 

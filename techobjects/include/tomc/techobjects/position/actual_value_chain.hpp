@@ -259,7 +259,7 @@ class ActualValueChain {
 
   // Incremental: a sample was received. Absolute types: Gx_XIST2 has anchored the position.
   bool position_valid() const noexcept { return has_sample_ && (!absolute_type() || anchored_); }
-  bool absolute_type() const noexcept { return encoder_.Type != EncoderType::kIncremental; }
+  bool absolute_type() const noexcept { return type() != EncoderType::kIncremental; }
 
   std::int64_t encoder_counts() const noexcept { return tracker_.counts(); }  // continuous, Gx_XIST1 units
   double offset() const noexcept { return offset_; }  // homing offset / AbsEncoderOffset
@@ -278,15 +278,20 @@ class ActualValueChain {
   std::int64_t cycle_index(double continuous) const noexcept;
   void add_cycles(std::int64_t delta) noexcept;
 
-  // Of the axis mechanics only the modulo setting is needed after construction (decision M5); the first
-  // configuration problem is kept as its two static strings (nullptr: none).
-  ModuloConfig modulo_{};
-  EncoderMechanics encoder_{};
+  EncoderType type() const noexcept { return static_cast<EncoderType>(type_); }
+
+  // Of the axis mechanics only the modulo setting is needed after construction (decision M5), of Sensor[n]
+  // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16); the first configuration
+  // problem is kept as its two static strings (nullptr: none). One-byte members last, without padding.
   SetpointScaling scaling_{};
   const char* problem_path_ = nullptr;
   const char* problem_message_ = nullptr;
+  double modulo_start_ = 0.0;     // Modulo.StartValue
+  double modulo_length_ = 360.0;  // Modulo.Length
   double servo_cycle_s_ = 0.0;
   double units_per_count_ = 0.0;
+  double nist_reference_ =
+      0.0;                   // NIST_B of telegram 83: Parameter.ReferenceSpeed (rotary) / ReferenceVelocity
   std::uint64_t range_ = 0;  // absolute measuring range in Gx_XIST2 counts
 
   // state
@@ -294,13 +299,23 @@ class ActualValueChain {
   double offset_ = 0.0;
   double velocity_ = 0.0;
   std::int64_t cycle_index_ = 0;  // floor((continuous - Start) / Length) at the last update
+  std::int64_t restored_xist2_counts_ = 0;
   std::int32_t modulo_cycle_ = 0;
+
+  std::uint32_t steps_per_revolution_ = 0;  // Parameter.StepsPerRevolution
+  std::uint8_t fine_xist1_ = 0;             // Parameter.FineResolutionXist1 (0 ... 31)
+  std::uint8_t fine_xist2_ = 0;             // Parameter.FineResolutionXist2 (0 ... 31)
+  std::uint8_t type_ = 0;                   // EncoderType
+  bool nist_velocity_ = false;              // VelocityMode = kProfidriveNist
+  bool nist_from_drive_ = true;             // Nist = kDriveTelegram
+  bool rotary_ = true;                      // System = kRotary
+  bool inverse_ = false;                    // InverseDirection
+  bool modulo_enable_ = false;              // Modulo.Enable
   std::uint8_t width_ = 32;
   bool has_sample_ = false;
   bool anchored_ = false;
   bool derive_cycle_on_anchor_ = true;  // absolute power-up: ActualModuloCycle from the absolute value
   bool restored_ = false;               // retained cyclic state present for the first anchor
-  std::int64_t restored_xist2_counts_ = 0;
 };
 
 }  // namespace tomc::techobjects

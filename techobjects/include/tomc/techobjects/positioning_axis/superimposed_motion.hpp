@@ -8,7 +8,11 @@
 // Limits (spec 01 §8.14, single-axis base): the superimposed velocity may use only what the base leaves of
 // the velocity limit, v_sup ∈ [−(v_limit + v_base), v_limit − v_base], and at most VelocityDiff. The profile
 // is replanned (from the present superimposed state, with the job's jerk) whenever that headroom falls below
-// the planned velocity or rises again (decision U4).
+// the planned velocity or rises again. The same holds for the acceleration (seed 004 §6.7.10.1: "the dynamics
+// of the superimposed motion are at most the difference between the base motion's present dynamic values and
+// the dynamic limits"): a move's superimposed acceleration stays within what the base leaves of
+// MaxAcceleration / MaxDeceleration in each direction; where the profile asks for more, the cycle takes the
+// headroom and the profile is replanned from that state (decisions U4, U16).
 //
 // MC_MotionInSuperimposed and MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4, seed 004 §6.14.3) set the
 // superimposed part directly: no profile, no limits; the distance they give is the absolute value of the
@@ -58,10 +62,17 @@ class SuperimposedMotion {
   void end_motion_in() noexcept;
   bool motion_in() const noexcept { return job_ == Job::kMotionIn || job_ == Job::kMotionInAxes; }
 
-  // One interpolator cycle; `headroom_positive`/`headroom_negative` are the velocities the base motion
-  // leaves in each direction (+inf: no limit, e.g. a following axis, spec 01 §8.14). Returns true in the
-  // cycle the job's motion is complete (the job itself is ended by the caller: end_job()).
-  bool advance(double dt, double headroom_positive, double headroom_negative) noexcept;
+  // What the base motion leaves of the dynamic limits in this cycle, in each direction (+inf: no limit, e.g.
+  // a following axis, spec 01 §8.14). A value <= 0 leaves nothing in that direction.
+  struct Headroom {
+    double velocity_positive;
+    double velocity_negative;
+    double acceleration_positive;
+    double acceleration_negative;
+  };
+  // One interpolator cycle. Returns true in the cycle the job's motion is complete (the job itself is ended
+  // by the caller: end_job()).
+  bool advance(double dt, const Headroom& headroom) noexcept;
   // The superimposed setpoint `dt` after the present one, without replanning (software-limit look-ahead).
   MotionState predicted(double dt) const noexcept;
   void end_job() noexcept {
@@ -77,6 +88,9 @@ class SuperimposedMotion {
 
  private:
   void replan(double velocity_limit) noexcept;
+  // kMove: the acceleration of the cycle's profile sample beyond the acceleration headroom is cut to it (the
+  // state integrated from `before` with the cut acceleration) and the profile replanned from there.
+  void limit_acceleration(const MotionState& before, double dt, const Headroom& headroom) noexcept;
 
   // The source of the superimposed part: a profile (kMove, kHalt), or MC_MotionInSuperimposed's inputs of the
   // last call (kMotionIn: the absolute superimposition; no profile runs then, so they take no extra bytes).

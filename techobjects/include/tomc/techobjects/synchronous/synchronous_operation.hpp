@@ -289,15 +289,21 @@ class SynchronousOperation final : public SynchronousSlot {
     CamJob cam{};                  // kind kCamIn
   };
   // Phasing profile 0's time-based travel of the follower (spec 07 §6.6): a PositionProfile planned from
-  // rest, kept as its segments only. From rest to rest needs at most 7 (jerk up, hold, down, cruise, and the
-  // braking mirror), so 7 instead of the planner's 10 and none of its bookkeeping (decision C17).
+  // rest. Only the segment in progress is kept: the plan, a function of distance and limits alone, is made
+  // again when the time passes the segment's end — from rest to rest at most 7 times per job — instead of
+  // keeping all 7 segments (decision M7: 304 -> 96 bytes; C17 kept 7 of the planner's 10 before).
   struct RestToRestTravel {
-    std::array<ProfileSegment, 7> segments{};
-    std::uint32_t count = 0;
-    double duration = 0.0;
+    static constexpr std::size_t kMaxSegments = 7;  // jerk up, hold, down, cruise, and the braking mirror
+    ProfileLimits limits{};
     double target = 0.0;
-    bool take(const PositionProfile& plan, double to) noexcept;  // false: more segments than kept
-    MotionState at(double t) const noexcept;                     // beyond duration: rest at the target
+    double duration = 0.0;
+    double next_start = 0.0;  // start time of the segment after `segment` (infinity: none)
+    ProfileSegment segment{};
+    bool plan(double to, const ProfileLimits& l) noexcept;  // false: no plan, or more than 7 segments
+    MotionState at(double t) noexcept;                      // t not falling; beyond duration: at the target
+
+   private:
+    void select(const PositionProfile& plan, double t) noexcept;  // the segment in progress at t
   };
   // A leading value offset (MC_Phasing*) or a following value offset (MC_Offset*) job (spec 07 §4.1, §4.2,
   // §6.6): the shift goes from `from` to `from + delta` over `length` of effective leading value from
