@@ -216,12 +216,11 @@ double SynchronousOperation::profile0_length(PendingSyncIn& p, const LeadingValu
   }
   // A job that may not start synchronizing — its synchronous velocity above MaxVelocity, or no length holds
   // the velocity — waits visibly: alarm 501 "velocity limited" (a warning without reaction, WarningWord.X6),
-  // additional value 1 (0: a job's dynamics clipped at its start), once per job (spec 07 §2.2 profile 0
-  // "violations raise 501/502/503", §6.8; spec 04 §5.4; decision C23).
-  if (p.sized_length < 0.0 && !p.limit_indicated) {
+  // additional value 1 (0: a job's dynamics clipped at its start), raised again if MC_Reset acknowledged it
+  // while the job still waits; a 501 still pending from the job's start stays the indication (spec 07 §2.2
+  // profile 0 "violations raise 501/502/503", §6.8; spec 04 §5.4; decision C23).
+  if (p.sized_length < 0.0 && !axis_.alarm_pending(kAlarmDynamicsLimitedVelocity))
     axis_.raise(kAlarmDynamicsLimitedVelocity, 1);
-    p.limit_indicated = true;
-  }
   return p.sized_length;
 }
 

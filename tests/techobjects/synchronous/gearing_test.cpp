@@ -8,6 +8,7 @@
 
 #include "gearing_fixture.hpp"
 #include "tomc/drives/simulated_drive.hpp"
+#include "tomc/instructions/mc_reset.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
 
 namespace {
@@ -895,6 +896,17 @@ TEST(Gearing, GearInPosProfile0WaitsWhileTheSynchronousVelocityIsAboveMaxVelocit
   EXPECT_EQ(m.F->alarms().alarms().size(), 1u);        // only the 501 of the wait
   EXPECT_NE(m.F->data().WarningWord & (1u << 6), 0u);  // spec 04 §5.4: X6 DynamicWarning
   EXPECT_EQ(m.F->data().StatusWord & (1u << 21), 0u);  // not Synchronizing
+  // MC_Reset acknowledges the 501 while the job still waits: the wait shows again in the next cycle, the job
+  // stays pending (a warning's acknowledgement ends no job; decision C23).
+  instructions::MC_Reset<techobjects::SynchronousAxis> reset;
+  m.user = [&] { reset(*m.F); };
+  reset.Execute = true;
+  m.run(1);
+  reset.Execute = false;
+  m.run(1);
+  EXPECT_TRUE(wait_indicated(m));
+  EXPECT_TRUE(g.Busy);
+  EXPECT_EQ(m.F->synchronized_motion().WaitingFunctionState, 2);
   leader_at(m, 60.0);
   double v_max = 0.0;
   int start = -1;

@@ -28,6 +28,7 @@ class FollowingAxis {
   }
   double ipo_cycle_s() const noexcept { return axis_.core_.ipo_cycle_s; }
   bool enabled() const noexcept { return axis_.core_.phase == PowerPhase::kEnabled; }
+  bool alarm_pending(std::uint32_t number) const noexcept { return axis_.core_.alarms.pending(number); }
   bool blocked() const noexcept { return axis_.blocked(); }
   bool homed() const noexcept { return axis_.homed(); }
   bool position_controlled() const noexcept { return axis_.position_controlled_; }

@@ -285,8 +285,7 @@ class SynchronousOperation final : public SynchronousSlot {
     double sized_leader_velocity = std::numeric_limits<double>::quiet_NaN();
     MotionState sized_follower{};  // position: the follower's distance to the target
     double sized_length = 0.0;
-    bool limit_indicated = false;  // profile 0: alarm 501 raised for a wait it cannot end (decision C23)
-    CamJob cam{};                  // kind kCamIn
+    CamJob cam{};  // kind kCamIn
   };
   // Phasing profile 0's time-based travel of the follower (spec 07 §6.6): a PositionProfile planned from
   // rest. Only the segment in progress is kept: the plan, a function of distance and limits alone, is made
