@@ -8,8 +8,12 @@
 //       time per follower;
 //   BM_GearingServoInterpolator/followers — of the same cycle only the followers' MC_Servo + MC_Interpolator
 //       (the TO with its telegram codec; no drive model, no user program, no leader), timed around the group;
-//       median of per-cycle samples per follower, also with the two clock reads per phase subtracted.
-// Figures and commands: docs/performance.md "Synchronous axis (issue 9)" and "Camming (issue 19)".
+//       median of per-cycle samples per follower, also with the two clock reads per phase subtracted;
+//   BM_DelayedLeadingValue/cycles       — what a leader adds to its MC_Interpolator while a follower couples
+//       "Delayed" (decision C26): one push of its setpoint into the ring and the interpolated value, for a
+//       delay of `cycles` + 0.5 interpolator cycles.
+// Figures and commands: docs/performance.md "Synchronous axis (issue 9)", "Camming (issue 19)" and "The
+// delayed leading value".
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -17,6 +21,7 @@
 #include <vector>
 
 #include "gearing_machine.hpp"
+#include "tomc/techobjects/synchronous/delayed_leading_value.hpp"
 
 namespace {
 
@@ -79,8 +84,20 @@ void BM_GearingServoInterpolator(benchmark::State& state, Function function) {
   if (!m.programs().front().synchronous()) state.SkipWithError("a follower left synchronous travel");
 }
 
+void BM_DelayedLeadingValue(benchmark::State& state) {
+  const double cycles = static_cast<double>(state.range(0)) + 0.5;
+  tomc::techobjects::DelayedLeadingValue delayed(cycles * 0.001, 0.001);
+  tomc::techobjects::MotionState setpoint{0.0, 100.0, 0.0};
+  for (auto _ : state) {
+    setpoint.position += 0.1;  // 100 mm/s at 1 ms
+    delayed.push(setpoint);
+    benchmark::DoNotOptimize(delayed.value());
+  }
+}
+
 }  // namespace
 
+BENCHMARK(BM_DelayedLeadingValue)->Arg(2)->Arg(1000 - 1)->ArgName("cycles");
 BENCHMARK_CAPTURE(BM_GearingCycle, gearing, Function::kGearing)
     ->Arg(1)
     ->Arg(64)

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "tomc/tomc.h"
 
@@ -943,6 +944,21 @@ TEST(CApi, CammingAFollowerFromC) {
   EXPECT_TRUE(following.Done);
   EXPECT_DOUBLE_EQ(following.Value, 100.0);  // 2·f(90)
   EXPECT_DOUBLE_EQ(following.FirstDerivative, 2.0 * 100.0 / 180.0);
+  // MC_GetCamFollowingValueCyclic (spec 07 §3.6): each call reads its own LeadingValue; outside the cam
+  // 16#8064.
+  tomc_MC_GetCamFollowingValueCyclic cyclic;
+  tomc_MC_GetCamFollowingValueCyclic_init(&cyclic);
+  cyclic.Enable = true;
+  for (const auto& [x, y] : {std::pair{90.0, 50.0}, std::pair{270.0, 50.0}, std::pair{360.0, 0.0}}) {
+    cyclic.LeadingValue = x;
+    ASSERT_EQ(tomc_MC_GetCamFollowingValueCyclic_call(cam, &cyclic), TOMC_OK) << last_error();
+    EXPECT_TRUE(cyclic.Valid && cyclic.Busy) << x;
+    EXPECT_DOUBLE_EQ(cyclic.Value, y) << x;
+  }
+  cyclic.LeadingValue = 361.0;
+  ASSERT_EQ(tomc_MC_GetCamFollowingValueCyclic_call(cam, &cyclic), TOMC_OK) << last_error();
+  EXPECT_FALSE(cyclic.Valid);
+  EXPECT_EQ(cyclic.ErrorID, 0x8064);
   // spec 07 §3.6 example: following value 0.5·100 from approach 225: direction 1 -> 270, 2 -> 90.
   tomc_MC_GetCamLeadingValue leading;
   tomc_MC_GetCamLeadingValue_init(&leading);

@@ -56,12 +56,14 @@ inline techobjects::PositioningAxisData virtual_rotary_modulo() {
 
 struct GearingMachine {
   // `add` adds further TOs (cams) before the runtime starts; `follower_device` gives F a drive (a real,
-  // non-virtual follower), nullptr by default.
+  // non-virtual follower), nullptr by default; `reversal_tolerance` is both interconnections' leading value
+  // reversal tolerance (decision C27).
   explicit GearingMachine(
       techobjects::PositioningAxisData leader = virtual_linear(),
       techobjects::PositioningAxisData follower = virtual_linear(),
       const std::function<void(techobjects::Runtime&)>& add = {},
-      const std::function<techobjects::DeviceIo*(techobjects::Runtime&)>& follower_device = {})
+      const std::function<techobjects::DeviceIo*(techobjects::Runtime&)>& follower_device = {},
+      float reversal_tolerance = 0.0F)
       : runtime(techobjects::RuntimeConfig{0.001, 1, 1}) {
     // The follower is added first: the runtime still runs the leader first (leaders()).
     L = std::make_unique<PositioningAxis>("L", nullptr, leader);
@@ -69,8 +71,8 @@ struct GearingMachine {
     F = &runtime.emplace<SynchronousAxis>(
         "F", follower_device ? follower_device(runtime) : nullptr, follower,
         std::vector<techobjects::LeadingValueInterconnection>{
-            {L.get(), L.get(), techobjects::LeadingValueCoupling::kSetpoint},
-            {L2.get(), L2.get(), techobjects::LeadingValueCoupling::kSetpoint}});
+            {L.get(), L.get(), techobjects::LeadingValueCoupling::kSetpoint, reversal_tolerance},
+            {L2.get(), L2.get(), techobjects::LeadingValueCoupling::kSetpoint, reversal_tolerance}});
     leader_axis = L.get();
     leader2_axis = L2.get();
     runtime.add_technology_object(std::move(L));

@@ -792,6 +792,29 @@ typedef struct tomc_MC_GetCamFollowingValue {
 TOMC_API void tomc_MC_GetCamFollowingValue_init(tomc_MC_GetCamFollowingValue* fb);
 TOMC_API tomc_status tomc_MC_GetCamFollowingValue_call(tomc_object* axis, tomc_MC_GetCamFollowingValue* fb);
 
+/* MC_GetCamFollowingValueCyclic (spec 07 §3.6) on TO_Cam. */
+typedef struct tomc_MC_GetCamFollowingValueCyclic {
+  tomc_struct_header header; /* set by the init function */
+  /* inputs */
+  bool Enable;
+  double LeadingValue;
+  double MasterOffset;
+  double SlaveOffset;
+  double MasterScaling;
+  double SlaveScaling;
+  /* outputs */
+  bool Valid;
+  bool Busy;
+  bool Error;
+  uint16_t ErrorID;
+  double Value;
+  double FirstDerivative;
+  double SecondDerivative;
+  tomc_instance_data instance; /* the handshake's state: owned by the library */
+} tomc_MC_GetCamFollowingValueCyclic;
+TOMC_API void tomc_MC_GetCamFollowingValueCyclic_init(tomc_MC_GetCamFollowingValueCyclic* fb);
+TOMC_API tomc_status tomc_MC_GetCamFollowingValueCyclic_call(tomc_object* axis, tomc_MC_GetCamFollowingValueCyclic* fb);
+
 /* MC_GetCamLeadingValue (spec 07 §3.6) on TO_Cam. */
 typedef struct tomc_MC_GetCamLeadingValue {
   tomc_struct_header header; /* set by the init function */

@@ -607,10 +607,14 @@ Submission PositioningAxis::write_parameter(std::int32_t parameter_number, doubl
 LeadingValue PositioningAxis::leading_value(LeadingValueCoupling coupling) const noexcept {
   LeadingValue v;
   v.position_controlled = core_.phase == PowerPhase::kEnabled && position_controlled_ && !follows_actual();
-  if (coupling == LeadingValueCoupling::kSetpoint) {
-    v.position = setpoint_.position;
-    v.velocity = setpoint_.velocity;
-    v.acceleration = setpoint_.acceleration;
+  if (coupling != LeadingValueCoupling::kActualValue) {
+    // "Delayed" is the setpoint coupling delayed (SYNC8 "Delay time for setpoint coupling with delayed
+    // leading value"); position control is judged now, as for the setpoint.
+    const MotionState& s =
+        coupling == LeadingValueCoupling::kDelayed && delayed_ ? delayed_->value() : setpoint_;
+    v.position = s.position;
+    v.velocity = s.velocity;
+    v.acceleration = s.acceleration;
     v.valid = true;
   } else {
     v.position = extrapolation_.position();
@@ -619,6 +623,17 @@ LeadingValue PositioningAxis::leading_value(LeadingValueCoupling coupling) const
     v.valid = actual_valid_;
   }
   return v;
+}
+
+void PositioningAxis::provide_delayed_leading_value(double interpolator_cycle_s) {
+  if (delayed_) return;
+  try {
+    delayed_ = std::make_unique<DelayedLeadingValue>(
+        db_.CrossPlcSynchronousOperation.LocalLeadingValueDelayTime, interpolator_cycle_s);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(name()) +
+                                ".CrossPlcSynchronousOperation.LocalLeadingValueDelayTime: " + e.what());
+  }
 }
 
 ModuloRange PositioningAxis::leading_value_modulo() const noexcept {

@@ -322,6 +322,13 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   monitor_software_limits(previous);
   complete_jobs();
   update_status();
+  if (delayed_) {  // the setpoint of this cycle, as followers coupled "Delayed" see it later (spec 07 §1.5)
+    delayed_->push(setpoint_);
+    auto& shown = db_.StatusProvidedLeadingValue.DelayedLeadingValue;
+    shown.Position = delayed_->value().position;
+    shown.Velocity = delayed_->value().velocity;
+    shown.Acceleration = delayed_->value().acceleration;
+  }
 }
 
 void PositioningAxis::apply_alarm_reactions() noexcept {

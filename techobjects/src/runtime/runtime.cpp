@@ -36,7 +36,8 @@ DeviceIo& Runtime::add_device(std::unique_ptr<drives::DriveAdapter> adapter) {
 void Runtime::add_technology_object(std::unique_ptr<TechnologyObject> object) {
   require_setup("add_technology_object");
   if (!object) throw std::invalid_argument("add_technology_object: no object");
-  RuntimeServices services{*alarm_log_, start_values_, static_cast<std::uint32_t>(objects_.size() + 1)};
+  RuntimeServices services{*alarm_log_, start_values_, static_cast<std::uint32_t>(objects_.size() + 1),
+                           clock_.interpolator_cycle_s};
   object->attach(services);
   objects_.push_back(std::move(object));
 }

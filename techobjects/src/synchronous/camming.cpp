@@ -301,7 +301,7 @@ void SynchronousOperation::step_cam(const LeadingValue& leader) noexcept {
   ActiveSync& a = active_;
   CamJob& job = a.cam;
   if (a.phase != Phase::kSynchronous) {
-    if (direction_of(leader.velocity) == -a.direction) {
+    if (synchronization_reversed(a, leader.position, direction_of(leader.velocity) == -a.direction)) {
       axis_.raise(kAlarmSynchronizationError, 2);  // reversal during synchronization (spec 07 §3.4)
       return;
     }

@@ -244,10 +244,10 @@ void SynchronousOperation::step_shift(const LeadingValue& effective) noexcept {
     job.committed = direction_of(x - job.x_start);
     if (job.committed == 0.0) return;  // the leading value has not moved yet
   }
-  // A reversal beyond a rounding tolerance cancels the job with 16#808C; the part covered stays (spec 07
-  // §4.1, §6.6).
+  // A reversal beyond the interconnection's reversal tolerance (spec 07 §1.6, decision C27; 0 by default)
+  // and a rounding tolerance cancels the job with 16#808C; the part covered stays (spec 07 §4.1, §6.6).
   const double back = job.committed * (job.x_extreme - x);
-  if (back > 1e-9 * std::max(1.0, std::fabs(x))) {
+  if (back > reversal_tolerance(active_.source) + 1e-9 * std::max(1.0, std::fabs(x))) {
     end_shift(JobState::kError, error_id::kLeadingValueReversed);
     return;
   }

@@ -21,6 +21,14 @@ std::vector<LeadingValueInterconnection> SynchronousAxis::mark_leaders(
   return leaders;
 }
 
+void SynchronousAxis::attach(RuntimeServices& services) {
+  // Before the start values move to the runtime: a throw leaves nothing attached.
+  for (const LeadingValueInterconnection& l : operation_.interconnections())
+    if (l.coupling == LeadingValueCoupling::kDelayed)
+      l.source->provide_delayed_leading_value(services.interpolator_cycle_s);
+  PositioningAxis::attach(services);
+}
+
 double SynchronousAxis::read(std::string_view path) const noexcept {
   constexpr std::string_view kPrefix = "StatusSynchronizedMotion.";
   return path.starts_with(kPrefix) ? operation_.read(path.substr(kPrefix.size()))

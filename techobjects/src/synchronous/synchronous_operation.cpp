@@ -33,6 +33,11 @@ SynchronousOperation::SynchronousOperation(FollowingAxis axis, std::string_view 
     if (c.object == axis_.as_object()) {
       throw std::invalid_argument(at + ": the axis cannot be its own leading value (spec 07 §1.2, 16#8019)");
     }
+    if (!(c.reversal_tolerance >= 0.0F) || !std::isfinite(c.reversal_tolerance)) {
+      throw std::invalid_argument(at +
+                                  ".LeadingValueReversalTolerance: " + std::to_string(c.reversal_tolerance) +
+                                  " is not a tolerance (0 or more; decision C27)");
+    }
     leader_objects_.push_back(c.object);
   }
 }
@@ -83,12 +88,26 @@ std::optional<std::uint16_t> SynchronousOperation::check_master(const LeadingVal
     axis_.raise(kAlarmLeadingAxisDefective, 1);
     return error_id::kAbortedByAlarmReaction;
   }
-  if (interconnections_[static_cast<std::size_t>(source)].coupling == LeadingValueCoupling::kSetpoint &&
+  // Setpoint coupling, delayed or not, needs a position-controlled leader (spec 07 §1.3, §1.5).
+  if (interconnections_[static_cast<std::size_t>(source)].coupling != LeadingValueCoupling::kActualValue &&
       !v.position_controlled) {
     axis_.raise(kAlarmLeaderNotPositionControlled, 0);  // removes the follower's enable (spec 07 §1.3)
     return error_id::kAbortedByAlarmReaction;
   }
   return std::nullopt;
+}
+
+bool SynchronousOperation::synchronization_reversed(ActiveSync& a, double x,
+                                                    bool velocity_reversed) noexcept {
+  const double tolerance = reversal_tolerance(a.source);
+  if (tolerance == 0.0) return velocity_reversed;
+  if (a.direction == 0) {  // not moving yet: no direction to reverse
+    a.x_extreme = x;
+    return false;
+  }
+  const double back = a.direction * (a.x_extreme - x);
+  if (back < 0.0) a.x_extreme = x;
+  return back > tolerance + 1e-9 * std::max(1.0, std::fabs(x));  // beyond the rounding of a summed value
 }
 
 double SynchronousOperation::gear_line(const ActiveSync& a, double x) const noexcept {
@@ -423,7 +442,9 @@ Submission SynchronousOperation::gear_in(const GearInInputs& in) noexcept {
   const Submission s = start_gearing(JobKind::kGearIn, in.Master, in.RatioNumerator, in.RatioDenominator,
                                      in.Acceleration, in.Deceleration, in.Jerk);
   if (!s.accepted()) return s;
-  active_.direction = sign_or(sample(active_.source).velocity, 0.0);
+  const LeadingValue leader = sample(active_.source);
+  active_.direction = static_cast<std::int8_t>(sign_or(leader.velocity, 0.0));
+  active_.x_extreme = leader.position;
   axis_.set_position_controlled(true);  // gearing forces position control (spec 07 §1.7)
   return s;
 }
@@ -661,7 +682,8 @@ bool SynchronousOperation::activate_pending(JobKind kind) noexcept {
   active_.kind = kind;
   active_.source = started.source;
   active_.phase = Phase::kBlend;
-  active_.direction = started.direction;
+  active_.direction = static_cast<std::int8_t>(started.direction);
+  active_.x_extreme = sample(started.source).position;
   active_.start_sync = true;
   active_.cam = started.cam;
   axis_.set_position_controlled(true);
@@ -682,11 +704,13 @@ void SynchronousOperation::step_active(const LeadingValue& leader) noexcept {
     case Phase::kSynchronizing: {
       // The leading value must not reverse during synchronization (spec 07 §2.1, alarm 608).
       const double now = sign_or(leader.velocity, 0.0);
-      if (a.kind == JobKind::kGearIn && a.direction != 0.0 && now != 0.0 && now != a.direction) {
+      if (a.kind == JobKind::kGearIn &&
+          synchronization_reversed(a, leader.position,
+                                   a.direction != 0 && now != 0.0 && now != a.direction)) {
         axis_.raise(kAlarmSynchronizationError, 1);
         return;
       }
-      if (a.direction == 0.0) a.direction = now;
+      if (a.direction == 0) a.direction = static_cast<std::int8_t>(now);
       double vT = r * leader.velocity;
       const double aT = r * leader.acceleration;
       // Synchronization completes only below the velocity limit; no alarm 501 (spec 07 §6.3).
@@ -704,7 +728,8 @@ void SynchronousOperation::step_active(const LeadingValue& leader) noexcept {
       break;
     }
     case Phase::kBlend: {
-      if (sign_or(leader.velocity, a.direction) != a.direction) {
+      if (synchronization_reversed(a, leader.position,
+                                   sign_or(leader.velocity, a.direction) != a.direction)) {
         axis_.raise(kAlarmSynchronizationError, 1);  // reversal during synchronization (spec 07 §2.2)
         return;
       }

@@ -26,6 +26,8 @@ TEST(CamAllocation, EvaluationAndReadInstructionsAllocateNothing) {
     ASSERT_TRUE(cam.interpolate_cam().accepted());
     MC_GetCamFollowingValue following;
     MC_GetCamLeadingValue leading;
+    MC_GetCamFollowingValueCyclic cyclic;
+    cyclic.Enable = true;
     double sum = 0.0;
     const std::uint64_t before = tomc::testing::allocation_count();
     for (int cycle = 0; cycle < 2000; ++cycle) {
@@ -35,6 +37,9 @@ TEST(CamAllocation, EvaluationAndReadInstructionsAllocateNothing) {
       following.Execute = (cycle % 2) == 0;
       following.LeadingValue = x;
       following(cam);
+      cyclic.LeadingValue = 2.0 * x;  // leaves the cam (0.1…1,000) halfway: the error path too
+      cyclic(cam);
+      sum += cyclic.Value;
       leading.Execute = (cycle % 400) == 0;  // a search over all 10,000 pieces
       leading.FollowingValue = 3.5;
       leading.ApproachLeadingValue = x;

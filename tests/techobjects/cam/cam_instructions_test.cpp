@@ -1,5 +1,6 @@
 // The cam instructions (spec 07 §3.2, §3.6) through their PLCopen handshake: MC_InterpolateCam,
-// MC_GetCamFollowingValue, MC_GetCamLeadingValue, MC_CopyCamData; and the cam's data-block table.
+// MC_GetCamFollowingValue, MC_GetCamFollowingValueCyclic, MC_GetCamLeadingValue, MC_CopyCamData; and the
+// cam's data-block table.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -200,6 +201,89 @@ TEST(CamInstructions, GetCamFollowingValue) {
     g(cam);
     EXPECT_EQ(g.ErrorID, r.error) << r.leading;
   }
+}
+
+// MC_GetCamFollowingValueCyclic (spec 07 §3.6; MCI8 V8 "Cyclically read the following value"): while Enable
+// holds, every call reads the cam at that call's LeadingValue (the result in the same application cycle), for
+// a cam of known closed form: one segment y = x² on [0, 10]. With MasterOffset 100, MasterScaling 2,
+// SlaveScaling 3, SlaveOffset 5 (spec 07 §3.3: y = SS·f((x − MO)/MS) + SO) the leading value x reads
+// u = (x − 100)/2, Value = 3u² + 5, FirstDerivative = 3·2u/2 = 3u, SecondDerivative = 3·2/4 = 1.5.
+// Two instances on one cam; the errors of MC_GetCamFollowingValue while they last (decision C25).
+TEST(CamInstructions, GetCamFollowingValueCyclic) {
+  Cam cam("Parabola");
+  ASSERT_TRUE(cam.write_segment(1, {.xmin = 0.0, .xmax = 10.0, .a2 = 1.0}, true));
+  MC_GetCamFollowingValueCyclic a;
+  a.Enable = true;
+  a.LeadingValue = 3.0;
+  a(cam);  // not interpolated: tomc's 16#8150, as MC_GetCamFollowingValue
+  EXPECT_TRUE(a.Busy);
+  EXPECT_FALSE(a.Valid);
+  EXPECT_TRUE(a.Error);
+  EXPECT_EQ(a.ErrorID, eid::kCamNotInterpolated);
+  ASSERT_TRUE(cam.interpolate_cam().accepted());
+
+  a.MasterOffset = 100.0;
+  a.MasterScaling = 2.0;
+  a.SlaveScaling = 3.0;
+  a.SlaveOffset = 5.0;
+  MC_GetCamFollowingValueCyclic b;  // unscaled, on the same cam
+  b.Enable = true;
+  // One row per application cycle: the leading value changes every call and so does the result.
+  struct Cycle {
+    double leading;  // of instance a (scaled); b reads u itself
+    double u;
+  };
+  for (const Cycle& c : {Cycle{100.0, 0.0}, Cycle{106.0, 3.0}, Cycle{107.0, 3.5}, Cycle{115.0, 7.5},
+                         Cycle{120.0, 10.0}, Cycle{101.0, 0.5}}) {
+    a.LeadingValue = c.leading;
+    b.LeadingValue = c.u;
+    a(cam);
+    b(cam);
+    ASSERT_TRUE(a.Valid && a.Busy && !a.Error) << c.leading << " " << a.ErrorID;
+    EXPECT_NEAR(a.Value, 3.0 * c.u * c.u + 5.0, 1e-12) << c.leading;
+    EXPECT_NEAR(a.FirstDerivative, 3.0 * c.u, 1e-12) << c.leading;
+    EXPECT_NEAR(a.SecondDerivative, 1.5, 1e-12) << c.leading;
+    ASSERT_TRUE(b.Valid) << c.u;
+    EXPECT_NEAR(b.Value, c.u * c.u, 1e-12) << c.u;
+    EXPECT_NEAR(b.FirstDerivative, 2.0 * c.u, 1e-12) << c.u;
+    EXPECT_NEAR(b.SecondDerivative, 2.0, 1e-12) << c.u;
+  }
+
+  // Outside the scaled cam (u = 10.5): 16#8064 while it lasts, Busy stays, the values are not shown; back
+  // inside, the next call is valid again without a new Enable edge.
+  a.LeadingValue = 121.0;
+  a(cam);
+  EXPECT_TRUE(a.Busy);
+  EXPECT_FALSE(a.Valid);
+  EXPECT_TRUE(a.Error);
+  EXPECT_EQ(a.ErrorID, eid::kNoFollowingValue);
+  EXPECT_EQ(a.Value, 0.0);
+  a.LeadingValue = 104.0;
+  a(cam);
+  ASSERT_TRUE(a.Valid);
+  EXPECT_FALSE(a.Error);
+  EXPECT_EQ(a.ErrorID, 0);
+  EXPECT_NEAR(a.Value, 17.0, 1e-12);
+  a.MasterScaling = 0.0;  // 16#8023
+  a(cam);
+  EXPECT_EQ(a.ErrorID, eid::kInvalidMasterScaling);
+  EXPECT_FALSE(a.Valid);
+  b(cam);  // the other instance is not affected
+  EXPECT_TRUE(b.Valid);
+
+  // Enable FALSE: nothing is read, every output is reset.
+  a.Enable = false;
+  a(cam);
+  EXPECT_FALSE(a.Busy || a.Valid || a.Error);
+  EXPECT_EQ(a.ErrorID, 0);
+  EXPECT_EQ(a.Value, 0.0);
+  EXPECT_EQ(a.FirstDerivative, 0.0);
+  EXPECT_EQ(a.SecondDerivative, 0.0);
+  // A cyclic read does not use the cam (StatusWord.X0): MC_InterpolateCam stays possible meanwhile.
+  EXPECT_EQ(cam.users(), 0u);
+  EXPECT_TRUE(cam.interpolate_cam().accepted());
+  b(cam);
+  EXPECT_TRUE(b.Valid);
 }
 
 // MC_CopyCamData (spec 07 §3.6): Mode 0 invalidates every element first, Mode 1 keeps them; the copied

@@ -68,6 +68,15 @@ struct CammingMachine : CamsHolder, GearingMachine {
       EXPECT_TRUE(c->interpolate_cam().accepted());
   }
   const techobjects::StatusSynchronizedMotion& sync() const { return F->synchronized_motion(); }
+  // The first MC_CamIn instance with the inputs every case sets: the cam, SyncProfileReference and
+  // ApplicationMode (spec 07 §3.4); the case sets the rest and Execute.
+  instructions::MC_CamIn<techobjects::SynchronousAxis>& cam_in_with(Cam* cam, std::int32_t profile,
+                                                                    std::int32_t mode) {
+    cam_in.Cam = cam;
+    cam_in.SyncProfileReference = profile;
+    cam_in.ApplicationMode = mode;
+    return cam_in;
+  }
   // The leader moves `distance` at `velocity` (MC_MoveRelative, acceleration 10000); returns when done.
   void leader_moves(double distance, double velocity = 100.0) {
     move_rel_L.Execute = false;
@@ -104,12 +113,9 @@ bool bit(const techobjects::PositioningAxisData& d, StatusWordBit b) {
 TEST(Camming, CM1DirectSynchronousSettingCyclic) {
   CammingMachine m;
   m.follower_to(10.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 2;
+  auto& c = m.cam_in_with(m.cams.C, 2, 1);
   c.MasterSyncPosition = 0.0;
   c.SlaveScaling = 2.0;
-  c.ApplicationMode = 1;
   c.Execute = true;
   m.run(1);
   EXPECT_TRUE(c.InSync);  // at once
@@ -142,10 +148,7 @@ TEST(Camming, CM1DirectSynchronousSettingCyclic) {
 // CM-2 (§3.3 "cyclic appending"): a line 0…100 over 360, F linear: F = 200 at 720, 250 at 900.
 TEST(Camming, CM2CyclicAppending) {
   CammingMachine m(virtual_rotary_modulo(), virtual_linear());
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 2;
-  c.ApplicationMode = 2;
+  auto& c = m.cam_in_with(m.cams.C2, 2, 2);
   c.Execute = true;
   m.run(1);
   ASSERT_TRUE(c.InSync);
@@ -158,10 +161,7 @@ TEST(Camming, CM2CyclicAppending) {
 // CM-3 (§3.3 "not cyclic", O-10): the cam end ends the synchronous operation; F holds 100.
 TEST(Camming, CM3NonCyclicEnd) {
   CammingMachine m(virtual_rotary_modulo(), virtual_linear());
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C3;
-  c.SyncProfileReference = 2;
-  c.ApplicationMode = 0;
+  auto& c = m.cam_in_with(m.cams.C3, 2, 0);
   c.Execute = true;
   m.run(1);
   ASSERT_TRUE(c.InSync);
@@ -225,11 +225,8 @@ TEST(Camming, CM4ParameterErrors) {
 TEST(Camming, CM5SwitchAtTheEndOfTheCam) {
   CammingMachine m;
   m.follower_to(10.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 2;
+  auto& c = m.cam_in_with(m.cams.C, 2, 1);
   c.SlaveScaling = 2.0;
-  c.ApplicationMode = 1;
   c.Execute = true;
   m.run(1);
   ASSERT_TRUE(c.InSync);
@@ -270,12 +267,9 @@ TEST(Camming, CM6ProfileSixAutomaticMasterOffset) {
   CammingMachine m;
   m.leader_moves(270.0);
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 6;
+  auto& c = m.cam_in_with(m.cams.C, 6, 1);
   c.MasterSyncPosition = 180.0;
   c.MasterStartDistance = 180.0;
-  c.ApplicationMode = 1;
   c.Execute = true;
   // StartSync in the first MC_Interpolator after the call (the leader moves).
   ASSERT_EQ(m.run_until([&] { return c.StartSync; }, 5), 2);
@@ -301,13 +295,10 @@ TEST(Camming, CM6ProfileSixAutomaticMasterOffset) {
 TEST(Camming, ProfileOneInAdvanceOverDistance) {
   CammingMachine m(virtual_linear(), virtual_linear());
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 1;
+  auto& c = m.cam_in_with(m.cams.C2, 1, 2);  // C2 is a line: appending continues it before x_sync
   c.MasterOffset = m.l().Position + 150.0;  // x_sync = 0·1 + MasterOffset + 0
   c.SlaveOffset = 50.0;
   c.MasterStartDistance = 100.0;
-  c.ApplicationMode = 2;  // C2 is a line: appending continues it before x_sync
   const double x_sync = c.MasterOffset;
   c.Execute = true;
   m.run(2);
@@ -349,12 +340,9 @@ TEST(Camming, SyncDirectionOnAModuloFollower) {
     CammingMachine m;
     m.follower_to(k.start);
     m.leader_velocity(100.0);
-    auto& c = m.cam_in;
-    c.Cam = m.cams.C;
-    c.SyncProfileReference = 1;
+    auto& c = m.cam_in_with(m.cams.C, 1, 1);
     c.MasterOffset = m.l().Position + 150.0;  // the synchronous point 150 deg ahead (cam u = 0)
     c.MasterStartDistance = 100.0;
-    c.ApplicationMode = 1;
     c.SyncDirection = k.direction;
     double travel = 0.0;
     double last = m.f().Position;
@@ -374,12 +362,9 @@ TEST(Camming, SyncDirectionOnAModuloFollower) {
 TEST(Camming, ProfileThreeSubsequent) {
   CammingMachine m(virtual_linear(), virtual_linear());
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 3;
+  auto& c = m.cam_in_with(m.cams.C2, 3, 2);
   c.MasterOffset = m.l().Position + 50.0;
   c.MasterStartDistance = 60.0;
-  c.ApplicationMode = 2;
   const double x_sync = c.MasterOffset;
   c.Execute = true;
   ASSERT_GT(m.run_until([&] { return c.StartSync; }, 3000), 0);
@@ -393,11 +378,8 @@ TEST(Camming, ProfileThreeSubsequent) {
 // the leader started; a non-cyclic cam the leader is outside of is refused (16#80AD).
 TEST(Camming, ProfileFourFromTheCurrentLeaderPosition) {
   CammingMachine m(virtual_linear(), virtual_linear());
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 4;
+  auto& c = m.cam_in_with(m.cams.C2, 4, 0);
   c.MasterStartDistance = 40.0;
-  c.ApplicationMode = 0;
   c.Execute = true;
   m.run(5);
   EXPECT_TRUE(c.Busy) << c.ErrorID;
@@ -426,12 +408,9 @@ TEST(Camming, ProfileFourFromTheCurrentLeaderPosition) {
 TEST(Camming, ProfileZeroDynamicParameters) {
   CammingMachine m(virtual_linear(), virtual_linear());
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 0;
+  auto& c = m.cam_in_with(m.cams.C2, 0, 2);
   c.MasterOffset = m.l().Position + 300.0;
   c.SlaveOffset = 20.0;
-  c.ApplicationMode = 2;
   c.Velocity = 200.0;
   c.Acceleration = c.Deceleration = 500.0;
   c.Jerk = 0.0;
@@ -460,14 +439,11 @@ TEST(Camming, ProfileZeroDynamicParameters) {
 TEST(Camming, ProfileZeroSynchronizesWhenTheSynchronousVelocityIsTheJobVelocity) {
   CammingMachine m(virtual_linear(), virtual_linear());
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 0;
+  auto& c = m.cam_in_with(m.cams.C2, 0, 0);
   c.SlaveScaling = 3.6;
   c.MasterSyncPosition = 180.0;
   c.MasterOffset = m.l().Position + 800.0;
   c.SlaveOffset = 0.0;
-  c.ApplicationMode = 0;
   c.Velocity = 100.0;
   c.Acceleration = c.Deceleration = 5000.0;
   c.Jerk = 0.0;
@@ -574,11 +550,8 @@ TEST(Camming, ProfileZeroHoldsTheDynamicLimitsOnACurvedCam) {
 TEST(Camming, ProfileZeroOverTheNextModuloPass) {
   CammingMachine m;
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 0;
+  auto& c = m.cam_in_with(m.cams.C, 0, 1);
   c.MasterOffset = m.l().Position + 1.0;
-  c.ApplicationMode = 1;
   c.Velocity = 500.0;
   c.Acceleration = c.Deceleration = 1000.0;
   c.Jerk = 0.0;
@@ -616,10 +589,7 @@ TEST(Camming, CamOutAndTheFamilies) {
   EXPECT_EQ(o.ErrorID, eid::kNoCamming);  // a gearing is not a camming
   o.Execute = false;
 
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 2;
-  c.ApplicationMode = 2;
+  auto& c = m.cam_in_with(m.cams.C2, 2, 2);
   c.Execute = true;
   m.run(2);
   EXPECT_TRUE(m.gear.CommandAborted);  // an active CamIn aborts MC_GearIn (§9.19.2 R "active" x S1)
@@ -649,10 +619,7 @@ TEST(Camming, CamOutAndTheFamilies) {
 // §9.19.2: MC_Halt ends an active camming (CommandAborted) and releases the cam.
 TEST(Camming, OverrideByHaltReleasesTheCam) {
   CammingMachine m;
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 2;
-  c.ApplicationMode = 1;
+  auto& c = m.cam_in_with(m.cams.C, 2, 1);
   c.Execute = true;
   m.run(1);
   ASSERT_TRUE(c.InSync);
@@ -685,11 +652,8 @@ TEST(Camming, CamNotInterpolatedRaises612) {
 // 1,000.
 TEST(Camming, SynchronousTravelIndicatesTheLimits) {
   CammingMachine m(virtual_linear(), virtual_linear());
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 2;
+  auto& c = m.cam_in_with(m.cams.C, 2, 1);
   c.SlaveScaling = 20.0;
-  c.ApplicationMode = 1;
   c.Execute = true;
   m.run(2);
   ASSERT_TRUE(c.InSync);
@@ -708,11 +672,8 @@ TEST(Camming, SynchronousTravelIndicatesTheLimits) {
 TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
   CammingMachine m(virtual_linear(), virtual_linear());
   m.leader_velocity(100.0);
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 4;
+  auto& c = m.cam_in_with(m.cams.C2, 4, 2);
   c.MasterStartDistance = 100.0;
-  c.ApplicationMode = 2;
   c.Execute = true;
   ASSERT_GT(m.run_until([&] { return c.StartSync; }, 10), 0);
   m.run(200);  // half way
@@ -734,12 +695,9 @@ TEST(Camming, LeaderReversalDuringSynchronizationRaises608) {
 // the cam free again) and is Done; against an active camming it is Done and the camming goes on.
 TEST(Camming, CamOutProfileFiveCancelsOnlyAPendingCamIn) {
   CammingMachine m;
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C;
-  c.SyncProfileReference = 1;
+  auto& c = m.cam_in_with(m.cams.C, 1, 1);
   c.MasterSyncPosition = 180.0;
   c.MasterStartDistance = 90.0;
-  c.ApplicationMode = 1;
   c.Execute = true;
   m.run(2);
   ASSERT_TRUE(c.Busy);
@@ -798,12 +756,9 @@ TEST(Camming, CamInterpolatedBeforeTheRuntimeStartsIsUsable) {
 // camming_property_test.cpp (alarm 502 in synchronous travel from a profile-3 job's unused Acceleration).
 TEST(Camming, DynamicParametersAreProfileZerosOnly) {
   CammingMachine m(virtual_linear(), virtual_linear());
-  auto& c = m.cam_in;
-  c.Cam = m.cams.C2;
-  c.SyncProfileReference = 3;
+  auto& c = m.cam_in_with(m.cams.C2, 3, 2);
   c.MasterOffset = 100.0;
   c.MasterStartDistance = 50.0;
-  c.ApplicationMode = 2;
   c.Acceleration = 20000.0;  // MaxAcceleration 10000
   c.Deceleration = 0.0;      // illegal where it is used
   c.Jerk = std::nan("");

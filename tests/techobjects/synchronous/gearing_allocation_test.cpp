@@ -4,7 +4,8 @@
 //   L   a positioning axis on a simulated drive (telegram 3, codec included), the leader;
 //   E   an external encoder on a simulated encoder device (telegram 83), a leader by actual value;
 //   F1  a synchronous axis on a simulated drive, possible leaders L (setpoint) and E (actual value);
-//   F2  a virtual synchronous axis following F1 (the chain L -> F1 -> F2), possible leaders F1 and L;
+//   F2  a virtual synchronous axis following F1 (the chain L -> F1 -> F2), possible leaders F1 and L, the
+//       latter coupled "Delayed" (L's setpoint 2.5 ms ago from its ring, decision C26);
 // while a scripted user program runs them, in a loop, through every gearing job kind: MC_GearIn on all
 // followers, a second MC_GearIn replacing the first, a leader switchover to the actual value of E,
 // MC_GearInVelocity with ContinuousUpdate and ratio changes, MC_GearInPos profiles 0, 1 and 3, MC_GearOut
@@ -155,7 +156,9 @@ struct Machine {
     };
     techobjects::PositioningAxisData axis;  // the default data block (mm, 10 mm leadscrew)
     axis.DynamicLimits.MaxJerk = 0.0;
-    L = &runtime.emplace<PositioningAxis>("L", &drive_io(3, false), axis);
+    auto leader = axis;
+    leader.CrossPlcSynchronousOperation.LocalLeadingValueDelayTime = 0.0025;
+    L = &runtime.emplace<PositioningAxis>("L", &drive_io(3, false), leader);
     E = &runtime.emplace<ExternalEncoder>("E", &drive_io(83, true), techobjects::ExternalEncoderData{});
     F1 = &runtime.emplace<SynchronousAxis>(
         "F1", &drive_io(3, false), axis,
@@ -164,7 +167,7 @@ struct Machine {
     F2 = &runtime.emplace<SynchronousAxis>(
         "F2", nullptr, tomc::testing::virtual_linear(),
         std::vector<techobjects::LeadingValueInterconnection>{{F1, F1, LeadingValueCoupling::kSetpoint},
-                                                              {L, L, LeadingValueCoupling::kSetpoint}});
+                                                              {L, L, LeadingValueCoupling::kDelayed}});
     // Two cams on 0…36 mm: C a closed curve (cyclic), C2 rising by 20 per period (cyclic appending).
     C = &runtime.emplace<techobjects::Cam>("C");
     C2 = &runtime.emplace<techobjects::Cam>("C2");

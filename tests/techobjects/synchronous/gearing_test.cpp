@@ -359,17 +359,22 @@ TEST(Gearing, GI18ReversalDuringSynchronization) {
   EXPECT_EQ(m.gear.ErrorID, eid::kAbortedByAlarmReaction);
 }
 
-// GP-1: MC_GearInPos 1/1, MasterSyncPosition 200, SlaveSyncPosition 50, profile 1, MasterStartDistance 100, L
-// at +100 from 0: pending (WaitingFunctionState 2) until L = 100, StartSync / X21 there, InSync / X22 at L =
-// 200 with F = 50.0; F(L = 150) = 9.375 [IMPL quintic]; afterwards F = 50 + (L − 200).
-TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
-  GearingMachine m;
+// GP-1's job: MC_GearInPos 1/1, synchronous at L = 200 with F = 50 after 100 of leading value (profile 1).
+void start_gp1_gear_in_pos(GearingMachine& m) {
   m.gear_pos.MasterSyncPosition = 200.0;
   m.gear_pos.SlaveSyncPosition = 50.0;
   m.gear_pos.SyncProfileReference = 1;
   m.gear_pos.MasterStartDistance = 100.0;
   m.gear_pos.Execute = true;
   m.run(1);
+}
+
+// GP-1: MC_GearInPos 1/1, MasterSyncPosition 200, SlaveSyncPosition 50, profile 1, MasterStartDistance 100, L
+// at +100 from 0: pending (WaitingFunctionState 2) until L = 100, StartSync / X21 there, InSync / X22 at L =
+// 200 with F = 50.0; F(L = 150) = 9.375 [IMPL quintic]; afterwards F = 50 + (L − 200).
+TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
+  GearingMachine m;
+  start_gp1_gear_in_pos(m);
   EXPECT_TRUE(m.gear_pos.Busy);
   m.move_L.Velocity = 100.0;
   m.move_L.Acceleration = 1.0e9;  // at 100 from the first cycle: the leader's position is 0.1 per cycle
@@ -389,6 +394,46 @@ TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
   EXPECT_NEAR(m.f().Position, 50.0 + (m.l().Position - 200.0), 1e-6);
   EXPECT_TRUE(bit(m.f(), StatusWordBit::kSynchronous));
   EXPECT_EQ(m.F->synchronized_motion().FunctionState, 2);
+}
+
+// The V10 leading value reversal tolerance (spec 07 §1.6 [OPEN], tomc extension; decision C27) during
+// synchronization at its edge: GP-1's MC_GearInPos (profile 1, synchronous at L = 200 after 100 of leading
+// value), L moved to 150 (mid-synchronization), back by `back`, then on to 210. Moving back by at most the
+// tolerance keeps the synchronization (InSync at L = 200, F = 50 + (L − 200)); 0.001 more is alarm 608 and
+// the job ends with 16#8001; tolerance 0: any reversal the leader's velocity shows is (GI-18; 0.1 mm back
+// takes 9 cycles at 5,000 mm/s² — a move back that starts and ends within one cycle shows no velocity).
+TEST(Gearing, ReversalToleranceDuringSynchronizationAtItsEdge) {
+  struct Row {
+    float tolerance;
+    double back;
+    bool alarm;
+  };
+  for (const Row& r : {Row{0.5F, 0.5, false}, Row{0.5F, 0.501, true}, Row{0.0F, 0.1, true}}) {
+    GearingMachine m(virtual_linear(), virtual_linear(), {}, {}, r.tolerance);
+    start_gp1_gear_in_pos(m);
+    for (const double distance : {150.0, -r.back, 60.0 + r.back}) {
+      m.move_rel_L.Distance = distance;
+      m.move_rel_L.Execute = false;
+      m.run(1);
+      m.move_rel_L.Execute = true;
+      ASSERT_GT(m.run_until([&] { return m.move_rel_L.Done || m.gear_pos.Error; }, 3000), 0);
+      if (m.gear_pos.Error) break;
+      if (distance == 150.0) {
+        ASSERT_TRUE(m.gear_pos.StartSync && bit(m.f(), StatusWordBit::kSynchronizing));
+      }
+    }
+    EXPECT_EQ(m.F->alarms().pending(techobjects::kAlarmSynchronizationError), r.alarm) << r.tolerance;
+    EXPECT_EQ(m.gear_pos.Error, r.alarm) << r.tolerance << " " << r.back;
+    if (r.alarm) {  // in the move back, as soon as it went beyond the tolerance
+      EXPECT_EQ(m.gear_pos.ErrorID, eid::kAbortedByAlarmReaction);
+      EXPECT_LT(m.l().Position, 150.0 - r.tolerance);
+      EXPECT_GE(m.l().Position, 150.0 - r.back - 1e-9);
+    } else {
+      EXPECT_TRUE(m.gear_pos.InSync);
+      EXPECT_NEAR(m.l().Position, 210.0, 1e-9);
+      EXPECT_NEAR(m.f().Position, 60.0, 1e-6);
+    }
+  }
 }
 
 // GP-2: profile 3 (subsequent): MasterSyncPosition 100, SlaveSyncPosition 0, MasterStartDistance 50:

@@ -28,8 +28,9 @@ namespace eid = techobjects::error_id;
 
 // The §8 machine plus one instance of each phasing/offset instruction, called every cycle after the others.
 struct ShiftMachine : GearingMachine {
-  explicit ShiftMachine(const std::function<void(techobjects::Runtime&)>& add = {})
-      : GearingMachine(virtual_linear(), virtual_linear(), add) {
+  explicit ShiftMachine(const std::function<void(techobjects::Runtime&)>& add = {},
+                        float reversal_tolerance = 0.0F)
+      : GearingMachine(virtual_linear(), virtual_linear(), add, {}, reversal_tolerance) {
     user = [this] {
       phasing_rel(*F);
       phasing_abs(*F);
@@ -220,6 +221,50 @@ TEST(PhasingOffset, OF1ReversalCancelsWithError808C) {
   const double offset = m.sync().Offset;
   m.run(100);
   EXPECT_NEAR(m.f().Position - m.l().Position, offset, 1e-9);
+}
+
+// The V10 leading value reversal tolerance (spec 07 §1.6 [OPEN], tomc extension; decision C27) at its edge:
+// GearIn 1/1 at rest, OffsetRelative(10, OffsetDistance 90); L moves +20, back by `back`, forward +10 and
+// back by `back` again. Moving back by at most the tolerance from the farthest value (20, then 29.5) keeps
+// the offset job; 0.001 more cancels it with 16#808C (tolerance 0: any reversal does).
+TEST(PhasingOffset, ReversalToleranceOfTheOffsetAtItsEdge) {
+  struct Row {
+    float tolerance;
+    double back;
+    bool cancelled;
+  };
+  for (const Row& r : {Row{0.5F, 0.5, false}, Row{0.5F, 0.501, true}, Row{0.0F, 0.001, true}}) {
+    ShiftMachine m({}, r.tolerance);
+    m.geared(1);
+    auto& o = m.offset_rel;
+    o.Offset = 10.0;
+    o.OffsetDistance = 90.0;
+    o.Execute = true;
+    m.run(1);
+    ASSERT_TRUE(o.StartOffset);
+    const auto move_leader = [&](double distance) {
+      m.move_rel_L.Distance = distance;
+      m.move_rel_L.Execute = false;
+      m.run(1);
+      m.move_rel_L.Execute = true;
+      ASSERT_GT(m.run_until([&] { return m.move_rel_L.Done || o.Error; }, 2000), 0);
+    };
+    for (const double distance : {20.0, -r.back, 10.0, -r.back}) {
+      move_leader(distance);
+      if (o.Error) break;
+    }
+    EXPECT_EQ(o.Error, r.cancelled) << r.tolerance << " " << r.back;
+    EXPECT_EQ(o.ErrorID, r.cancelled ? eid::kLeadingValueReversed : 0) << r.tolerance << " " << r.back;
+    if (r.cancelled) {  // in the first move back, as soon as it went beyond the tolerance
+      EXPECT_LT(m.l().Position, 20.0 - r.tolerance);
+      EXPECT_GE(m.l().Position, 20.0 - r.back - 1e-9);
+    } else {  // both moves back kept the job: it goes on from the farthest value, 29.5
+      EXPECT_NEAR(m.l().Position, 29.0, 1e-12);
+      EXPECT_TRUE(o.Busy);
+      EXPECT_FALSE(o.Done);
+    }
+    EXPECT_TRUE(m.gear.InGear);
+  }
 }
 
 // OF-2 (spec 07 §8; §1.8): offsets and phase shift are reset when the synchronous operation is overridden.

@@ -73,6 +73,10 @@ struct axis_of<instructions::MC_GetCamFollowingValue> {
   using type = techobjects::Cam;
 };
 template <>
+struct axis_of<instructions::MC_GetCamFollowingValueCyclic> {
+  using type = techobjects::Cam;
+};
+template <>
 struct axis_of<instructions::MC_GetCamLeadingValue> {
   using type = techobjects::Cam;
 };
@@ -672,6 +676,22 @@ const auto kGetCamFollowingValue = std::to_array<Parameter<GetCamFollowingValue>
     out("FirstDerivative", &GetCamFollowingValue::FirstDerivative),
     out("SecondDerivative", &GetCamFollowingValue::SecondDerivative),
 });
+using GetCamFollowingValueCyclic = instructions::MC_GetCamFollowingValueCyclic;
+const auto kGetCamFollowingValueCyclic = std::to_array<Parameter<GetCamFollowingValueCyclic>>({
+    in("Enable", &GetCamFollowingValueCyclic::Enable),
+    in("LeadingValue", &GetCamFollowingValueCyclic::LeadingValue),
+    in<GetCamFollowingValueCyclic, double>("MasterOffset", &GetCamFollowingValueCyclic::MasterOffset),
+    in<GetCamFollowingValueCyclic, double>("SlaveOffset", &GetCamFollowingValueCyclic::SlaveOffset),
+    in<GetCamFollowingValueCyclic, double>("MasterScaling", &GetCamFollowingValueCyclic::MasterScaling),
+    in<GetCamFollowingValueCyclic, double>("SlaveScaling", &GetCamFollowingValueCyclic::SlaveScaling),
+    out("Valid", &GetCamFollowingValueCyclic::Valid),
+    out("Busy", &GetCamFollowingValueCyclic::Busy),
+    out("Error", &GetCamFollowingValueCyclic::Error),
+    out("ErrorID", &GetCamFollowingValueCyclic::ErrorID),
+    out("Value", &GetCamFollowingValueCyclic::Value),
+    out("FirstDerivative", &GetCamFollowingValueCyclic::FirstDerivative),
+    out("SecondDerivative", &GetCamFollowingValueCyclic::SecondDerivative),
+});
 using GetCamLeadingValue = instructions::MC_GetCamLeadingValue;
 const auto kGetCamLeadingValue = std::to_array<Parameter<GetCamLeadingValue>>({
     in<GetCamLeadingValue, bool>("Execute", &GetCamLeadingValue::Execute),
@@ -824,8 +844,8 @@ constexpr auto kSynchronousAxisInstructions =
     joined(kPositioningAxisInstructions, kSynchronousOnlyInstructions);
 constexpr std::array<std::string_view, 4> kExternalEncoderInstructions{"MC_Power", "MC_Reset", "MC_Home",
                                                                        "MC_WriteParameter"};
-constexpr std::array<std::string_view, 3> kCamInstructions{"MC_InterpolateCam", "MC_GetCamFollowingValue",
-                                                           "MC_GetCamLeadingValue"};
+constexpr std::array<std::string_view, 4> kCamInstructions{
+    "MC_InterpolateCam", "MC_GetCamFollowingValue", "MC_GetCamFollowingValueCyclic", "MC_GetCamLeadingValue"};
 
 // The other instructions of spec 03 (positioning, synchronous operation, measuring, torque, kinematics...).
 constexpr std::array<std::string_view, 7> kPlannedInstructions{
@@ -959,6 +979,7 @@ std::unique_ptr<Instance> make_instance(std::string_view instruction, Technology
     case TechnologyObjectKind::kCam:
       if (instruction == "MC_InterpolateCam") return make(kInterpolateCam);
       if (instruction == "MC_GetCamFollowingValue") return make(kGetCamFollowingValue);
+      if (instruction == "MC_GetCamFollowingValueCyclic") return make(kGetCamFollowingValueCyclic);
       if (instruction == "MC_GetCamLeadingValue") return make(kGetCamLeadingValue);
       return nullptr;
   }

@@ -262,8 +262,8 @@ std::vector<to::PositioningAxis*> load_superimposing_axes(ObjectReader& r,
   return out;
 }
 
-// "LeadingValueInterconnections": [ {"Leader": "<TO defined before>", "Coupling": "Setpoint" | "ActualValue"}
-// ] (spec 07 §1.2, O-15).
+// "LeadingValueInterconnections": [ {"Leader": "<TO defined before>", "Coupling": "Setpoint" | "ActualValue"
+// | "Delayed", "LeadingValueReversalTolerance": <≥ 0>} ] (spec 07 §1.2, §1.5, §1.6, O-15).
 std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader& r,
                                                                    std::span<const MachineObject> existing,
                                                                    Problems& problems) {
@@ -298,12 +298,18 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
       }
     }
     if (const Json* k = e.get("Coupling")) {
-      if (auto choice =
-              detail::read_choice(*k, e.path_of("Coupling"), {"Setpoint", "ActualValue"}, problems)) {
-        c.coupling =
-            *choice == 0 ? to::LeadingValueCoupling::kSetpoint : to::LeadingValueCoupling::kActualValue;
+      if (auto choice = detail::read_choice(*k, e.path_of("Coupling"), {"Setpoint", "ActualValue", "Delayed"},
+                                            problems)) {
+        constexpr std::array kCouplings{to::LeadingValueCoupling::kSetpoint,
+                                        to::LeadingValueCoupling::kActualValue,
+                                        to::LeadingValueCoupling::kDelayed};
+        c.coupling = kCouplings[static_cast<std::size_t>(*choice)];
       }
     }
+    // A tomc extension for the V10 setting (spec 07 §1.6, decision C27), in the leader's length unit.
+    double tolerance = 0.0;
+    e.real("LeadingValueReversalTolerance", tolerance, detail::kNonNegative);
+    c.reversal_tolerance = static_cast<float>(tolerance);
     e.finish();
     if (c.source != nullptr) out.push_back(c);
   }

@@ -55,6 +55,7 @@
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
 #include "tomc/techobjects/synchronous/actual_value_extrapolation.hpp"
+#include "tomc/techobjects/synchronous/delayed_leading_value.hpp"
 #include "tomc/techobjects/synchronous/leading_value.hpp"
 
 namespace tomc::techobjects {
@@ -74,7 +75,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // The object plus the heap it owns (start values only until the runtime adopted them), in bytes.
   std::size_t memory_footprint() const noexcept {
     return sizeof(*this) + shared_heap_bytes() + dynamic_filter_.history_bytes() + additional_.heap_bytes() +
-           (superimposing_axes_ ? sizeof(SuperimposingAxisTable) : 0);
+           (superimposing_axes_ ? sizeof(SuperimposingAxisTable) : 0) +
+           (delayed_ ? sizeof(DelayedLeadingValue) + delayed_->heap_bytes() : 0);
   }
 
   // ---- configuration before Runtime::start() ----
@@ -162,6 +164,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // A synchronous axis has this axis among its possible leading values: a modulo axis is then limited to
   // half a modulo length per servo cycle with warning 501 instead of alarm 412 at a whole one (spec 01 §8.6).
   void set_possible_leading_value() noexcept override { possible_leading_value_ = true; }
+  // A follower couples "Delayed" (spec 07 §1.5): the history of CrossPlcSynchronousOperation.
+  // LocalLeadingValueDelayTime (the value in the data block now) is allocated once; later followers share it.
+  // Throws std::invalid_argument naming the key for a delay the history cannot hold (decision C26).
+  void provide_delayed_leading_value(double interpolator_cycle_s) override;
 
   // ---- for tests, diagnostics and the synchronous axis ----
   // The setpoint the interpolator generated last (continuous position, before modulo wrap).
@@ -512,6 +518,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   double limit_stop_position_ = 0.0;
   double reference_mark_position_ = 0.0;
   std::unique_ptr<SuperimposingAxisTable> superimposing_axes_;  // configured only when used
+  std::unique_ptr<DelayedLeadingValue> delayed_;  // only while a follower couples "Delayed" (C26)
 };
 
 }  // namespace tomc::techobjects

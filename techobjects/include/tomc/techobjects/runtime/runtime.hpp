@@ -48,6 +48,7 @@ struct RuntimeServices {
   AlarmLog& alarm_log;
   StartValueStore& start_values;
   std::uint32_t object_number;  // 1, 2, ... in the order the objects were added
+  double interpolator_cycle_s;  // MC_Interpolator's cycle (a leader sizes its delayed value's history)
 };
 
 // The cyclic parts of a technology object. Both are called from the real-time path: noexcept, no allocation.

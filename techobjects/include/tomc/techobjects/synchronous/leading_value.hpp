@@ -6,6 +6,7 @@
 // between leader and follower (spec 07 §1.2).
 
 #include <cstdint>
+#include <stdexcept>
 
 namespace tomc::techobjects {
 
@@ -13,6 +14,7 @@ namespace tomc::techobjects {
 enum class LeadingValueCoupling : std::uint8_t {
   kSetpoint,     // the leader's setpoint (spec 07 §1.3)
   kActualValue,  // the leader's extrapolated actual value (spec 07 §1.4)
+  kDelayed,      // the leader's setpoint LocalLeadingValueDelayTime ago (spec 07 §1.5; local part only)
 };
 
 struct LeadingValue {
@@ -40,6 +42,15 @@ class LeadingValueSource {
   // Called once by each synchronous axis that has this source among its possible leading values (the
   // interconnection of the configuration, spec 07 §1.3): a positioning axis takes the limit of spec 01 §8.6.
   virtual void set_possible_leading_value() noexcept {}
+  // Called at set-up by each synchronous axis that couples "Delayed" to this source (spec 07 §1.5): from then
+  // on the source keeps the history its delayed value needs (decision C26). Throws std::invalid_argument for
+  // a source that cannot delay its value (an external encoder: not yet) or a delay it cannot hold.
+  virtual void provide_delayed_leading_value(double interpolator_cycle_s) {
+    (void)interpolator_cycle_s;
+    throw std::invalid_argument(
+        "this leading value cannot be coupled \"Delayed\" (only a positioning or "
+        "synchronous axis can, decision C26)");
+  }
 };
 
 }  // namespace tomc::techobjects

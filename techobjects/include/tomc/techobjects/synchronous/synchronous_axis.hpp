@@ -38,6 +38,9 @@ class SynchronousAxis final : public PositioningAxis {
   }
 
   std::span<TechnologyObject* const> leaders() const noexcept override { return operation_.leaders(); }
+  // Set-up: each leader coupled "Delayed" keeps the history of its delayed value from now on (spec 07 §1.5);
+  // throws std::invalid_argument, naming the leader's key, for a delay it cannot hold (decision C26).
+  void attach(RuntimeServices& services) override;
   std::span<const LeadingValueInterconnection> interconnections() const noexcept {
     return operation_.interconnections();
   }

@@ -32,6 +32,11 @@ struct LeadingValueInterconnection {
   TechnologyObject* object = nullptr;    // the leading TO (its place in the cycle)
   LeadingValueSource* source = nullptr;  // the same TO as a leading value
   LeadingValueCoupling coupling = LeadingValueCoupling::kSetpoint;
+  // V10 "leading value reversal tolerance" (spec 07 §1.6 [OPEN], a tomc extension; decision C27): how far, in
+  // the leader's length unit, the effective leading value may move back from the farthest value it reached
+  // during synchronization or a leading/following value offset before that counts as a reversal (alarm 608,
+  // 16#808C). 0: any reversal counts. A float fills the padding after `coupling` (24 bytes either way).
+  float reversal_tolerance = 0.0F;
 };
 
 // Inputs of the gearing instructions (spec 07 §2, V8 parameter lists). Negative dynamics = DynamicDefaults.
@@ -260,11 +265,14 @@ class SynchronousOperation final : public SynchronousSlot {
     bool start_sync = false;
     bool in_sync = false;
     bool line_blend = false;  // MC_CamIn profile 0: the blend runs onto the cam's tangent (decision C23)
+    // The leader's direction the synchronization relies on (reversal: alarm 608): −1, 0 (not yet known), +1;
+    // one byte in the padding here, so that x_extreme costs nothing (decision C27).
+    std::int8_t direction = 0;
     ProfileLimits limits{};
     double x_sync = 0.0;  // leader and follower positions of the gear line y = y_sync + r·(x − x_sync)
     double y_sync = 0.0;
     LeaderDomainBlend blend{};
-    double direction = 0.0;  // the leader's direction the synchronization relies on (reversal: alarm 608)
+    double x_extreme = 0.0;  // the farthest leading value in `direction` during synchronization (C27)
     CamJob cam{};            // kind kCamIn
   };
   struct PendingSyncIn {  // MC_GearInPos / MC_CamIn waiting for its start (WaitingFunctionState 2 / 3)
@@ -366,6 +374,13 @@ class SynchronousOperation final : public SynchronousSlot {
                            std::int32_t denominator, double acceleration, double deceleration,
                            double jerk) noexcept;
   double gear_line(const ActiveSync& a, double x) const noexcept;
+  // The effective leading value reversed during synchronization (alarm 608): against the velocity's sign
+  // when the interconnection's reversal tolerance is 0 (`velocity_reversed`, as before), else once it moved
+  // back more than the tolerance from a.x_extreme (spec 07 §1.6, decision C27).
+  bool synchronization_reversed(ActiveSync& a, double x, bool velocity_reversed) noexcept;
+  float reversal_tolerance(int source) const noexcept {
+    return source >= 0 ? interconnections_[static_cast<std::size_t>(source)].reversal_tolerance : 0.0F;
+  }
   void end_active(JobState state, std::uint16_t error_id) noexcept;
   void end_pending(JobState state, std::uint16_t error_id) noexcept;
   void end_desync(JobState state, std::uint16_t error_id) noexcept;
