@@ -15,6 +15,7 @@
 #include <thread>
 #include <utility>
 
+#include "build_paths.hpp"
 #include "tomc/tomc.h"
 
 namespace {
