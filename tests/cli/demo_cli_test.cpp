@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "build_paths.hpp"
 
 namespace {
 

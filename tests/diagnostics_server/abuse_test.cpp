@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "../diagnostics/diagnostics_fixture.hpp"
+#include "build_paths.hpp"
 #include "tomc/diagnostics/http_server.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
@@ -590,7 +591,8 @@ TEST(ServerAbuse, OutOfDescriptorsTheNewestConnectionIsServed) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, to_child[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, from_child[1], STDOUT_FILENO);
-  char path[] = TOMC_LIMITED_SERVER;
+  std::string program = TOMC_LIMITED_SERVER;
+  char* path = program.data();
   char* argv[] = {path, nullptr};
   pid_t child = 0;
   const int spawned = ::posix_spawn(&child, path, &actions, nullptr, argv, environ);
