@@ -76,6 +76,24 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
   db_.OperativeSensor = op;
   if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
   if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
+  // "To use a technology object in simulation, encoder 1 must be used for position control" (seed 004
+  // §6.1.7, decision B7).
+  if (simulated() && op != 1) {
+    fail("PositionControl.InitialOperativeSensor",
+         "a simulated axis closes the position loop on encoder 1 (seed 004 §6.1.7)");
+  }
+  // Every other existing encoder gets its storage now (decision B1), also on a virtual or simulated axis,
+  // which simulates every encoder configured as used (seed 004 §6.2.4.5, B7).
+  std::size_t count = 0;
+  for (std::uint32_t n = 1; n <= 4; ++n)
+    count += n != op && start_->Sensor[n - 1].Existent ? 1 : 0;
+  additional_.reserve(count);
+  {
+    std::size_t i = 0;
+    for (std::uint32_t n = 1; n <= 4; ++n)
+      if (n != op && start_->Sensor[n - 1].Existent)
+        additional_.all()[i++].number = static_cast<std::uint8_t>(n);
+  }
   if (device_ != nullptr) {
     // Which telegram carries the operative encoder (decision P3).
     const auto& cfg = device_->adapter->config();
@@ -88,25 +106,18 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
     }
     encoder_ = EncoderChannel(AxisMechanics{}, EncoderMechanics{}, 0.001, *source);
     drive_ = DriveConnection(*device_, with_reference_values(drive, start_->Actor));
-    // Every other existing encoder gets its storage now (decision B1) and its own telegram part.
-    std::size_t count = 0;
-    for (std::uint32_t n = 1; n <= 4; ++n)
-      count += n != op && start_->Sensor[n - 1].Existent ? 1 : 0;
-    additional_.reserve(count);
+    // Each other encoder's own telegram part.
     std::array<EncoderSource, 4> taken{*source};
     std::size_t i = 0;
-    for (std::uint32_t n = 1; n <= 4; ++n) {
-      if (n == op || !start_->Sensor[n - 1].Existent) continue;
-      const auto s = find_encoder_source(cfg, start_->Sensor[n - 1].Interface.Number,
+    for (AdditionalEncoder& e : additional_.all()) {
+      const auto s = find_encoder_source(cfg, start_->Sensor[e.number - 1].Interface.Number,
                                          std::span<const EncoderSource>(taken.data(), i + 1));
       if (!s) {
         fail(
-            "Sensor[" + std::to_string(n) + "].Interface.Number",
+            "Sensor[" + std::to_string(e.number) + "].Interface.Number",
             "the device's telegrams carry no further encoder (the other encoders of the axis read them all)");
       }
-      taken[i + 1] = *s;
-      AdditionalEncoder& e = additional_.all()[i++];
-      e.number = n;
+      taken[++i] = *s;
       e.channel = EncoderChannel(AxisMechanics{}, EncoderMechanics{}, 0.001, *s);
     }
   }

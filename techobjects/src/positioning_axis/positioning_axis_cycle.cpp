@@ -146,6 +146,8 @@ void PositioningAxis::simulate_actual_values() noexcept {
     actual_velocity_ = filtered_.velocity;
   }
   actual_valid_ = true;
+  // Every used encoder of a simulated axis is simulated (seed 004 §6.2.4.5, decision B7).
+  if (!additional_.all().empty() && simulated()) simulate_additional_encoders(actual_position_ - previous);
   db_.StatusDrive.InOperation = core_.phase == PowerPhase::kEnabled;
   db_.StatusDrive.CommunicationOK = true;
   auto& sensor = db_.StatusSensor[db_.OperativeSensor - 1];
@@ -866,12 +868,16 @@ void PositioningAxis::restart() noexcept {
   units_ = axis_unit_factors(db_.Units.LengthUnit, db_.Units.VelocityUnit);
   const RetainedSensorState retained = encoder_.chain().retained_state();
   std::array<RetainedSensorState, 3> additional_retained{};
-  for (std::size_t i = 0; i < additional_.all().size(); ++i)
+  std::array<std::int64_t, 3> additional_counts{};  // a simulated encoder stays where the load is
+  for (std::size_t i = 0; i < additional_.all().size(); ++i) {
     additional_retained[i] = additional_.all()[i].channel.chain().retained_state();
+    additional_counts[i] = additional_.all()[i].channel.chain().encoder_counts();
+  }
   configure_components();
   for (std::size_t i = 0; i < additional_.all().size(); ++i) {
     ActualValueChain& chain = additional_.all()[i].channel.chain();
     if (chain.absolute_type()) chain.power_up(&additional_retained[i]);
+    if (simulated()) seed_simulated_encoder(additional_.all()[i], additional_counts[i]);
   }
   // Every absolute encoder keeps its adjustment over the restart, the operative one or not (an incremental
   // operative encoder does not make the others lose theirs).

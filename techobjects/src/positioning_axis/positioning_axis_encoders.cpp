@@ -2,6 +2,7 @@
 // StatusSensor[1..4]): the operative encoder closes the position loop (positioning_axis_cycle.cpp); every
 // other existing encoder is read and monitored here in each servo cycle, with its own actual-value chain,
 // homing state and absolute-encoder adjustment. No allocation: the storage was reserved at construction.
+#include <cmath>
 #include <utility>
 
 #include "tomc/techobjects/axis/error_ids.hpp"
@@ -19,6 +20,16 @@ EncoderMechanics encoder_mechanics(const PositioningAxisData::TO_Struct_Sensor& 
   const bool separate = source == EncoderSource::kEncoderG1 || source == EncoderSource::kEncoder2G1;
   m.Nist = separate ? NistSource::kEncoderTelegram83 : NistSource::kDriveTelegram;
   return m;
+}
+
+// Seed 004 §6.1.8: the fixed simulated incremental value of an absolute encoder after power-up.
+constexpr std::int64_t kSimulatedAbsoluteIncrements = 240;
+
+// Gx_XIST1 of `counts` continuous counts in the encoder's counter width.
+std::uint32_t simulated_xist1(const ActualValueChain& chain, std::int64_t counts) {
+  const std::uint8_t width = chain.xist1_width();
+  const std::uint64_t mask = width >= 32 ? 0xFFFFFFFFu : (std::uint64_t{1} << width) - 1;
+  return static_cast<std::uint32_t>(static_cast<std::uint64_t>(counts) & mask);
 }
 
 RetainedSensorState sensor_state(const RetainedEncoderData& r) {
@@ -42,10 +53,61 @@ void PositioningAxis::configure_encoders(const AxisMechanics& mechanics) noexcep
 
 void PositioningAxis::power_up_additional_encoders() noexcept {
   for (AdditionalEncoder& e : additional_.all()) {
-    if (!e.retained.valid || !e.channel.chain().absolute_type()) continue;
-    const RetainedSensorState r = sensor_state(e.retained);
-    e.channel.chain().power_up(&r);
+    const bool absolute = e.channel.chain().absolute_type();
+    if (e.retained.valid && absolute) {
+      const RetainedSensorState r = sensor_state(e.retained);
+      e.channel.chain().power_up(&r);
+    }
+    // A simulated absolute encoder comes up at its fixed simulated value of 240 increments plus its
+    // AbsEncoderOffset (seed 004 §6.1.8, spec 01 §2.7); an incremental one at 0.
+    if (simulated()) {
+      const auto fine = static_cast<unsigned>(db_.Sensor[e.number - 1].Parameter.FineResolutionXist1);
+      seed_simulated_encoder(e, absolute ? std::int64_t{kSimulatedAbsoluteIncrements} << fine : 0);
+    }
   }
+}
+
+// Simulation (seed 004 §6.2.4.5 "Simulazione", §6.1.7; decision B7): the encoder sees the load travel of the
+// simulated actual value. Its counts advance by travel / (its units per count) — its own resolution, gears,
+// mounting and direction — the fraction of a count carried to the next cycle; its chain turns them into
+// StatusSensor[n] as a real encoder's (own offset, adjustment, modulo counter).
+void PositioningAxis::simulate_additional_encoders(double travel) noexcept {
+  for (AdditionalEncoder& e : additional_.all()) {
+    ActualValueChain& chain = e.channel.chain();
+    if (!chain.position_valid()) {  // power-up or restart seed it; this is a fallback only
+      seed_simulated_encoder(e, chain.encoder_counts());
+      continue;
+    }
+    const double upc = chain.units_per_count();
+    const double counts = (upc != 0.0 ? travel / upc : 0.0) + static_cast<double>(e.simulated_fraction);
+    const double whole = std::round(counts);
+    e.simulated_fraction = static_cast<float>(counts - whole);
+    EncoderSample sample;
+    sample.xist1 = simulated_xist1(chain, chain.encoder_counts() + static_cast<std::int64_t>(whole));
+    chain.update(sample);
+    auto& status = db_.StatusSensor[e.number - 1];
+    status.State = static_cast<std::int32_t>(SensorState::VALID);
+    status.CommunicationOK = true;
+    status.Error = false;
+  }
+}
+
+void PositioningAxis::seed_simulated_encoder(AdditionalEncoder& e, std::int64_t counts) noexcept {
+  ActualValueChain& chain = e.channel.chain();
+  const auto& parameter = db_.Sensor[e.number - 1].Parameter;
+  EncoderSample sample;
+  sample.xist1 = simulated_xist1(chain, counts);
+  if (chain.absolute_type()) {
+    // Gx_XIST2 holds the absolute value in its own fine resolution, within the measuring range.
+    const int shift =
+        static_cast<int>(parameter.FineResolutionXist1) - static_cast<int>(parameter.FineResolutionXist2);
+    std::int64_t xist2 = shift >= 0 ? counts >> shift : counts * (std::int64_t{1} << -shift);
+    const auto range = static_cast<std::int64_t>(chain.measuring_range());
+    if (range > 0) xist2 = ((xist2 % range) + range) % range;
+    sample.xist2_absolute = static_cast<std::uint32_t>(xist2);
+  }
+  chain.update(sample);
+  e.simulated_fraction = 0.0f;
 }
 
 void PositioningAxis::read_additional_encoders() noexcept {
@@ -84,6 +146,19 @@ void PositioningAxis::write_additional_encoder_controls() noexcept {
 void PositioningAxis::update_additional_encoder_status() noexcept {
   for (const AdditionalEncoder& e : additional_.all()) {
     auto& status = db_.StatusSensor[e.number - 1];
+    if (device_ == nullptr && !simulated()) {
+      // A virtual axis reads no encoder: every used encoder shows its actual values, the setpoints of one
+      // servo cycle before, adjusted (seed 004 §6.1.5/§6.1.6 table, decision B7).
+      const auto& operative = db_.StatusSensor[db_.OperativeSensor - 1];
+      status.Position = operative.Position;
+      status.Velocity = operative.Velocity;
+      status.ModuloCycle = operative.ModuloCycle;
+      status.Adjusted = static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
+      status.State = static_cast<std::int32_t>(SensorState::VALID);
+      status.CommunicationOK = true;
+      status.Error = false;
+      continue;
+    }
     const ActualValueChain& chain = e.channel.chain();
     status.Position = chain.position();
     status.Velocity = chain.velocity() * units_.velocity;
@@ -98,7 +173,7 @@ std::uint32_t PositioningAxis::make_operative(std::uint32_t n) noexcept {
   std::swap(encoder_, e->channel);
   std::swap(retained_, e->retained);
   std::swap(encoder_fault_seen_, e->fault_seen);
-  e->number = db_.OperativeSensor;
+  e->number = static_cast<std::uint8_t>(db_.OperativeSensor);
   db_.OperativeSensor = n;
   return n;
 }
@@ -112,6 +187,12 @@ ActualValueChain* PositioningAxis::sensor_chain(std::uint32_t n) noexcept {
   return e != nullptr ? &e->channel.chain() : nullptr;
 }
 
+double PositioningAxis::sensor_position(std::uint32_t n) noexcept {
+  // A virtual or simulated axis' operative encoder reads nothing: the axis' actual value is its position.
+  if (n == db_.OperativeSensor && device_ == nullptr) return actual_position_;
+  return sensor_chain(n)->continuous_position();
+}
+
 // Encoder n takes over `position` (continuous). An absolute encoder's take-over is a compensation that a
 // later switch discards (seed 004 §6.2.4.5), so its retained adjustment stays as it is; an incremental one
 // is adjusted when the position it takes over is (Adjusted follows the source, decision B4).
@@ -120,7 +201,7 @@ void PositioningAxis::transfer_position(std::uint32_t n, double position, bool a
   if (n == db_.OperativeSensor) {
     // Mode 3 onto the operative encoder: the setpoint moves with the actual value, as in direct homing, so
     // that the new position causes no motion.
-    shift_position(encoder_.set_position(position));
+    shift_position(device_ != nullptr ? encoder_.set_position(position) : position - actual_position_);
   } else {
     chain.set_position(position);
   }
@@ -150,6 +231,16 @@ Submission PositioningAxis::set_sensor(const SetSensorInputs& in) noexcept {
     return Submission::reject(error_id::kSensorSwitchBlocked);
   }
   const auto n = static_cast<std::uint32_t>(in.Sensor);
+  if (device_ == nullptr && !simulated()) {
+    // A virtual axis reads no encoder: every encoder shows the setpoints, so a switch changes only which
+    // Sensor[n]'s configuration applies and a transfer has nothing to transfer (decision B7).
+    if (in.Mode <= 1) (void)make_operative(n);
+    return Submission::accept(core_.jobs.create(JobKind::kSetSensor, JobState::kDone));
+  }
+  // A simulated axis closes the loop on encoder 1 (seed 004 §6.1.7); Modes 2 and 3 only prepare (B7).
+  if (simulated() && in.Mode <= 1 && n != db_.OperativeSensor) {
+    return Submission::reject(error_id::kSensorSwitchSimulated);
+  }
   // An encoder outside the loop with an error or no value yet can neither close the loop nor take or give a
   // position (never a silently wrong motion; decision B4).
   const auto valid = [&](std::uint32_t k) {
@@ -159,7 +250,7 @@ Submission PositioningAxis::set_sensor(const SetSensorInputs& in) noexcept {
   if (!valid(n) || (in.Mode == 3 && !valid(static_cast<std::uint32_t>(in.ReferenceSensor)))) {
     return Submission::reject(error_id::kEncoderNotValid);
   }
-  const double axis_position = encoder_.chain().continuous_position();
+  const double axis_position = sensor_position(db_.OperativeSensor);
   const bool axis_adjusted = db_.StatusSensor[db_.OperativeSensor - 1].Adjusted ==
                              static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
   switch (in.Mode) {
@@ -182,7 +273,7 @@ Submission PositioningAxis::set_sensor(const SetSensorInputs& in) noexcept {
       if (n == r) break;
       const bool r_adjusted =
           db_.StatusSensor[r - 1].Adjusted == static_cast<std::int32_t>(SensorAdjusted::kAdjusted);
-      transfer_position(n, sensor_chain(r)->continuous_position(), r_adjusted);
+      transfer_position(n, sensor_position(r), r_adjusted);
       break;
     }
   }

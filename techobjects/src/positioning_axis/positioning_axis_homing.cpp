@@ -235,7 +235,10 @@ void PositioningAxis::run_passive_homing() noexcept {
 Submission PositioningAxis::home_other_encoder(const HomeInputs& in) noexcept {
   AdditionalEncoder* e =
       in.Sensor >= 1 && in.Sensor <= 4 ? additional_.find(static_cast<std::uint32_t>(in.Sensor)) : nullptr;
-  if (e == nullptr || in.Mode != 13) return Submission::reject(error_id::kInvalidSensor);
+  // A virtual axis reads no encoder, each shows the setpoints: none can be adjusted alone (decision B7).
+  if (e == nullptr || in.Mode != 13 || (device_ == nullptr && !simulated())) {
+    return Submission::reject(error_id::kInvalidSensor);
+  }
   if (e->channel.chain().absolute_type()) return Submission::reject(error_id::kHomingModeNotAvailable);
   // Enabled with position control, or disabled; no alarm pending (spec 02 §5.10).
   if (core_.alarms.any_error()) return Submission::reject(error_id::kAxisBlockedByAlarm);

@@ -210,11 +210,21 @@ void PositioningAxis::advance_superimposed() noexcept {
   const bool forward = v_total_before >= 0.0;
   const double a_max = db_.DynamicLimits.MaxAcceleration / units_.acceleration;
   const double d_max = db_.DynamicLimits.MaxDeceleration / units_.acceleration;
+  // Jerk (U17): MaxJerk (0: none, decision S3) less the base's jerk, its acceleration change since the last
+  // cycle's total (the data block's Acceleration) less the superimposed part of it.
+  const double j_max =
+      db_.DynamicLimits.MaxJerk > 0.0 ? db_.DynamicLimits.MaxJerk / units_.acceleration : inf;
+  const double a_sup = superimposed_.state().acceleration;
+  const double j_base =
+      (setpoint_.acceleration - (db_.Acceleration / units_.acceleration - a_sup)) / core_.ipo_cycle_s;
   const SuperimposedMotion::Headroom headroom =
-      limited ? SuperimposedMotion::Headroom{v_limit - v_base, v_limit + v_base,
+      limited ? SuperimposedMotion::Headroom{v_limit - v_base,
+                                             v_limit + v_base,
                                              (forward ? a_max : d_max) - a_base_up,
-                                             (forward ? d_max : a_max) + a_base_down}
-              : SuperimposedMotion::Headroom{inf, inf, inf, inf};
+                                             (forward ? d_max : a_max) + a_base_down,
+                                             j_max - j_base,
+                                             j_max + j_base}
+              : SuperimposedMotion::Headroom{inf, inf, inf, inf, inf, inf};
   if (superimposed_.advance(core_.ipo_cycle_s, headroom)) {
     // MoveSuperimposed: the distance is travelled; Halt: standing (id 0: the braking after a MotionIn
     // setpoint that was not a number).

@@ -26,7 +26,12 @@ void SuperimposedMotion::halt(JobId id, const ProfileLimits& limits, bool abort_
   job_ = Job::kHalt;
   limits_ = limits;
   if (abort_acceleration) state_.acceleration = 0.0;  // spec 03 §4.11 AbortAcceleration
-  ProfileLimits l = limits;
+  abort_step_ = abort_acceleration;
+  plan_halt();
+}
+
+void SuperimposedMotion::plan_halt() noexcept {
+  ProfileLimits l = limits_;
   l.velocity = std::numeric_limits<double>::infinity();
   l.jerk = replanning_jerk(state_.velocity, state_.acceleration, l.jerk, true);  // decision R1
   VelocityProfile stop;
@@ -76,19 +81,31 @@ void SuperimposedMotion::end_motion_in() noexcept {
   end_job();
 }
 
-void SuperimposedMotion::limit_acceleration(const MotionState& before, double dt,
+bool SuperimposedMotion::limit_acceleration(const MotionState& before, double dt,
                                             const Headroom& headroom) noexcept {
   const double low = -std::max(headroom.acceleration_negative, 0.0);
   const double high = std::max(headroom.acceleration_positive, 0.0);
+  // The jerk of the total (U17): the sample may differ from the last one by what the base's jerk leaves of
+  // MaxJerk; where that range and the acceleration headroom do not meet, the acceleration limit wins.
+  const bool step = abort_step_;  // AbortAcceleration's step is the manual's, not limited
+  abort_step_ = false;
+  const double rise = step ? high : std::clamp(before.acceleration + headroom.jerk_positive * dt, low, high);
+  const double fall = step ? low : std::clamp(before.acceleration - headroom.jerk_negative * dt, low, high);
   // The sample and the cycle's mean (its velocity step) both: a profile's acceleration changes within a
   // cycle.
   const double mean = (state_.velocity - before.velocity) / dt;
-  if (state_.acceleration >= low && state_.acceleration <= high && mean >= low && mean <= high) return;
-  const double a = std::clamp(state_.acceleration, low, high);
+  if (state_.acceleration >= fall && state_.acceleration <= rise && mean >= low && mean <= high) return false;
+  const double a = std::clamp(state_.acceleration, fall, rise);
   // No headroom in a direction: the superimposed velocity cannot change that way and is held (U16).
   state_ =
       MotionState{before.position + before.velocity * dt + 0.5 * a * dt * dt, before.velocity + a * dt, a};
-  replan(planned_velocity_);  // from the cut state: the next cycle continues from where the axis is
+  // From the cut state: the next cycle continues from where the axis is.
+  if (job_ == Job::kHalt) {
+    plan_halt();
+  } else {
+    replan(planned_velocity_);
+  }
+  return true;
 }
 
 bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
@@ -120,22 +137,22 @@ bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
   const bool position = std::holds_alternative<PositionProfile>(profile_);
   const double duration = position ? std::get<PositionProfile>(profile_).duration()
                                    : std::get<VelocityProfile>(profile_).duration();
-  if (time_ < duration - 1e-9) {
-    const MotionState before = state_;
+  const bool finished = time_ >= duration - 1e-9;
+  const MotionState before = state_;
+  if (!finished) {
     state_ = position ? std::get<PositionProfile>(profile_).at(time_)
                       : std::get<VelocityProfile>(profile_).at(time_);
-    if (job_ == Job::kMove) limit_acceleration(before, dt, headroom);
-    return false;
-  }
-  planned_ = false;
-  if (position) {
+  } else if (position) {
     state_ = MotionState{target_, 0.0, 0.0};  // exact: the job's distance
-    return true;
+  } else {
+    state_ = MotionState{std::get<VelocityProfile>(profile_).at(duration).position, 0.0, 0.0};
   }
-  const MotionState end = std::get<VelocityProfile>(profile_).at(duration);
-  state_ = MotionState{end.position, 0.0, 0.0};
+  // The headroom holds in every cycle, the last one's step to the end included (U17): a cut replans.
+  if ((job_ == Job::kMove || job_ == Job::kHalt) && limit_acceleration(before, dt, headroom)) return false;
+  if (!finished) return false;
+  planned_ = false;
   // A stop for lack of headroom is not the end of a move: it waits for headroom (next advance replans).
-  return job_ == Job::kHalt;
+  return position || job_ == Job::kHalt;
 }
 
 MotionState SuperimposedMotion::predicted(double dt) const noexcept {

@@ -45,8 +45,9 @@ std::uint32_t additional_value(const PositioningAxis& axis, std::uint32_t number
 }
 
 struct TwoEncoderAxis : tomc::testing::PositioningAxisMachine {
-  explicit TwoEncoderAxis(PositioningAxisData d = two_encoder_data())
-      : PositioningAxisMachine(d, tomc::testing::linear_drive(), 4) {
+  // with_drive = false: a virtual or simulated axis (VirtualAxis.Mode / Simulation.Mode in `d`).
+  explicit TwoEncoderAxis(PositioningAxisData d = two_encoder_data(), bool with_drive = true)
+      : PositioningAxisMachine(d, tomc::testing::linear_drive(), 4, with_drive) {
     user = [this] { set_sensor(*axis); };
   }
   // One MC_SetSensor call (rising edge, one cycle, falling edge); returns the ErrorID (0: Done).
@@ -369,6 +370,174 @@ TEST(MultipleEncoders, AnEncoderWithoutTelegramIsAConfigurationError) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("Sensor[2].Interface.Number"), std::string::npos) << e.what();
   }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Virtual and simulated axes with several encoders (decision B7)
+
+// A simulated axis whose encoder 2 is a linear scale on the load: 0.01 mm per count (Resolution 0.01 mm, no
+// fine resolution), counting backwards (InverseDirection) — mechanics unlike encoder 1's 2.4 nm counts.
+PositioningAxisData simulated_two_encoder_data() {
+  auto d = two_encoder_data();
+  d.Simulation.Mode = tt::kModeOn;
+  auto& s = d.Sensor[1];
+  s.System = static_cast<std::int32_t>(tt::SensorMeasuringSystem::LINEAR);
+  s.Parameter.Resolution = 0.01;
+  s.Parameter.FineResolutionXist1 = 0;
+  s.Parameter.FineResolutionXist2 = 0;
+  s.InverseDirection = true;
+  return d;
+}
+
+bool on_grid(double position, double step) {
+  return std::fabs(position / step - std::round(position / step)) < 1e-6;
+}
+
+// Seed 004 §6.2.4.5 "Simulazione" ("simulating the axis simulates every encoder configured as used"; "every
+// used encoder delivers actual values continuously") and §6.1.7/§6.1.8 (the simulated actual value lags the
+// setpoint by T_t): in every servo cycle of a 100 mm move encoder 2 shows the simulated actual value through
+// its own mechanics — on its 0.01 mm grid, within one of its counts — and its velocity within one count per
+// servo cycle (10 mm/s); after the move it shows exactly 100 mm (no drift over 10,000 counts).
+TEST(MultipleEncoders, SimulatedAxisSimulatesEveryUsedEncoder) {
+  TwoEncoderAxis m(simulated_two_encoder_data(), false);
+  ASSERT_EQ(m.axis->additional_encoders().all().size(), 1u);
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  EXPECT_EQ(m.db().StatusSensor[1].State, static_cast<std::int32_t>(tt::SensorState::VALID));
+  EXPECT_EQ(m.db().StatusSensor[1].Position, 0.0);
+  m.move_absolute.Position = 100.0;
+  m.move_absolute.Velocity = 50.0;
+  m.move_absolute.Execute = true;
+  double largest = 0.0;
+  double fastest = 0.0;
+  int cycles = 0;
+  for (; cycles < 5000 && !m.move_absolute.Done; ++cycles) {
+    m.run(1);
+    const auto& s = m.db().StatusSensor[1];
+    ASSERT_EQ(s.State, static_cast<std::int32_t>(tt::SensorState::VALID)) << "cycle " << cycles;
+    ASSERT_TRUE(on_grid(s.Position, 0.01)) << s.Position;
+    largest = std::max(largest, std::fabs(s.Position - m.db().ActualPosition));
+    ASSERT_NEAR(s.Velocity, m.db().ActualVelocity, 10.0 + 1e-6) << "cycle " << cycles;
+    fastest = std::max(fastest, s.Velocity);
+  }
+  ASSERT_TRUE(m.move_absolute.Done);
+  EXPECT_GT(cycles, 2000);  // 100 mm at 50 mm/s
+  EXPECT_LE(largest, 0.01 + 1e-9);
+  EXPECT_GT(largest, 0.0);  // its own grid: not the axis' value passed through
+  EXPECT_NEAR(fastest, 50.0, 10.0 + 1e-6);
+  m.run(100);
+  EXPECT_NEAR(m.db().ActualPosition, 100.0, 1e-9);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 100.0, 1e-9);
+  EXPECT_EQ(m.db().StatusSensor[1].Velocity, 0.0);
+}
+
+// Seed 004 §6.1.7: "to use a technology object in simulation, encoder 1 must be used for position control"
+// (decision B7): MC_SetSensor Mode 0/1 to encoder 2 is 16#811D and encoder 1 stays; Modes 2 and 3 prepare as
+// on a real axis; MC_Home Mode 13 with Sensor = 2 adjusts encoder 2 alone (spec 02 §5.10, decision B5), and
+// the encoder keeps that offset while the simulated load moves.
+TEST(MultipleEncoders, SimulatedAxisKeepsEncoderOneInTheLoop) {
+  TwoEncoderAxis m(simulated_two_encoder_data(), false);
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  EXPECT_EQ(m.switch_to(2, 0), error_id::kSensorSwitchSimulated);
+  EXPECT_EQ(m.switch_to(2, 1), error_id::kSensorSwitchSimulated);
+  EXPECT_EQ(m.db().OperativeSensor, 1u);
+  EXPECT_EQ(m.switch_to(1, 0), 0);  // onto encoder 1: nothing to switch
+  EXPECT_EQ(m.adjust(2, 30.0), 0);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 30.0, 1e-9);
+  EXPECT_EQ(m.db().StatusSensor[1].Adjusted, 1);
+  EXPECT_NEAR(m.db().ActualPosition, 0.0, 1e-9);
+  ASSERT_GT(m.move_to(10.0), 0);
+  m.run(100);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 40.0, 1e-9);
+  // Mode 3: encoder 2's 40 mm to the operative encoder 1: the axis takes it over without motion.
+  EXPECT_EQ(m.switch_to(1, 3, 2), 0);
+  EXPECT_NEAR(m.db().ActualPosition, 40.0, 1e-9);
+  EXPECT_NEAR(m.db().Position, 40.0, 1e-9);
+  EXPECT_EQ(m.db().ActualVelocity, 0.0);
+  // Mode 2: the axis' position to encoder 2, after encoder 2 was adjusted elsewhere.
+  EXPECT_EQ(m.adjust(2, -5.0), 0);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, -5.0, 1e-9);
+  EXPECT_EQ(m.switch_to(2, 2), 0);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 40.0, 1e-9);
+  EXPECT_EQ(m.db().OperativeSensor, 1u);
+}
+
+// Seed 004 §6.1.7: a simulated axis with encoder 2 as start-up encoder is a configuration error naming the
+// variable.
+TEST(MultipleEncoders, SimulatedAxisStartsWithEncoderOne) {
+  auto d = simulated_two_encoder_data();
+  d.PositionControl.InitialOperativeSensor = 2;
+  try {
+    TwoEncoderAxis m(d, false);
+    FAIL() << "a simulated axis closes the loop on encoder 1";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("PositionControl.InitialOperativeSensor"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Seed 004 §6.1.8 / spec 01 §2.7: a simulated absolute encoder comes up at "the fixed simulated incremental
+// value of 240 increments" plus its AbsEncoderOffset. The manual's example on encoder 2: a rotary axis, all
+// ratios 1, 2048 increments per revolution, offset 137.812°: 240/2048 · 360° + 137.812° = 179.9995°
+// (printed "= 180°"); the encoder is adjusted.
+TEST(MultipleEncoders, SimulatedAbsoluteEncoderComesUpAtTwoHundredFortyIncrements) {
+  auto d = two_encoder_data();
+  d.Simulation.Mode = tt::kModeOn;
+  d.Properties.MotionType = static_cast<std::int32_t>(tt::PropertiesMotionType::kRotary);
+  d.Units.LengthUnit = tt::unit_code::kDegree;
+  d.Units.VelocityUnit = tt::unit_code::kDegreePerSecond;
+  d.Sensor[1].MountingMode = static_cast<std::int32_t>(tt::SensorMountingMode::kMotorShaft);
+  d.Sensor[1].Type = static_cast<std::int32_t>(tt::SensorEncoderType::ABSOLUTE);
+  d.Sensor[1].Parameter.DeterminableRevolutions = 4096;
+  TwoEncoderAxis m(d, false);
+  tt::RetainedEncoderData retained;
+  retained.adopt(137.812, 0, 0);
+  m.axis->restore_retained(2, retained);
+  m.run(2);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 240.0 / 2048.0 * 360.0 + 137.812, 1e-9);
+  EXPECT_NEAR(m.db().StatusSensor[1].Position, 180.0, 0.001);
+  EXPECT_EQ(m.db().StatusSensor[1].Adjusted, 1);
+  EXPECT_NEAR(m.db().StatusSensor[1].AbsEncoderOffset, 137.812, 1e-12);
+  EXPECT_EQ(m.db().StatusSensor[1].State, static_cast<std::int32_t>(tt::SensorState::VALID));
+}
+
+// Seed 004 §6.1.5/§6.1.6 (V8.0+): a virtual axis reads no encoder value; its actual values are its setpoints
+// one servo cycle later and StatusSensor.Adjusted is 1 — in every used encoder (decision B7). MC_SetSensor
+// switches which Sensor[n] applies without moving anything; MC_Home Mode 13 on one encoder is 16#811A (an
+// encoder that shows the setpoint cannot be adjusted alone).
+TEST(MultipleEncoders, VirtualAxisShowsItsSetpointsInEveryUsedEncoder) {
+  auto d = two_encoder_data();
+  d.VirtualAxis.Mode = tt::kModeOn;
+  TwoEncoderAxis m(d, false);
+  ASSERT_GT(m.enable(), 0);
+  ASSERT_TRUE(m.home_at(0.0));
+  EXPECT_EQ(m.db().StatusSensor[1].Adjusted, 1);
+  m.move_relative.Distance = 20.0;
+  m.move_relative.Velocity = 50.0;
+  m.move_relative.Execute = true;
+  double previous_setpoint = m.db().Position;
+  int cycles = 0;
+  for (; cycles < 3000 && !m.move_relative.Done; ++cycles) {
+    m.run(1);
+    const auto& s = m.db().StatusSensor[1];
+    ASSERT_EQ(s.Position, m.db().ActualPosition) << "cycle " << cycles;
+    ASSERT_EQ(s.Velocity, m.db().ActualVelocity) << "cycle " << cycles;
+    ASSERT_NEAR(s.Position, previous_setpoint, 1e-12) << "cycle " << cycles;  // one servo cycle later
+    ASSERT_EQ(s.State, static_cast<std::int32_t>(tt::SensorState::VALID));
+    previous_setpoint = m.db().Position;
+  }
+  ASSERT_TRUE(m.move_relative.Done);
+  EXPECT_EQ(m.switch_to(2, 1), 0);
+  EXPECT_EQ(m.db().OperativeSensor, 2u);
+  m.run(10);
+  EXPECT_NEAR(m.db().ActualPosition, 20.0, 1e-9);
+  EXPECT_EQ(m.db().StatusSensor[0].Position, m.db().ActualPosition);
+  EXPECT_EQ(m.db().StatusSensor[0].Adjusted, 1);
+  EXPECT_EQ(m.switch_to(1, 3, 2), 0);
+  EXPECT_NEAR(m.db().ActualPosition, 20.0, 1e-9);
+  EXPECT_EQ(m.adjust(1, 5.0), error_id::kInvalidSensor);
+  EXPECT_NEAR(m.db().StatusSensor[0].Position, 20.0, 1e-9);
 }
 
 }  // namespace

@@ -554,53 +554,59 @@ TEST(PositioningAllocation, PositionProfileAndMotionInRunWithoutAllocating) {
 
 // Two encoders (telegram 4: G1 motor, G2 load side) with MC_SetSensor switching back and forth in all four
 // modes while the axis moves, encoder 2 failing and being acknowledged, MC_Home Mode 13 on the encoder
-// outside the loop, and MC_Reset with Restart: nothing allocates (decision B1, spec 01 §3.8).
+// outside the loop, and MC_Reset with Restart: nothing allocates (decision B1, spec 01 §3.8); the same
+// script on a simulated and a virtual axis with two encoders (decision B7; no encoder error to inject).
 TEST(PositioningAllocation, TwoEncodersAndSetSensorRunWithoutAllocating) {
-  auto data = tomc::testing::linear_axis_data();
-  data.Sensor[1].Existent = true;
-  data.Sensor[1].Interface.Number = 2;
-  data.Sensor[1].MountingMode = 1;  // load side
-  data.PositionControl.SmoothingTimeByChangeDifference = 0.005;
-  PositioningAxisMachine m(data, tomc::testing::linear_drive(), 4);
-  instructions::MC_SetSensor<techobjects::PositioningAxis> set_sensor;
-  m.user = [&] { set_sensor(*m.axis); };
-  ASSERT_GT(m.enable(), 0);
-  ASSERT_TRUE(m.home_at(0.0));
-  constexpr int kPhase = 1000;
-  long switches = 0, errors = 0, restarts = 0;
-  const auto before = tomc::testing::allocation_count();
-  // Every phase at least once, also in the sanitizer builds' shorter runs.
-  const int cycles = std::max(kCycles / 10, 6 * kPhase);
-  for (int cycle = 0; cycle < cycles; ++cycle) {
-    const int phase = (cycle / kPhase) % 6;
-    const int t = cycle % kPhase;
-    m.move_velocity.Velocity = (phase % 2 == 0 ? 20.0 : -20.0);
-    m.move_velocity.Execute = t < 5 && phase < 4;
-    m.halt.Execute = t >= 800 && t < 805;
-    set_sensor.Sensor = static_cast<std::int16_t>(1 + (phase + t / 100) % 2);
-    set_sensor.Mode = (t / 100) % 4;
-    set_sensor.ReferenceSensor = static_cast<std::int16_t>(1 + phase % 2);
-    set_sensor.Execute = t % 100 >= 50 && t % 100 < 52;
-    if (phase == 4 && t == 100) m.drive->inject_encoder_error(2, 1);
-    if (phase == 4 && t == 300) m.drive->clear_encoder_error(2);
-    m.reset.Restart = phase == 5;
-    m.reset.Execute = (phase == 4 && t >= 400 && t < 410) || (phase == 5 && t >= 900 && t < 910);
-    if (phase == 5 && t == 850) m.power.Enable = false;
-    if (phase == 0 && t == 0) m.power.Enable = true;
-    m.home.Mode = 13;
-    m.home.Sensor = 2;
-    m.home.Position = 1.0;
-    m.home.Execute = phase == 1 && t >= 600 && t < 602;
-    m.run(1);
-    if (set_sensor.Done) ++switches;
-    if (m.axis->alarms().pending(techobjects::kAlarmAdditionalSensorFault)) ++errors;
-    if (m.reset.Done && m.reset.Restart) ++restarts;
+  for (const std::uint32_t kind : {0u, 1u, 2u}) {  // on a drive, simulated, virtual
+    SCOPED_TRACE(kind);
+    auto data = tomc::testing::linear_axis_data();
+    data.Sensor[1].Existent = true;
+    data.Sensor[1].Interface.Number = 2;
+    data.Sensor[1].MountingMode = 1;  // load side
+    data.PositionControl.SmoothingTimeByChangeDifference = 0.005;
+    data.Simulation.Mode = kind == 1 ? techobjects::kModeOn : 0;
+    data.VirtualAxis.Mode = kind == 2 ? techobjects::kModeOn : 0;
+    PositioningAxisMachine m(data, tomc::testing::linear_drive(), 4, kind == 0);
+    instructions::MC_SetSensor<techobjects::PositioningAxis> set_sensor;
+    m.user = [&] { set_sensor(*m.axis); };
+    ASSERT_GT(m.enable(), 0);
+    ASSERT_TRUE(m.home_at(0.0));
+    constexpr int kPhase = 1000;
+    long switches = 0, errors = 0, restarts = 0;
+    const auto before = tomc::testing::allocation_count();
+    // Every phase at least once, also in the sanitizer builds' shorter runs.
+    const int cycles = std::max(kCycles / 10, 6 * kPhase);
+    for (int cycle = 0; cycle < cycles; ++cycle) {
+      const int phase = (cycle / kPhase) % 6;
+      const int t = cycle % kPhase;
+      m.move_velocity.Velocity = (phase % 2 == 0 ? 20.0 : -20.0);
+      m.move_velocity.Execute = t < 5 && phase < 4;
+      m.halt.Execute = t >= 800 && t < 805;
+      set_sensor.Sensor = static_cast<std::int16_t>(1 + (phase + t / 100) % 2);
+      set_sensor.Mode = (t / 100) % 4;
+      set_sensor.ReferenceSensor = static_cast<std::int16_t>(1 + phase % 2);
+      set_sensor.Execute = t % 100 >= 50 && t % 100 < 52;
+      if (kind == 0 && phase == 4 && t == 100) m.drive->inject_encoder_error(2, 1);
+      if (kind == 0 && phase == 4 && t == 300) m.drive->clear_encoder_error(2);
+      m.reset.Restart = phase == 5;
+      m.reset.Execute = (phase == 4 && t >= 400 && t < 410) || (phase == 5 && t >= 900 && t < 910);
+      if (phase == 5 && t == 850) m.power.Enable = false;
+      if (phase == 0 && t == 0) m.power.Enable = true;
+      m.home.Mode = 13;
+      m.home.Sensor = 2;
+      m.home.Position = 1.0;
+      m.home.Execute = phase == 1 && t >= 600 && t < 602;
+      m.run(1);
+      if (set_sensor.Done) ++switches;
+      if (m.axis->alarms().pending(techobjects::kAlarmAdditionalSensorFault)) ++errors;
+      if (m.reset.Done && m.reset.Restart) ++restarts;
+    }
+    const auto allocated = tomc::testing::allocation_count() - before;
+    EXPECT_EQ(allocated, 0u);
+    EXPECT_GT(switches, 0);
+    EXPECT_EQ(errors > 0, kind == 0);
+    EXPECT_GT(restarts, 0);
   }
-  const auto allocated = tomc::testing::allocation_count() - before;
-  EXPECT_EQ(allocated, 0u);
-  EXPECT_GT(switches, 0);
-  EXPECT_GT(errors, 0);
-  EXPECT_GT(restarts, 0);
 }
 
 // The superimposed MotionIn jobs (issue 18) allocate nothing: two virtual axes, TO_2 a possible

@@ -348,6 +348,15 @@ TEST(MoveSuperimposed, TotalVelocityStaysWithinTheLimitAndTheDistanceIsShown) {
 // MaxVelocity 1000 mm/s; MoveSuperimposed with Acceleration = Deceleration = 1000 mm/s², VelocityDiff 100.
 // The base ramps with `base_ramp` mm/s² for 100 mm/s; the superimposed job starts `delay` ms into the ramp.
 // Every cycle: |total acceleration| <= 1000 and the total's velocity change <= 1000 mm/s² x 1 ms.
+// MaxVelocity 1000 mm/s, MaxAcceleration = MaxDeceleration = 1000 mm/s².
+tomc::techobjects::PositioningAxisData thousand_limits_data() {
+  auto data = tomc::testing::linear_axis_data();
+  data.DynamicLimits.MaxVelocity = 1000.0;
+  data.DynamicLimits.MaxAcceleration = 1000.0;
+  data.DynamicLimits.MaxDeceleration = 1000.0;
+  return data;
+}
+
 struct AccelerationHeadroomCase {
   const char* name;
   double base_from, base_to, base_ramp;  // MoveVelocity from -> to (mm/s) at base_ramp mm/s²
@@ -370,16 +379,15 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
       // more for the 100 ms of the ramp (-20 mm/s, -1 mm), then -1 mm from -20 mm/s at 1000:
       // peak sqrt((2·1000·1 + 20²)/2) = 34.64 -> 14.64 + 34.64 ms. Without U16: 2·sqrt(2/1000) s = 89.44 ms.
       {"base decelerates at 800", 100.0, 20.0, 800.0, 0, -2.0, 0.0, 100.0 + 14.64 + 34.64},
-      // Jerk-limited base ramp and job (10^5 mm/s³): the headroom changes in every cycle of the base's jerk
-      // phases; the limit of the total holds there too (no closed-form Done time).
+      // Jerk-limited base ramp and job, MaxJerk 10^5 mm/s³ (U17): the headroom changes in every cycle of the
+      // base's jerk phases, and the superimposed jerk is what the base's leaves of MaxJerk; the total's
+      // acceleration and jerk stay within the limits in every cycle (no closed-form Done time).
       {"base and job jerk-limited", 0.0, 100.0, 800.0, 5, 10.0, 0.0, -1.0, 1e5},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
-    auto data = tomc::testing::linear_axis_data();
-    data.DynamicLimits.MaxVelocity = 1000.0;
-    data.DynamicLimits.MaxAcceleration = 1000.0;
-    data.DynamicLimits.MaxDeceleration = 1000.0;
+    auto data = thousand_limits_data();
+    data.DynamicLimits.MaxJerk = c.jerk;  // 0: no jerk limit
     SuperimposedMachine m(data);
     ASSERT_GT(m.enable(), 0);
     m.move_velocity.Acceleration = 1000.0;
@@ -404,6 +412,7 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
     m.move_superimposed.Jerk = c.jerk;
     m.move_superimposed.Execute = true;
     double steepest = 0.0, steepest_change = 0.0, velocity = m.db().Velocity;
+    double sharpest = 0.0, acceleration = m.db().Acceleration;  // the total's jerk, mm/s³
     int cycles = 0;
     ASSERT_GT(m.run_until(
                   [&] {
@@ -411,7 +420,9 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
                     steepest = std::max(steepest, std::fabs(m.db().Acceleration));
                     steepest_change =
                         std::max(steepest_change, std::fabs(m.db().Velocity - velocity) / 0.001);
+                    sharpest = std::max(sharpest, std::fabs(m.db().Acceleration - acceleration) / 0.001);
                     velocity = m.db().Velocity;
+                    acceleration = m.db().Acceleration;
                     if (cycles < c.still_for - 1) {
                       EXPECT_EQ(m.db().StatusPositioning.SuperimposedDistance, 0.0) << cycles;
                     }
@@ -421,12 +432,62 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
               0);
     EXPECT_LE(steepest, 1000.0 + 1e-6);
     EXPECT_LE(steepest_change, 1000.0 + 1e-6);
+    if (c.jerk > 0.0) {
+      EXPECT_LE(sharpest, c.jerk * (1.0 + 1e-6));
+    }
     if (c.done_after >= 0.0) {
       EXPECT_NEAR(cycles, c.done_after, 3.0);
     }
     EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, c.distance, 1e-9);
     EXPECT_NEAR(m.db().Velocity, c.base_to, 1e-9);
   }
+}
+
+// Seed 004 §6.7.10.1 "the total motion is limited to the configured dynamic limits", for MC_HaltSuperimposed
+// too (§6.7.10.2; decision U17). Limits 1000 mm/s²; a base MoveVelocity ramps to +100 mm/s at 1000 mm/s²
+// (100 ms) and a superimposed move, started a cycle later, reaches -50 mm/s (VelocityDiff 50, 1000 mm/s²)
+// 50 ms into it, when MC_HaltSuperimposed (Deceleration 1000) comes: braking the superimposed part would add
+// 1000 mm/s² to the base's 1000, so it holds -50 mm/s for the rest of the base ramp (about 49 ms) and brakes
+// in the 50 ms after it, travelling -1.25 - 50 mm/s · rest - 1.25 mm; every cycle |Acceleration| and
+// |ΔVelocity|/1 ms <= 1000 (2000 without U17).
+TEST(HaltSuperimposed, BrakesWithinWhatTheBaseMotionLeaves) {
+  SuperimposedMachine m(thousand_limits_data());
+  ASSERT_GT(m.enable(), 0);
+  m.move_velocity.Velocity = 100.0;
+  m.move_velocity.Acceleration = 1000.0;
+  m.move_velocity.Jerk = 0.0;
+  m.move_velocity.Execute = true;
+  m.run(1);
+  m.move_superimposed.Distance = -100.0;
+  m.move_superimposed.VelocityDiff = 50.0;
+  m.move_superimposed.Acceleration = 1000.0;
+  m.move_superimposed.Deceleration = 1000.0;
+  m.move_superimposed.Jerk = 0.0;
+  m.move_superimposed.Execute = true;
+  ASSERT_GT(m.run_until([&] { return m.axis->superimposed().state().velocity <= -50.0 + 1e-9; }, 200), 0);
+  const double start = m.db().StatusPositioning.SuperimposedDistance;
+  EXPECT_NEAR(start, -1.25, 0.06);
+  const double rest = (100.0 - (m.db().Velocity + 50.0)) / 1000.0;  // s of the base ramp left
+  EXPECT_NEAR(rest, 0.049, 0.0015);
+  m.halt_superimposed.Deceleration = 1000.0;
+  m.halt_superimposed.Jerk = 0.0;
+  m.halt_superimposed.Execute = true;
+  double steepest = 0.0, steepest_change = 0.0, velocity = m.db().Velocity;
+  const int cycles = m.run_until(
+      [&] {
+        steepest = std::max(steepest, std::fabs(m.db().Acceleration));
+        steepest_change = std::max(steepest_change, std::fabs(m.db().Velocity - velocity) / 0.001);
+        velocity = m.db().Velocity;
+        return m.halt_superimposed.Done;
+      },
+      1000);
+  ASSERT_GT(cycles, 0);
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  EXPECT_LE(steepest, 1000.0 + 1e-6);
+  EXPECT_LE(steepest_change, 1000.0 + 1e-6);
+  EXPECT_NEAR(cycles, rest * 1000.0 + 50.0, 3.0);
+  EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, start - 50.0 * rest - 1.25, 0.1);
+  EXPECT_NEAR(m.db().Velocity, 100.0, 1e-9);
 }
 
 // Limits apply to the total motion (spec 01 §8.14, spec 02 §4.5): a base move to 150 mm plus 100 mm

@@ -86,6 +86,8 @@ inline constexpr std::uint16_t kInvalidSensor = 0x811A;      // MC_Home.Sensor n
 // MC_SetSensor (decision B4): Sensor/ReferenceSensor not 1...4 or no configured encoder of the axis
 inline constexpr std::uint16_t kSensorNotConfigured = 0x811B;
 inline constexpr std::uint16_t kSensorSwitchBlocked = 0x811C;  // MC_SetSensor while MC_Home or a restart runs
+// MC_SetSensor Mode 0/1 away from encoder 1 on a simulated axis (seed 004 §6.1.7, decision B7)
+inline constexpr std::uint16_t kSensorSwitchSimulated = 0x811D;
 inline constexpr std::uint16_t kRestartNeedsDisabledAxis = 0x8120;  // MC_Reset.Restart while enabled or busy
 inline constexpr std::uint16_t kInvalidParameterNumber =
     0x8130;  // MC_WriteParameter: index not writable on this TO

@@ -321,6 +321,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void write_additional_encoder_controls() noexcept;
   void power_up_additional_encoders() noexcept;  // absolute ones with their retained adjustment
   void update_additional_encoder_status() noexcept;
+  // A simulated axis (decision B7): every other encoder reads the simulated load travel of this servo cycle
+  // through its own mechanics; seed_simulated_encoder() gives its chain `counts` Gx_XIST1 increments (and
+  // an absolute encoder the matching Gx_XIST2) as its first value after power-up or restart.
+  void simulate_additional_encoders(double travel) noexcept;
+  void seed_simulated_encoder(AdditionalEncoder& e, std::int64_t counts) noexcept;
+  // Encoder n's continuous position (the operative one of a virtual or simulated axis: the axis' own).
+  double sensor_position(std::uint32_t n) noexcept;
   // The encoder Sensor[n] becomes the operative one: channel, retained data and fault state change places
   // with the additional encoder n (no allocation). n must exist.
   std::uint32_t make_operative(std::uint32_t n) noexcept;
@@ -424,6 +431,8 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
   bool blocked() const noexcept { return core_.blocked(); }
   bool virtual_axis() const noexcept { return device_ == nullptr; }
+  // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6).
+  bool simulated() const noexcept { return device_ == nullptr && db_.VirtualAxis.Mode != kModeOn; }
   bool homed() const noexcept;
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }

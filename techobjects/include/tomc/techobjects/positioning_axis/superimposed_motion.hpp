@@ -10,9 +10,10 @@
 // is replanned (from the present superimposed state, with the job's jerk) whenever that headroom falls below
 // the planned velocity or rises again. The same holds for the acceleration (seed 004 §6.7.10.1: "the dynamics
 // of the superimposed motion are at most the difference between the base motion's present dynamic values and
-// the dynamic limits"): a move's superimposed acceleration stays within what the base leaves of
-// MaxAcceleration / MaxDeceleration in each direction; where the profile asks for more, the cycle takes the
-// headroom and the profile is replanned from that state (decisions U4, U16).
+// the dynamic limits"): a move's or halt's superimposed acceleration stays within what the base leaves of
+// MaxAcceleration / MaxDeceleration in each direction, and its change per cycle within what the base's jerk
+// leaves of MaxJerk; where the profile asks for more, the cycle takes the headroom and the profile is
+// replanned from that state (decisions U4, U16, U17).
 //
 // MC_MotionInSuperimposed and MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4, seed 004 §6.14.3) set the
 // superimposed part directly: no profile, no limits; the distance they give is the absolute value of the
@@ -63,12 +64,15 @@ class SuperimposedMotion {
   bool motion_in() const noexcept { return job_ == Job::kMotionIn || job_ == Job::kMotionInAxes; }
 
   // What the base motion leaves of the dynamic limits in this cycle, in each direction (+inf: no limit, e.g.
-  // a following axis, spec 01 §8.14). A value <= 0 leaves nothing in that direction.
+  // a following axis, spec 01 §8.14). A value <= 0 leaves nothing in that direction. The jerk: how fast the
+  // superimposed acceleration may rise / fall in this cycle, MaxJerk ∓ the base's jerk (decision U17).
   struct Headroom {
     double velocity_positive;
     double velocity_negative;
     double acceleration_positive;
     double acceleration_negative;
+    double jerk_positive;
+    double jerk_negative;
   };
   // One interpolator cycle. Returns true in the cycle the job's motion is complete (the job itself is ended
   // by the caller: end_job()).
@@ -88,9 +92,11 @@ class SuperimposedMotion {
 
  private:
   void replan(double velocity_limit) noexcept;
-  // kMove: the acceleration of the cycle's profile sample beyond the acceleration headroom is cut to it (the
-  // state integrated from `before` with the cut acceleration) and the profile replanned from there.
-  void limit_acceleration(const MotionState& before, double dt, const Headroom& headroom) noexcept;
+  void plan_halt() noexcept;  // kHalt: braking to standstill from the present state with the job's limits
+  // kMove, kHalt: the acceleration of the cycle's sample (its last one, the step to the end, included)
+  // beyond the acceleration or jerk headroom is cut to it (the state integrated from `before` with the cut
+  // acceleration) and the profile replanned from there. Returns true when it cut.
+  bool limit_acceleration(const MotionState& before, double dt, const Headroom& headroom) noexcept;
 
   // The source of the superimposed part: a profile (kMove, kHalt), or MC_MotionInSuperimposed's inputs of the
   // last call (kMotionIn: the absolute superimposition; no profile runs then, so they take no extra bytes).
@@ -104,6 +110,9 @@ class SuperimposedMotion {
   JobId id_ = 0;
   Job job_ = Job::kNone;
   bool planned_ = false;  // a profile is running
+  // MC_HaltSuperimposed with AbortAcceleration: the next cycle takes the acceleration step the manual asks
+  // for, outside the jerk headroom (U17). In the padding after planned_: no growth.
+  bool abort_step_ = false;
 };
 
 }  // namespace tomc::techobjects
