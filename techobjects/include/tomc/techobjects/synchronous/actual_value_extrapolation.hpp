@@ -55,7 +55,6 @@ class ActualValueExtrapolation {
 
  private:
   ExtrapolationConfig config_{};
-  bool started_ = false;
   double position_stage1_ = 0.0;
   double position_stage2_ = 0.0;
   double velocity_stage1_ = 0.0;
@@ -65,7 +64,8 @@ class ActualValueExtrapolation {
   double extrapolated_ = 0.0;
   double output_position_ = 0.0;
   double output_velocity_ = 0.0;
-  int direction_ = 0;  // of the hysteresis: +1, -1, 0 (none yet)
+  int direction_ = 0;     // of the hysteresis: +1, -1, 0 (none yet)
+  bool started_ = false;  // beside direction_: no padding (decision M10)
 };
 
 }  // namespace tomc::techobjects
