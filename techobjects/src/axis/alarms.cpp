@@ -90,6 +90,14 @@ std::string_view to_string(AlarmReaction reaction) noexcept {
   return "?";
 }
 
+// PendingAlarm keeps the number in 16 bits (decision M8): every number of the table must fit.
+static_assert([] {
+  for (const auto& a : kAlarms) {
+    if (a.number > 0xFFFFu) return false;
+  }
+  return true;
+}());
+
 const AlarmDefinition* find_alarm(std::uint32_t number) noexcept {
   for (const auto& a : kAlarms) {
     if (a.number == number) return &a;
@@ -190,15 +198,16 @@ bool AlarmList::raise(std::uint32_t number, std::uint32_t additional_value, Alar
   if (definition == nullptr) return false;
   if (pending(number)) return true;
   if (count_ == kCapacity) return false;
-  alarms_[count_++] = PendingAlarm{number, additional_value, definition->alarm_class, reaction, cycle};
+  alarms_[count_++] = PendingAlarm{static_cast<std::uint16_t>(number), definition->alarm_class, reaction,
+                                   additional_value, cycle};
   record(AlarmEvent{0, cycle, AlarmEvent::Kind::kRaised, number, additional_value, reaction});
   return true;
 }
 
 std::size_t AlarmList::acknowledge(bool restart, std::uint64_t cycle) noexcept {
-  std::size_t kept = 0;
+  std::uint32_t kept = 0;
   std::size_t cleared = 0;
-  for (std::size_t i = 0; i < count_; ++i) {
+  for (std::uint32_t i = 0; i < count_; ++i) {
     const PendingAlarm& a = alarms_[i];
     if (a.alarm_class != AlarmClass::kRestart || restart) {
       record(AlarmEvent{0, cycle, AlarmEvent::Kind::kAcknowledged, a.number, a.additional_value, a.reaction});

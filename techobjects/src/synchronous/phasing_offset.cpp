@@ -133,7 +133,8 @@ Submission SynchronousOperation::start_shift(const ShiftJob& prepared, double ta
   if (j.delta == 0.0) {
     FinishedShift& finished = finished_of(prepared.phasing);
     finished.id = axis_.jobs().create(kind, JobState::kDone);
-    finished.outputs = ShiftJobOutputs{false, shift.value, 0.0};
+    finished.absolute = shift.value;
+    finished.covered = 0.0;
     return Submission::accept(finished.id);
   }
   // Direction 1/2 fix the direction; 3 takes it from the leading value's motion (profile 2: at the crossing).
@@ -150,7 +151,8 @@ void SynchronousOperation::end_shift(JobState state, std::uint16_t error_id) noe
   const Shift& shift = shift_of(job.phasing);
   FinishedShift& finished = finished_of(job.phasing);
   finished.id = job.id;
-  finished.outputs = ShiftJobOutputs{false, shift.value, shift.value - job.from};
+  finished.absolute = shift.value;
+  finished.covered = shift.value - job.from;
   job = ShiftJob{};
 }
 
@@ -271,8 +273,8 @@ ShiftJobOutputs SynchronousOperation::shift_outputs(JobId job) const noexcept {
     const Shift& shift = shift_job_.phasing ? phase_shift_ : offset_;
     return ShiftJobOutputs{!shift_job_.waiting, shift.value, shift.value - shift_job_.from};
   }
-  if (phasing_finished_.id == job) return phasing_finished_.outputs;
-  if (offset_finished_.id == job) return offset_finished_.outputs;
+  if (phasing_finished_.id == job) return phasing_finished_.outputs();
+  if (offset_finished_.id == job) return offset_finished_.outputs();
   return {};
 }
 

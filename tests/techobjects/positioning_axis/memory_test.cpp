@@ -17,6 +17,7 @@
 #include "tomc/techobjects/runtime/runtime.hpp"
 #include "tomc/techobjects/speed_axis/speed_axis.hpp"
 #include "tomc/techobjects/synchronous/synchronous_axis.hpp"
+#include "tomc/telegrams/signals.hpp"
 
 namespace {
 
@@ -26,17 +27,23 @@ using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
 
 constexpr std::size_t kAxisBudget = 8192;
-// The layout as measured with decision M6 (docs/performance.md "Memory per axis"); each guard below fails if
-// it grows back. A one-encoder positioning axis (8,128 before M5, 7,840 before M6) and each further encoder
-// (400 before M5, 312 before M6): two encoders fit the 8,192 bytes with 200 to spare, three take 8,224, four
-// 8,456.
-constexpr std::size_t kPositioningAxisSize = 7760;
+// The layout as measured with decisions M8-M10 (docs/performance.md "Memory per axis"); each guard below
+// fails if it grows back. A one-encoder positioning axis (8,128 before M5, 7,840 before M6, 7,760 before M8)
+// and each further encoder (400 before M5, 312 before M6): two and three encoders fit the 8,192 bytes (7,792,
+// 8,024), four take 8,256.
+constexpr std::size_t kPositioningAxisSize = 7560;
 constexpr std::size_t kAdditionalEncoderSize = 232;
 // What TO_SynchronousAxis adds to a positioning axis (its SynchronousOperation): 1,760 bytes before the job
 // slots were shared (decision C17), 1,504 since, 1,464 without the job states' padding (M5), 1,240 since the
-// phasing travel keeps only its segment in progress (M6). With it the synchronous axis is 9,064 bytes, not
-// yet within the 8,192 (docs/performance.md "Memory per axis").
-constexpr std::size_t kSynchronousOperationBudget = 1240;
+// phasing travel keeps only its segment in progress (M6), 1,224 since a finished shift job keeps two LREALs
+// (M10). With it the synchronous axis is 8,848 bytes, not yet within the 8,192 (docs/performance.md "Memory
+// per axis").
+constexpr std::size_t kSynchronousOperationBudget = 1224;
+
+// The records every axis TO holds several of (decisions M8, M9): 16 pending alarms, four setpoint and four
+// actual telegram signal sets in its drive connection.
+static_assert(sizeof(techobjects::PendingAlarm) <= 16);
+static_assert(sizeof(telegrams::SetpointSignals) <= 32 && sizeof(telegrams::ActualSignals) <= 36);
 
 // A runtime with one positioning axis on a simulated drive (telegram 3) and one virtual one.
 struct Machine {
@@ -98,7 +105,8 @@ TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
             sizeof(techobjects::SynchronousOperation) + 2 * sizeof(techobjects::LeadingValueInterconnection) +
                 2 * sizeof(techobjects::TechnologyObject*));
   EXPECT_LE(sizeof(techobjects::SynchronousOperation), kSynchronousOperationBudget);
-  // The whole axis: its positioning part may not grow back either (9,696 before M5, 9,368 before M6).
+  // The whole axis: its positioning part may not grow back either (9,696 before M5, 9,368 before M6, 9,064
+  // before M8).
   EXPECT_LE(footprint, kPositioningAxisSize + kSynchronousOperationBudget + 2 * 32);
   std::printf("SynchronousAxis footprint %zu (SynchronousOperation %zu)\n", footprint,
               sizeof(techobjects::SynchronousOperation));
@@ -180,9 +188,9 @@ struct FourEncoderDevice {
 };
 
 // The budgets with several encoders, in a runtime (the start values went to its load memory), each encoder
-// beyond the first 232 bytes of heap: one and two encoders within the 8,192 bytes (7,760, 7,992), three at
-// 8,224 and four at 8,456 (32 and 264 above them, docs/performance.md "Memory per axis").
-TEST(MemoryPerAxis, TwoEncodersWithinEightKiBThreeAndFourAtTheirStatedCost) {
+// beyond the first 232 bytes of heap: one to three encoders within the 8,192 bytes (7,560, 7,792, 8,024),
+// four at 8,256 (64 above them, docs/performance.md "Memory per axis").
+TEST(MemoryPerAxis, ThreeEncodersWithinEightKiBFourAtItsStatedCost) {
   FourEncoderDevice d;
   const auto in_runtime = [&](std::size_t encoders, const char* name) -> PositioningAxis& {
     return d.runtime.emplace<PositioningAxis>(name, &d.io(), encoders_data(encoders));
@@ -197,7 +205,7 @@ TEST(MemoryPerAxis, TwoEncodersWithinEightKiBThreeAndFourAtTheirStatedCost) {
     const std::size_t footprint = axes[n - 1]->memory_footprint();
     EXPECT_EQ(footprint, sizeof(PositioningAxis) + (n - 1) * sizeof(techobjects::AdditionalEncoder)) << n;
     EXPECT_LE(footprint, kPositioningAxisSize + (n - 1) * kAdditionalEncoderSize) << n;
-    if (n <= 2) {
+    if (n <= 3) {
       EXPECT_LE(footprint, kAxisBudget) << n;
     }
   }

@@ -77,7 +77,9 @@ std::optional<Signal> parse_signal(std::string_view text) noexcept;
 std::int64_t raw_minimum(Signal signal) noexcept;
 std::int64_t raw_maximum(Signal signal) noexcept;
 
-// Everything the controller may send; a telegram carries a subset (see TelegramLayout).
+// Everything the controller may send; a telegram carries a subset (see TelegramLayout). Members ordered so
+// that no 32-bit value leaves a hole (32 bytes instead of 36; an axis holds six of each struct, decision M9);
+// the codecs address them by offsetof (field_moves.hpp), never by position.
 struct SetpointSignals {
   Stw1 STW1;
   std::int16_t NSOLL_A = 0;
@@ -85,10 +87,10 @@ struct SetpointSignals {
   Stw2 STW2;
   EncoderControlWord G1_STW;
   EncoderControlWord G2_STW;
+  Stw2Enc STW2_ENC;
   std::int32_t XERR = 0;
   std::int32_t KPC = 0;
   std::uint16_t MOMRED = 0;
-  Stw2Enc STW2_ENC;
   std::int16_t M_ADD1 = 0;
   std::int16_t M_LIMIT_POS = 0;
   std::int16_t M_LIMIT_NEG = 0;
@@ -100,7 +102,7 @@ struct SetpointSignals {
   friend bool operator==(const SetpointSignals&, const SetpointSignals&) = default;
 };
 
-// Everything a drive or encoder may report.
+// Everything a drive or encoder may report (36 bytes, no hole: decision M9).
 struct ActualSignals {
   Zsw1 ZSW1;
   std::int16_t NIST_A = 0;
@@ -110,10 +112,10 @@ struct ActualSignals {
   std::uint32_t G1_XIST1 = 0;
   std::uint32_t G1_XIST2 = 0;
   EncoderStatusWord G2_ZSW;
+  Zsw2Enc ZSW2_ENC;
   std::uint32_t G2_XIST1 = 0;
   std::uint32_t G2_XIST2 = 0;
   Meldw MELDW;
-  Zsw2Enc ZSW2_ENC;
   std::int16_t M_ACT = 0;
 
   std::uint32_t raw(Signal signal) const noexcept;

@@ -12,7 +12,8 @@
 namespace tomc::techobjects {
 
 // <TO>.ErrorDetail.Reaction (spec 02 §1.1).
-enum class AlarmReaction : std::int32_t {
+// One byte (decision M8): stored in every pending alarm; <TO>.ErrorDetail.Reaction (DINT) converts it.
+enum class AlarmReaction : std::uint8_t {
   kNone = 0,
   kStopCurrentDynamics = 1,
   kStopMaxDynamics = 2,
@@ -68,11 +69,13 @@ inline constexpr std::uint32_t kAlarmLeaderNotPositionControlled = 603;  // spec
 inline constexpr std::uint32_t kAlarmSynchronizationError = 608;  // leading value reversed, spec 07 §1.10
 inline constexpr std::uint32_t kAlarmCamNotInterpolated = 612;    // camming with such a cam, spec 07 §3.2
 
+// 16 bytes (24 before decision M8): the alarm numbers of the table fit 16 bits (find_alarm() admits no
+// other).
 struct PendingAlarm {
-  std::uint32_t number = 0;
-  std::uint32_t additional_value = 0;
+  std::uint16_t number = 0;
   AlarmClass alarm_class = AlarmClass::kAcknowledge;
   AlarmReaction reaction = AlarmReaction::kNone;
+  std::uint32_t additional_value = 0;
   std::uint64_t raised_cycle = 0;
 };
 
@@ -166,8 +169,8 @@ class AlarmList {
   void record(AlarmEvent event) noexcept;
 
   std::array<PendingAlarm, kCapacity> alarms_{};
-  std::size_t count_ = 0;
   AlarmLog* log_ = nullptr;
+  std::uint32_t count_ = 0;  // beside source_: no padding (decision M8)
   std::uint32_t source_ = 0;
   std::uint64_t events_ = 0;       // events raised/acknowledged so far
   std::uint64_t last_in_log_ = 0;  // the log sequence of the newest one

@@ -243,13 +243,13 @@ class AxisCore {
   bool enable = false;
   std::int32_t start_mode = 1;
   std::int32_t stop_mode = 0;
-  AlarmReaction reaction_in_force = AlarmReaction::kNone;
+  AlarmReaction reaction_in_force = AlarmReaction::kNone;  // one byte since decision M8
+  bool in_limitation = false;  // MELDW.1 while limiting (beside the one-byte reaction: no padding)
   StopJob stop{};
   CommunicationTimes communication_times{};        // in force
   CommunicationTimes communication_times_start{};  // written by MC_WriteParameter, taken at restart
   TorqueLimitingRequest torque{};                  // MC_TorqueLimiting
   TorqueDataJobs torque_data{};                    // MC_TorqueAdditive, MC_TorqueRange (telegram 750)
-  bool in_limitation = false;                      // MELDW.1 while limiting
   std::uint64_t cycle = 0;                         // interpolator cycles + 1 (0 = never)
   double ipo_cycle_s = 0.001;
   double enable_timeout_s = 2.0;

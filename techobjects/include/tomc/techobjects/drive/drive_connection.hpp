@@ -134,16 +134,17 @@ class DriveConnection {
   telegrams::ActualSignals supplementary_act_{};
   std::array<telegrams::ActualSignals, 2> encoder_act_{};
 
+  // Wider members first, the one-byte ones together: no holes (decision M10).
+  double speed_setpoint_rpm_ = 0.0;
+  double actual_speed_rpm_ = 0.0;
+  telegrams::SignOfLifeMonitor slave_monitor_{};
+  std::uint32_t missed_ = 0;
+  std::uint32_t peer_restarts_ = 0;  // LinkHealth::peer_restarts last seen
   telegrams::DriveRequest request_ = telegrams::DriveRequest::kOff;
   telegrams::Stw1Sequencer sequencer_{};
   telegrams::SignOfLifeGenerator master_{};
-  telegrams::SignOfLifeMonitor slave_monitor_{};
   telegrams::DriveStatus status_{};
   CommunicationFault communication_fault_ = CommunicationFault::kLinkLost;
-  double speed_setpoint_rpm_ = 0.0;
-  double actual_speed_rpm_ = 0.0;
-  std::uint32_t missed_ = 0;
-  std::uint32_t peer_restarts_ = 0;  // LinkHealth::peer_restarts last seen
   bool ever_fresh_ = false;
   bool has_nist_b_ = false;  // resolved once: the cycle does no layout look-ups
   bool has_zsw2_ = false;

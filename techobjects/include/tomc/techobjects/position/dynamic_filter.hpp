@@ -140,6 +140,7 @@ class DynamicFilter {
   DynamicFilterConfig config_{};
   bool active_ = false;
   bool started_ = false;
+  bool moving_average_ = false;  // the three flags together: no padding (decision M10)
   double t1_ = 0.0;
   double t2_ = 0.0;
   double tt_ = 0.0;
@@ -147,7 +148,6 @@ class DynamicFilter {
   double delay_cycles_ = 0.0;    // Tt / T_s
   std::size_t delay_whole_ = 0;  // its whole cycles
   double delay_fraction_ = 0.0;  // and the fraction (linear interpolation to the next older sample)
-  bool moving_average_ = false;
   std::unique_ptr<std::array<Channel, 3>> channels_;  // position, velocity, acceleration; null while off
 };
 

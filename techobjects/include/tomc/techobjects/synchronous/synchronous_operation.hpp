@@ -338,9 +338,11 @@ class SynchronousOperation final : public SynchronousSlot {
     double velocity = 0.0;
     double acceleration = 0.0;
   };
-  struct FinishedShift {  // the outputs of the last job of each kind after it ended
+  struct FinishedShift {  // the outputs of the last job of each kind after it ended (Start is FALSE then)
     JobId id = 0;
-    ShiftJobOutputs outputs{};
+    double absolute = 0.0;  // 24 bytes instead of 32 with a ShiftJobOutputs (decision M10)
+    double covered = 0.0;
+    ShiftJobOutputs outputs() const noexcept { return ShiftJobOutputs{false, absolute, covered}; }
   };
   struct Additive {  // the running MC_LeadingValueAdditive, in internal units
     JobId id = 0;
