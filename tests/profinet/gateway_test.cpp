@@ -95,6 +95,100 @@ TEST(GatewayConfig, AValidFileLoads) {
   EXPECT_TRUE(config.devices[0].modules.empty());  // the emulated drive's layout
 }
 
+namespace {
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The ```json blocks of a Markdown page (each with its line number), and the README's `$ cat gateway.json`.
+std::vector<std::pair<int, std::string>> json_blocks(const std::string& markdown) {
+  std::vector<std::pair<int, std::string>> blocks;
+  std::istringstream in(markdown);
+  std::string line;
+  std::string block;
+  int number = 0;
+  int start = 0;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    ++number;
+    const auto fence = line.find("```");
+    if (fence == std::string::npos) {
+      if (inside) block += line + "\n";
+    } else if (!inside && line.compare(fence, 7, "```json") == 0) {
+      inside = true;
+      start = number;
+      block.clear();
+    } else if (inside) {
+      inside = false;
+      blocks.emplace_back(start, block);
+    }
+  }
+  return blocks;
+}
+
+}  // namespace
+
+// examples/profinet_gateway.json and every gateway file printed in docs/profinet-gateway.md and the README
+// load without a problem, so the examples cannot rot. A device object alone (the GSDML example) is loaded
+// in a file of its own with the emulated drive's GSDML folder as base.
+TEST(GatewayConfig, TheExampleFileAndTheDocumentedExamplesLoad) {
+  const std::filesystem::path source(TOMC_SOURCE_DIR);
+  sc::ProfinetGatewayConfig example;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config_file(source / "examples/profinet_gateway.json", example, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  ASSERT_EQ(example.devices.size(), 3u);
+  EXPECT_DOUBLE_EQ(example.cycle_time(), 0.001);
+  // From the GSDML file: the telegram submodules' idents and PZD bytes, input = the actual telegram (spec 06
+  // §2.15, setpoint/actual words: telegram 3 5/9, 105 10/10, 750 3/1, 81 2/6).
+  const auto submodule = [](const sc::ProfinetDeviceConfig& device, std::uint32_t ident) {
+    for (const auto& module : device.modules) {
+      for (const auto& sub : module.submodules) {
+        if (sub.ident == ident) return std::pair<int, int>{sub.input_length, sub.output_length};
+      }
+    }
+    return std::pair<int, int>{-1, -1};
+  };
+  EXPECT_EQ(submodule(example.devices[0], 0x10003), (std::pair<int, int>{18, 10}));
+  EXPECT_EQ(submodule(example.devices[1], 0x10069), (std::pair<int, int>{20, 20}));
+  EXPECT_EQ(submodule(example.devices[1], 0x102EE), (std::pair<int, int>{2, 6}));
+  EXPECT_EQ(submodule(example.devices[2], 0x10051), (std::pair<int, int>{12, 4}));
+  EXPECT_EQ(example.devices[2].telegram, 0);
+  EXPECT_EQ(example.devices[2].encoder_telegram, 81);
+
+  const std::string wrapper_head =
+      R"({ "gateway": "gw-doc", "domain": 42, "profinet": { "interface": "eth1", "ip": "192.168.0.1" },
+                                        "devices": [ )";
+  int loaded = 0;
+  for (const char* page : {"docs/profinet-gateway.md", "README.md"}) {
+    std::string text = file_text(source / page);
+    std::vector<std::pair<int, std::string>> blocks = json_blocks(text);
+    for (auto cat = text.find("$ cat gateway.json\n"); cat != std::string::npos;
+         cat = text.find("$ cat gateway.json\n", cat + 1)) {
+      const auto end = text.find("\n$ ", cat + 1);
+      blocks.emplace_back(0, text.substr(cat + 19, end - cat - 19));
+    }
+    for (const auto& [line, block] : blocks) {
+      if (block.find("\"name_of_station\"") == std::string::npos) continue;  // not a gateway file
+      const sc::Json json = sc::Json::parse(block, nullptr, false);
+      ASSERT_FALSE(json.is_discarded()) << page << ":" << line << ": not JSON\n" << block;
+      const std::string file = json.contains("devices") ? block : wrapper_head + block + " ] }";
+      sc::ProfinetGatewayConfig config;
+      sc::Problems doc_problems;
+      sc::load_profinet_gateway_config(sc::Json::parse(file), config, doc_problems,
+                                       source / "drives/profinet/gsdml");
+      EXPECT_TRUE(doc_problems.empty()) << page << ":" << line << ": " << joined(doc_problems.lines());
+      EXPECT_FALSE(config.devices.empty()) << page << ":" << line;
+      ++loaded;
+    }
+  }
+  EXPECT_GE(loaded, 3);  // profinet-gateway.md's file and GSDML device, the README's file
+}
+
 TEST(GatewayConfig, EveryProblemNamesItsKey) {
   const auto lines = problems_of(R"({ "gateway": "gw1", "domain": 300,
     "profinet": { "interface": "eth1", "ip": "10.0.0", "send_clock_factor": 8, "speed": 1, "wake_margin_us": 600 },
