@@ -597,6 +597,8 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     pc.name_of_station = c.name_of_station;
     pc.ip = {c.ip, c.netmask, {}};
     pc.modules = expected_modules(c);
+    for (const scenario::ProfinetRecordConfig& r : c.records)
+      pc.startup_records.push_back({r.slot, r.subslot, r.index, r.data});
     pc.send_clock_factor = config.send_clock_factor;
     pc.reduction_ratio = config.reduction_ratio;
     pc.watchdog_factor = config.watchdog_factor;
