@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "../tests/dds/gateway_process.hpp"
+#include "build_paths.hpp"
 
 extern char** environ;
 

@@ -450,7 +450,7 @@ struct Server::Impl {
     control.capacity = l.control_queue;
     read.capacity = l.read_queue;
     exports.capacity = l.export_queue;
-    exports.low_priority = true;
+    exports.low_priority = l.export_priority == ServerLimits::ExportPriority::kIdle;
   }
 
   ServerLimits limits;
@@ -1129,12 +1129,16 @@ void Server::start() {
   ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.listen_fd, &ev);
   ev.data.u64 = kWakeId;
   ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.wake_fd, &ev);
-  for (LaneQueue* q : {&s.control, &s.read, &s.exports}) {
+  // Named for `top -H` and for the test that checks the export lane's scheduling.
+  for (auto [q, name] :
+       {std::pair{&s.control, "tomc-control"}, {&s.read, "tomc-read"}, {&s.exports, "tomc-export"}}) {
     q->stopping = false;
     q->thread = std::thread([&s, q] { s.run_lane(*q); });
+    ::pthread_setname_np(q->thread.native_handle(), name);
   }
   s.running.store(true);
   s.loop_thread = std::thread([&s] { s.loop(); });
+  ::pthread_setname_np(s.loop_thread.native_handle(), "tomc-http");
 }
 
 void Server::stop() {

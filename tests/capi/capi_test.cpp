@@ -14,6 +14,7 @@
 #include <string>
 #include <thread>
 
+#include "build_paths.hpp"
 #include "tomc/tomc.h"
 
 namespace {

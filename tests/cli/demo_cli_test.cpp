@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "build_paths.hpp"
 
 namespace {
 
@@ -98,7 +99,7 @@ TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
       {"name": "B", "type": "TO_PositioningAxis"}
     ],
     "program": {"C": {"velocities": [1]}, "A": {"dwell_s": 0}},
-    "diagnostics": {"port": 99999, "colour": "red", "allowed_hosts": ["plc7.local", 7]},
+    "diagnostics": {"port": 99999, "colour": "red", "allowed_hosts": ["plc7.local", 7], "export_priority": "high"},
     "extra": 1
   })");
   const DemoRun r = tomc({"demo", "--config", path});
@@ -107,6 +108,7 @@ TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
                                "technology_objects[1].drive: missing (a TO_PositioningAxis needs a drive",
                                "program.C: no technology object", "program.A.dwell_s", "diagnostics.port",
                                "diagnostics.allowed_hosts: expected an array of host names",
+                               "diagnostics.export_priority: expected \"idle\" (default) or \"normal\"",
                                "diagnostics.colour: unknown key", "extra: unknown key"}) {
     EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
   }

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "demo_faults.hpp"
 #include "demo_program.hpp"
 #include "tomc/drives/simulated_drive.hpp"

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "build_paths.hpp"
 
 #ifndef TOMC_BINARY
 #error "TOMC_BINARY must name build/bin/tomc"

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "gateway_process.hpp"
 #include "tomc/scenario/scenario.hpp"
 

@@ -21,6 +21,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "build_paths.hpp"
 
 #ifndef TOMC_BINARY
 #error "TOMC_BINARY must name build/bin/tomc"

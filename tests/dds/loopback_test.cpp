@@ -26,6 +26,7 @@
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 
+#include "build_paths.hpp"
 #include "tomc/drives/dds/contract.hpp"
 #include "tomc/drives/dds/participant.hpp"
 #include "tomc/drives/dds/type_support.hpp"

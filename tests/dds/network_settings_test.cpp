@@ -14,6 +14,7 @@
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
+#include "build_paths.hpp"
 #include "tomc/drives/dds/gateway_link.hpp"
 #include "tomc/drives/dds/network.hpp"
 #include "tomc/drives/dds/participant.hpp"

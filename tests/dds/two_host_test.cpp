@@ -37,6 +37,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include "build_paths.hpp"
 
 #ifndef TOMC_BINARY
 #error "TOMC_BINARY must name build/bin/tomc"

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "../diagnostics/diagnostics_fixture.hpp"
+#include "build_paths.hpp"
 #include "tomc/diagnostics/http_server.hpp"
 #include "tomc/diagnostics/server.hpp"
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
@@ -462,11 +463,14 @@ TEST(ServerAbuse, ConnectionsCloseAfterErrorsOnly) {
 }
 
 // Issue 21: 24 parallel trace.png requests of a large trace cost about 66 % of the servo cycles and 2.3 GB.
-// Exports now need the token, are rendered one at a time at idle priority and cached: 24 requests for the
-// same picture are one render. Overruns of the 1 ms cycle are printed for an idle second and for the
-// requests (not asserted: this machine's load is not the server's).
+// Exports now need the token, are rendered one at a time and cached: 24 requests for the same picture are one
+// render. Overruns of the 1 ms cycle are printed for an idle second and for the requests (not asserted: this
+// machine's load is not the server's). Normal priority here: at SCHED_IDLE (the default, D4; tested in
+// api_test.cpp) a busy CI machine starved the render for minutes (decision V13).
 TEST(ServerAbuse, ParallelTraceExportsRenderOnce) {
-  Held h;
+  diagnostics::ServerOptions options;
+  options.limits.export_priority = diagnostics::http::ServerLimits::ExportPriority::kNormal;
+  Held h(options);
   const int port = h.server->port();
   const Json request = {
       {"channels", {"Axis1.Velocity", "Axis1.telegram.drive.NIST_B", "Axis1.StatusWord.X12"}},
@@ -587,7 +591,8 @@ TEST(ServerAbuse, OutOfDescriptorsTheNewestConnectionIsServed) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, to_child[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, from_child[1], STDOUT_FILENO);
-  char path[] = TOMC_LIMITED_SERVER;
+  std::string program = TOMC_LIMITED_SERVER;
+  char* path = program.data();
   char* argv[] = {path, nullptr};
   pid_t child = 0;
   const int spawned = ::posix_spawn(&child, path, &actions, nullptr, argv, environ);

@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
+#include <sched.h>
+
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -93,8 +97,11 @@ struct Http {
   }
 };
 
+using ExportPriority = diagnostics::http::ServerLimits::ExportPriority;
+
 struct Served : Http {
-  explicit Served(std::string token = kToken, std::size_t axes = 1)
+  explicit Served(std::string token = kToken, std::size_t axes = 1,
+                  ExportPriority exports = ExportPriority::kIdle)
       : machine(axes, diagnostics::DiagnosticsConfig{5, 4096, 500}) {
     // The program's inputs are set before the cycle starts: afterwards only the API changes the machine.
     for (std::size_t i = 1; i < axes; ++i) {
@@ -106,6 +113,7 @@ struct Served : Http {
     options.port = 0;
     options.token = std::move(token);
     options.runner_statistics = [this] { return runner.statistics(); };
+    options.limits.export_priority = exports;
     owned_server = std::make_unique<diagnostics::Server>(machine.diagnostics, options);
     server = owned_server.get();
     owned_server->start();
@@ -398,7 +406,9 @@ TEST(WebApi, PositioningAxisLifebeatLossOverHttp) {
 }
 
 TEST(WebApi, TraceAndExports) {
-  Served s(kToken, 2);  // Axis2 runs under its program at 300 1/min
+  // Axis2 runs under its program at 300 1/min. Exports at normal priority: at SCHED_IDLE (the default, tested
+  // below) they wait for spare CPU, minutes on a saturated CI machine (decision V13).
+  Served s(kToken, 2, ExportPriority::kNormal);
   const Json request = {
       {"channels", {"Axis2.Velocity", "Axis2.StatusWord.X12", "Axis2.telegram.drive.NIST_B"}},
       {"trigger", {{"kind", "immediate"}}},
@@ -417,7 +427,7 @@ TEST(WebApi, TraceAndExports) {
   EXPECT_EQ(c.Get("/api/trace.csv")->status, 401);
   EXPECT_EQ(c.Get("/api/trace.png")->status, 401);
   c.set_bearer_token_auth(kToken);
-  c.set_read_timeout(60, 0);  // exports run at SCHED_IDLE: on a saturated machine they wait for spare CPU
+  c.set_read_timeout(60, 0);  // a render under TSan on a loaded machine takes seconds
   auto csv = c.Get("/api/trace.csv");
   ASSERT_TRUE(csv);
   EXPECT_EQ(csv->status, 200);
@@ -447,6 +457,32 @@ TEST(WebApi, TraceAndExports) {
   EXPECT_EQ(c.Get("/api/trace.png?width=10")->status, 400);
 }
 
+// The scheduling policy the kernel reports for the server's export lane (the thread named "tomc-export").
+int export_lane_policy() {
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream comm(task.path() / "comm");
+    std::string name;
+    std::getline(comm, name);
+    if (name == "tomc-export") return ::sched_getscheduler(std::stoi(task.path().filename().string()));
+  }
+  return -1;
+}
+
+// Decisions D4 and V13: trace exports run at SCHED_IDLE unless the user chooses "normal"
+// (`diagnostics.export_priority`), which leaves the lane at the server's own SCHED_OTHER.
+TEST(WebApi, ExportLaneRunsAtIdlePriorityUnlessNormalIsChosen) {
+  for (const auto& [priority, expected] :
+       {std::pair{ExportPriority::kIdle, SCHED_IDLE}, std::pair{ExportPriority::kNormal, SCHED_OTHER}}) {
+    Served s(kToken, 1, priority);
+    int policy = export_lane_policy();
+    const auto deadline = std::chrono::steady_clock::now() + 5s;  // the lane sets its policy when it starts
+    while (policy != expected && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(10ms);
+      policy = export_lane_policy();
+    }
+    EXPECT_EQ(policy, expected) << (priority == ExportPriority::kIdle ? "idle" : "normal");
+  }
+}
 TEST(WebApi, ServerSentEvents) {
   Served s;
   auto c = s.client();

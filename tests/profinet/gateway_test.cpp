@@ -36,6 +36,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../dds/gateway_process.hpp"
+#include "build_paths.hpp"
 #include "gateway_hosts.hpp"
 #include "netns_hosts.hpp"
 #include "tomc/drives/dds/gateway_link.hpp"
@@ -552,7 +553,7 @@ class GatewayHost {
 
 // The emulated drive's GSDML file with its drive object and the telegram-3 submodule (decision I18).
 const std::string kGsdmlModules =
-    R"(, "gsdml": ")" TOMC_GSDML_DIR R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml",
+    std::string(R"(, "gsdml": ")") + TOMC_GSDML_DIR + R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml",
     "modules": [ { "slot": 1, "module": "DO_DRIVE", "submodules": [ { "subslot": 2, "submodule": "TEL3" } ] } ])";
 
 // What tomc learns over DDS about device "axis1": the gateway's GatewayStatus entry and the link's diagnosis,
@@ -857,9 +858,10 @@ TEST(GatewayNetns, TorqueAdditiveReachesTheDriveThroughTelegram750) {
   DeviceHost device(hosts.second, options);
   GatewayHost gateway(
       hosts,
-      R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 105,
-             "supplementary_telegram": 750, "gsdml": ")" TOMC_GSDML_DIR
-      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_DRIVE",
+      std::string(R"([ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.218.0.2", "telegram": 105,
+             "supplementary_telegram": 750, "gsdml": ")") +
+          TOMC_GSDML_DIR +
+          R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_DRIVE",
              "submodules": [ { "subslot": 2, "submodule": "TEL105" }, { "subslot": 3, "submodule": "TEL750" } ] } ] } ])");
   constexpr int kCycles = 200;
   std::string failure;
@@ -903,9 +905,11 @@ TEST(GatewayNetns, AnExternalEncoderFollowsTheEmulatedEncoderThroughTheGateway) 
   DeviceHost device(hosts.second, options);
   GatewayHost gateway(
       hosts,
-      R"([ { "name": "line", "name_of_station": "drive-1", "ip": "10.218.0.2", "encoder_telegram": 81,
-             "gsdml": ")" TOMC_GSDML_DIR
-      R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_ENCODER",
+      std::string(
+          R"([ { "name": "line", "name_of_station": "drive-1", "ip": "10.218.0.2", "encoder_telegram": 81,
+             "gsdml": ")") +
+          TOMC_GSDML_DIR +
+          R"(/GSDML-V2.35-tomc-EmulatedDrive-20261127.xml", "modules": [ { "slot": 1, "module": "DO_ENCODER",
              "submodules": [ { "subslot": 2, "submodule": "TEL81" } ] } ] } ])");
   constexpr int kCycles = 201;
   std::string failure;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "build_paths.hpp"
 #include "tomc/drives/profinet_drive.hpp"
 #include "tomc/profinet/gsdml.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "tomc/scenario/scenario.hpp"
 
 namespace {

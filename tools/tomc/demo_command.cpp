@@ -431,7 +431,8 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
       problems.add("diagnostics", "expected an object");
     } else {
       only_keys(*d, "diagnostics",
-                {"bind", "allowed_hosts", "port", "token", "publish_period_cycles", "event_period_s"},
+                {"bind", "allowed_hosts", "port", "token", "publish_period_cycles", "event_period_s",
+                 "export_priority"},
                 problems);
       if (const auto v = d->find("bind"); v != d->end()) {
         if (!v->is_string() || v->get<std::string>().empty()) {
@@ -476,6 +477,14 @@ void load_demo_config(const Json& root, std::unique_ptr<techobjects::Runtime>& r
           problems.add("diagnostics.event_period_s", "expected a number 0.02 .. 10 (s)");
         } else {
           config.server.event_period = std::chrono::milliseconds(std::lround(v->get<double>() * 1000.0));
+        }
+      }
+      if (const auto v = d->find("export_priority"); v != d->end()) {
+        using Priority = diagnostics::http::ServerLimits::ExportPriority;
+        if (v->is_string() && (*v == "idle" || *v == "normal")) {
+          config.server.limits.export_priority = *v == "idle" ? Priority::kIdle : Priority::kNormal;
+        } else {
+          problems.add("diagnostics.export_priority", "expected \"idle\" (default) or \"normal\"");
         }
       }
     }

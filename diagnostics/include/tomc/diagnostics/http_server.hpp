@@ -8,7 +8,7 @@
 //   kInline   on the event thread: must not block (microseconds)
 //   kControl  control actions (panel commands); "urgent" requests go to the front of the queue
 //   kRead     JSON that is built under the diagnostics reader's lock
-//   kExport   trace exports (PNG/CSV): one at a time, at low priority (nice 10)
+//   kExport   trace exports (PNG/CSV): one at a time, at idle priority (ServerLimits::export_priority)
 //
 // Defences (docs/diagnostics.md "Security and errors"): a total deadline for the request headers and one for
 // the whole request, an idle timeout for keep-alive connections, a write timeout, a global and a per-client
@@ -118,6 +118,12 @@ struct ServerLimits {
   std::size_t control_queue = 64;
   std::size_t read_queue = 64;
   std::size_t export_queue = 32;
+  // kIdle (default): the export lane runs SCHED_IDLE, so a render never delays a cycle of a runner without
+  // SCHED_FIFO, but on a machine that is never idle an export waits for spare CPU, possibly for minutes.
+  // kNormal: the server's own scheduling, for a runtime whose cycle runs SCHED_FIFO (a render cannot delay
+  // it) or a machine that is always busy (decision V13).
+  enum class ExportPriority : std::uint8_t { kIdle, kNormal };
+  ExportPriority export_priority = ExportPriority::kIdle;
 };
 
 struct ServerStatistics {
