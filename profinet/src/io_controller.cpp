@@ -42,6 +42,10 @@ std::vector<std::uint8_t> IoController::on_dcp(std::span<const std::uint8_t> fra
   const bool hello = message.service == DcpService::kHello;
   if (!in.ok() || !(answer || hello) || message.fields.name_of_station != device_.name_of_station) return {};
   device_mac_ = header.source;
+  // The RPC object UUID names the device by these (pnio_object_uuid); a device without the DeviceID block
+  // keeps the zeros it will then refuse, which the Connect's RPC Reject reports.
+  device_object_ =
+      pnio_object_uuid(1, message.fields.device_id.value_or(0), message.fields.vendor_id.value_or(0));
   if (message.fields.ip == device_.ip) return {};
   std::vector<std::uint8_t> bytes(1514);
   WireWriter out(bytes);
@@ -53,7 +57,7 @@ std::vector<std::uint8_t> IoController::on_dcp(std::span<const std::uint8_t> fra
 std::vector<std::uint8_t> IoController::rpc_request(PnioOperation operation,
                                                     std::span<const std::uint8_t> blocks) {
   RpcHeader header;
-  header.object = pnio_object_uuid(1, 0, 0);
+  header.object = device_object_;
   header.interface = kPnioDeviceInterface;
   header.activity = activity_;
   header.sequence_number = sequence_++;
@@ -72,6 +76,8 @@ std::vector<std::uint8_t> IoController::connect_request() {
   request.ar.ar_uuid = ar_uuid_;
   request.ar.session_key = session_key_;
   request.ar.initiator_mac = own_mac_;
+  // CMInitiatorObjectUUID: the controller's own instance. tomc has no PNO VendorID/DeviceID of its own, so
+  // both stay 0; devices check only the DEA00000-6C97-11D1-8271 prefix (p-net pf_cmdev.c).
   request.ar.initiator_object_uuid = pnio_object_uuid(1, 0, 0);
   request.ar.station_name = own_name_;
   IocrBlockRequest input;
@@ -128,6 +134,9 @@ std::vector<std::uint8_t> IoController::connect_request() {
   }
   request.iocrs = {input, output};
   request.expected = device_.modules;
+  // A new AR starts both alarm channels afresh (the device's APMR expects SendSeqNum 0xFFFF first).
+  alarm_channels_ = {};
+  alarm_retries_ = request.alarm_cr.rta_retries;
   std::vector<std::uint8_t> blocks(8192);
   WireWriter out(blocks);
   encode(request, out);
@@ -183,11 +192,19 @@ bool IoController::check_response(std::span<const std::uint8_t> payload, RpcPack
                                   bool abort_on_error) {
   WireReader in(payload);
   packet = decode_rpc(in);
-  if (!in.ok() || packet.header.packet_type != RpcPacketType::kResponse ||
-      packet.header.activity != activity_ || packet.header.sequence_number + 1 != sequence_) {
+  const RpcPacketType type = packet.header.packet_type;
+  const bool refusal = type == RpcPacketType::kReject || type == RpcPacketType::kFault;
+  if (!in.ok() || (type != RpcPacketType::kResponse && !refusal) || packet.header.activity != activity_ ||
+      packet.header.sequence_number + 1 != sequence_) {
     return false;  // not the answer to our last request
   }
   waiting_ = false;
+  last_reject_ = refusal ? packet.reject_status : 0;
+  if (refusal) {
+    last_error_ = {};
+    if (abort_on_error) abort_ar();
+    return false;
+  }
   if (!packet.status.ok()) {
     last_error_ = packet.status;
     if (abort_on_error) abort_ar();
@@ -450,32 +467,56 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
                                    std::size_t& alarm_ack_bytes) noexcept {
   ack_bytes = alarm_ack_bytes = 0;
   RtaFrame received;
-  if (!device_mac_ || decode_rta(frame, received) != ProfinetError::kNone) return 0;
-  if (received.pdu_type != RtaPduType::kData || !received.has_block || received.block.is_ack) return 0;
+  if (!device_mac_ || state_ == ControllerArState::kOffline ||
+      decode_rta(frame, received) != ProfinetError::kNone)
+    return 0;
   // Only this AR's device: with several devices on one interface, each alarm is its sender's.
   if (frame.size() < 12 || !std::equal(device_mac_->begin(), device_mac_->end(), frame.begin() + 6)) return 0;
-  const EthernetHeader header{
-      *device_mac_, own_mac_,
-      VlanTag{received.block.high_priority ? kPriorityAlarmHigh : kPriorityAlarmLow, 0}};
+  const bool high = received.frame_id == kFrameIdAlarmHigh;
+  AlarmChannel& apm = channel(high);
+  // Any PDU of the device acknowledges our AlarmAck when its AckSeqNum names it.
+  if (apm.unacknowledged && received.ack_sequence == apm.last_sent) apm.unacknowledged = false;
+  if (received.pdu_type != RtaPduType::kData || !received.has_block || received.block.is_ack) return 0;
+  const bool repeated = apm.received == received.send_sequence;
+  const EthernetHeader header{*device_mac_, own_mac_,
+                              VlanTag{high ? kPriorityAlarmHigh : kPriorityAlarmLow, 0}};
   RtaFrame transport;
   transport.frame_id = received.frame_id;
   transport.destination_endpoint = received.source_endpoint;
   transport.source_endpoint = received.destination_endpoint;
   transport.pdu_type = RtaPduType::kAck;
   transport.tack = false;
-  transport.send_sequence = static_cast<std::uint16_t>(alarm_send_sequence_ - 1);
+  transport.send_sequence = apm.last_sent;
   transport.ack_sequence = received.send_sequence;
+  if (encode(header, transport, ack_out, ack_bytes) != ProfinetError::kNone) return 0;
+  if (repeated) {
+    // A resend of the notification: our ACK was lost. Our AlarmAck goes again, with its SendSeqNum, until
+    // the device acknowledges it or RTARetries resends are used up.
+    if (!apm.unacknowledged || apm.resends >= alarm_retries_ || alarm_ack_out.size() < apm.alarm_ack_bytes)
+      return 1;
+    ++apm.resends;
+    std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, alarm_ack_out.begin());
+    alarm_ack_bytes = apm.alarm_ack_bytes;
+    return 2;
+  }
   RtaFrame ack = transport;
   ack.pdu_type = RtaPduType::kData;
   ack.tack = true;
-  ack.send_sequence = alarm_send_sequence_;
+  ack.send_sequence = apm.send_sequence;
   ack.has_block = true;
   ack.block = alarm_ack_for(received.block);
-  if (encode(header, transport, ack_out, ack_bytes) != ProfinetError::kNone ||
-      encode(header, ack, alarm_ack_out, alarm_ack_bytes) != ProfinetError::kNone) {
+  if (encode(header, ack, apm.alarm_ack, apm.alarm_ack_bytes) != ProfinetError::kNone ||
+      alarm_ack_out.size() < apm.alarm_ack_bytes) {
+    ack_bytes = 0;
     return 0;
   }
-  ++alarm_send_sequence_;
+  std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, alarm_ack_out.begin());
+  alarm_ack_bytes = apm.alarm_ack_bytes;
+  apm.last_sent = apm.send_sequence;
+  apm.send_sequence = static_cast<std::uint16_t>((apm.send_sequence + 1) & 0x7FFF);  // 0xFFFF, 0 .. 0x7FFF
+  apm.received = received.send_sequence;
+  apm.unacknowledged = true;
+  apm.resends = 0;
   last_alarm_ = received.block;
   ++alarms_acknowledged_;
   return 2;

@@ -128,6 +128,15 @@ std::vector<std::uint8_t> IoDevice::on_rpc(std::span<const std::uint8_t> payload
       packet.header.interface != kPnioDeviceInterface) {
     return {};
   }
+  // A request to another object than this device's instance (another VendorID/DeviceID, or the zeros of a
+  // controller that did not read the DCP DeviceID block) is rejected before any PNIO processing, as a DCE/RPC
+  // server does for an object it does not export.
+  if (packet.header.object != pnio_object_uuid(1, identity_.device_id, identity_.vendor_id)) {
+    std::vector<std::uint8_t> bytes(kRpcHeaderBytes + 4);
+    WireWriter out(bytes);
+    encode_rpc_reject(packet.header, kNcaUnsupportedType, out);
+    return take(out);
+  }
   switch (static_cast<PnioOperation>(packet.header.opnum)) {
     case PnioOperation::kConnect:
       return answer_connect(packet);

@@ -44,11 +44,10 @@ Uuid pnio_object_uuid(std::uint16_t instance, std::uint16_t device_id, std::uint
   return uuid;
 }
 
-void encode_rpc(const RpcHeader& header, std::uint32_t args_maximum, PnioStatus status,
-                std::span<const std::uint8_t> blocks, WireWriter& out) noexcept {
+namespace {
+
+void encode_header(const RpcHeader& header, std::uint16_t body_length, WireWriter& out) noexcept {
   const bool le = header.little_endian;
-  const bool has_ndr =
-      header.packet_type == RpcPacketType::kRequest || header.packet_type == RpcPacketType::kResponse;
   out.u8(kRpcVersion);
   out.u8(static_cast<std::uint8_t>(header.packet_type));
   out.u8(header.flags1);
@@ -66,10 +65,20 @@ void encode_rpc(const RpcHeader& header, std::uint32_t args_maximum, PnioStatus 
   out.u16(header.opnum, le);
   out.u16(header.interface_hint, le);
   out.u16(header.activity_hint, le);
-  out.u16(static_cast<std::uint16_t>(has_ndr ? kNdrHeaderBytes + blocks.size() : 0), le);
+  out.u16(body_length, le);
   out.u16(header.fragment_number, le);
   out.u8(0);  // authentication protocol: none
   out.u8(0);  // serial low
+}
+
+}  // namespace
+
+void encode_rpc(const RpcHeader& header, std::uint32_t args_maximum, PnioStatus status,
+                std::span<const std::uint8_t> blocks, WireWriter& out) noexcept {
+  const bool le = header.little_endian;
+  const bool has_ndr =
+      header.packet_type == RpcPacketType::kRequest || header.packet_type == RpcPacketType::kResponse;
+  encode_header(header, static_cast<std::uint16_t>(has_ndr ? kNdrHeaderBytes + blocks.size() : 0), out);
   if (!has_ndr) return;
   const auto length = static_cast<std::uint32_t>(blocks.size());
   out.u32(header.packet_type == RpcPacketType::kRequest ? args_maximum : status.value(), le);
@@ -115,7 +124,13 @@ RpcPacket decode_rpc(WireReader& in) noexcept {
     return packet;
   }
   if (h.packet_type != RpcPacketType::kRequest && h.packet_type != RpcPacketType::kResponse) {
-    in.skip(h.body_length);
+    const bool refusal = h.packet_type == RpcPacketType::kReject || h.packet_type == RpcPacketType::kFault;
+    if (refusal && h.body_length >= 4) {
+      packet.reject_status = in.u32(le);
+      in.skip(h.body_length - 4u);
+    } else {
+      in.skip(h.body_length);
+    }
     return packet;
   }
   if (h.body_length < kNdrHeaderBytes) {
@@ -138,6 +153,14 @@ RpcPacket decode_rpc(WireReader& in) noexcept {
   packet.blocks = in.view(args_length);
   in.skip(h.body_length - kNdrHeaderBytes - args_length);
   return packet;
+}
+
+void encode_rpc_reject(const RpcHeader& request, std::uint32_t nca_status, WireWriter& out) noexcept {
+  RpcHeader header = request;
+  header.packet_type = RpcPacketType::kReject;
+  header.flags1 = 0;
+  encode_header(header, 4, out);
+  out.u32(nca_status, header.little_endian);
 }
 
 }  // namespace tomc::profinet

@@ -72,6 +72,7 @@ pn::IoDevice connected_device() {
   pn::WireWriter block_out(blocks);
   pn::encode(connect, block_out);
   pn::RpcHeader header;
+  header.object = pn::pnio_object_uuid(1, identity.device_id, identity.vendor_id);
   header.interface = pn::kPnioDeviceInterface;
   std::vector<std::uint8_t> request(2048);
   pn::WireWriter out(request);
@@ -134,6 +135,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       pn::IoDevice device = prototype;
       (void)device.on_dcp(bytes);
       (void)device.on_rpc(bytes);
+      if (bytes.size() >= 24) {  // the same packet to the device's own object: a wrong one is rejected first
+        std::vector<std::uint8_t> own(bytes.begin(), bytes.end());
+        pn::WireWriter object_out(std::span(own).subspan(8, 16));
+        pn::encode(pn::pnio_object_uuid(1, 0, 0), object_out, (own[4] & 0xF0) == 0x10);
+        (void)device.on_rpc(own);
+      }
       (void)device.on_cyclic(bytes, 1000);
       std::array<std::uint8_t, 1514> frame{};
       (void)device.next_input_frame(frame);

@@ -42,6 +42,8 @@
 #include "tomc/drives/dds/gateway_link.hpp"
 #include "tomc/drives/profinet_drive.hpp"
 #include "tomc/profinet/alarm.hpp"
+#include "tomc/profinet/io_controller.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 #include "tomc/scenario/scenario.hpp"
@@ -94,6 +96,186 @@ TEST(GatewayConfig, AValidFileLoads) {
   EXPECT_EQ(config.devices[0].name_of_station, "drive-1");
   EXPECT_EQ(config.devices[0].device_config().drive_telegram, 3);
   EXPECT_TRUE(config.devices[0].modules.empty());  // the emulated drive's layout
+}
+
+namespace {
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The ```json blocks of a Markdown page (each with its line number), and the README's `$ cat gateway.json`.
+std::vector<std::pair<int, std::string>> json_blocks(const std::string& markdown) {
+  std::vector<std::pair<int, std::string>> blocks;
+  std::istringstream in(markdown);
+  std::string line;
+  std::string block;
+  int number = 0;
+  int start = 0;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    ++number;
+    const auto fence = line.find("```");
+    if (fence == std::string::npos) {
+      if (inside) block += line + "\n";
+    } else if (!inside && line.compare(fence, 7, "```json") == 0) {
+      inside = true;
+      start = number;
+      block.clear();
+    } else if (inside) {
+      inside = false;
+      blocks.emplace_back(start, block);
+    }
+  }
+  return blocks;
+}
+
+}  // namespace
+
+// examples/profinet_gateway.json and every gateway file printed in docs/profinet-gateway.md and the README
+// load without a problem, so the examples cannot rot. A device object alone (the GSDML example) is loaded
+// in a file of its own with the emulated drive's GSDML folder as base.
+TEST(GatewayConfig, TheExampleFileAndTheDocumentedExamplesLoad) {
+  const std::filesystem::path source(TOMC_SOURCE_DIR);
+  sc::ProfinetGatewayConfig example;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config_file(source / "examples/profinet_gateway.json", example, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  ASSERT_EQ(example.devices.size(), 3u);
+  EXPECT_DOUBLE_EQ(example.cycle_time(), 0.001);
+  // From the GSDML file: the telegram submodules' idents and PZD bytes, input = the actual telegram (spec 06
+  // §2.15, setpoint/actual words: telegram 3 5/9, 105 10/10, 750 3/1, 81 2/6).
+  const auto submodule = [](const sc::ProfinetDeviceConfig& device, std::uint32_t ident) {
+    for (const auto& module : device.modules) {
+      for (const auto& sub : module.submodules) {
+        if (sub.ident == ident) return std::pair<int, int>{sub.input_length, sub.output_length};
+      }
+    }
+    return std::pair<int, int>{-1, -1};
+  };
+  EXPECT_EQ(submodule(example.devices[0], 0x10003), (std::pair<int, int>{18, 10}));
+  EXPECT_EQ(submodule(example.devices[1], 0x10069), (std::pair<int, int>{20, 20}));
+  EXPECT_EQ(submodule(example.devices[1], 0x102EE), (std::pair<int, int>{2, 6}));
+  EXPECT_EQ(submodule(example.devices[2], 0x10051), (std::pair<int, int>{12, 4}));
+  EXPECT_EQ(example.devices[2].telegram, 0);
+  EXPECT_EQ(example.devices[2].encoder_telegram, 81);
+
+  const std::string wrapper_head =
+      R"({ "gateway": "gw-doc", "domain": 42, "profinet": { "interface": "eth1", "ip": "192.168.0.1" },
+                                        "devices": [ )";
+  int loaded = 0;
+  for (const char* page : {"docs/profinet-gateway.md", "README.md"}) {
+    std::string text = file_text(source / page);
+    std::vector<std::pair<int, std::string>> blocks = json_blocks(text);
+    for (auto cat = text.find("$ cat gateway.json\n"); cat != std::string::npos;
+         cat = text.find("$ cat gateway.json\n", cat + 1)) {
+      const auto end = text.find("\n$ ", cat + 1);
+      blocks.emplace_back(0, text.substr(cat + 19, end - cat - 19));
+    }
+    for (const auto& [line, block] : blocks) {
+      if (block.find("\"name_of_station\"") == std::string::npos) continue;  // not a gateway file
+      const sc::Json json = sc::Json::parse(block, nullptr, false);
+      ASSERT_FALSE(json.is_discarded()) << page << ":" << line << ": not JSON\n" << block;
+      const std::string file = json.contains("devices") ? block : wrapper_head + block + " ] }";
+      sc::ProfinetGatewayConfig config;
+      sc::Problems doc_problems;
+      sc::load_profinet_gateway_config(sc::Json::parse(file), config, doc_problems,
+                                       source / "drives/profinet/gsdml");
+      EXPECT_TRUE(doc_problems.empty()) << page << ":" << line << ": " << joined(doc_problems.lines());
+      EXPECT_FALSE(config.devices.empty()) << page << ":" << line;
+      ++loaded;
+    }
+  }
+  EXPECT_GE(loaded, 3);  // profinet-gateway.md's file and GSDML device, the README's file
+}
+
+// "records": start-up parameter records written after the Connect and before PrmEnd (IEC 61158-6-10
+// IODWriteReq, in the file's order), as the gateway hands them to its IoController; here a PROFIdrive read
+// request of p0922 to index 0xB02E of the emulated telegram-3 drive, in memory: the drive keeps its
+// parameter response, which the controller reads once the AR runs (p0922 = 3). A record the drive refuses
+// (index 0x1234: PNIOStatus DF 80 B0 00, invalid index) ends the start-up with that status.
+TEST(GatewayConfig, StartupRecordsAreWrittenBeforePrmEnd) {
+  const auto load = [](const std::string& records) {
+    sc::ProfinetGatewayConfig config;
+    sc::Problems problems;
+    sc::load_profinet_gateway_config(
+        sc::Json::parse(
+            R"({ "gateway": "gw1", "domain": 42, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+          "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.0.0.2", "telegram": 3,
+                         "records": )" +
+            records + " } ] }"),
+        config, problems);
+    EXPECT_TRUE(problems.empty()) << joined(problems.lines());
+    return config;
+  };
+  const auto run = [](const sc::ProfinetDeviceConfig& device, std::vector<std::uint16_t>& opnums) {
+    pn::ControllerDeviceConfig c;
+    c.name_of_station = device.name_of_station;
+    c.ip = {device.ip, device.netmask, {}};
+    c.modules = tomc::drives::profidrive_modules(device.device_config());
+    for (const sc::ProfinetRecordConfig& r : device.records)  // as the gateway does
+      c.startup_records.push_back({r.slot, r.subslot, r.index, r.data});
+    auto controller = std::make_unique<pn::IoController>(pn::MacAddress{2, 0, 0, 0, 0, 1}, "gw", c,
+                                                         pn::Uuid{0x5E, 1, 2, {3}});
+    pn::DeviceIdentity identity;
+    identity.name_of_station = device.name_of_station;
+    identity.ip = c.ip;
+    identity.mac = {2, 0, 0, 0, 0, 2};
+    auto drive = std::make_unique<tomc::drives::ProfinetDrive>(identity, device.device_config(),
+                                                               tomc::drives::SimulatedDriveParameters{});
+    (void)controller->on_dcp(drive->device().on_dcp(controller->identify_request(1)), 2);
+    if (!controller->on_connect_response(drive->device().on_rpc(controller->connect_request())))
+      return std::pair{std::move(controller), std::move(drive)};
+    while (controller->state() == pn::ControllerArState::kParameterizing ||
+           controller->state() == pn::ControllerArState::kPrmEnd) {
+      const auto request = controller->next_request();
+      pn::WireReader in(request);
+      opnums.push_back(pn::decode_rpc(in).header.opnum);
+      if (!controller->on_response(drive->device().on_rpc(request))) break;
+    }
+    if (const auto ready = drive->device().take_application_ready())
+      (void)controller->on_application_ready(*ready);
+    return std::pair{std::move(controller), std::move(drive)};
+  };
+
+  const sc::ProfinetGatewayConfig config =
+      load(R"([ { "slot": 1, "subslot": 1, "index": "0xB02E", "data": "01 01 01 01 10 01 03 9A 00 00" } ])");
+  ASSERT_EQ(config.devices[0].records.size(), 1u);
+  EXPECT_EQ(config.devices[0].records[0].index, 0xB02E);
+  EXPECT_EQ(config.devices[0].records[0].data,
+            (std::vector<std::uint8_t>{0x01, 0x01, 0x01, 0x01, 0x10, 0x01, 0x03, 0x9A, 0x00, 0x00}));
+  std::vector<std::uint16_t> opnums;
+  auto [controller, drive] = run(config.devices[0], opnums);
+  ASSERT_EQ(controller->state(), pn::ControllerArState::kRunning);
+  EXPECT_EQ(opnums, (std::vector<std::uint16_t>{3, 4}));  // Write, then Control (PrmEnd)
+  const auto response = controller->on_record_response(
+      drive->device().on_rpc(controller->record_read_request(1, 1, pn::kParameterAccessIndex, 240)));
+  ASSERT_TRUE(response);
+  const auto decoded = pn::decode_parameter_response(*response);
+  ASSERT_TRUE(decoded);
+  EXPECT_EQ(pn::integer_value(*decoded, 0), 3);
+
+  opnums.clear();
+  const sc::ProfinetGatewayConfig refused = load(R"([ { "slot": 1, "index": 4660, "data": "00ff" } ])");
+  auto [refused_controller, refused_drive] = run(refused.devices[0], opnums);
+  EXPECT_EQ(opnums, (std::vector<std::uint16_t>{3}));
+  EXPECT_EQ(refused_controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(refused_controller->last_error(), (pn::PnioStatus{0xDF, 0x80, 0xB0, 0x00}));
+
+  const auto lines =
+      problems_of(R"({ "gateway": "gw1", "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a", "name_of_station": "d-1", "ip": "10.0.0.2", "telegram": 1, "records": [
+      { "slot": 1, "index": 1, "data": "0x12" }, { "slot": 1, "index": 1, "data": "abc" },
+      { "slot": 1, "index": 1, "data": "" }, { "slot": 1, "index": 65536, "data": "00" },
+      { "index": 1, "data": "00" } ] } ] })");
+  EXPECT_TRUE(has_line(lines, "devices[0].records[0].data: 'x' is not a hex digit")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].records[1].data: an odd number of hex digits")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].records[2].data: 1..4096 bytes expected")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].records[3].index")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].records[4].slot")) << joined(lines);
 }
 
 TEST(GatewayConfig, EveryProblemNamesItsKey) {

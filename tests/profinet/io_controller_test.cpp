@@ -187,6 +187,103 @@ TEST(IoController, RefusedConnectIsReportedAndIdentifyIgnoresOtherNames) {
   EXPECT_TRUE(third.connect_request().empty());
 }
 
+namespace {
+
+// An RTA frame of the device to the controller, as bytes.
+struct RawAlarm {
+  std::array<std::uint8_t, 256> bytes{};
+  std::size_t size = 0;
+  std::span<const std::uint8_t> frame() const { return std::span(bytes).first(size); }
+};
+
+RawAlarm raw_alarm(const Pair& pair, const pn::RtaFrame& rta) {
+  RawAlarm raw;
+  EXPECT_EQ(pn::encode({pn::testing::kController, pair.device->identity().mac, pn::VlanTag{6, 0}}, rta,
+                       raw.bytes, raw.size),
+            pn::ProfinetError::kNone);
+  return raw;
+}
+
+// What the controller answers to one: the transport ACK and the AlarmAck DATA.
+struct AlarmAnswer {
+  std::size_t frames = 0;
+  std::vector<std::uint8_t> ack;
+  std::vector<std::uint8_t> alarm_ack;
+};
+
+AlarmAnswer offer(Pair& pair, const pn::RtaFrame& rta) {
+  const RawAlarm raw = raw_alarm(pair, rta);
+  std::array<std::uint8_t, 128> ack{};
+  std::array<std::uint8_t, 128> alarm_ack{};
+  std::size_t ack_bytes = 0;
+  std::size_t alarm_ack_bytes = 0;
+  AlarmAnswer answer;
+  answer.frames = pair.controller->on_alarm(raw.frame(), ack, alarm_ack, ack_bytes, alarm_ack_bytes);
+  answer.ack.assign(ack.begin(), ack.begin() + static_cast<long>(ack_bytes));
+  answer.alarm_ack.assign(alarm_ack.begin(), alarm_ack.begin() + static_cast<long>(alarm_ack_bytes));
+  return answer;
+}
+
+pn::RtaFrame decoded_rta(const std::vector<std::uint8_t>& bytes) {
+  pn::RtaFrame frame;
+  EXPECT_EQ(pn::decode_rta(bytes, frame), pn::ProfinetError::kNone);
+  return frame;
+}
+
+}  // namespace
+
+// IEC 61158-6-10 ObjectUUID: the Connect goes to instance 1 of the VendorID/DeviceID that the DCP Identify
+// answer's DeviceID block named (0x002A/0x0C01 here), the later Write and Control requests too.
+TEST(IoController, RpcRequestsAddressTheDeviceOfTheDcpAnswer) {
+  Pair pair = make_pair(1);
+  const auto identified = pair.device->on_dcp(pair.controller->identify_request(1));
+  (void)pair.controller->on_dcp(identified, 2);
+  const pn::Uuid expected = pn::pnio_object_uuid(1, 0x0C01, 0x002A);
+  EXPECT_EQ(pair.controller->device_object(), expected);
+  const auto connect = pair.controller->connect_request();
+  ASSERT_GE(connect.size(), 24u);
+  // Little-endian drep: DEA00000 6C97 11D1 reversed, then 8271 0001 0C01 002A as they are.
+  EXPECT_EQ(std::vector<std::uint8_t>(connect.begin() + 8, connect.begin() + 24),
+            (std::vector<std::uint8_t>{0x00, 0x00, 0xA0, 0xDE, 0x97, 0x6C, 0xD1, 0x11, 0x82, 0x71, 0x00, 0x01,
+                                       0x0C, 0x01, 0x00, 0x2A}));
+  ASSERT_TRUE(pair.controller->on_connect_response(pair.device->on_rpc(connect)));
+  const auto record = pair.controller->next_request();
+  pn::WireReader in(record);
+  EXPECT_EQ(pn::decode_rpc(in).header.object, expected);
+  ASSERT_TRUE(pair.controller->on_response(pair.device->on_rpc(record)));
+  const auto prm_end = pair.controller->next_request();
+  pn::WireReader prm_in(prm_end);
+  EXPECT_EQ(pn::decode_rpc(prm_in).header.object, expected);
+  EXPECT_TRUE(pair.controller->on_response(pair.device->on_rpc(prm_end)));
+  EXPECT_EQ(pair.controller->last_reject(), 0u);
+}
+
+// A DCP answer without the DeviceID block leaves the object's IDs 0: the device rejects the Connect
+// (nca_s_unsupported_type), the controller reports it in last_reject() and goes back to kOffline.
+TEST(IoController, ARejectedConnectIsReported) {
+  Pair pair = make_pair(1);
+  const auto identified = pair.device->on_dcp(pair.controller->identify_request(1));
+  pn::WireReader in(identified);
+  const pn::EthernetHeader ethernet = pn::decode_ethernet(in);
+  pn::DcpMessage answer = pn::decode_dcp(in);
+  ASSERT_TRUE(in.ok());
+  answer.fields.vendor_id.reset();
+  answer.fields.device_id.reset();
+  std::vector<std::uint8_t> without_ids(1514);
+  pn::WireWriter out(without_ids);
+  pn::encode(ethernet, answer, out);
+  without_ids.resize(out.position());
+  (void)pair.controller->on_dcp(without_ids, 2);
+  EXPECT_EQ(pair.controller->device_object(), pn::pnio_object_uuid(1, 0, 0));
+  EXPECT_FALSE(pair.controller->on_connect_response(pair.device->on_rpc(pair.controller->connect_request())));
+  EXPECT_EQ(pair.controller->last_reject(), pn::kNcaUnsupportedType);
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(pair.device->state(), pn::ArState::kNone);
+  // Identified again with the block: the same controller connects.
+  EXPECT_TRUE(start_up(pair, 5));
+  EXPECT_EQ(pair.controller->last_reject(), 0u);
+}
+
 TEST(IoController, AlarmIsAcknowledged) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -218,6 +315,112 @@ TEST(IoController, AlarmIsAcknowledged) {
   EXPECT_EQ(
       pair.controller->on_alarm(std::span(ack).first(ack_bytes), transport, ack, transport_bytes, ack_bytes),
       0u);
+}
+
+// IEC 61158-6-10 RTA (as p-net's APMR/APMS): a DATA with the SendSeqNum of the last one taken is a resend
+// after a lost ACK. It is acknowledged again, and our AlarmAck DATA goes again with its own SendSeqNum
+// (0xFFFF: the first of an AR) while the device has not acknowledged it, at most RTARetries (3) times; the
+// notification is counted and kept once. High and low priority have their own sequence numbers.
+TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
+  Pair pair = make_pair(1);
+  ASSERT_TRUE(start_up(pair));
+  pn::RtaFrame notification = pn::testing::diagnosis_alarm();  // high, SendSeqNum 0, alarm sequence 5
+  const AlarmAnswer first = offer(pair, notification);
+  ASSERT_EQ(first.frames, 2u);
+  EXPECT_EQ(decoded_rta(first.ack).pdu_type, pn::RtaPduType::kAck);
+  EXPECT_EQ(decoded_rta(first.ack).ack_sequence, 0u);
+  EXPECT_EQ(decoded_rta(first.ack).send_sequence, 0xFFFEu);  // nothing sent yet
+  const pn::RtaFrame alarm_ack = decoded_rta(first.alarm_ack);
+  EXPECT_EQ(alarm_ack.send_sequence, 0xFFFFu);
+  EXPECT_EQ(alarm_ack.ack_sequence, 0u);
+  EXPECT_TRUE(alarm_ack.tack);
+  EXPECT_TRUE(pair.controller->alarm_ack_pending(true));
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
+  // Three resends: each time the transport ACK again (its SendSeqNum now our last DATA's, 0xFFFF) and our
+  // AlarmAck byte for byte; the fourth gets the transport ACK only.
+  for (int resend = 1; resend <= 4; ++resend) {
+    const AlarmAnswer again = offer(pair, notification);
+    EXPECT_EQ(again.frames, resend <= 3 ? 2u : 1u) << resend;
+    EXPECT_EQ(decoded_rta(again.ack).pdu_type, pn::RtaPduType::kAck);
+    EXPECT_EQ(decoded_rta(again.ack).ack_sequence, 0u);
+    EXPECT_EQ(decoded_rta(again.ack).send_sequence, 0xFFFFu);
+    EXPECT_EQ(again.alarm_ack, resend <= 3 ? first.alarm_ack : std::vector<std::uint8_t>{}) << resend;
+  }
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
+  // The device's ACK of our AlarmAck (AckSeqNum 0xFFFF): nothing to send, nothing pending.
+  pn::RtaFrame device_ack = notification;
+  device_ack.pdu_type = pn::RtaPduType::kAck;
+  device_ack.tack = false;
+  device_ack.has_block = false;
+  device_ack.ack_sequence = 0xFFFF;
+  EXPECT_EQ(offer(pair, device_ack).frames, 0u);
+  EXPECT_FALSE(pair.controller->alarm_ack_pending(true));
+  // A resend now gets the transport ACK only: our AlarmAck arrived.
+  EXPECT_EQ(offer(pair, notification).frames, 1u);
+  // The next notification (SendSeqNum 1, alarm sequence 6) is new; our AlarmAck is SendSeqNum 0.
+  notification.send_sequence = 1;
+  notification.ack_sequence = 0xFFFF;
+  notification.block.specifier = 0x0800 | 0x2000 | 6;
+  const AlarmAnswer second = offer(pair, notification);
+  ASSERT_EQ(second.frames, 2u);
+  EXPECT_EQ(decoded_rta(second.alarm_ack).send_sequence, 0u);
+  EXPECT_EQ(decoded_rta(second.alarm_ack).block.sequence_number(), 6);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 2u);
+  EXPECT_EQ(pair.controller->last_alarm()->sequence_number(), 6);
+  // Low priority: its own numbers, so its SendSeqNum 0 is new and our first low AlarmAck is 0xFFFF again.
+  notification.frame_id = pn::kFrameIdAlarmLow;
+  notification.block.high_priority = false;
+  notification.send_sequence = 0;
+  const AlarmAnswer low = offer(pair, notification);
+  ASSERT_EQ(low.frames, 2u);
+  EXPECT_EQ(decoded_rta(low.alarm_ack).send_sequence, 0xFFFFu);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 3u);
+  EXPECT_TRUE(pair.controller->alarm_ack_pending(false));
+  EXPECT_TRUE(pair.controller->alarm_ack_pending(true));  // SendSeqNum 0 of the high channel
+  // The cyclic thread answers alarms: a new notification and its resend allocate nothing.
+  notification.send_sequence = 1;
+  const RawAlarm raw = raw_alarm(pair, notification);
+  std::array<std::uint8_t, 128> ack{};
+  std::array<std::uint8_t, 128> alarm_ack_out{};
+  std::size_t ack_n = 0;
+  std::size_t alarm_ack_n = 0;
+  const std::uint64_t before = tomc::testing::allocation_count();
+  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n), 2u);
+  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n), 2u);
+  EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 4u);
+}
+
+// The alarm CR exists from the Connect on: a notification while the start-up records are written is
+// answered (and counted once when the device repeats it after ApplicationReady); before the Connect there
+// is no AR to take it.
+TEST(IoController, AnAlarmDuringStartUpIsAnswered) {
+  Pair pair = make_pair(1);
+  const pn::RtaFrame notification = pn::testing::diagnosis_alarm();
+  (void)pair.controller->on_dcp(pair.device->on_dcp(pair.controller->identify_request(1)), 2);
+  EXPECT_EQ(offer(pair, notification).frames, 0u);  // kOffline: no Connect yet
+  ASSERT_TRUE(pair.controller->on_connect_response(pair.device->on_rpc(pair.controller->connect_request())));
+  ASSERT_EQ(pair.controller->state(), pn::ControllerArState::kParameterizing);
+  EXPECT_EQ(offer(pair, notification).frames, 2u);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
+  for (int guard = 0; guard < 4 && pair.controller->state() != pn::ControllerArState::kWaitApplicationReady;
+       ++guard) {
+    ASSERT_TRUE(pair.controller->on_response(pair.device->on_rpc(pair.controller->next_request())));
+  }
+  const auto ready = pair.device->take_application_ready();
+  ASSERT_TRUE(ready);
+  EXPECT_FALSE(pair.controller->on_application_ready(*ready).empty());
+  ASSERT_EQ(pair.controller->state(), pn::ControllerArState::kRunning);
+  EXPECT_EQ(offer(pair, notification).frames, 2u);  // the device's resend: ACK and AlarmAck again
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
+  // A new AR (reconnect) starts the sequence numbers afresh: SendSeqNum 0 is new again.
+  pair.controller->abort_ar();
+  pair.device->abort_ar();
+  ASSERT_TRUE(start_up(pair, 7));
+  const AlarmAnswer fresh = offer(pair, notification);
+  EXPECT_EQ(fresh.frames, 2u);
+  EXPECT_EQ(decoded_rta(fresh.alarm_ack).send_sequence, 0xFFFFu);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 2u);
 }
 
 TEST(IoController, CyclicCallsDoNotAllocate) {

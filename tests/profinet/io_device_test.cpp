@@ -141,6 +141,45 @@ TEST(IoDevice, DcpIdentifyAndNaming) {
   EXPECT_EQ(hello.fields.name_of_station, "drive-1");
 }
 
+// IEC 61158-6-10 ObjectUUID: a request to DEA00000-6C97-11D1-8271-0001-{DeviceID}-{VendorID} of another
+// device (or with the zeros of a controller that skipped the DCP DeviceID block) is rejected like an object a
+// DCE/RPC server does not export (C706 Appendix E, nca_s_unsupported_type) and sets up no AR.
+TEST(IoDevice, ARequestToAnotherObjectIsRejected) {
+  pn::IoDevice device(drive_identity());  // VendorID 0x002A, DeviceID 0x0C01
+  std::vector<std::uint8_t> blocks(4096);
+  pn::WireWriter block_out(blocks);
+  pn::encode(pn::testing::drive_connect(), block_out);
+  const auto connect_to = [&](const pn::Uuid& object) {
+    pn::RpcHeader header;
+    header.object = object;
+    header.interface = pn::kPnioDeviceInterface;
+    header.activity = {0xA1, 0xB1, 0xC1, {1}};
+    header.sequence_number = 7;
+    std::vector<std::uint8_t> request(8192);
+    pn::WireWriter out(request);
+    pn::encode_rpc(header, 4096, {}, block_out.written(), out);
+    return device.on_rpc(out.written());
+  };
+  for (const pn::Uuid& wrong :
+       {pn::pnio_object_uuid(1, 0x0C01, 0x002B), pn::pnio_object_uuid(1, 0x0C02, 0x002A),
+        pn::pnio_object_uuid(1, 0, 0), pn::pnio_object_uuid(2, 0x0C01, 0x002A)}) {
+    const auto answer = connect_to(wrong);
+    ASSERT_EQ(answer.size(), pn::kRpcHeaderBytes + 4) << pn::to_string(wrong);
+    pn::WireReader in(answer);
+    const pn::RpcPacket reject = pn::decode_rpc(in);
+    ASSERT_TRUE(in.ok());
+    EXPECT_EQ(reject.header.packet_type, pn::RpcPacketType::kReject);
+    EXPECT_EQ(reject.header.sequence_number, 7u);
+    EXPECT_EQ(reject.header.object, wrong);
+    EXPECT_EQ(reject.reject_status, pn::kNcaUnsupportedType);
+    EXPECT_EQ(device.state(), pn::ArState::kNone);
+  }
+  const auto accepted = connect_to(pn::pnio_object_uuid(1, 0x0C01, 0x002A));
+  pn::WireReader in(accepted);
+  EXPECT_EQ(pn::decode_rpc(in).header.packet_type, pn::RpcPacketType::kResponse);
+  EXPECT_EQ(device.state(), pn::ArState::kParameterizing);
+}
+
 TEST(IoDevice, ConnectParameterizeAndRun) {
   pn::IoDevice device(drive_identity());
   const Exchange connected = call(device, pn::PnioOperation::kConnect, pn::testing::drive_connect());

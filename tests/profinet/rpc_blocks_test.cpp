@@ -231,3 +231,47 @@ TEST(RpcBlocks, ObjectUuidCarriesInstanceDeviceAndVendor) {
   EXPECT_EQ(pn::to_string(pn::pnio_object_uuid(1, 0x0C01, 0x002A)), "dea00000-6c97-11d1-8271-00010c01002a");
   EXPECT_EQ(pn::to_string(pn::kPnioDeviceInterface), "dea00001-6c97-11d1-8271-00a02442df7d");
 }
+
+// The object UUID's bytes 8..23 of the RPC header (C706 12.5.2: the first three fields in the drep's byte
+// order, the last eight as they are): instance 0x0001, DeviceID 0x0C01, VendorID 0x002A big-endian at the
+// end whatever the drep, as Wireshark's PN-IO dissector reads them. And a Reject: 80 header bytes and the
+// 4-byte NCA status.
+TEST(RpcBlocks, ObjectUuidAndRejectGoldenBytes) {
+  pn::RpcHeader header;
+  header.object = pn::pnio_object_uuid(1, 0x0C01, 0x002A);
+  header.interface = pn::kPnioDeviceInterface;
+  header.sequence_number = 9;
+  for (const bool little_endian : {true, false}) {
+    header.little_endian = little_endian;
+    std::vector<std::uint8_t> packet(256);
+    pn::WireWriter out(packet);
+    pn::encode_rpc(header, 64, {}, {}, out);
+    const std::vector<std::uint8_t> object(packet.begin() + 8, packet.begin() + 24);
+    const std::vector<std::uint8_t> le{0x00, 0x00, 0xA0, 0xDE, 0x97, 0x6C, 0xD1, 0x11,
+                                       0x82, 0x71, 0x00, 0x01, 0x0C, 0x01, 0x00, 0x2A};
+    const std::vector<std::uint8_t> be{0xDE, 0xA0, 0x00, 0x00, 0x6C, 0x97, 0x11, 0xD1,
+                                       0x82, 0x71, 0x00, 0x01, 0x0C, 0x01, 0x00, 0x2A};
+    EXPECT_EQ(object, little_endian ? le : be);
+
+    std::vector<std::uint8_t> reject(128);
+    pn::WireWriter reject_out(reject);
+    pn::encode_rpc_reject(header, pn::kNcaUnsupportedType, reject_out);
+    ASSERT_TRUE(reject_out.ok());
+    reject.resize(reject_out.position());
+    ASSERT_EQ(reject.size(), 84u);
+    EXPECT_EQ(reject[1], 6);  // PTYPE reject
+    EXPECT_EQ(std::vector<std::uint8_t>(reject.begin() + 8, reject.begin() + 24), object);
+    EXPECT_EQ(std::vector<std::uint8_t>(reject.begin() + 74, reject.begin() + 76),
+              (little_endian ? std::vector<std::uint8_t>{4, 0} : std::vector<std::uint8_t>{0, 4}));
+    EXPECT_EQ(std::vector<std::uint8_t>(reject.begin() + 80, reject.end()),
+              (little_endian ? std::vector<std::uint8_t>{0x17, 0x00, 0x01, 0x1C}
+                             : std::vector<std::uint8_t>{0x1C, 0x01, 0x00, 0x17}));
+    pn::WireReader in(reject);
+    const pn::RpcPacket decoded = pn::decode_rpc(in);
+    ASSERT_TRUE(in.ok());
+    EXPECT_EQ(decoded.header.packet_type, pn::RpcPacketType::kReject);
+    EXPECT_EQ(decoded.header.sequence_number, 9u);
+    EXPECT_EQ(decoded.reject_status, 0x1C010017u);
+    EXPECT_TRUE(decoded.blocks.empty());
+  }
+}

@@ -300,11 +300,14 @@ struct ProfinetGateway::Impl {
         } else if (kind == pn::FrameKind::kAlarm) {
           std::size_t ack_bytes = 0;
           std::size_t alarm_ack_bytes = 0;
-          if (d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes) == 2) {
-            cyclic_socket.send(std::span(ack).first(ack_bytes));
-            cyclic_socket.send(std::span(alarm_ack).first(alarm_ack_bytes));
-            d.last_alarm.store(pack_alarm(*d.controller->last_alarm()), std::memory_order_relaxed);
-            d.alarms.fetch_add(1, std::memory_order_release);
+          const std::uint32_t before = d.controller->alarms_acknowledged();
+          if (d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes) > 0) {
+            if (ack_bytes > 0) cyclic_socket.send(std::span(ack).first(ack_bytes));
+            if (alarm_ack_bytes > 0) cyclic_socket.send(std::span(alarm_ack).first(alarm_ack_bytes));
+            if (d.controller->alarms_acknowledged() != before) {  // a resent notification is reported once
+              d.last_alarm.store(pack_alarm(*d.controller->last_alarm()), std::memory_order_relaxed);
+              d.alarms.fetch_add(1, std::memory_order_release);
+            }
             break;
           }
         }
@@ -519,8 +522,14 @@ struct ProfinetGateway::Impl {
         // p0922 of the drive object, or of the encoder object in an encoder-only device.
         const Slot checked = d.config.telegram != 0 ? Slot::kDrive : Slot::kEncoder1;
         detail::TelegramCheck check{d.config.place(checked).slot, d.device_config.telegram(checked), 0.0f};
+        const std::uint32_t alarms_before = d.controller->alarms_acknowledged();
         const std::string problem = detail::start_up(*d.controller, start_socket, rpc_socket, xid,
                                                      d.config.check_telegram ? &check : nullptr);
+        // Alarms answered during the start-up (start_up.hpp) are reported like the cyclic thread's.
+        if (const std::uint32_t during = d.controller->alarms_acknowledged() - alarms_before; during > 0) {
+          d.last_alarm.store(pack_alarm(*d.controller->last_alarm()), std::memory_order_relaxed);
+          d.alarms.fetch_add(during, std::memory_order_release);
+        }
         std::string text = problem;
         if (problem.empty()) {
           if (const std::string diff = detail::describe(d.controller->module_diff()); !diff.empty())
@@ -588,6 +597,8 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     pc.name_of_station = c.name_of_station;
     pc.ip = {c.ip, c.netmask, {}};
     pc.modules = expected_modules(c);
+    for (const scenario::ProfinetRecordConfig& r : c.records)
+      pc.startup_records.push_back({r.slot, r.subslot, r.index, r.data});
     pc.send_clock_factor = config.send_clock_factor;
     pc.reduction_ratio = config.reduction_ratio;
     pc.watchdog_factor = config.watchdog_factor;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 
 #include "tomc/profinet/parameter_access.hpp"
 
@@ -29,6 +30,16 @@ std::string hex_short(std::uint32_t value) {
   return text;
 }
 
+// Why the device refused the last request: its PNIOStatus, or the RPC Reject of an object UUID it does not
+// export (a VendorID/DeviceID other than its DCP answer named).
+std::string refusal(const pn::IoController& controller) {
+  if (controller.last_reject() != 0) {
+    return "RPC Reject " + hex(controller.last_reject()) + " for object " +
+           pn::to_string(controller.device_object());
+  }
+  return "PNIOStatus " + hex(controller.last_error().value());
+}
+
 // The DCP answer with this xid, skipping every other frame (cyclic frames of running ARs arrive too).
 std::vector<std::uint8_t> receive_dcp(pn::RawSocket& raw, std::uint32_t xid) {
   std::array<std::uint8_t, 1518> frame{};
@@ -52,8 +63,28 @@ std::vector<std::uint8_t> receive_dcp(pn::RawSocket& raw, std::uint32_t xid) {
 // number. Anything else from the device is skipped: a late answer to an earlier attempt or to a Release sent
 // without waiting would otherwise be taken for this answer, and every later call would read the answer of the
 // call before it.
+// Alarms of the starting device (its alarm CR exists from the Connect on): answered here, since the cyclic
+// thread offers frames only to running ARs; a notification left unacknowledged would block the device's
+// next ones (IEC 61158-6-10 RTA, window size 1). Non-blocking: the frames already received.
+void answer_alarms(pn::IoController& controller, pn::RawSocket& raw) {
+  std::array<std::uint8_t, 1518> frame{};
+  std::array<std::uint8_t, 128> ack{};
+  std::array<std::uint8_t, 128> alarm_ack{};
+  for (int k = 0; k < 64; ++k) {  // bounded: the frames of one wait
+    const std::size_t n = raw.receive(frame, 0);
+    if (n == 0) return;
+    const auto in = std::span<const std::uint8_t>(frame.data(), n);
+    if (pn::classify_frame_id(pn::peek_frame_id(in)) != pn::FrameKind::kAlarm) continue;
+    std::size_t ack_bytes = 0;
+    std::size_t alarm_ack_bytes = 0;
+    if (controller.on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes) == 0) continue;
+    if (ack_bytes > 0) raw.send(std::span(ack).first(ack_bytes));
+    if (alarm_ack_bytes > 0) raw.send(std::span(alarm_ack).first(alarm_ack_bytes));
+  }
+}
+
 std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device,
-                               std::span<const std::uint8_t> request) {
+                               std::span<const std::uint8_t> request, const std::function<void()>& waiting) {
   pn::WireReader request_in(request);
   const pn::RpcHeader asked = pn::decode_rpc(request_in).header;
   std::array<std::uint8_t, 4096> buffer{};
@@ -63,6 +94,7 @@ std::vector<std::uint8_t> call(pn::UdpSocket& udp, const pn::Ipv4Address& device
       pn::Ipv4Address from{};
       std::uint16_t port = 0;
       const std::size_t n = udp.receive(buffer, 20'000, from, port);
+      waiting();
       if (n == 0 || from != device) continue;
       pn::WireReader in(std::span<const std::uint8_t>(buffer.data(), n));
       const pn::RpcHeader answer = pn::decode_rpc(in).header;
@@ -81,18 +113,19 @@ namespace {
 
 // p0922 and p2000 of the drive object through base-mode parameter access (write the request, read the
 // answer).
-std::string check_telegram(pn::IoController& controller, pn::UdpSocket& udp, TelegramCheck& check) {
+std::string check_telegram(pn::IoController& controller, pn::UdpSocket& udp, TelegramCheck& check,
+                           const std::function<void()>& waiting) {
   const pn::Ipv4Address& ip = controller.device().ip.address;
   const pn::ParameterRequest request{
       1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}};
   const auto status = [&] { return "PNIOStatus " + hex(controller.last_error().value()); };
-  const auto written =
-      call(udp, ip,
-           controller.record_write_request(check.slot, 1, pn::kParameterAccessIndex, pn::encode(request)));
+  const auto written = call(
+      udp, ip, controller.record_write_request(check.slot, 1, pn::kParameterAccessIndex, pn::encode(request)),
+      waiting);
   if (written.empty()) return "no answer to the parameter request (p0922)";
   if (!controller.on_record_response(written)) return "parameter request (p0922) refused, " + status();
   const auto read =
-      call(udp, ip, controller.record_read_request(check.slot, 1, pn::kParameterAccessIndex, 240));
+      call(udp, ip, controller.record_read_request(check.slot, 1, pn::kParameterAccessIndex, 240), waiting);
   if (read.empty()) return "no answer to the parameter read (p0922)";
   const auto data = controller.on_record_response(read);
   if (!data) return "parameter read (p0922) refused, " + status();
@@ -124,22 +157,23 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     if (receive_dcp(raw, set).empty()) return "DCP Set of the IP suite unanswered by '" + name + "'";
   }
   if (!controller.device_mac()) return "the DCP answer did not name '" + name + "'";
-  const auto connect = call(udp, ip, controller.connect_request());
+  const auto alarms = [&] { answer_alarms(controller, raw); };
+  const auto connect = call(udp, ip, controller.connect_request(), alarms);
   if (connect.empty()) return "no answer to Connect (UDP 34964)";
   if (!controller.on_connect_response(connect)) {
-    return "Connect refused, PNIOStatus " + hex(controller.last_error().value());
+    return "Connect refused, " + refusal(controller);
   }
   while (controller.state() == pn::ControllerArState::kParameterizing ||
          controller.state() == pn::ControllerArState::kPrmEnd) {
     const auto request = controller.next_request();
-    const auto answer = call(udp, ip, request);
+    const auto answer = call(udp, ip, request, alarms);
     if (answer.empty()) {
       controller.abort_ar();
       return "no answer to a start-up record or PrmEnd";
     }
     if (!controller.on_response(answer)) {
       controller.abort_ar();
-      return "record write or PrmEnd refused, PNIOStatus " + hex(controller.last_error().value());
+      return "record write or PrmEnd refused, " + refusal(controller);
     }
   }
   // The device's ApplicationReady request comes to our port 34964.
@@ -148,18 +182,19 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     pn::Ipv4Address from{};
     std::uint16_t port = 0;
     const std::size_t n = udp.receive(ready, 20'000, from, port);
+    alarms();
     if (n == 0 || from != ip) continue;
     const auto answer = controller.on_application_ready(std::span(ready).first(n));
     if (!answer.empty()) udp.send_to(answer, from, port);
     if (controller.state() != pn::ControllerArState::kRunning) continue;
     if (check == nullptr) return {};
-    std::string problem = check_telegram(controller, udp, *check);
+    std::string problem = check_telegram(controller, udp, *check, alarms);
     if (!problem.empty()) {
       // Not this drive's telegram (or unknown): the AR must not carry setpoints of another layout. A module
       // difference of this Connect is named first: a wrong telegram submodule is usually why.
       if (const std::string diff = describe(controller.module_diff()); !diff.empty())
         problem = "module difference: " + diff + "; " + problem;
-      (void)call(udp, ip, controller.release_request());
+      (void)call(udp, ip, controller.release_request(), alarms);
       controller.abort_ar();
     }
     return problem;

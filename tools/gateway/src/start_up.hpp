@@ -1,8 +1,8 @@
 #pragma once
 // Internal: the start-up of one AR over the sockets (IEC 61158-6-10 order): DCP Identify by name of station
 // (and Set of the IP suite when the device has another one), Connect, the start-up record writes, PrmEnd,
-// the device's ApplicationReady answered. Blocking with bounded waits; runs on the start-up thread, never on
-// the cyclic one.
+// the device's ApplicationReady answered; the device's alarms from the Connect on are acknowledged while it
+// waits. Blocking with bounded waits; runs on the start-up thread, never on the cyclic one.
 
 #include <cstdint>
 #include <string>

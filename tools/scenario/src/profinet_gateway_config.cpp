@@ -4,6 +4,7 @@
 #include <charconv>
 #include <iterator>
 #include <map>
+#include <optional>
 
 #include "gateway_adapter_detail.hpp"
 #include "json_reader.hpp"
@@ -99,6 +100,66 @@ void read_modules(const Json& value, const std::string& path, ProfinetDeviceConf
   }
   if (device.modules.front().slot != 0)
     problems.add(path + "[0].slot", "the first module is the DAP in slot 0");
+}
+
+// "records": [ { "slot": 1, "subslot": 1, "index": "0xB02E", "data": "01 00 01 01 ..." } ], each record's
+// data 1..kMaxRecordBytes bytes as hex digits.
+constexpr std::size_t kMaxRecordBytes = 4096;
+
+std::optional<std::vector<std::uint8_t>> hex_bytes(const std::string& text, std::string& why) {
+  std::vector<std::uint8_t> bytes;
+  int high = -1;
+  for (const char c : text) {
+    if (c == ' ') continue;
+    const int digit = c >= '0' && c <= '9'   ? c - '0'
+                      : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                      : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                             : -1;
+    if (digit < 0) {
+      why = "'" + std::string(1, c) + "' is not a hex digit";
+      return std::nullopt;
+    }
+    if (high < 0) {
+      high = digit;
+    } else {
+      bytes.push_back(static_cast<std::uint8_t>(high << 4 | digit));
+      high = -1;
+    }
+  }
+  if (high >= 0)
+    why = "an odd number of hex digits (two per byte)";
+  else if (bytes.empty() || bytes.size() > kMaxRecordBytes)
+    why = "1..4096 bytes expected";
+  if (!why.empty()) return std::nullopt;
+  return bytes;
+}
+
+void read_records(const Json& value, const std::string& path, ProfinetDeviceConfig& device,
+                  Problems& problems) {
+  if (!value.is_array() || value.size() > ProfinetDeviceConfig::kMaxRecords) {
+    problems.add(path, "expected an array of at most 64 records");
+    return;
+  }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    ObjectReader r(value[i], path + "[" + std::to_string(i) + "]", problems);
+    if (!r.valid()) continue;
+    ProfinetRecordConfig record;
+    r.integer("slot", record.slot, 0, 0x7FFF, false, true);
+    r.integer("subslot", record.subslot, 1, 0x9FFF, true);
+    r.integer("index", record.index, 0, 0xFFFF, true, true);
+    if (const Json* d = r.get("data", true)) {
+      if (auto text = detail::read_string(*d, r.path_of("data"), problems)) {
+        std::string why;
+        if (auto bytes = hex_bytes(*text, why)) {
+          record.data = std::move(*bytes);
+        } else {
+          problems.add(r.path_of("data"), why);
+        }
+      }
+    }
+    r.finish();
+    device.records.push_back(std::move(record));
+  }
 }
 
 // The keys of each contract slot's telegram and place: "<key>", "<key>_slot", "<key>_subslot" (the drive's
@@ -370,6 +431,8 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
         problems.add(r.path_of("ip"), "the same address as profinet.ip (the controller)");
       read_telegrams(r, device, problems);
       r.boolean("check_telegram", device.check_telegram);
+      if (const Json* records = r.get("records"))
+        read_records(*records, r.path_of("records"), device, problems);
       if (r.has("gsdml")) {
         read_gsdml_modules(r, base_directory, gsdml_files, device, problems);
       } else if (const Json* m = r.get("modules")) {

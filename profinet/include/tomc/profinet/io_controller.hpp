@@ -58,6 +58,11 @@ class IoController {
   const std::optional<MacAddress>& device_mac() const noexcept { return device_mac_; }
   const std::vector<ModuleDiff>& module_diff() const noexcept { return module_diff_; }
   PnioStatus last_error() const noexcept { return last_error_; }
+  // The NCA status of an RPC Reject/Fault answering the last request (0: none), e.g. kNcaUnsupportedType
+  // when the device does not know device_object().
+  std::uint32_t last_reject() const noexcept { return last_reject_; }
+  // The object UUID of the RPC requests: instance 1 with the VendorID/DeviceID of the device's DCP answer.
+  const Uuid& device_object() const noexcept { return device_object_; }
   std::uint32_t ar_count() const noexcept { return ar_count_; }
 
   // --- DCP ---
@@ -107,12 +112,20 @@ class IoController {
   bool watchdog_expired(std::uint64_t now_us) noexcept;
   ApduStatus last_input_status() const noexcept { return input_status_; }
 
-  // --- Alarms ---
-  // A received alarm frame: the frames to send (transport ACK of the notification, then its AlarmAck);
-  // the notification is kept in last_alarm(). Returns 0 frames for anything else.
+  // --- Alarms (RTA, IEC 61158-6-10; one sequence-number pair per priority, as p-net's APMS/APMR) ---
+  // A received alarm frame of this AR's device (from the Connect on, so also during start-up): the frames
+  // to send, as bytes in ack_out / alarm_ack_out (0 bytes: nothing to send), and their number.
+  // - a new notification: its transport ACK, then the AlarmAck DATA (SendSeqNum 0xFFFF, 0, 1, ... 0x7FFF);
+  //   it is kept in last_alarm() and counted in alarms_acknowledged();
+  // - the same notification again (same SendSeqNum: the device lost our ACK and resends): the ACK again and,
+  //   while the device has not acknowledged it, our AlarmAck again with its SendSeqNum (at most RTARetries
+  //   times); neither kept nor counted;
+  // - the device's ACK of our AlarmAck (an ACK PDU, or AckSeqNum of its next DATA): 0 frames.
   std::size_t on_alarm(std::span<const std::uint8_t> frame, std::span<std::uint8_t> ack_out,
                        std::span<std::uint8_t> alarm_ack_out, std::size_t& ack_bytes,
                        std::size_t& alarm_ack_bytes) noexcept;
+  // True while an AlarmAck of ours waits for the device's ACK (high or low priority).
+  bool alarm_ack_pending(bool high_priority) const noexcept { return channel(high_priority).unacknowledged; }
   const std::optional<AlarmBlock>& last_alarm() const noexcept { return last_alarm_; }
   std::uint32_t alarms_acknowledged() const noexcept { return alarms_acknowledged_; }
 
@@ -123,6 +136,19 @@ class IoController {
   // An error status ends the AR, except for record access (a refused record is the device's answer).
   bool check_response(std::span<const std::uint8_t> payload, RpcPacket& packet, bool abort_on_error = true);
   bool build_layouts();
+
+  // One priority's alarm protocol state (APMS sender of our AlarmAcks, APMR receiver of notifications).
+  struct AlarmChannel {
+    std::uint16_t send_sequence = 0xFFFF;       // SendSeqNum of our next DATA
+    std::uint16_t last_sent = 0xFFFE;           // of our last DATA (the SendSeqNum of our ACK PDUs)
+    std::optional<std::uint16_t> received;      // SendSeqNum of the last notification taken
+    std::array<std::uint8_t, 128> alarm_ack{};  // our last AlarmAck frame, kept for its resends
+    std::size_t alarm_ack_bytes = 0;
+    bool unacknowledged = false;
+    std::uint16_t resends = 0;
+  };
+  AlarmChannel& channel(bool high) noexcept { return alarm_channels_[high ? 1 : 0]; }
+  const AlarmChannel& channel(bool high) const noexcept { return alarm_channels_[high ? 1 : 0]; }
 
   MacAddress own_mac_;
   std::string own_name_;
@@ -135,6 +161,8 @@ class IoController {
   std::optional<MacAddress> device_mac_;
   std::vector<ModuleDiff> module_diff_;
   PnioStatus last_error_;
+  std::uint32_t last_reject_ = 0;
+  Uuid device_object_ = pnio_object_uuid(1, 0, 0);
   std::uint32_t ar_count_ = 0;
   std::size_t next_record_ = 0;
   bool waiting_ = false;
@@ -147,7 +175,8 @@ class IoController {
   std::uint64_t last_input_us_ = 0;
   bool input_seen_ = false;
   std::uint64_t watchdog_us_ = 3000;
-  std::uint16_t alarm_send_sequence_ = 0;
+  std::array<AlarmChannel, 2> alarm_channels_{};  // low, high
+  std::uint16_t alarm_retries_ = 3;               // RTARetries of our AlarmCRBlockReq
   std::optional<AlarmBlock> last_alarm_;
   std::uint32_t alarms_acknowledged_ = 0;
 };

@@ -37,8 +37,15 @@ inline constexpr Uuid kPnioDeviceInterface{
     0xDEA00001, 0x6C97, 0x11D1, {0x82, 0x71, 0x00, 0xA0, 0x24, 0x42, 0xDF, 0x7D}};
 inline constexpr Uuid kPnioControllerInterface{
     0xDEA00002, 0x6C97, 0x11D1, {0x82, 0x71, 0x00, 0xA0, 0x24, 0x42, 0xDF, 0x7D}};
-// The object UUID of a PNIO instance: DEA00000-6C97-11D1-8271-{instance}{device ID}{vendor ID}.
+// The object UUID of a PNIO instance: DEA00000-6C97-11D1-8271-{instance}{device ID}{vendor ID}, each 16-bit
+// field big-endian in the last six bytes (IEC 61158-6-10 "ObjectUUID"; p-net's EPM entry, Wireshark's
+// packet-dcerpc-pn-io.c). A controller addresses the device's instance 1 with the VendorID/DeviceID that the
+// device's DCP DeviceID block names.
 Uuid pnio_object_uuid(std::uint16_t instance, std::uint16_t device_id, std::uint16_t vendor_id) noexcept;
+
+// The NCA status of a Reject whose object UUID names no object of the server (C706 Appendix E,
+// nca_s_unsupported_type: "no implementation of generic operation for object").
+inline constexpr std::uint32_t kNcaUnsupportedType = 0x1C010017;
 
 enum class RpcPacketType : std::uint8_t {
   kRequest = 0,
@@ -106,6 +113,7 @@ struct RpcPacket {
   RpcHeader header;
   std::uint32_t args_maximum = 0;
   PnioStatus status;
+  std::uint32_t reject_status = 0;  // Reject / Fault: the NCA status of its body
   std::span<const std::uint8_t> blocks;
 };
 
@@ -114,7 +122,11 @@ struct RpcPacket {
 void encode_rpc(const RpcHeader& header, std::uint32_t args_maximum, PnioStatus status,
                 std::span<const std::uint8_t> blocks, WireWriter& out) noexcept;
 // Reads a whole UDP payload. Other packet types than request/response (ping, reject, fault, ...) decode
-// their header only and have no blocks; a version other than 4 or an NDR length beyond the packet fails.
+// their header only and have no blocks (a Reject's or Fault's status goes to reject_status); a version other
+// than 4 or an NDR length beyond the packet fails.
 RpcPacket decode_rpc(WireReader& in) noexcept;
+// The Reject of `request` (C706 12.5.3.7: same activity, sequence number and object; the body is the NCA
+// status, in the sender's byte order).
+void encode_rpc_reject(const RpcHeader& request, std::uint32_t nca_status, WireWriter& out) noexcept;
 
 }  // namespace tomc::profinet

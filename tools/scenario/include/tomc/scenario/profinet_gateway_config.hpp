@@ -34,6 +34,15 @@ struct ProfinetModuleConfig {
   std::vector<ProfinetSubmoduleConfig> submodules;
 };
 
+// A start-up parameter record ("records"): written to the device after the Connect, before PrmEnd, in the
+// file's order (IEC 61158-6-10 IODWriteReq), e.g. a PROFIdrive parameter request to index 0xB02E.
+struct ProfinetRecordConfig {
+  std::uint16_t slot = 0;
+  std::uint16_t subslot = 1;
+  std::uint16_t index = 0;
+  std::vector<std::uint8_t> data;  // "data": hex digits, two per byte, spaces allowed ("01 00 01 01 10 01")
+};
+
 // Where a slot's telegram submodule is (slot, subslot); the default layout is drives::telegram_place().
 using ProfinetTelegramPlace = drives::TelegramPlace;
 
@@ -70,6 +79,8 @@ struct ProfinetDeviceConfig {
   // `telegram` (in an encoder-only device: the encoder object's p0922 is `encoder_telegram`); false for a
   // device without base-mode parameter access.
   bool check_telegram = true;
+  std::vector<ProfinetRecordConfig> records;  // at most kMaxRecords
+  static constexpr std::size_t kMaxRecords = 64;
   drives::DeviceConfig device_config() const;
   // G1_ZSW and G2_ZSW of the drive telegram, G1_ZSW of each encoder telegram, where the telegrams carry them
   // (at most kMaxEncoderErrorBits).
