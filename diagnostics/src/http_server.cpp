@@ -531,6 +531,12 @@ struct Server::Impl {
       sched_param p{};
       p.sched_priority = 0;
       ::pthread_setschedparam(::pthread_self(), SCHED_IDLE, &p);
+    } else if (&q == &exports) {
+      // kNormal: SCHED_OTHER whatever the thread that called start() runs at (a SCHED_FIFO caller must not
+      // make renders real-time).
+      sched_param p{};
+      p.sched_priority = 0;
+      ::pthread_setschedparam(::pthread_self(), SCHED_OTHER, &p);
     }
     for (;;) {
       Job job;

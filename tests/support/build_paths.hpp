@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <climits>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -19,19 +21,25 @@ inline const std::string& bin_dir() {
     char buffer[PATH_MAX];
     const ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof buffer - 1);
     const std::string exe(buffer, n > 0 ? static_cast<std::size_t>(n) : 0);
+    if (exe.empty()) {  // a test would otherwise run "/tomc" and fail far from the cause
+      std::fprintf(stderr, "build_paths.hpp: cannot read /proc/self/exe\n");
+      std::abort();
+    }
     return exe.substr(0, exe.rfind('/'));
   }();
   return dir;
 }
 
-// The repository: CMAKE_HOME_DIRECTORY of the build directory above bin/; empty if there is none.
+// The repository: CMAKE_HOME_DIRECTORY of the build directory above bin/ (the program aborts with a message
+// if there is none).
 inline const std::string& source_dir() {
   static const std::string dir = [] {
     std::ifstream cache(bin_dir() + "/../CMakeCache.txt");
     constexpr std::string_view kKey = "CMAKE_HOME_DIRECTORY:INTERNAL=";
     for (std::string line; std::getline(cache, line);)
       if (line.starts_with(kKey)) return line.substr(kKey.size());
-    return std::string();
+    std::fprintf(stderr, "build_paths.hpp: no %s in %s/../CMakeCache.txt\n", kKey.data(), bin_dir().c_str());
+    std::abort();
   }();
   return dir;
 }

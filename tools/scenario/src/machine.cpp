@@ -308,7 +308,8 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
     }
     // A tomc extension for the V10 setting (spec 07 §1.6, decision C27), in the leader's length unit.
     double tolerance = 0.0;
-    e.real("LeadingValueReversalTolerance", tolerance, detail::kNonNegative);
+    // Stored as a float: at most 1e9 (a length), so the conversion is defined.
+    e.real("LeadingValueReversalTolerance", tolerance, detail::Range{0.0, 1.0e9, false});
     c.reversal_tolerance = static_cast<float>(tolerance);
     e.finish();
     if (c.source != nullptr) out.push_back(c);
