@@ -450,37 +450,6 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
 // 1000 mm/s² to the base's 1000, so it holds -50 mm/s for the rest of the base ramp (about 49 ms) and brakes
 // in the 50 ms after it, travelling -1.25 - 50 mm/s · rest - 1.25 mm; every cycle |Acceleration| and
 // |ΔVelocity|/1 ms <= 1000 (2000 without U17).
-// U17 with a base whose own jerk is above MaxJerk: a trapezoidal base job (Jerk 0, decision S3) on an axis
-// with MaxJerk 10^5 steps its acceleration to 500 mm/s² in one cycle (5·10^5 mm/s³). No jerk headroom is left
-// upwards; the cruising superimposed motion holds (U16's rule for no headroom) instead of being pushed into
-// a counter-acceleration of (MaxJerk − base jerk)·T = −400 mm/s² (seed 004 §6.7.10.1).
-TEST(MoveSuperimposed, ABaseJerkAboveMaxJerkLeavesTheSuperimposedMotionHeld) {
-  auto data = thousand_limits_data();
-  data.DynamicLimits.MaxJerk = 1.0e5;
-  SuperimposedMachine m(data);
-  ASSERT_GT(m.enable(), 0);
-  m.move_superimposed.Distance = 100.0;
-  m.move_superimposed.VelocityDiff = 20.0;
-  m.move_superimposed.Acceleration = 1000.0;
-  m.move_superimposed.Deceleration = 1000.0;
-  m.move_superimposed.Jerk = 1.0e5;
-  m.move_superimposed.Execute = true;
-  ASSERT_GT(m.run_until([&] { return m.axis->superimposed().state().velocity >= 20.0 - 1e-9; }, 300), 0);
-  m.run(5);  // cruising: acceleration 0
-  ASSERT_NEAR(m.axis->superimposed().state().acceleration, 0.0, 1e-9);
-  m.move_velocity.Velocity = 30.0;
-  m.move_velocity.Acceleration = 500.0;
-  m.move_velocity.Jerk = 0.0;
-  m.move_velocity.Execute = true;
-  double slowest = 20.0;
-  for (int i = 0; i < 100; ++i) {
-    m.run(1);
-    slowest = std::min(slowest, m.axis->superimposed().state().velocity);
-  }
-  EXPECT_NEAR(m.db().Velocity, 50.0, 1e-6);  // the base at 30 mm/s plus the superimposed 20
-  EXPECT_GE(slowest, 20.0 - 1e-9);
-}
-
 TEST(HaltSuperimposed, BrakesWithinWhatTheBaseMotionLeaves) {
   SuperimposedMachine m(thousand_limits_data());
   ASSERT_GT(m.enable(), 0);
