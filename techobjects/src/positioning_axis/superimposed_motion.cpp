@@ -89,11 +89,8 @@ bool SuperimposedMotion::limit_acceleration(const MotionState& before, double dt
   // MaxJerk; where that range and the acceleration headroom do not meet, the acceleration limit wins.
   const bool step = abort_step_;  // AbortAcceleration's step is the manual's, not limited
   abort_step_ = false;
-  // A base whose own jerk is above MaxJerk leaves no jerk headroom that way: held (U16's rule), not pushed.
-  const double rise_jerk = std::max(headroom.jerk_positive, 0.0);
-  const double fall_jerk = std::max(headroom.jerk_negative, 0.0);
-  const double rise = step ? high : std::clamp(before.acceleration + rise_jerk * dt, low, high);
-  const double fall = step ? low : std::clamp(before.acceleration - fall_jerk * dt, low, high);
+  const double rise = step ? high : std::clamp(before.acceleration + headroom.jerk_positive * dt, low, high);
+  const double fall = step ? low : std::clamp(before.acceleration - headroom.jerk_negative * dt, low, high);
   // The sample and the cycle's mean (its velocity step) both: a profile's acceleration changes within a
   // cycle.
   const double mean = (state_.velocity - before.velocity) / dt;
