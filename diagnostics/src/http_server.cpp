@@ -1136,11 +1136,13 @@ void Server::start() {
   ev.data.u64 = kWakeId;
   ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.wake_fd, &ev);
   // Named for `top -H` and for the test that checks the export lane's scheduling.
-  for (auto [q, name] :
+  // (A pair, not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)
+  for (const auto& lane :
        {std::pair{&s.control, "tomc-control"}, {&s.read, "tomc-read"}, {&s.exports, "tomc-export"}}) {
+    LaneQueue* q = lane.first;
     q->stopping = false;
     q->thread = std::thread([&s, q] { s.run_lane(*q); });
-    ::pthread_setname_np(q->thread.native_handle(), name);
+    ::pthread_setname_np(q->thread.native_handle(), lane.second);
   }
   s.running.store(true);
   s.loop_thread = std::thread([&s] { s.loop(); });
