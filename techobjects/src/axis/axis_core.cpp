@@ -189,8 +189,7 @@ ProfileLimits AxisCore::default_ramp(const TO_Struct_DynamicDefaults& d, Dynamic
 // ---------------------------------------------------------------------------------------------------------
 // Alarm reactions (spec 02 §1, seed §6.9.4)
 
-ReactionChange AxisCore::reaction_change() noexcept {
-  if (reaction_in_force == AlarmReaction::kNone && alarms.alarms().empty()) return ReactionChange::kNone;
+ReactionChange AxisCore::take_reaction() noexcept {
   const AlarmReaction r = alarms.strongest_reaction();
   if (r == reaction_in_force) return ReactionChange::kNone;
   const bool escalation = reaction_rank(r) > reaction_rank(reaction_in_force);
@@ -307,7 +306,7 @@ tg::DriveRequest AxisCore::drive_request(std::int32_t remove_enable_reaction) co
 // ---------------------------------------------------------------------------------------------------------
 // The power phase (spec 01 §6, spec 02 §3.1)
 
-PowerEvent AxisCore::update_power_phase(bool ready) noexcept {
+PowerEvent AxisCore::change_power_phase(bool ready) noexcept {
   if (phase == PowerPhase::kDisabled && enable && !enable_removed()) {
     phase = PowerPhase::kEnabling;
     enabling_since_ = cycle;

@@ -163,7 +163,11 @@ class AxisCore {
   bool enable_removed() const noexcept { return reaction_in_force == AlarmReaction::kRemoveEnable; }
   // MC_Interpolator: takes the strongest pending reaction over. On release after "remove enable" / "follow
   // setpoint" an MC_Power whose Enable stayed TRUE enables the axis again (spec 03 §3.3 L2).
-  ReactionChange reaction_change() noexcept;
+  // Inline: the steady cycle (no reaction, no alarm) returns before the call (issue 23, decision P26).
+  ReactionChange reaction_change() noexcept {
+    if (reaction_in_force == AlarmReaction::kNone && alarms.alarms().empty()) return ReactionChange::kNone;
+    return take_reaction();
+  }
   // After an escalation: a running MC_Stop of at least the alarm's weight keeps control (seed §6.9.4), else
   // it ends with CommandAborted. `stop_may_keep` = FALSE where another rule takes over (software-limit stop).
   bool stop_keeps_control(bool stop_may_keep = true) noexcept;
@@ -197,7 +201,11 @@ class AxisCore {
   }
   // ---- the power phase, MC_Interpolator ----
   // `ready`: the drive is in operation with valid actual values (always TRUE on a virtual axis).
-  PowerEvent update_power_phase(bool ready) noexcept;
+  // Inline: an enabled axis whose Enable stays TRUE has nothing to change (issue 23, decision P26).
+  PowerEvent update_power_phase(bool ready) noexcept {
+    if (phase == PowerPhase::kEnabled && enable) return PowerEvent::kNone;
+    return change_power_phase(ready);
+  }
   // The ramp of a disable with StopMode 0 (emergency) or 2 (maximum dynamics); nullopt for 1/3.
   std::optional<ProfileLimits> disable_ramp(const TO_Struct_DynamicDefaults& d,
                                             const TO_Struct_DynamicLimits& l, DynamicUnits u) const noexcept;
@@ -256,6 +264,8 @@ class AxisCore {
 
  private:
   bool safe_stop(const DriveConnection& drive) noexcept;  // 421/550; TRUE while a safe stop is seen
+  ReactionChange take_reaction() noexcept;                // reaction_change() with an alarm or a reaction
+  PowerEvent change_power_phase(bool ready) noexcept;     // update_power_phase() off its steady state
   // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
   static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;
