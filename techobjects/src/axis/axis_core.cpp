@@ -384,21 +384,8 @@ void AxisCore::restart() noexcept {
   torque.stw2_fixed_stop = false;  // the restarted connection cleared the STW bits; set again if active
 }
 
-void AxisCore::update_words(std::uint32_t& status_word, std::uint32_t& status_word2,
-                            std::uint32_t& error_word, std::uint32_t& warning_word,
-                            TO_Struct_ErrorDetail& detail, bool simulation) const noexcept {
-  assign(status_word, StatusWordBit::kEnable, phase == PowerPhase::kEnabled && !enable_removed());
-  const bool pending = !alarms.alarms().empty();
-  assign(status_word, StatusWordBit::kError, pending && alarms.any_error());
-  assign(status_word, StatusWordBit::kControlPanelActive, control.held());
-  assign(status_word, StatusWordBit::kTorqueLimitingCommand, torque.active);
-  assign(status_word, StatusWordBit::kInLimitation, in_limitation);
-  assign(status_word, StatusWordBit::kAxisSimulation, simulation);
-  assign(status_word2, StatusWord2Bit::kStopCommand, stop.id != 0);
-  if (!pending) {  // the usual cycle: nothing to look up
-    detail = TO_Struct_ErrorDetail{};
-    return;
-  }
+void AxisCore::alarm_status(std::uint32_t& error_word, std::uint32_t& warning_word,
+                            TO_Struct_ErrorDetail& detail) const noexcept {
   alarm_words(alarms.alarms(), error_word, warning_word);
   const PendingAlarm* top = alarms.error_detail();
   detail.Number = top == nullptr ? 0 : top->number;

@@ -22,6 +22,7 @@
 #include "tomc/techobjects/axis/job_table.hpp"
 #include "tomc/techobjects/axis/torque_data.hpp"
 #include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/datablocks/status_bits.hpp"
 #include "tomc/techobjects/datablocks/to_types.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
@@ -223,9 +224,24 @@ class AxisCore {
   // The bits every axis shows: X0 Enable, X1 Error, X4 ControlPanelActive, X25 TorqueLimitingCommand, X26
   // InLimitation, X30 AxisSimulation, X3 kept; StatusWord2 X0 StopCommand; the ErrorWord/WarningWord bits of
   // the pending alarms (a column of the alarm table) and ErrorDetail.
+  // Inline: once per interpolator cycle of every axis; the words stay in registers (issue 23, P26).
   void update_words(std::uint32_t& status_word, std::uint32_t& status_word2, std::uint32_t& error_word,
                     std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
-                    bool simulation) const noexcept;
+                    bool simulation) const noexcept {
+    assign(status_word, StatusWordBit::kEnable, phase == PowerPhase::kEnabled && !enable_removed());
+    const bool pending = !alarms.alarms().empty();
+    assign(status_word, StatusWordBit::kError, pending && alarms.any_error());
+    assign(status_word, StatusWordBit::kControlPanelActive, control.held());
+    assign(status_word, StatusWordBit::kTorqueLimitingCommand, torque.active);
+    assign(status_word, StatusWordBit::kInLimitation, in_limitation);
+    assign(status_word, StatusWordBit::kAxisSimulation, simulation);
+    assign(status_word2, StatusWord2Bit::kStopCommand, stop.id != 0);
+    if (!pending) {  // the usual cycle: nothing to look up
+      detail = TO_Struct_ErrorDetail{};
+      return;
+    }
+    alarm_status(error_word, warning_word, detail);
+  }
 
   // The start conditions of MC_TorqueAdditive / MC_TorqueRange (torque_data.hpp): `drive` nullptr on a
   // virtual or simulated axis; `reference` and `inverse` give the wire format of the limits.
@@ -264,8 +280,11 @@ class AxisCore {
 
  private:
   bool safe_stop(const DriveConnection& drive) noexcept;  // 421/550; TRUE while a safe stop is seen
-  ReactionChange take_reaction() noexcept;                // reaction_change() with an alarm or a reaction
-  PowerEvent change_power_phase(bool ready) noexcept;     // update_power_phase() off its steady state
+  // update_words() with alarms pending: their ErrorWord/WarningWord bits and ErrorDetail.
+  void alarm_status(std::uint32_t& error_word, std::uint32_t& warning_word,
+                    TO_Struct_ErrorDetail& detail) const noexcept;
+  ReactionChange take_reaction() noexcept;             // reaction_change() with an alarm or a reaction
+  PowerEvent change_power_phase(bool ready) noexcept;  // update_power_phase() off its steady state
   // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
   static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;
