@@ -1198,3 +1198,45 @@ TEST(GatewayNetns, TsharkDissectsEveryFrameTypeTheGatewaySends) {
     summary += "  " + std::to_string(count) + " × " + kind + "\n";
   std::printf("frames the gateway sent, as tshark dissects them:\n%s", summary.c_str());
 }
+
+// Decision I30 (the RTA timer, IEC 61158-6-10 APMS): a device that never acknowledges our AlarmAck DATA.
+// `tomc gateway` (RTATimeoutFactor 1, RTARetries 3 in its AlarmCRBlock) sends it once and again every
+// 100 ms, three times, then ends the AR as a lost one and reconnects; the status over DDS says why. The
+// device's notification, still queued on the start-up thread's socket, is not answered again in the new AR
+// (an AlarmAck for an alarm of the AR before would start the same end over).
+TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions silent;
+  silent.acknowledge_alarm_acks = false;
+  DeviceHost device(hosts.second, silent);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  const DdsObserver observer(hosts.first);
+  for (int i = 0; i < 500 && device.output_frames() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(device.ars(), 1) << gateway.log();
+  ASSERT_GT(device.output_frames(), 0) << gateway.log();
+  device.send_alarm(pn::alarm_type::kDiagnosis);
+  for (int i = 0; i < 500 && device.ars() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(device.ars(), 2) << device.ar_ends() << gateway.log();
+  EXPECT_EQ(device.alarm_acks(), 1);
+  EXPECT_EQ(device.alarm_ack_frames(), 4);          // sent, then RTARetries resends
+  EXPECT_GE(device.alarm_ack_span_us(), 295'000u);  // three timeouts of 100 ms (less the frames' own delays)
+  const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
+    return s.device.state == "connected" && s.device.detail.find("RTA timeout") != std::string::npos;
+  });
+  EXPECT_EQ(
+      seen.device.detail,
+      "RTA timeout: AlarmAck (low) resent 3 times every 100 ms; alarm 1 acknowledged: diagnosis, slot 1 "
+      "subslot 2, USI 0x8000")
+      << gateway.log();
+  // Longer than the timer's 400 ms: nothing of the first AR is acknowledged in the second.
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  EXPECT_EQ(device.alarm_acks(), 1);
+  EXPECT_EQ(device.alarm_ack_frames(), 4);
+  EXPECT_EQ(device.ars(), 2) << device.ar_ends();
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
