@@ -283,6 +283,7 @@ struct ProfinetGateway::Impl {
   // AR ended after RTARetries resends (true; counted for the status, which names the priority).
   bool alarm_timers(Device& d, std::uint64_t now) noexcept {
     for (const bool high : {true, false}) {
+      if (!d.controller->alarm_ack_pending(high)) continue;  // inline: the usual case costs no call
       std::size_t bytes = 0;
       const pn::AlarmTimerAction action = d.controller->alarm_timer(high, now, alarm_ack, bytes);
       if (action == pn::AlarmTimerAction::kResend) cyclic_socket.send(std::span(alarm_ack).first(bytes));
