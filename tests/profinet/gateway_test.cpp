@@ -1240,3 +1240,31 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   EXPECT_EQ(device.error(), "");
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
+
+// Decision I32, commissioning from the product: `tomc gateway --identify` in the gateway namespace lists the
+// emulated device (DCP Identify All: its name, MAC and IP suite), `--set-name` renames it by its MAC (DCP
+// Set, permanent), and the next --identify lists it by the new name. No gateway runs: these are the
+// commissioning engineer's steps before one does.
+TEST(GatewayNetns, IdentifyListsTheStationsAndSetNameRenamesOne) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceHost device(hosts.second);
+  const std::string mac = mac_of(hosts.second, "pn-e");
+  ASSERT_FALSE(mac.empty());
+  const std::string tomc = std::string("ip netns exec ") + hosts.first + " " + TOMC_BINARY + " gateway ";
+  const auto identify = [&] {
+    return pn::testing::output_of(tomc + "--identify --interface pn-g --wait-ms 300 2>&1; echo rc=$?");
+  };
+  const std::string listed = identify();
+  EXPECT_NE(listed.find("gateway: 1 station(s) on pn-g answered DCP Identify All\n  drive-1  " + mac +
+                        "  10.218.0.2/255.255.255.0  VendorID 0x"),
+            std::string::npos)
+      << listed;
+  EXPECT_NE(listed.find("rc=0"), std::string::npos) << listed;
+  EXPECT_EQ(pn::testing::output_of(tomc + "--set-name axis-7.cell-2 --mac " + mac + " --interface pn-g 2>&1"),
+            "gateway: " + mac + " is now 'axis-7.cell-2'\n");
+  const std::string renamed = identify();
+  EXPECT_NE(renamed.find("\n  axis-7.cell-2  " + mac + "  10.218.0.2/"), std::string::npos) << renamed;
+  EXPECT_EQ(device.error(), "");
+}
