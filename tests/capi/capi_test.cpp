@@ -1095,6 +1095,7 @@ TEST(CApi, CammingAFollowerFromC) {
 // relative job follows it at once: profile time n ms after the n-th cycle following the edge, y(0.25) =
 // 4.140625 mm, y(0.5) = 20 mm at 75 mm/s, 40 mm at rest after 1 s. A cam not interpolated: 16#8150. Not a
 // TO_Cam, or a cam beside the point structure: TOMC_ERROR_WRONG_OBJECT_TYPE with the input's name.
+// spec 03 §4.7, seed 004 §6.8.4; decisions L8, U15.
 TEST(CApi, PositionProfileFollowsATOCamFromC) {
   constexpr const char* kProfile = R"({
     "cycle_time": 0.001,

@@ -190,6 +190,7 @@ struct FourEncoderDevice {
 // The budgets with several encoders, in a runtime (the start values went to its load memory), each encoder
 // beyond the first 232 bytes of heap: one to three encoders within the 8,192 bytes (7,568, 7,800, 8,032),
 // four at 8,264 (72 above them, docs/performance.md "Memory per axis").
+// Decisions B1 (encoders 2…4 beside the object, the 8,192-byte budget), M6 and M10.
 TEST(MemoryPerAxis, ThreeEncodersWithinEightKiBFourAtItsStatedCost) {
   FourEncoderDevice d;
   const auto in_runtime = [&](std::size_t encoders, const char* name) -> PositioningAxis& {

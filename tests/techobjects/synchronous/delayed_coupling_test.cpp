@@ -69,6 +69,7 @@ struct DelayedMachine {
 
 // The follower coupled "Delayed" lags the setpoint-coupled one by exactly the delay: 5 ms = 5 cycles gives
 // D(k) = F(k − 5) in position, velocity and acceleration; 2.5 ms gives the mean of F(k − 2) and F(k − 3).
+// spec 07 §1.5, §6.1 (the leader setpoint LocalLeadingValueDelayTime ago, interpolated); decision C26.
 TEST(DelayedCoupling, FollowerLagsTheSetpointCoupledOneByTheDelay) {
   struct Row {
     double delay_s;

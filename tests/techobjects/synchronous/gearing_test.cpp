@@ -402,6 +402,7 @@ TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
 // tolerance keeps the synchronization (InSync at L = 200, F = 50 + (L − 200)); 0.001 more is alarm 608 and
 // the job ends with 16#8001; tolerance 0: any reversal the leader's velocity shows is (GI-18; 0.1 mm back
 // takes 9 cycles at 5,000 mm/s² — a move back that starts and ends within one cycle shows no velocity).
+// spec 07 §1.6, §1.10 (alarm 608) and §8 (GI-18); decision C27.
 TEST(Gearing, ReversalToleranceDuringSynchronizationAtItsEdge) {
   struct Row {
     float tolerance;
