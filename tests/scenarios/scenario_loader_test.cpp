@@ -808,6 +808,44 @@ TEST(ScenarioLoader, MisplacedLeadingValueInterconnections) {
       << *other;
 }
 
+// A leader L and a follower F with one interconnection `interconnection` (its JSON without the braces).
+Json with_interconnection(const std::string& interconnection) {
+  Json d = base();
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "L", "type": "TO_PositioningAxis",
+    "config": { "VirtualAxis.Mode": 1 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "E", "type": "TO_ExternalEncoder",
+    "drive": { "adapter": "simulated", "encoder_telegram": 81 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "F", "type": "TO_SynchronousAxis",
+    "config": { "VirtualAxis.Mode": 1 }, "LeadingValueInterconnections": [ { )" +
+                                                interconnection + " } ] }"));
+  return d;
+}
+
+// LeadingValueReversalTolerance: 0…1e9 in the leader's length unit (spec 07 §1.6 [OPEN]; decision C27: at
+// most 1e9, so its conversion to float is defined). The bounds load; beyond them the key's path is named.
+TEST(ScenarioLoader, ReversalToleranceBounds) {
+  const std::string key = R"("Leader": "L", "LeadingValueReversalTolerance": )";
+  for (const char* accepted : {"0", "1e9"})
+    EXPECT_TRUE(problems_of(with_interconnection(key + accepted)).empty()) << accepted;
+  EXPECT_EQ(problem_of(with_interconnection(key + "1.000001e9")),
+            "technology_objects[3].LeadingValueInterconnections[0].LeadingValueReversalTolerance: 1000001000 "
+            "out of range 0..1e9");
+  EXPECT_EQ(problem_of(with_interconnection(key + "-0.1")),
+            "technology_objects[3].LeadingValueInterconnections[0].LeadingValueReversalTolerance: -0.1 out "
+            "of range 0..1e9");
+}
+
+// "Delayed" to an external encoder (decision C26: only an axis keeps the history of its setpoint) is a
+// problem of the interconnection's Coupling naming the follower and the leader; to an axis it loads.
+TEST(ScenarioLoader, DelayedCouplingToAnExternalEncoderNamesTheInterconnection) {
+  EXPECT_EQ(
+      problem_of(with_interconnection(R"("Leader": "E", "Coupling": "Delayed")")),
+      "technology_objects[3].LeadingValueInterconnections[0].Coupling: 'F' cannot couple \"Delayed\" to "
+      "'E', a TO_ExternalEncoder (only a positioning or synchronous axis can, decision C26)");
+  EXPECT_TRUE(problems_of(with_interconnection(R"("Leader": "E", "Coupling": "ActualValue")")).empty());
+  EXPECT_TRUE(problems_of(with_interconnection(R"("Leader": "L", "Coupling": "Delayed")")).empty());
+}
+
 // MC_CamIn.Cam names a cam of the scenario (spec 07 §3.4): another TO type or an unknown name is a problem of
 // the event's input, with its path.
 TEST(ScenarioLoader, CamInputNamesACam) {
