@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <thread>
 #include <utility>
@@ -40,6 +41,14 @@ std::string last_error() {
   return tomc_last_error();
 }
 
+// The runtime of `machine` and, for each {name, &object}, that TO of it (use in ASSERT_NO_FATAL_FAILURE).
+void create_with_objects(const char* machine, tomc_runtime*& runtime,
+                         std::initializer_list<std::pair<const char*, tomc_object**>> objects) {
+  ASSERT_EQ(tomc_runtime_create(machine, &runtime), TOMC_OK) << last_error();
+  for (const auto& [name, object] : objects)
+    ASSERT_EQ(tomc_runtime_find_object(runtime, name, object), TOMC_OK) << name << ": " << last_error();
+}
+
 struct Machine {
   tomc_runtime* runtime = nullptr;
   tomc_object* slide = nullptr;
@@ -51,6 +60,18 @@ struct Machine {
   }
   ~Machine() { tomc_runtime_destroy(runtime); }
 };
+
+// MC_Power and then MC_Home (set position 0) on the Slide, called after every cycle until homed.
+void enable_and_home(const Machine& m, tomc_MC_Power& power, tomc_MC_Home& home) {
+  power.Enable = true;
+  for (int k = 0; k < 200 && !home.Done; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
+    home.Execute = power.Status;
+    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
+  }
+  ASSERT_TRUE(home.Done);
+}
 
 // MC_Power, MC_Home (set position 0) and MC_MoveAbsolute, called after every cycle as a user program would.
 struct PositioningProgram {
@@ -136,14 +157,7 @@ TEST(CApi, MotionInPositionFeedsTheHostsSetpointsEveryCycle) {
   tomc_MC_MotionInPosition_init(&feed);
   EXPECT_FALSE(feed.Enable);  // the manual's defaults (generate.py's table)
   EXPECT_EQ(feed.Position, 0.0);
-  power.Enable = true;
-  for (int k = 0; k < 200 && !home.Done; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
-    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
-    home.Execute = power.Status;
-    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
-  }
-  ASSERT_TRUE(home.Done);
+  ASSERT_NO_FATAL_FAILURE(enable_and_home(m, power, home));
   const double pi = std::acos(-1.0);
   const auto x = [&](int k) { return 2.0 * std::sin(2.0 * pi * 2.0 * k * 0.001); };
   const auto v = [&](int k) { return 2.0 * 2.0 * pi * 2.0 * std::cos(2.0 * pi * 2.0 * k * 0.001); };
@@ -206,13 +220,11 @@ TEST(CApi, MotionInSuperimposedAxesAddsTheConfiguredAxisInTheSameCycle) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kTwoAxes, &runtime), TOMC_OK) << last_error();
   tomc_object* feeder = nullptr;
   tomc_object* other = nullptr;
   tomc_object* carriage = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Feeder", &feeder), TOMC_OK);
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Other", &other), TOMC_OK);
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Carriage", &carriage), TOMC_OK);
+  ASSERT_NO_FATAL_FAILURE(create_with_objects(
+      kTwoAxes, runtime, {{"Feeder", &feeder}, {"Other", &other}, {"Carriage", &carriage}}));
   tomc_MC_Power p1, p2, p3;
   tomc_MC_MoveVelocity jog;
   tomc_MC_MotionInSuperimposedAxes axes;
@@ -541,11 +553,9 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kGearing, &runtime), TOMC_OK) << last_error();
   tomc_object* leader = nullptr;
   tomc_object* follower = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(create_with_objects(kGearing, runtime, {{"L", &leader}, {"F", &follower}}));
   tomc_MC_Power power_l;
   tomc_MC_Power power_f;
   tomc_MC_GearIn gear;
@@ -838,14 +848,7 @@ TEST(CApi, PositionProfileFollowsTheHostsTimePositionPoints) {
   tomc_MC_Home home;
   tomc_MC_Power_init(&power);
   tomc_MC_Home_init(&home);
-  power.Enable = true;
-  for (int k = 0; k < 200 && !home.Done; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
-    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
-    home.Execute = power.Status;
-    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
-  }
-  ASSERT_TRUE(home.Done);
+  ASSERT_NO_FATAL_FAILURE(enable_and_home(m, power, home));
   tomc_time_position_profile points;
   std::memset(&points, 0, sizeof(points));
   points.NumberOfPoints = 4;
@@ -910,13 +913,11 @@ TEST(CApi, CammingAFollowerFromC) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kCamming, &runtime), TOMC_OK) << last_error();
   tomc_object* leader = nullptr;
   tomc_object* follower = nullptr;
   tomc_object* cam = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "C", &cam), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(
+      create_with_objects(kCamming, runtime, {{"L", &leader}, {"F", &follower}, {"C", &cam}}));
   tomc_object_type type = TOMC_TO_SPEED_AXIS;
   ASSERT_EQ(tomc_object_type_of(cam, &type), TOMC_OK);
   EXPECT_EQ(type, TOMC_TO_CAM);
@@ -1107,13 +1108,11 @@ TEST(CApi, PositionProfileFollowsATOCamFromC) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kProfile, &runtime), TOMC_OK) << last_error();
   tomc_object* p5 = nullptr;
   tomc_object* raw = nullptr;
   tomc_object* slide = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "P5", &p5), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Raw", &raw), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Slide", &slide), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(
+      create_with_objects(kProfile, runtime, {{"P5", &p5}, {"Raw", &raw}, {"Slide", &slide}}));
   tomc_MC_Power power;
   tomc_MC_Power_init(&power);
   power.Enable = true;
