@@ -3,9 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "build_paths.hpp"
@@ -205,40 +211,100 @@ TEST(ScenarioRun, VirtualAxisWithoutDrive) {
 }
 
 // Determinism (issue 22): every scenario file of the repository (tests/scenarios, its open_issues, the
-// examples `tomc sim` runs) gives a byte-identical trace on a second run in the same process: time is the
-// cycle counter, never the wall clock, and nothing depends on addresses or on the order of a hash container.
-// A failure names the file and the first line that differs.
-TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> files;
-  for (const char* dir : {"tests/scenarios", "tests/scenarios/open_issues"}) {
-    if (!fs::is_directory(fs::path(TOMC_SOURCE_DIR) / dir))
-      continue;  // open_issues/ only while there are some
-    for (const auto& entry : fs::directory_iterator(fs::path(TOMC_SOURCE_DIR) / dir)) {
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
+// examples `tomc sim` runs) gives a byte-identical trace on a second run: time is the cycle counter, never
+// the wall clock, and nothing depends on addresses or on the order of a hash container. The second run is the
+// one ctest's `scenario.<name>` made with `tomc sim --out` in another process (ctest starts these tests after
+// them, DEPENDS in CMakeLists.txt) when its trace file is newer than the scenario file, `tomc` and this
+// program; otherwise (the tests run alone) this program runs the file twice. ctest runs it in six shards, so
+// that `ctest -j2` can balance them (decision V14). A failure names the file and the first line that differs.
+namespace fs = std::filesystem;
+
+struct ScenarioFile {
+  fs::path json;
+  fs::path sim_trace;  // where the ctest `scenario.<name>` writes its trace (tests/scenarios/CMakeLists.txt)
+};
+
+std::vector<ScenarioFile> scenario_files() {
+  const fs::path source(TOMC_SOURCE_DIR);
+  const fs::path traces = fs::path(tomc::testing::bin_dir()) / ".." / "tests" / "scenarios";
+  std::vector<ScenarioFile> files;
+  for (const auto& [dir, prefix] :
+       {std::pair{"tests/scenarios", ""}, std::pair{"tests/scenarios/open_issues", "open_issue_"}}) {
+    if (!fs::is_directory(source / dir)) continue;  // open_issues/ only while there are some
+    for (const auto& entry : fs::directory_iterator(source / dir)) {
+      if (entry.path().extension() == ".json")
+        files.push_back({entry.path(), traces / (prefix + entry.path().stem().string() + ".csv")});
     }
   }
-  for (const char* example : {"speed_axis_conveyor.json", "positioning_machine.json", "gearing_machine.json"})
-    files.push_back(fs::path(TOMC_SOURCE_DIR) / "examples" / example);
-  std::sort(files.begin(), files.end());
+  for (const char* example :
+       {"speed_axis_conveyor", "positioning_machine", "gearing_machine", "rotary_knife", "flying_saw"})
+    files.push_back(
+        {source / "examples" / (std::string(example) + ".json"), traces / (std::string(example) + ".csv")});
+  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.json < b.json; });
+  return files;
+}
+
+// The trace `tomc sim` wrote, if it was written after the file, `tomc` and this program last changed.
+std::optional<std::string> fresh_sim_trace(const ScenarioFile& file) {
+  std::error_code error;
+  const auto written = fs::last_write_time(file.sim_trace, error);
+  if (error) return std::nullopt;
+  for (const fs::path& input : {file.json, fs::path(TOMC_BINARY), fs::path("/proc/self/exe")}) {
+    const auto changed = fs::last_write_time(input, error);
+    if (error || changed >= written) return std::nullopt;
+  }
+  std::ifstream in(file.sim_trace, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string trace_of(const fs::path& file) {
+  auto loaded = Scenario::load_file(file);
+  EXPECT_TRUE(loaded.scenario) << file << ": " << (loaded.problems.empty() ? "" : loaded.problems.front());
+  std::ostringstream trace;
+  if (loaded.scenario) (void)loaded.scenario->run(&trace);
+  return trace.str();
+}
+
+// TOMC_SCENARIO_SHARD="k/n" (set by each of the ctest entries): the files whose place in the sorted list is k
+// modulo n; unset, all of them.
+std::pair<std::size_t, std::size_t> shard() {
+  const char* value = std::getenv("TOMC_SCENARIO_SHARD");
+  std::size_t k = 0;
+  std::size_t n = 1;
+  if (value != nullptr && (std::sscanf(value, "%zu/%zu", &k, &n) != 2 || n == 0 || k >= n)) {
+    ADD_FAILURE() << "TOMC_SCENARIO_SHARD='" << value << "': expected k/n with k < n";
+    return {0, 1};
+  }
+  return {k, n};
+}
+
+// Issue 22 (docs/reliability.md §3); decision V14 (the shards and the trace of `tomc sim`), described above.
+TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
+  const std::vector<ScenarioFile> files = scenario_files();
   ASSERT_GE(files.size(), 50u);
-  auto trace_of = [](const fs::path& file) {
-    auto loaded = Scenario::load_file(file);
-    EXPECT_TRUE(loaded.scenario) << file << ": " << (loaded.problems.empty() ? "" : loaded.problems.front());
-    std::ostringstream trace;
-    if (loaded.scenario) (void)loaded.scenario->run(&trace);
-    return trace.str();
-  };
-  for (const auto& file : files) {
-    const std::string first = trace_of(file);
-    const std::string second = trace_of(file);
-    EXPECT_GT(first.size(), 0u) << file;
+  const auto [k, n] = shard();
+  int shared = 0;
+  int mine = 0;
+  for (std::size_t i = k; i < files.size(); i += n) {
+    const ScenarioFile& file = files[i];
+    ++mine;
+    const std::string first = trace_of(file.json);
+    const std::optional<std::string> sim = fresh_sim_trace(file);
+    shared += sim ? 1 : 0;
+    const std::string second = sim ? *sim : trace_of(file.json);
+    EXPECT_GT(first.size(), 0u) << file.json;
     if (first == second) continue;
     const auto at =
         std::mismatch(first.begin(), first.end(), second.begin(), second.end()).first - first.begin();
     const auto line = std::count(first.begin(), first.begin() + at, '\n') + 1;
-    ADD_FAILURE() << file << ": the traces differ from line " << line;
+    ADD_FAILURE() << file.json << ": the traces differ from line " << line << " (second run: "
+                  << (sim ? "`tomc sim`'s " + file.sim_trace.string() : std::string("in this program"))
+                  << ")";
   }
+  std::cout << shared << " of " << mine
+            << " files compared with the trace of `tomc sim`, the others run twice here\n";
 }
 
 }  // namespace
