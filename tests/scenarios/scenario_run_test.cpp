@@ -55,6 +55,7 @@ std::string scenario(int cycles, const std::string& timeline, const std::string&
          "}";
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (the header, values of every type, bits).
 TEST(ScenarioRun, TraceFormat) {
   auto s = load(scenario(3,
                          R"([{ "cycle": 1, "instance": "power1", "instruction": "MC_Power", "axis": "Axis1",
@@ -78,6 +79,7 @@ TEST(ScenarioRun, TraceFormat) {
   EXPECT_EQ(rows[3][5], "12.5");
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (LREALs print with the digits that read back).
 TEST(ScenarioRun, RealsRoundTrip) {
   auto s = load(scenario(1, "[]", R"(["Axis1.Override.Velocity"])"));
   ASSERT_TRUE(s);
@@ -91,6 +93,7 @@ TEST(ScenarioRun, RealsRoundTrip) {
   EXPECT_EQ(rows[1][2], "0.10000000000000001");
 }
 
+// docs/scenarios.md "`timeline`: events" and "Instruction inputs"; spec 03 §3.6 (call order).
 TEST(ScenarioRun, InputsKeepTheirValuesAndEventsOfOneCycleApplyInOrder) {
   auto s = load(scenario(6,
                          R"([{ "cycle": 0, "instance": "p", "instruction": "MC_Power", "axis": "Axis1",
@@ -106,6 +109,7 @@ TEST(ScenarioRun, InputsKeepTheirValuesAndEventsOfOneCycleApplyInOrder) {
   EXPECT_EQ(rows[6][3], "3");
 }
 
+// docs/scenarios.md "`timeline`: events" (an instance exists from its first event on).
 TEST(ScenarioRun, InstancesAreCalledOnlyOnceCreated) {
   // An MC_Reset traced before its first event shows its initial outputs; its edge is its first call.
   auto s = load(scenario(4,
@@ -129,6 +133,7 @@ std::unique_ptr<Scenario> enabled_axis_with(const std::string& fault_events, con
                        R"(["p.Status", "Axis1.ErrorDetail.Number", "Axis1.drive.active_fault"])", expect));
 }
 
+// docs/scenarios.md "`inject` / `clear`"; spec 06 §6.4 (G1_ZSW.15, the error code); decision S2 (401).
 TEST(ScenarioRun, EncoderErrorOfTheMotorEncoderFaultsTheDrive) {
   // A motor-shaft G1 error faults the drive with F31110 (docs/simulated-drive.md), seen as alarm 401.
   auto s = enabled_axis_with(
@@ -141,6 +146,7 @@ TEST(ScenarioRun, EncoderErrorOfTheMotorEncoderFaultsTheDrive) {
   EXPECT_TRUE(s->run(nullptr).ok());
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (alarm names) and "`inject` / `clear`".
 TEST(ScenarioRun, AlarmTraceNamesShowPendingAndAdditionalValue) {
   // "<TO>.alarm.<n>" and "<TO>.alarm.<n>.additional_value": raised in cycle 50, acknowledged by MC_Reset.
   auto s = enabled_axis_with(
@@ -157,6 +163,7 @@ TEST(ScenarioRun, AlarmTraceNamesShowPendingAndAdditionalValue) {
   EXPECT_EQ(result.expectations_checked, 7u);
 }
 
+// docs/scenarios.md "`inject` / `clear`"; spec 06 §5.2 (sign-of-life monitoring); decision S2.
 TEST(ScenarioRun, SignOfLifeFreezeAndLinkLoss) {
   auto s = enabled_axis_with(
       R"({ "cycle": 50, "inject": { "target": "Axis1", "fault": "sign_of_life_freeze" } },
@@ -173,6 +180,7 @@ TEST(ScenarioRun, SignOfLifeFreezeAndLinkLoss) {
   EXPECT_TRUE(result.ok()) << ::testing::PrintToString(result.failed_expectations);
 }
 
+// docs/scenarios.md "`expect`: expected values (tomc extension)".
 TEST(ScenarioRun, FailedExpectationsAreReportedEach) {
   auto s = load(scenario(5, "[]", "[]",
                          R"([{ "cycle": 4, "values": { "Axis1.Override.Velocity": 99, "Axis1.Velocity": 0 } },
@@ -198,6 +206,7 @@ TEST(ScenarioRun, RunsOnce) {
   ASSERT_EQ(again.runtime_errors.size(), 1u);
 }
 
+// spec 01 §2.5 (virtual axis: no drive, enabled at once); docs/scenarios.md "`technology_objects[i]`".
 TEST(ScenarioRun, VirtualAxisWithoutDrive) {
   auto s = load(R"({ "cycle_time": 0.001, "cycles": 120, "technology_objects": [
       { "name": "V", "type": "TO_SpeedAxis", "config": { "VirtualAxis.Mode": 1, "DynamicLimits.MaxJerk": 0 } }],
