@@ -117,6 +117,7 @@ bool read_bit(const tomc_object* o, const char* path) {
   return value;
 }
 
+// Decisions E3 (the generated MC_* structs) and E2; spec 03 §4.1, §4.3, §4.5.
 TEST(CApi, PositioningMoveThroughTheGeneratedStructs) {
   Machine m;
   PositioningProgram program(200.0);
@@ -398,6 +399,7 @@ TEST(CApi, TorqueJobsOnTelegram750) {
   tomc_runtime_destroy(runtime);
 }
 
+// Decision E4; spec 04 §0.2 (the access column: DIR/CAL writable, RON/RES not).
 TEST(CApi, WritesFollowTheManualsAccessRules) {
   Machine m;
   // DIR: written by the user program, effective at the next MC_Servo.
@@ -422,6 +424,7 @@ TEST(CApi, WritesFollowTheManualsAccessRules) {
   EXPECT_FALSE(active);
 }
 
+// Decisions E4 (typed calls refuse another type) and E2 (a message naming it).
 TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
   Machine m;
   bool b = false;
@@ -450,6 +453,7 @@ TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
   EXPECT_EQ(tomc_runtime_object_at(m.runtime, 2, &none), TOMC_ERROR_UNKNOWN_OBJECT);
 }
 
+// Decision E2 (every entry point returns a status, never crashes).
 TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
   Machine m;
   double x = 0.0;
@@ -493,6 +497,7 @@ TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
   tomc_runtime_destroy(nullptr);
 }
 
+// Decision E2 ({size, version}: a mismatch is TOMC_ERROR_VERSION).
 TEST(CApi, StructsOfAnotherLayoutAreRefused) {
   Machine m;
   tomc_MC_MoveAbsolute move;
@@ -511,6 +516,7 @@ TEST(CApi, StructsOfAnotherLayoutAreRefused) {
   EXPECT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_ERROR_VERSION);
 }
 
+// Decision E3 (each MC_* call takes the TO types of its table entry); spec 03 §1 (the instructions per TO).
 TEST(CApi, InstructionsOfAnotherTechnologyObjectTypeAreRefused) {
   Machine m;
   tomc_MC_MoveAbsolute move;
@@ -638,6 +644,7 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
   tomc_runtime_destroy(runtime);
 }
 
+// Decision E2; docs/scenarios.md "Exit status and messages" (every problem with its path).
 TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   tomc_runtime* r = reinterpret_cast<tomc_runtime*>(&r);
   EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);
@@ -674,6 +681,7 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   EXPECT_NE(last_error().find("/nonexistent/machine.json: cannot open"), std::string::npos) << last_error();
 }
 
+// Decisions E1 (the machine loader in libtomc) and C22 (TO_Cam as a tomc_object).
 TEST(CApi, TheExamplesMachineFilesLoad) {
   // With their cams (the demo's knife, the rotary knife's cut cam): TO_Cam objects since issue 19.
   for (const char* file : {"positioning_machine.json", "gearing_machine.json", "flying_saw.json",
@@ -703,6 +711,7 @@ TEST(CApi, TheExamplesMachineFilesLoad) {
   tomc_runtime_destroy(r);
 }
 
+// Decision E2; spec 02 §1.3 (technology alarms), docs/errors.md.
 TEST(CApi, AlarmsOfTheTechnologyObject) {
   Machine m;
   PositioningProgram program(400.0);  // beyond the software limit switch at 300 mm
@@ -746,6 +755,7 @@ void realtime_user_program(tomc_runtime*, void* context) {
   if (p->program.move.Done) p->done.store(true);
 }
 
+// Decision E5 (only the runner's thread uses the TOs while it runs).
 TEST(CApi, RealTimeRunnerRunsTheUserProgramInItsThread) {
   Machine m;
   RealtimeProgram program;
@@ -811,6 +821,7 @@ std::string http_get(int port, const std::string& path) {
   return answer;
 }
 
+// Issue 15 (docs/embedding.md "The C ABI"): the diagnostics server of a C runtime; decision E5.
 TEST(CApi, DiagnosticsServerServesTheMachine) {
   Machine m;
   tomc_diagnostics_config config = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), nullptr, 70000, nullptr};
@@ -833,6 +844,7 @@ TEST(CApi, DiagnosticsServerServesTheMachine) {
   EXPECT_EQ(tomc_runtime_step(m.runtime, 5), TOMC_OK);  // the cycle goes on without the server
 }
 
+// Decision E2 (tomc_status and its names).
 TEST(CApi, StatusNamesAndVersion) {
   EXPECT_STREQ(tomc_status_name(TOMC_ERROR_WRONG_TYPE), "TOMC_ERROR_WRONG_TYPE");
   EXPECT_STREQ(tomc_status_name(static_cast<tomc_status>(99)), "TOMC_ERROR_UNKNOWN_STATUS");
