@@ -291,6 +291,7 @@ struct ErrorCase {
 };
 
 // Bad input -> one line on stderr, exit status 2, nothing on stdout.
+// README.md "`tomc telegram`: decode a captured frame, build one by hand" (bad input: status 2); spec 06 §2.
 TEST(CliErrors, ExitTwoWithOneLine) {
   const std::vector<ErrorCase> cases = {
       {"unknown telegram",
