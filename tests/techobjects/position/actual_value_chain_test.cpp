@@ -859,7 +859,7 @@ TEST(Validation, FirstProblemWithPath) {
 }
 
 // Real-time contract: the cyclic interface is noexcept (no allocation by construction: no dynamic members).
-// The guide's real-time rules (no exceptions, no allocation in MC_Servo); issue 14.
+// ARCHITECTURE-GUIDE §2 (MC_Servo: the cyclic path); the developer guide's real-time rules (no exceptions).
 TEST(RealTime, CyclicInterfaceIsNoexcept) {
   ActualValueChain chain(linear_axis(), rotary_encoder(), kServoCycle);
   static_assert(noexcept(chain.update(EncoderSample{})));
