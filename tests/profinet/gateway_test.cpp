@@ -138,6 +138,7 @@ std::vector<std::pair<int, std::string>> json_blocks(const std::string& markdown
 // examples/profinet_gateway.json and every gateway file printed in docs/profinet-gateway.md and the README
 // load without a problem, so the examples cannot rot. A device object alone (the GSDML example) is loaded
 // in a file of its own with the emulated drive's GSDML folder as base.
+// Decisions I15, I18 and I29 (modules by hand or from a GSDML file, start-up records); issue 17.
 TEST(GatewayConfig, TheExampleFileAndTheDocumentedExamplesLoad) {
   const std::filesystem::path source(TOMC_SOURCE_DIR);
   sc::ProfinetGatewayConfig example;

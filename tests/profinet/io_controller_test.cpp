@@ -260,6 +260,7 @@ TEST(IoController, RpcRequestsAddressTheDeviceOfTheDcpAnswer) {
 
 // A DCP answer without the DeviceID block leaves the object's IDs 0: the device rejects the Connect
 // (nca_s_unsupported_type), the controller reports it in last_reject() and goes back to kOffline.
+// Decision I27 (the RPC object UUID from the DCP DeviceID block; a Reject reported in last_reject()).
 TEST(IoController, ARejectedConnectIsReported) {
   Pair pair = make_pair(1);
   const auto identified = pair.device->on_dcp(pair.controller->identify_request(1));
@@ -284,6 +285,8 @@ TEST(IoController, ARejectedConnectIsReported) {
   EXPECT_EQ(pair.controller->last_reject(), 0u);
 }
 
+// A device's diagnosis alarm: the controller answers with an RTA ACK and an AlarmAck (block sequence number
+// and subslot of the notification), counts and keeps it, and acknowledges no AlarmAck (decisions I19, I28).
 TEST(IoController, AlarmIsAcknowledged) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -321,6 +324,7 @@ TEST(IoController, AlarmIsAcknowledged) {
 // after a lost ACK. It is acknowledged again, and our AlarmAck DATA goes again with its own SendSeqNum
 // (0xFFFF: the first of an AR) while the device has not acknowledged it, at most RTARetries (3) times; the
 // notification is counted and kept once. High and low priority have their own sequence numbers.
+// Decision I28 (RTA duplicates and resends).
 TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -394,6 +398,7 @@ TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
 // The alarm CR exists from the Connect on: a notification while the start-up records are written is
 // answered (and counted once when the device repeats it after ApplicationReady); before the Connect there
 // is no AR to take it.
+// Decision I28 (alarms during start-up).
 TEST(IoController, AnAlarmDuringStartUpIsAnswered) {
   Pair pair = make_pair(1);
   const pn::RtaFrame notification = pn::testing::diagnosis_alarm();

@@ -83,6 +83,7 @@ struct Machine {
   techobjects::SynchronousAxis* follower = nullptr;
 };
 
+// Issue 14 (≤ 8 KiB per axis TO); decisions M1–M10, C26.
 TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
   Machine m;
   EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
@@ -112,6 +113,7 @@ TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
               sizeof(techobjects::SynchronousOperation));
 }
 
+// Issue 14 (≤ 8 KiB per axis TO); decisions M5, M6.
 TEST(MemoryPerAxis, SpeedAxisAndExternalEncoderSmallerStill) {
   Machine m;
   EXPECT_LT(m.speed->memory_footprint(), m.driven->memory_footprint());
@@ -144,6 +146,7 @@ TEST(MemoryPerAxis, FilterModeStartValueReservesTheHistories) {
 
 // memory_footprint() accounts for every allocation a TO makes: constructing one (not yet in a runtime, so it
 // still owns its start values) takes that much heap, give or take the allocator's per-block overhead.
+// Issue 14; decision M2 (start values and filter histories counted where they live).
 TEST(MemoryPerAxis, FootprintAccountsForTheHeap) {
 #ifdef TOMC_SANITIZED_BUILD
   GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
@@ -190,6 +193,7 @@ struct FourEncoderDevice {
 // The budgets with several encoders, in a runtime (the start values went to its load memory), each encoder
 // beyond the first 232 bytes of heap: one to three encoders within the 8,192 bytes (7,568, 7,800, 8,032),
 // four at 8,264 (72 above them, docs/performance.md "Memory per axis").
+// Decisions B1 (encoders 2…4 beside the object, the 8,192-byte budget), M6 and M10.
 TEST(MemoryPerAxis, ThreeEncodersWithinEightKiBFourAtItsStatedCost) {
   FourEncoderDevice d;
   const auto in_runtime = [&](std::size_t encoders, const char* name) -> PositioningAxis& {
@@ -211,6 +215,7 @@ TEST(MemoryPerAxis, ThreeEncodersWithinEightKiBFourAtItsStatedCost) {
   }
 }
 
+// Decision B1 (an AdditionalEncoder only for each further existing Sensor[n]).
 TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
   FourEncoderDevice d;
   const auto one = axis_with_encoders(d.io(), 1);
@@ -230,6 +235,7 @@ TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
 }
 
 // The heap an additional encoder really takes is what memory_footprint() counts for it.
+// Decision B1 (the array reserved at construction, counted in memory_footprint()).
 TEST(MemoryPerAxis, AdditionalEncoderFootprintAccountsForTheHeap) {
 #ifdef TOMC_SANITIZED_BUILD
   GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
