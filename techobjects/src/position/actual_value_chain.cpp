@@ -301,10 +301,10 @@ ActualValueChain::ActualValueChain(const AxisMechanics& axis, const EncoderMecha
   if (!problem && !positive_finite(servo_cycle_s))
     problem = ConfigProblem{"ServoCycle", "servo cycle time must be > 0"};
   if (problem) {
-    problem_path_ = problem->path.data();  // static strings (validate())
-    problem_message_ = problem->message.data();
+    config_.problem = Problem{problem->path.data(), problem->message.data()};  // static strings (validate())
+    has_problem_ = true;
   } else {
-    scaling_ = SetpointScaling(axis, encoder);
+    config_.scaling = SetpointScaling(axis, encoder);
     units_per_count_ = units_per_xist1_count(axis, encoder);
     width_ = xist1_width_bits(encoder);
     range_ = measuring_range_of(encoder);
@@ -377,7 +377,7 @@ void ActualValueChain::restart() noexcept {
 }
 
 void ActualValueChain::update(const EncoderSample& sample) noexcept {
-  if (problem_path_ != nullptr) return;
+  if (has_problem_) return;
   const bool first_sample = !has_sample_;
   const std::int64_t previous_counts = tracker_.counts();
   tracker_.update(sample.xist1);  // first sample: reference only
@@ -412,7 +412,7 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
   }
   if (nist_velocity_ && sample.nist_b) {
     if (nist_from_drive_) {
-      v = scaling_.load_velocity_from_nist_b(*sample.nist_b);  // motor speed through the mechanics
+      v = config_.scaling.load_velocity_from_nist_b(*sample.nist_b);  // motor speed through the mechanics
     } else if (rotary_) {
       const double rev_per_s = tg::n4_to_speed(*sample.nist_b, nist_reference_) / 60.0;
       v = rev_per_s * tg::counts_per_revolution(steps_per_revolution_, fine_xist1_) * units_per_count_;
@@ -437,7 +437,7 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
 }
 
 void ActualValueChain::set_position(double value, ModuloCycleRule rule, double home_position) noexcept {
-  if (problem_path_ != nullptr || !std::isfinite(value)) return;
+  if (has_problem_ || !std::isfinite(value)) return;
   const double old_position = position();
   offset_ = value - static_cast<double>(tracker_.counts()) * units_per_count_;
   if (modulo_enable_) {
@@ -466,7 +466,7 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule, double h
 }
 
 void ActualValueChain::shift_offset(double delta) noexcept {
-  if (problem_path_ != nullptr || !std::isfinite(delta) || delta == 0.0) return;
+  if (has_problem_ || !std::isfinite(delta) || delta == 0.0) return;
   offset_ += delta;
   if (!modulo_enable_) return;
   const std::int64_t k = cycle_index(continuous_position());

@@ -221,8 +221,8 @@ class ActualValueChain {
   ActualValueChain(const AxisMechanics& axis, const EncoderMechanics& encoder, double servo_cycle_s) noexcept;
 
   std::optional<ConfigProblem> config_problem() const noexcept {
-    if (problem_path_ == nullptr) return std::nullopt;
-    return ConfigProblem{problem_path_, problem_message_};
+    if (!has_problem_) return std::nullopt;
+    return ConfigProblem{config_.problem.path, config_.problem.message};
   }
 
   // CPU power-up: incremental encoder at 0, ActualModuloCycle 0; absolute encoders wait for Gx_XIST2 and take
@@ -270,7 +270,8 @@ class ActualValueChain {
 
   double units_per_count() const noexcept { return units_per_count_; }
   std::uint8_t xist1_width() const noexcept { return width_; }
-  const SetpointScaling& scaling() const noexcept { return scaling_; }
+  // With a configuration problem: the default (no mechanics).
+  const SetpointScaling& scaling() const noexcept { return has_problem_ ? kNoScaling : config_.scaling; }
 
  private:
   std::int64_t xist2_to_xist1_counts(std::int64_t xist2_counts) const noexcept;
@@ -280,12 +281,21 @@ class ActualValueChain {
 
   EncoderType type() const noexcept { return static_cast<EncoderType>(type_); }
 
+  static constexpr SetpointScaling kNoScaling{};
+
   // Of the axis mechanics only the modulo setting is needed after construction (decision M5), of Sensor[n]
-  // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16); the first configuration
-  // problem is kept as its two static strings (nullptr: none). One-byte members last, without padding.
-  SetpointScaling scaling_{};
-  const char* problem_path_ = nullptr;
-  const char* problem_message_ = nullptr;
+  // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16). The first configuration
+  // problem is kept as its two static strings where the scaling would be: a chain with a problem has no
+  // scaling (decision M11). One-byte members last, the flags as bits (M11), without padding.
+  struct Problem {
+    const char* path;
+    const char* message;
+  };
+  union Config {
+    SetpointScaling scaling;  // !has_problem_
+    Problem problem;          // has_problem_
+  };
+  Config config_{SetpointScaling{}};
   double modulo_start_ = 0.0;     // Modulo.StartValue
   double modulo_length_ = 360.0;  // Modulo.Length
   double servo_cycle_s_ = 0.0;
@@ -306,16 +316,17 @@ class ActualValueChain {
   std::uint8_t fine_xist1_ = 0;             // Parameter.FineResolutionXist1 (0 ... 31)
   std::uint8_t fine_xist2_ = 0;             // Parameter.FineResolutionXist2 (0 ... 31)
   std::uint8_t type_ = 0;                   // EncoderType
-  bool nist_velocity_ = false;              // VelocityMode = kProfidriveNist
-  bool nist_from_drive_ = true;             // Nist = kDriveTelegram
-  bool rotary_ = true;                      // System = kRotary
-  bool inverse_ = false;                    // InverseDirection
-  bool modulo_enable_ = false;              // Modulo.Enable
   std::uint8_t width_ = 32;
   bool has_sample_ = false;
   bool anchored_ = false;
-  bool derive_cycle_on_anchor_ = true;  // absolute power-up: ActualModuloCycle from the absolute value
-  bool restored_ = false;               // retained cyclic state present for the first anchor
+  bool nist_velocity_ : 1 = false;          // VelocityMode = kProfidriveNist
+  bool nist_from_drive_ : 1 = true;         // Nist = kDriveTelegram
+  bool rotary_ : 1 = true;                  // System = kRotary
+  bool inverse_ : 1 = false;                // InverseDirection
+  bool modulo_enable_ : 1 = false;          // Modulo.Enable
+  bool derive_cycle_on_anchor_ : 1 = true;  // absolute power-up: ActualModuloCycle from the absolute value
+  bool restored_ : 1 = false;               // retained cyclic state present for the first anchor
+  bool has_problem_ : 1 = false;            // config_ holds the problem
 };
 
 }  // namespace tomc::techobjects
