@@ -264,14 +264,13 @@ class ActualValueChain {
   std::int64_t encoder_counts() const noexcept { return tracker_.counts(); }  // continuous, Gx_XIST1 units
   double offset() const noexcept { return offset_; }  // homing offset / AbsEncoderOffset
   double abs_encoder_offset() const noexcept { return absolute_type() ? offset_ : 0.0; }
-  std::int64_t measuring_range_count() const noexcept;               // cyclic absolute; 0 otherwise
-  std::uint64_t measuring_range() const noexcept { return range_; }  // Gx_XIST2 counts; 0 incremental
+  std::int64_t measuring_range_count() const noexcept;                // cyclic absolute; 0 otherwise
+  std::uint64_t measuring_range() const noexcept { return range(); }  // Gx_XIST2 counts; 0 incremental
   RetainedSensorState retained_state() const noexcept;
 
   double units_per_count() const noexcept { return units_per_count_; }
   std::uint8_t xist1_width() const noexcept { return width_; }
-  // With a configuration problem: the default (no mechanics).
-  const SetpointScaling& scaling() const noexcept { return has_problem_ ? kNoScaling : config_.scaling; }
+  const SetpointScaling& scaling() const noexcept { return scaling_; }
 
  private:
   std::int64_t xist2_to_xist1_counts(std::int64_t xist2_counts) const noexcept;
@@ -280,29 +279,31 @@ class ActualValueChain {
   void add_cycles(std::int64_t delta) noexcept;
 
   EncoderType type() const noexcept { return static_cast<EncoderType>(type_); }
-
-  static constexpr SetpointScaling kNoScaling{};
+  // The absolute measuring range in Gx_XIST2 counts (0: incremental, linear, or a configuration problem).
+  std::uint64_t range() const noexcept { return has_problem_ ? 0 : config_.values.range; }
 
   // Of the axis mechanics only the modulo setting is needed after construction (decision M5), of Sensor[n]
   // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16). The first configuration
-  // problem is kept as its two static strings where the scaling would be: a chain with a problem has no
-  // scaling (decision M11). One-byte members last, the flags as bits (M11), without padding.
+  // problem is kept as its two static strings in the storage of two values only update() reads, which a
+  // chain with a problem never runs (decision M11). One-byte members last, the flags as bits (M11).
+  struct Values {
+    double nist_reference;  // NIST_B of telegram 83: Parameter.ReferenceSpeed (rotary) / ReferenceVelocity
+    std::uint64_t range;    // absolute measuring range in Gx_XIST2 counts
+  };
   struct Problem {
     const char* path;
     const char* message;
   };
   union Config {
-    SetpointScaling scaling;  // !has_problem_
-    Problem problem;          // has_problem_
+    Values values;    // !has_problem_
+    Problem problem;  // has_problem_
   };
-  Config config_{SetpointScaling{}};
+  SetpointScaling scaling_{};
+  Config config_{Values{0.0, 0}};
   double modulo_start_ = 0.0;     // Modulo.StartValue
   double modulo_length_ = 360.0;  // Modulo.Length
   double servo_cycle_s_ = 0.0;
   double units_per_count_ = 0.0;
-  double nist_reference_ =
-      0.0;                   // NIST_B of telegram 83: Parameter.ReferenceSpeed (rotary) / ReferenceVelocity
-  std::uint64_t range_ = 0;  // absolute measuring range in Gx_XIST2 counts
 
   // state
   telegrams::IncrementalCount tracker_{};  // continuous position in Gx_XIST1 counts
@@ -319,11 +320,11 @@ class ActualValueChain {
   std::uint8_t width_ = 32;
   bool has_sample_ = false;
   bool anchored_ = false;
+  bool modulo_enable_ = false;              // Modulo.Enable (a byte: read several times a cycle)
   bool nist_velocity_ : 1 = false;          // VelocityMode = kProfidriveNist
   bool nist_from_drive_ : 1 = true;         // Nist = kDriveTelegram
   bool rotary_ : 1 = true;                  // System = kRotary
   bool inverse_ : 1 = false;                // InverseDirection
-  bool modulo_enable_ : 1 = false;          // Modulo.Enable
   bool derive_cycle_on_anchor_ : 1 = true;  // absolute power-up: ActualModuloCycle from the absolute value
   bool restored_ : 1 = false;               // retained cyclic state present for the first anchor
   bool has_problem_ : 1 = false;            // config_ holds the problem
