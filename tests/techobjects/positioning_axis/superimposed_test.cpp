@@ -444,6 +444,17 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
   }
 }
 
+// MC_MoveSuperimposed's rising edge with these inputs (distance mm, VelocityDiff mm/s, mm/s², mm/s³).
+void start_move_superimposed(MC_MoveSuperimposed<PositioningAxis>& fb, double distance, double velocity_diff,
+                             double acceleration, double deceleration, double jerk) {
+  fb.Distance = distance;
+  fb.VelocityDiff = velocity_diff;
+  fb.Acceleration = acceleration;
+  fb.Deceleration = deceleration;
+  fb.Jerk = jerk;
+  fb.Execute = true;
+}
+
 // Spec 01 §8.14 / seed 004 §6.7.10.1 (decision U18): the velocity headroom v_limit − v_base shrinks at the
 // base's acceleration; the superimposed job's Deceleration counts relative to it, so the total comes back
 // within the limit even where the job brakes more gently than the base accelerates, and a total beyond the
@@ -468,12 +479,7 @@ TEST(MoveSuperimposed, ShrinkingVelocityHeadroomKeepsTheTotalWithinTheLimit) {
     m.move_velocity.Jerk = jerk;
     m.move_velocity.Execute = true;
     ASSERT_GT(m.run_until([&] { return m.db().Velocity >= 200.0; }, 500), 0);
-    m.move_superimposed.Distance = 100.0;
-    m.move_superimposed.VelocityDiff = 100.0;
-    m.move_superimposed.Acceleration = 1000.0;
-    m.move_superimposed.Deceleration = 500.0;
-    m.move_superimposed.Jerk = jerk;
-    m.move_superimposed.Execute = true;
+    start_move_superimposed(m.move_superimposed, 100.0, 100.0, 1000.0, 500.0, jerk);
     double fastest = 0.0, acceleration = 0.0;
     int beyond = 0, pushing = 0;
     ASSERT_GT(m.run_until(
@@ -525,12 +531,7 @@ TEST(MoveSuperimposed, BaseJerkAboveMaxJerkDoesNotPushTheSuperimposedPart) {
   base.Enable = true;
   m.run(2);
   ASSERT_TRUE(base.Busy);
-  m.move_superimposed.Distance = 100.0;
-  m.move_superimposed.VelocityDiff = 50.0;
-  m.move_superimposed.Acceleration = 1000.0;
-  m.move_superimposed.Deceleration = 1000.0;
-  m.move_superimposed.Jerk = 1e5;
-  m.move_superimposed.Execute = true;
+  start_move_superimposed(m.move_superimposed, 100.0, 50.0, 1000.0, 1000.0, 1e5);
   const auto& sup = m.axis->superimposed().state();
   ASSERT_GT(m.run_until([&] { return sup.velocity == 50.0 && sup.acceleration == 0.0; }, 200), 0);
   m.run(5);
