@@ -4,7 +4,8 @@
 // emulated drive's telegram-105 modules (DAP, drive object, 20 bytes each way): every device's input frame
 // dispatched to the controllers in file order until one takes it (receive_frames: so the last device's frame
 // is tried by all N), input_valid and the actual telegram copied out (publish_answer), the setpoint telegram
-// copied into the output data (apply_setpoints), next_output_frame and watchdog_expired. Shared by
+// copied into the output data (apply_setpoints), next_output_frame, both RTA timers (alarm_timer, idle) and
+// watchdog_expired. Shared by
 // profinet_bench (ns) and profinet_cyclic_callgrind (instructions); no sockets, so the figures are the
 // gateway's own work.
 #include <array>
@@ -92,6 +93,10 @@ class ProfinetControllers {
       setpoint_[0] = static_cast<std::uint8_t>(now_us);  // a setpoint that changes every cycle
       std::memcpy(out.data(), setpoint_.data(), out.size());
       sent += c->next_output_frame(frame_);
+      for (const bool high : {true, false}) {  // the RTA timers: nothing waits for an acknowledge here
+        std::size_t resent = 0;
+        if (c->alarm_ack_pending(high)) (void)c->alarm_timer(high, now_us, frame_, resent);
+      }
       (void)c->watchdog_expired(now_us);
     }
     return valid == controllers_.size() ? sent : 0;

@@ -136,7 +136,10 @@ std::vector<std::uint8_t> IoController::connect_request() {
   request.expected = device_.modules;
   // A new AR starts both alarm channels afresh (the device's APMR expects SendSeqNum 0xFFFF first).
   alarm_channels_ = {};
-  alarm_retries_ = request.alarm_cr.rta_retries;
+  request.alarm_cr.rta_timeout_factor = device_.rta_timeout_factor;
+  request.alarm_cr.rta_retries = device_.rta_retries;
+  alarm_retries_ = device_.rta_retries;
+  alarm_timeout_us_ = std::uint64_t{device_.rta_timeout_factor} * 100'000;
   std::vector<std::uint8_t> blocks(8192);
   WireWriter out(blocks);
   encode(request, out);
@@ -464,7 +467,7 @@ bool IoController::watchdog_expired(std::uint64_t now_us) noexcept {
 
 std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::span<std::uint8_t> ack_out,
                                    std::span<std::uint8_t> alarm_ack_out, std::size_t& ack_bytes,
-                                   std::size_t& alarm_ack_bytes) noexcept {
+                                   std::size_t& alarm_ack_bytes, std::uint64_t now_us) noexcept {
   ack_bytes = alarm_ack_bytes = 0;
   RtaFrame received;
   if (!device_mac_ || state_ == ControllerArState::kOffline ||
@@ -495,6 +498,7 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
     if (!apm.unacknowledged || apm.resends >= alarm_retries_ || alarm_ack_out.size() < apm.alarm_ack_bytes)
       return 1;
     ++apm.resends;
+    apm.sent_us = now_us;
     std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, alarm_ack_out.begin());
     alarm_ack_bytes = apm.alarm_ack_bytes;
     return 2;
@@ -517,9 +521,32 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
   apm.received = received.send_sequence;
   apm.unacknowledged = true;
   apm.resends = 0;
+  apm.sent_us = now_us;
   last_alarm_ = received.block;
   ++alarms_acknowledged_;
   return 2;
+}
+
+AlarmTimerAction IoController::alarm_timer(bool high_priority, std::uint64_t now_us,
+                                           std::span<std::uint8_t> out, std::size_t& out_bytes) noexcept {
+  out_bytes = 0;
+  AlarmChannel& apm = channel(high_priority);
+  // Added, not subtracted: a time taken just before the AlarmAck was sent (another thread's clock
+  // reading) is earlier than sent_us and must not wrap into an expired timeout.
+  if (state_ == ControllerArState::kOffline || !apm.unacknowledged ||
+      now_us < apm.sent_us + alarm_timeout_us_)
+    return AlarmTimerAction::kNone;
+  if (apm.resends >= alarm_retries_) {
+    abort_ar();
+    last_error_ = kAlarmSendTimeoutStatus;
+    return AlarmTimerAction::kAbort;
+  }
+  if (out.size() < apm.alarm_ack_bytes) return AlarmTimerAction::kNone;
+  ++apm.resends;
+  apm.sent_us = now_us;
+  std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, out.begin());
+  out_bytes = apm.alarm_ack_bytes;
+  return AlarmTimerAction::kResend;
 }
 
 void IoController::abort_ar() noexcept {

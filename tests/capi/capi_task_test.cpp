@@ -97,6 +97,7 @@ bool wait_for(const std::atomic<bool>& flag, std::chrono::seconds timeout) {
   return flag.load();
 }
 
+// Decision E6 (the user task on its own thread, triple-buffer mailboxes).
 TEST(CApiTask, A10msTaskPositionsTheAxisThroughTheMailboxes) {
   Runtime r;
   Task task(50.0);
@@ -160,6 +161,7 @@ void cam_task_program(void* context) {
     t->read_done.store(true);
 }
 
+// Decision C22 (MC_InterpolateCam and MC_CopyCamData refused from a user task) and C2.
 TEST(CApiTask, CamInstructionsThatAllocateAreRefusedInTheTask) {
   tomc_runtime* runtime = nullptr;
   ASSERT_EQ(tomc_runtime_create(R"({"cycle_time": 0.001, "technology_objects": [
@@ -185,6 +187,7 @@ TEST(CApiTask, CamInstructionsThatAllocateAreRefusedInTheTask) {
   tomc_runtime_destroy(runtime);
 }
 
+// Decision E6 (one task per runtime, its settings checked); E2.
 TEST(CApiTask, BadTaskSettingsAreRefused) {
   Runtime r;
   Task task(1.0);
@@ -208,6 +211,7 @@ TEST(CApiTask, BadTaskSettingsAreRefused) {
 #ifdef TOMC_COUNT_ALLOCATIONS
 // While the task calls its instructions and reads the data block and the servo thread runs them, nobody
 // allocates: the mailboxes, snapshots and instances were all made at set-up or the task's first calls.
+// Decision E6 (the servo thread never waits or allocates); the guide's real-time rules.
 TEST(CApiTaskAllocation, NeitherThreadAllocatesWhileTheTaskCalls) {
   const std::uint64_t at_start = tomc::testing::allocation_count();
   Runtime r;

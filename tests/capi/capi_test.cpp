@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <thread>
 #include <utility>
@@ -40,6 +41,14 @@ std::string last_error() {
   return tomc_last_error();
 }
 
+// The runtime of `machine` and, for each {name, &object}, that TO of it (use in ASSERT_NO_FATAL_FAILURE).
+void create_with_objects(const char* machine, tomc_runtime*& runtime,
+                         std::initializer_list<std::pair<const char*, tomc_object**>> objects) {
+  ASSERT_EQ(tomc_runtime_create(machine, &runtime), TOMC_OK) << last_error();
+  for (const auto& [name, object] : objects)
+    ASSERT_EQ(tomc_runtime_find_object(runtime, name, object), TOMC_OK) << name << ": " << last_error();
+}
+
 struct Machine {
   tomc_runtime* runtime = nullptr;
   tomc_object* slide = nullptr;
@@ -51,6 +60,18 @@ struct Machine {
   }
   ~Machine() { tomc_runtime_destroy(runtime); }
 };
+
+// MC_Power and then MC_Home (set position 0) on the Slide, called after every cycle until homed.
+void enable_and_home(const Machine& m, tomc_MC_Power& power, tomc_MC_Home& home) {
+  power.Enable = true;
+  for (int k = 0; k < 200 && !home.Done; ++k) {
+    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
+    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
+    home.Execute = power.Status;
+    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
+  }
+  ASSERT_TRUE(home.Done);
+}
 
 // MC_Power, MC_Home (set position 0) and MC_MoveAbsolute, called after every cycle as a user program would.
 struct PositioningProgram {
@@ -96,6 +117,7 @@ bool read_bit(const tomc_object* o, const char* path) {
   return value;
 }
 
+// Decisions E3 (the generated MC_* structs) and E2; spec 03 §4.1, §4.3, §4.5.
 TEST(CApi, PositioningMoveThroughTheGeneratedStructs) {
   Machine m;
   PositioningProgram program(200.0);
@@ -136,14 +158,7 @@ TEST(CApi, MotionInPositionFeedsTheHostsSetpointsEveryCycle) {
   tomc_MC_MotionInPosition_init(&feed);
   EXPECT_FALSE(feed.Enable);  // the manual's defaults (generate.py's table)
   EXPECT_EQ(feed.Position, 0.0);
-  power.Enable = true;
-  for (int k = 0; k < 200 && !home.Done; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
-    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
-    home.Execute = power.Status;
-    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
-  }
-  ASSERT_TRUE(home.Done);
+  ASSERT_NO_FATAL_FAILURE(enable_and_home(m, power, home));
   const double pi = std::acos(-1.0);
   const auto x = [&](int k) { return 2.0 * std::sin(2.0 * pi * 2.0 * k * 0.001); };
   const auto v = [&](int k) { return 2.0 * 2.0 * pi * 2.0 * std::cos(2.0 * pi * 2.0 * k * 0.001); };
@@ -206,13 +221,11 @@ TEST(CApi, MotionInSuperimposedAxesAddsTheConfiguredAxisInTheSameCycle) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kTwoAxes, &runtime), TOMC_OK) << last_error();
   tomc_object* feeder = nullptr;
   tomc_object* other = nullptr;
   tomc_object* carriage = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Feeder", &feeder), TOMC_OK);
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Other", &other), TOMC_OK);
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Carriage", &carriage), TOMC_OK);
+  ASSERT_NO_FATAL_FAILURE(create_with_objects(
+      kTwoAxes, runtime, {{"Feeder", &feeder}, {"Other", &other}, {"Carriage", &carriage}}));
   tomc_MC_Power p1, p2, p3;
   tomc_MC_MoveVelocity jog;
   tomc_MC_MotionInSuperimposedAxes axes;
@@ -386,6 +399,7 @@ TEST(CApi, TorqueJobsOnTelegram750) {
   tomc_runtime_destroy(runtime);
 }
 
+// Decision E4; spec 04 §0.2 (the access column: DIR/CAL writable, RON/RES not).
 TEST(CApi, WritesFollowTheManualsAccessRules) {
   Machine m;
   // DIR: written by the user program, effective at the next MC_Servo.
@@ -410,6 +424,7 @@ TEST(CApi, WritesFollowTheManualsAccessRules) {
   EXPECT_FALSE(active);
 }
 
+// Decisions E4 (typed calls refuse another type) and E2 (a message naming it).
 TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
   Machine m;
   bool b = false;
@@ -438,6 +453,7 @@ TEST(CApi, WrongTypesAndUnknownPathsAreRefusedWithTheirNames) {
   EXPECT_EQ(tomc_runtime_object_at(m.runtime, 2, &none), TOMC_ERROR_UNKNOWN_OBJECT);
 }
 
+// Decision E2 (every entry point returns a status, never crashes).
 TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
   Machine m;
   double x = 0.0;
@@ -481,6 +497,7 @@ TEST(CApi, NullArgumentsAreRefusedNeverDereferenced) {
   tomc_runtime_destroy(nullptr);
 }
 
+// Decision E2 ({size, version}: a mismatch is TOMC_ERROR_VERSION).
 TEST(CApi, StructsOfAnotherLayoutAreRefused) {
   Machine m;
   tomc_MC_MoveAbsolute move;
@@ -499,6 +516,7 @@ TEST(CApi, StructsOfAnotherLayoutAreRefused) {
   EXPECT_EQ(tomc_object_alarm(m.slide, 0, &alarm), TOMC_ERROR_VERSION);
 }
 
+// Decision E3 (each MC_* call takes the TO types of its table entry); spec 03 §1 (the instructions per TO).
 TEST(CApi, InstructionsOfAnotherTechnologyObjectTypeAreRefused) {
   Machine m;
   tomc_MC_MoveAbsolute move;
@@ -541,11 +559,9 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kGearing, &runtime), TOMC_OK) << last_error();
   tomc_object* leader = nullptr;
   tomc_object* follower = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(create_with_objects(kGearing, runtime, {{"L", &leader}, {"F", &follower}}));
   tomc_MC_Power power_l;
   tomc_MC_Power power_f;
   tomc_MC_GearIn gear;
@@ -628,6 +644,7 @@ TEST(CApi, PhasingAndOffsetThroughTheGeneratedStructs) {
   tomc_runtime_destroy(runtime);
 }
 
+// Decision E2; docs/scenarios.md "Exit status and messages" (every problem with its path).
 TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   tomc_runtime* r = reinterpret_cast<tomc_runtime*>(&r);
   EXPECT_EQ(tomc_runtime_create("{\"technology_objects\": [", &r), TOMC_ERROR_CONFIG);
@@ -664,6 +681,7 @@ TEST(CApi, MalformedConfigurationsGiveEveryProblemWithItsPath) {
   EXPECT_NE(last_error().find("/nonexistent/machine.json: cannot open"), std::string::npos) << last_error();
 }
 
+// Decisions E1 (the machine loader in libtomc) and C22 (TO_Cam as a tomc_object).
 TEST(CApi, TheExamplesMachineFilesLoad) {
   // With their cams (the demo's knife, the rotary knife's cut cam): TO_Cam objects since issue 19.
   for (const char* file : {"positioning_machine.json", "gearing_machine.json", "flying_saw.json",
@@ -693,6 +711,7 @@ TEST(CApi, TheExamplesMachineFilesLoad) {
   tomc_runtime_destroy(r);
 }
 
+// Decision E2; spec 02 §1.3 (technology alarms), docs/errors.md.
 TEST(CApi, AlarmsOfTheTechnologyObject) {
   Machine m;
   PositioningProgram program(400.0);  // beyond the software limit switch at 300 mm
@@ -736,6 +755,7 @@ void realtime_user_program(tomc_runtime*, void* context) {
   if (p->program.move.Done) p->done.store(true);
 }
 
+// Decision E5 (only the runner's thread uses the TOs while it runs).
 TEST(CApi, RealTimeRunnerRunsTheUserProgramInItsThread) {
   Machine m;
   RealtimeProgram program;
@@ -801,6 +821,7 @@ std::string http_get(int port, const std::string& path) {
   return answer;
 }
 
+// Issue 15 (docs/embedding.md "The C ABI"): the diagnostics server of a C runtime; decision E5.
 TEST(CApi, DiagnosticsServerServesTheMachine) {
   Machine m;
   tomc_diagnostics_config config = {TOMC_STRUCT_HEADER(tomc_diagnostics_config), nullptr, 70000, nullptr};
@@ -823,6 +844,7 @@ TEST(CApi, DiagnosticsServerServesTheMachine) {
   EXPECT_EQ(tomc_runtime_step(m.runtime, 5), TOMC_OK);  // the cycle goes on without the server
 }
 
+// Decision E2 (tomc_status and its names).
 TEST(CApi, StatusNamesAndVersion) {
   EXPECT_STREQ(tomc_status_name(TOMC_ERROR_WRONG_TYPE), "TOMC_ERROR_WRONG_TYPE");
   EXPECT_STREQ(tomc_status_name(static_cast<tomc_status>(99)), "TOMC_ERROR_UNKNOWN_STATUS");
@@ -838,14 +860,7 @@ TEST(CApi, PositionProfileFollowsTheHostsTimePositionPoints) {
   tomc_MC_Home home;
   tomc_MC_Power_init(&power);
   tomc_MC_Home_init(&home);
-  power.Enable = true;
-  for (int k = 0; k < 200 && !home.Done; ++k) {
-    ASSERT_EQ(tomc_runtime_step(m.runtime, 1), TOMC_OK) << last_error();
-    ASSERT_EQ(tomc_MC_Power_call(m.slide, &power), TOMC_OK) << last_error();
-    home.Execute = power.Status;
-    ASSERT_EQ(tomc_MC_Home_call(m.slide, &home), TOMC_OK) << last_error();
-  }
-  ASSERT_TRUE(home.Done);
+  ASSERT_NO_FATAL_FAILURE(enable_and_home(m, power, home));
   tomc_time_position_profile points;
   std::memset(&points, 0, sizeof(points));
   points.NumberOfPoints = 4;
@@ -910,13 +925,11 @@ TEST(CApi, CammingAFollowerFromC) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kCamming, &runtime), TOMC_OK) << last_error();
   tomc_object* leader = nullptr;
   tomc_object* follower = nullptr;
   tomc_object* cam = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "L", &leader), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "F", &follower), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "C", &cam), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(
+      create_with_objects(kCamming, runtime, {{"L", &leader}, {"F", &follower}, {"C", &cam}}));
   tomc_object_type type = TOMC_TO_SPEED_AXIS;
   ASSERT_EQ(tomc_object_type_of(cam, &type), TOMC_OK);
   EXPECT_EQ(type, TOMC_TO_CAM);
@@ -1095,6 +1108,7 @@ TEST(CApi, CammingAFollowerFromC) {
 // relative job follows it at once: profile time n ms after the n-th cycle following the edge, y(0.25) =
 // 4.140625 mm, y(0.5) = 20 mm at 75 mm/s, 40 mm at rest after 1 s. A cam not interpolated: 16#8150. Not a
 // TO_Cam, or a cam beside the point structure: TOMC_ERROR_WRONG_OBJECT_TYPE with the input's name.
+// spec 03 §4.7, seed 004 §6.8.4; decisions L8, U15.
 TEST(CApi, PositionProfileFollowsATOCamFromC) {
   constexpr const char* kProfile = R"({
     "cycle_time": 0.001,
@@ -1106,13 +1120,11 @@ TEST(CApi, PositionProfileFollowsATOCamFromC) {
     ]
   })";
   tomc_runtime* runtime = nullptr;
-  ASSERT_EQ(tomc_runtime_create(kProfile, &runtime), TOMC_OK) << last_error();
   tomc_object* p5 = nullptr;
   tomc_object* raw = nullptr;
   tomc_object* slide = nullptr;
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "P5", &p5), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Raw", &raw), TOMC_OK) << last_error();
-  ASSERT_EQ(tomc_runtime_find_object(runtime, "Slide", &slide), TOMC_OK) << last_error();
+  ASSERT_NO_FATAL_FAILURE(
+      create_with_objects(kProfile, runtime, {{"P5", &p5}, {"Raw", &raw}, {"Slide", &slide}}));
   tomc_MC_Power power;
   tomc_MC_Power_init(&power);
   power.Enable = true;

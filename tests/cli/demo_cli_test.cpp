@@ -67,12 +67,14 @@ std::string fan_machine(const std::string& name, const std::string& cycle_time) 
   })");
 }
 
+// README.md "`tomc demo`: the diagnostics page of a running machine" (its usage).
 TEST(DemoCli, Help) {
   const DemoRun r = tomc({"demo", "--help"});
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("usage: tomc demo"), std::string::npos);
 }
 
+// README.md "`tomc demo`: the diagnostics page of a running machine" (options; bad ones: status 2).
 TEST(DemoCli, BadOptions) {
   EXPECT_EQ(tomc({"demo", "--port", "70000"}).status, 2);
   EXPECT_EQ(tomc({"demo", "--port", "x"}).status, 2);
@@ -90,6 +92,7 @@ TEST(DemoCli, BadOptions) {
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
 }
 
+// docs/scenarios.md "Exit status and messages" (every problem with its JSON path, 2).
 TEST(DemoCli, EveryProblemOfAConfigurationIsNamed) {
   const std::string path = write_file("bad_machine", R"({
     "cycle_time": 0.001,
@@ -160,6 +163,7 @@ TEST(DemoCli, CammingProgramProblemsAreNamed) {
 }
 
 // A machine of one's own, in the tomc sim format, read-only (no token), on any free port, for one second.
+// decision W14 (read-only without a token, 127.0.0.1); docs/scenarios.md (the machine format).
 TEST(DemoCli, RunsAConfigurationOfOnesOwn) {
   const std::string path = fan_machine("own_machine", "0.002");
   const DemoRun r = tomc({"demo", "--config", path, "--port", "0", "--seconds", "1"});

@@ -55,6 +55,7 @@ struct DemoMachine {
   std::unique_ptr<DemoPositioningProgram> program;
 };
 
+// Decisions W18 (the demo program on positioning axes) and W15; spec 02 §9.2.
 TEST(DemoProgram, LinearAxisIsHomedActivelyAndMovesBetweenTwoPositions) {
   techobjects::PositioningAxisData data;
   DemoPositioning plan;
@@ -139,6 +140,7 @@ TEST(DemoFaultInjector, EachKindRaisesItsAlarmAndTheDemoProgramRecovers) {
   }
 }
 
+// Decision W18 (MC_MoveRelative steps on a modulo axis).
 TEST(DemoProgram, ModuloAxisTurnsInRelativeSteps) {
   techobjects::PositioningAxisData data;
   data.Properties.MotionType = static_cast<std::int32_t>(techobjects::PropertiesMotionType::kRotary);

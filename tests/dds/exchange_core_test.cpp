@@ -90,6 +90,7 @@ struct Fixture {
   std::vector<DeviceFrames> setpoint;
 };
 
+// Decision G5 (the read side: per-device triple buffer, the newest value used once).
 TEST(LatestValue, ReaderSeesOnlyPublishedValuesAndEachOnce) {
   LatestValue<int> v;
   EXPECT_FALSE(v.take());
@@ -110,6 +111,7 @@ TEST(LatestValue, ReaderSeesOnlyPublishedValuesAndEachOnce) {
 }
 
 // A producer and a consumer on two threads: the consumer never sees a torn value and never goes backwards.
+// Decision G5 (the listener thread hands answers to the cyclic thread lock-free).
 TEST(LatestValue, NoTornOrOlderValueAcrossThreads) {
   struct Wide {
     std::array<std::uint64_t, 16> words{};
@@ -146,6 +148,7 @@ TEST(LatestValue, NoTornOrOlderValueAcrossThreads) {
 
 // Before the first setpoint the gateway's idle answer (controller 0) is the drive as it stands: fresh in
 // cycle 0. After that, only answers to this controller's previous cycle (max age 0).
+// Decisions G7 (cycle 0: the idle answer) and G2 (fresh = the previous cycle); docs/gateway.md §6.
 TEST(ExchangeCore, IdleAnswerBeforeTheFirstSetpointThenOnlyAnswersToTheLastCycle) {
   Fixture f(0);
   f.core.route(f.gateway.answer(f.core, 0, false, 0, 0x11), 0);
@@ -168,6 +171,7 @@ TEST(ExchangeCore, IdleAnswerBeforeTheFirstSetpointThenOnlyAnswersToTheLastCycle
 }
 
 // max_answer_age_cycles = 1: an answer one cycle late is still taken, two cycles late is stale.
+// Decision G2 (max_answer_age_cycles); docs/gateway.md §6.
 TEST(ExchangeCore, AnswerAgeLimit) {
   Fixture f(1);
   f.core.route(f.gateway.answer(f.core, 0, false, 0, 1), 0);
@@ -183,6 +187,7 @@ TEST(ExchangeCore, AnswerAgeLimit) {
 }
 
 // Answers to another controller are never ours, whatever their cycle number.
+// Decisions G2, G10 (an answer names its controller); docs/gateway.md §6.
 TEST(ExchangeCore, AnswerForAnotherControllerIsStale) {
   Fixture f(1);
   f.cycle();
@@ -193,6 +198,7 @@ TEST(ExchangeCore, AnswerForAnotherControllerIsStale) {
 
 // A new incarnation is a gateway restart: peer_restarts counts it (the drive connection raises its link
 // alarm from it, techobjects drive_connection_test), even when the new gateway answers in time.
+// Decision G6 (a gateway restart is a link loss: peer_restarts).
 TEST(ExchangeCore, GatewayRestartIsCounted) {
   Fixture f(1);
   f.core.route(f.gateway.answer(f.core, 0, false, 0, 1), 0);
@@ -210,6 +216,7 @@ TEST(ExchangeCore, GatewayRestartIsCounted) {
 
 // Sequence numbers: a jump counts lost answers, an old or repeated sample is rejected and never reaches the
 // devices.
+// docs/gateway.md §3 (a late or lost sample), §6.
 TEST(ExchangeCore, SequenceGapsAndOldSamples) {
   Fixture f(1);
   f.core.route(f.gateway.answer(f.core, 0, false, 0, 1), 0);  // sequence 1
@@ -225,6 +232,7 @@ TEST(ExchangeCore, SequenceGapsAndOldSamples) {
 
 // An entry with other telegrams, lengths or byte order is never used (its bytes would read as wrong
 // values); the reason is kept for the diagnosis.
+// docs/gateway.md §2 (Telegram: telegram, length, byte order), §6.
 TEST(ExchangeCore, MismatchedEntriesAreRejected) {
   Fixture f(1);
   gw::ActualCycle s = f.gateway.answer(f.core, 0, false, 0, 1);
@@ -254,6 +262,7 @@ TEST(ExchangeCore, MismatchedEntriesAreRejected) {
 
 // Samples of another contract version, with too many devices or incarnation 0, and entries for devices this
 // controller does not have.
+// docs/gateway.md §2 (contract version, devices, incarnation), §6.
 TEST(ExchangeCore, ForeignAndMalformedSamples) {
   Fixture f(1);
   gw::ActualCycle s = f.gateway.answer(f.core, 0, false, 0, 1);
@@ -276,6 +285,7 @@ TEST(ExchangeCore, ForeignAndMalformedSamples) {
 
 // The setpoints of a cycle go out once, when the last device has written; the sample carries every
 // device's frames, names, telegrams and the cycle counter.
+// Decision G1 (one SetpointCycle per servo cycle with every device of the link).
 TEST(ExchangeCore, OneSetpointSamplePerCycleWithEveryDevice) {
   Fixture f(1, {telegram(3), telegram(105, 750)});
   gw::SetpointCycle sample;
@@ -313,6 +323,7 @@ TEST(ExchangeCore, OneSetpointSamplePerCycleWithEveryDevice) {
 }
 
 // A device of the link that is not written every cycle must not stop the others' setpoints.
+// Decision G1; docs/gateway.md §6.
 TEST(ExchangeCore, IncompleteCycleStillSends) {
   Fixture f(1, {telegram(3), telegram(3)});
   gw::SetpointCycle sample;
@@ -325,6 +336,7 @@ TEST(ExchangeCore, IncompleteCycleStillSends) {
 }
 
 // Lock-step waiting and the round-trip statistics: complete when every device answered the last cycle.
+// Decision G8 (lock-step pacing: wait until the answers are in).
 TEST(ExchangeCore, WaitForAnswersAndRoundTrip) {
   Fixture f(1, {telegram(3), telegram(3)});
   f.cycle();  // cycle 0 sent
@@ -346,6 +358,7 @@ TEST(ExchangeCore, WaitForAnswersAndRoundTrip) {
   EXPECT_GT(st.round_trip_max_us, 0.0);
 }
 
+// docs/gateway.md §2 (device names ≤ 63 characters, controller 0 = none), §6.
 TEST(ExchangeCore, SetUpErrors) {
   ExchangeCore core(ExchangeOptions{kController, 1'000'000, 1});
   EXPECT_THROW(core.add_device("", telegram(3)), std::invalid_argument);
@@ -363,6 +376,7 @@ TEST(ExchangeCore, SetUpErrors) {
 // Found by the fuzzer: the generated type support let Fast CDR's BadParamException (a malformed
 // encapsulation) escape into the listener thread. The checked type support returns false and leaves a default
 // sample, which route() rejects (contract version 0).
+// Decision G15 (malformed samples: a checked type support).
 TEST(ExchangeCore, MalformedPayloadIsRejectedNotThrown) {
   Fixture f(1);
   ActualCycleType type;

@@ -49,6 +49,7 @@ std::string all_problems(const std::vector<NetworkProblem>& problems) {
   return s;
 }
 
+// Decisions N1, G11 (127.0.0.1 by default); docs/gateway.md §11.
 TEST(NetworkSettings, DefaultIsLoopbackWithPeer127001) {
   ResolvedNetwork r;
   ASSERT_EQ(all_problems(resolve_network({}, true, r)), "");
@@ -58,6 +59,7 @@ TEST(NetworkSettings, DefaultIsLoopbackWithPeer127001) {
   EXPECT_FALSE(r.multicast_discovery);
 }
 
+// Decision N1 (interface by name or IPv4 address of this host).
 TEST(NetworkSettings, InterfaceByNameOrByAddress) {
   ResolvedNetwork by_name;
   ASSERT_EQ(all_problems(resolve_network(settings("lo"), true, by_name)), "");
@@ -67,6 +69,7 @@ TEST(NetworkSettings, InterfaceByNameOrByAddress) {
   EXPECT_EQ(by_address.interface_name, by_name.interface_name);
 }
 
+// Decision N2 (checked against the host's interfaces at configuration time, named).
 TEST(NetworkSettings, WrongInterfaceOrAddressIsNamed) {
   ResolvedNetwork r;
   auto p = resolve_network(settings(kNoSuchInterface, {"10.1.2.3"}), true, r);
@@ -85,6 +88,7 @@ TEST(NetworkSettings, WrongInterfaceOrAddressIsNamed) {
             std::string(kForeignAddress) + " is not an IPv4 address of an interface of this host");
 }
 
+// Decision N1 (unicast peers); docs/gateway.md §11.
 TEST(NetworkSettings, PeersAreUnicastIPv4AddressesReachableThroughTheInterface) {
   ResolvedNetwork r;
   const auto p = resolve_network(
@@ -100,6 +104,7 @@ TEST(NetworkSettings, PeersAreUnicastIPv4AddressesReachableThroughTheInterface) 
 }
 
 // A controller must know where its gateway is; a gateway may wait to be contacted.
+// Decisions N1, N4 (a gateway may wait to be contacted; a controller may not).
 TEST(NetworkSettings, ControllerOnARealInterfaceNeedsAPeer) {
   // Any non-loopback interface of this host with an IPv4 address will do; without one the rule cannot be
   // reached and the test says so.
@@ -125,6 +130,7 @@ TEST(NetworkSettings, ControllerOnARealInterfaceNeedsAPeer) {
   EXPECT_NE(p[0].message.find("is a loopback address"), std::string::npos);
 }
 
+// docs/gateway.md §11 (the RTPS ports of a domain).
 TEST(NetworkSettings, RtpsPortFormula) {
   const RtpsPorts p = rtps_ports(42, 3);
   EXPECT_EQ(p.discovery_multicast, 7400u + 250u * 42u);
@@ -135,6 +141,7 @@ TEST(NetworkSettings, RtpsPortFormula) {
 
 // The QoS of a participant on another interface: one UDPv4 transport on that address, the configured peers
 // as initial peers, no multicast; the checker objects to anything else.
+// Decision N5 (network_violations: the QoS checked against the settings).
 TEST(NetworkSettings, QosOnAnInterfaceIsUnicastToTheConfiguredPeersOnly) {
   const ResolvedNetwork net{"veth-c", "10.216.0.1", {"10.216.0.2"}, false};
   const auto qos = participant_qos("test", 7, net);
@@ -161,6 +168,7 @@ TEST(NetworkSettings, QosOnAnInterfaceIsUnicastToTheConfiguredPeersOnly) {
   EXPECT_NE(network_violations(widened, net), "");
 }
 
+// Decisions N1, N5 (multicast only when asked for).
 TEST(NetworkSettings, MulticastDiscoveryOnlyWhenAskedFor) {
   ResolvedNetwork net{"veth-c", "10.216.0.1", {"10.216.0.2"}, false};
   const auto plain = participant_qos("test", 7, net);
@@ -178,6 +186,7 @@ TEST(NetworkSettings, MulticastDiscoveryOnlyWhenAskedFor) {
   EXPECT_EQ(network_violations(plain, net), "");
 }
 
+// Decision N2.
 TEST(NetworkSettings, GatewayLinkRefusesAWrongInterfaceNamingIt) {
   GatewayLinkConfig config;
   config.domain = 160;
@@ -205,6 +214,7 @@ std::string problems_of(const std::string& adapter_keys) {
   return all;
 }
 
+// Decision N2; docs/scenarios.md "`drive`: adapter, telegram and the simulated machine".
 TEST(NetworkSettings, ScenarioAdapterNetworkProblemsNameTheirPaths) {
   const std::string prefix = "technology_objects[0].drive.adapter.";
   EXPECT_EQ(problems_of(R"("interface": "lo", "peers": ["127.0.0.1"])"), "");
@@ -228,6 +238,7 @@ TEST(NetworkSettings, ScenarioAdapterNetworkProblemsNameTheirPaths) {
       << all;
 }
 
+// Decision N2; docs/gateway.md §9 (the gateway simulator's file).
 TEST(NetworkSettings, GatewaySimFileNetworkProblemsNameTheirPaths) {
   tomc::scenario::GatewaySimConfig config;
   tomc::scenario::Problems problems;
@@ -282,6 +293,7 @@ int run_tomc(const std::string& arguments, std::string& err) {
 }
 
 // The command lines refuse a wrong interface or peer before any DDS traffic, naming the option.
+// Decision N2; docs/gateway.md §10 (using it: the command lines).
 TEST(NetworkSettings, CommandLinesNameAWrongInterfaceOrPeer) {
   const auto dir = std::filesystem::temp_directory_path() / ("tomc-netcli-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

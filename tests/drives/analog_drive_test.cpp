@@ -107,6 +107,7 @@ TEST(AnalogDrive, DacQuantisationTable) {
 }
 
 // A 12-bit + sign card drives the amplifier in 2.44 mV steps: the speed it reaches is the quantised one.
+// spec 05b C.8 item 2 (DAC quantisation); decision A5.
 TEST(AnalogDrive, QuantisedOutputReachesTheAmplifier) {
   AnalogRig rig;
   rig.actor_parameters.dac = io::DacFormat{13, 10.0};
@@ -121,6 +122,7 @@ TEST(AnalogDrive, QuantisedOutputReachesTheAmplifier) {
 }
 
 // The offset is added to the output while the axis is enabled, never while it is disabled.
+// spec 01 §3.12 (the analog output offset); decision A4 (0 V while disabled).
 TEST(AnalogDrive, OffsetOnlyWhileEnabled) {
   AnalogRig rig;
   rig.actor_parameters.offset_volts = -0.05;
@@ -140,6 +142,7 @@ TEST(AnalogDrive, OffsetOnlyWhileEnabled) {
 }
 
 // The amplifier's own offset turns the motor at 0 V; the actor's offset compensates it (TarOffs).
+// Decision A15 (TarOffs, after seed 000); spec 01 §3.12 (the analog output offset).
 TEST(AnalogDrive, AmplifierOffsetDriftAndCompensation) {
   for (const double compensation : {0.0, -0.02}) {
     AnalogRig rig;
@@ -223,6 +226,7 @@ TEST(AnalogDrive, ReadyInputRule1NotEnabledBeforeReady) {
   EXPECT_NE(h.zsw1() & 0x0004u, 0u);
 }
 
+// spec 01 §3.12 ready-input rule 2; decision A3 (fault 20001, alarm 401).
 TEST(AnalogDrive, ReadyInputRule2LossDisablesWithError) {
   AnalogHarness a;
   auto& h = a.h;
@@ -250,6 +254,7 @@ TEST(AnalogDrive, ReadyInputRule2LossDisablesWithError) {
   EXPECT_TRUE(h.drive.enable_output());
 }
 
+// spec 01 §3.12 ready-input rule 3.
 TEST(AnalogDrive, ReadyInputRule3EnableFalseDisablesDespiteReady) {
   AnalogHarness a;
   auto& h = a.h;
@@ -264,6 +269,7 @@ TEST(AnalogDrive, ReadyInputRule3EnableFalseDisablesDespiteReady) {
 }
 
 // Normal stop (OFF1): zero speed output, enable kept until the measured speed is at standstill, then off.
+// Decision A4 (OFF1: zero speed, enable kept until standstill).
 TEST(AnalogDrive, Off1KeepsEnableUntilStandstill) {
   AnalogHarness a;
   auto& h = a.h;
@@ -280,6 +286,7 @@ TEST(AnalogDrive, Off1KeepsEnableUntilStandstill) {
 }
 
 // Without ready input and enable output the axis switches on at once; the amplifier runs when powered.
+// spec 01 §3.12 (enable output and ready input are optional, independently).
 TEST(AnalogDrive, WithoutReadyInputAndEnableOutput) {
   AnalogRig rig;
   rig.actor_parameters.enable_output.reset();
@@ -313,6 +320,7 @@ TEST(AnalogDrive, QuadratureCounterWrapsWithoutLosingCounts) {
             static_cast<std::int32_t>(std::floor(back * 2000.0)));
 }
 
+// spec 05b B.5 (the ×4 quadrature counter); decision A6 (XIST1 the continuous count).
 TEST(AnalogDrive, CounterExtensionTable) {
   struct Row {
     std::uint8_t bits;
@@ -353,6 +361,7 @@ TEST(AnalogDrive, ZeroMarkLatchThroughG1Stw) {
 }
 
 // A card that fails is a drive fault (ZSW1.3): the enable output drops.
+// Decision A3 (a fault in ZSW1.3 → alarm 401); spec 06 §3.2 (ZSW1 bit 3).
 TEST(AnalogDrive, IoFailureIsADriveFault) {
   AnalogHarness a;
   auto& h = a.h;
@@ -410,6 +419,7 @@ TEST(AnalogDrive, TarOffsWithoutEncoderEndsAtOnceWithError90) {
 
 // The encoder fails while TarOffs measures (0.1 s settle, then 0.5 s of averaging): it ends in the cycle the
 // failure is seen, error 90, and what was averaged is not applied.
+// Decisions A15, A16 (TarOffs without a working encoder: error 90).
 TEST(AnalogDrive, TarOffsEncoderFailingDuringMeasurementEndsWithError90) {
   AnalogHarness a(drifting_rig(0.02));
   auto& h = a.h;
@@ -460,6 +470,7 @@ SeparateEncoderParameters encoder_83() {
   return e;
 }
 
+// Decision A17 (the analog actor with a separate 81/83 encoder); spec 06 §2.13.
 TEST(AnalogDrive, SeparateEncoderTelegram83IsTheActualValue) {
   const AnalogRig rig;
   const SeparateEncoderParameters e = encoder_83();
@@ -492,6 +503,7 @@ TEST(AnalogDrive, SeparateEncoderTelegram83IsTheActualValue) {
   EXPECT_EQ(h.drive.drive().actor().offset_calibration_status().Error, kErrorCalibrationNoEncoder);
 }
 
+// Decision A17.
 TEST(AnalogDrive, SeparateEncoderMustMatchTheActorsFeedback) {
   const AnalogRig rig;
   EXPECT_THROW(SimulatedAnalogDrive(rig.amplifier_parameters, rig.actor_parameters, encoder_83()),

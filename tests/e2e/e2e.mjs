@@ -540,7 +540,7 @@ try {
   const returned = await until('master control to return after the lifebeat time', async () => {
     const o = await objectStatus(demo.base, 'Conveyor');
     return !o.panel.held && o.panel.error_id === '16#8013' ? o : null;
-  }, 15000);
+  }, 15000, async () => (await objectStatus(demo.base, 'Conveyor')).panel);  // what the panel shows instead
   const after = (Date.now() - closed) / 1000;
   check(after >= lifebeat * 0.9, `master control returned ${after} s after the last lifebeat, before the lifebeat time ${lifebeat} s`);
   const stopped = await until('the conveyor to stand still and be disabled', async () => {

@@ -165,7 +165,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::array<std::uint8_t, 256> alarm_ack{};
       std::size_t ack_bytes = 0;
       std::size_t alarm_ack_bytes = 0;
-      (void)controller.on_alarm(bytes, ack, alarm_ack, ack_bytes, alarm_ack_bytes);
+      (void)controller.on_alarm(bytes, ack, alarm_ack, ack_bytes, alarm_ack_bytes, 1000);
+      (void)controller.alarm_timer(false, 200'000, alarm_ack, alarm_ack_bytes);
       std::array<std::uint8_t, 1514> frame{};
       (void)controller.next_output_frame(frame);
       (void)controller.input_valid(2000);

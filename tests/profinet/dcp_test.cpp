@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "tomc/profinet/dcp.hpp"
+#include "tomc/profinet/dcp_commissioning.hpp"
+#include "tomc/profinet/io_device.hpp"
 
 namespace pn = tomc::profinet;
 
@@ -172,4 +174,87 @@ TEST(Dcp, BlocksOutOfPlaceAreSkippedAndFiltersOtherThanTheNameAreKept) {
   by_id.fields.vendor_id = 0x002A;
   by_id.fields.device_id = 0x0C01;
   EXPECT_EQ(decode(encode({pn::kDcpIdentifyMulticast, kController, std::nullopt}, by_id)), by_id);
+}
+
+namespace {
+
+pn::DeviceIdentity station(std::uint8_t last_mac_byte, std::string name, pn::IpSuite ip) {
+  pn::DeviceIdentity identity;
+  identity.name_of_station = std::move(name);
+  identity.ip = ip;
+  identity.mac = {0x02, 0, 0, 0, 1, last_mac_byte};
+  identity.vendor_id = 0x002A;
+  identity.device_id = 0x0C01;
+  identity.vendor = "tomc emulated drive";
+  return identity;
+}
+
+}  // namespace
+
+// Commissioning (`tomc gateway --identify`, decision I32): one Identify All (no filter block, the multicast
+// address) reaches every device; each answer to this xid is one station, sorted by MAC, a repeated answer
+// replacing the earlier; answers to another xid, requests and Hellos are not stations.
+TEST(DcpCommissioning, IdentifyAllListsEveryStationOnce) {
+  pn::IoDevice named(station(7, "drive-1", {{10, 0, 0, 11}, {255, 255, 255, 0}, {}}));
+  pn::IoDevice fresh(station(3, "", {}));  // as from the factory: no name, no IP
+  pn::DcpScan scan(kController, 0x1234);
+  const std::vector<std::uint8_t> request = scan.request();
+  const pn::DcpMessage asked = decode(request);
+  EXPECT_EQ(asked.service, pn::DcpService::kIdentify);
+  EXPECT_EQ(asked.fields, pn::DcpDeviceFields{});  // the All selector
+  EXPECT_EQ(std::vector<std::uint8_t>(request.begin(), request.begin() + 6),
+            std::vector<std::uint8_t>(pn::kDcpIdentifyMulticast.begin(), pn::kDcpIdentifyMulticast.end()));
+  const auto named_answer = named.on_dcp(request);
+  EXPECT_TRUE(scan.on_frame(named_answer));
+  EXPECT_TRUE(scan.on_frame(fresh.on_dcp(request)));
+  EXPECT_TRUE(scan.on_frame(named_answer));  // again: still one station
+  EXPECT_FALSE(scan.on_frame(request));
+  EXPECT_FALSE(scan.on_frame(named.hello()));
+  EXPECT_FALSE(scan.on_frame(named.on_dcp(pn::DcpScan(kController, 0x9999).request())));
+  ASSERT_EQ(scan.stations().size(), 2u);
+  EXPECT_EQ(pn::describe(scan.stations()[0]),
+            "(no name)  02:00:00:00:01:03  (no IP)  VendorID 0x002A DeviceID 0x0C01  tomc emulated drive");
+  EXPECT_EQ(pn::describe(scan.stations()[1]),
+            "drive-1  02:00:00:00:01:07  10.0.0.11/255.255.255.0  VendorID 0x002A DeviceID 0x0C01  tomc "
+            "emulated drive");
+  EXPECT_EQ(scan.stations()[1].ip_block_info, 1);
+}
+
+// `tomc gateway --set-name`: a Set of NameOfStation to one MAC (BlockQualifier 1: permanent) names that
+// device and no other; its answer is read as accepted, refused with the BlockError, or not that answer.
+TEST(DcpCommissioning, SetNameOfStationNamesTheDeviceOfThatMac) {
+  pn::IoDevice fresh(station(3, "", {}));
+  pn::IoDevice other(station(4, "drive-2", {}));
+  const pn::MacAddress mac = fresh.identity().mac;
+  const auto request = pn::dcp_set_name_request(kController, mac, 77, "axis-x.cell-1", true);
+  const pn::DcpMessage asked = decode(request);
+  EXPECT_EQ(asked.service, pn::DcpService::kSet);
+  EXPECT_EQ(asked.fields.name_of_station, "axis-x.cell-1");
+  EXPECT_TRUE(asked.permanent);
+  EXPECT_TRUE(other.on_dcp(request).empty());  // unicast to another MAC: not for it
+  const auto answer = fresh.on_dcp(request);
+  EXPECT_EQ(pn::dcp_set_name_result(answer, mac, 77), std::optional<std::string>(""));
+  EXPECT_EQ(fresh.identity().name_of_station, "axis-x.cell-1");
+  EXPECT_EQ(other.identity().name_of_station, "drive-2");
+  EXPECT_EQ(pn::dcp_set_name_result(answer, mac, 78), std::nullopt);                   // another xid
+  EXPECT_EQ(pn::dcp_set_name_result(answer, other.identity().mac, 77), std::nullopt);  // another sender
+  EXPECT_EQ(pn::dcp_set_name_result(request, mac, 77), std::nullopt);                  // a request
+  // Identified by its new name now.
+  EXPECT_FALSE(fresh
+                   .on_dcp(encode({pn::kDcpIdentifyMulticast, kController, std::nullopt},
+                                  pn::dcp_identify_request(5, "axis-x.cell-1")))
+                   .empty());
+  // A device that refuses (BlockError 3: suboption not set) or does not support Set.
+  pn::DcpMessage refused;
+  refused.frame_id = pn::kFrameIdDcpGetSet;
+  refused.service = pn::DcpService::kSet;
+  refused.type = pn::DcpServiceType::kSuccess;
+  refused.xid = 77;
+  refused.results = {{pn::dcp_option::kNameOfStation, 3}};
+  EXPECT_EQ(pn::dcp_set_name_result(encode({kController, mac, std::nullopt}, refused), mac, 77),
+            std::optional<std::string>("the device refused the name: BlockError 3"));
+  refused.type = pn::DcpServiceType::kNotSupported;
+  refused.results.clear();
+  EXPECT_EQ(pn::dcp_set_name_result(encode({kController, mac, std::nullopt}, refused), mac, 77),
+            std::optional<std::string>("the device does not support DCP Set"));
 }

@@ -76,6 +76,9 @@ struct DeviceOptions {
   // The drive object of a scenario file for the simulated drive ("": { "telegram": telegram }), e.g. with a
   // "supplementary_telegram" or an encoder-only device's "encoder_telegram" and "external_speed".
   std::string drive = {};
+  // The device acknowledges the controller's AlarmAck DATA with an RTA ACK (IEC 61158-6-10 APMR, as p-net's
+  // pf_alarm_apmr_send_ack); false: it never does, and the controller's RTA timer ends the AR.
+  bool acknowledge_alarm_acks = true;
 };
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
@@ -105,6 +108,9 @@ class DeviceHost {
   void set_encoder_error(std::uint16_t code) { encoder_error_requested_ = 0x10000u | code; }
   void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
   int alarm_acks() const { return alarm_acks_.load(); }
+  // Every AlarmAck DATA frame taken, resends included, and the µs from the first to the last of them.
+  int alarm_ack_frames() const { return alarm_ack_frames_.load(); }
+  std::uint64_t alarm_ack_span_us() const { return last_alarm_ack_us_.load() - first_alarm_ack_us_.load(); }
   // The controller's output frames taken by the device so far (the gateway sends them from its cyclic thread,
   // which owns the AR only after the start-up's p0922 check).
   int output_frames() const { return output_frames_.load(); }
@@ -227,7 +233,31 @@ class DeviceHost {
           pn::RtaFrame rta;
           if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kData &&
               rta.has_block && rta.block.is_ack) {
-            ++alarm_acks_;
+            // A resend (the SendSeqNum taken last: our ACK was late or lost) is acknowledged again, counted
+            // once.
+            if (rta.send_sequence != last_alarm_ack_) ++alarm_acks_;
+            if (alarm_ack_frames_++ == 0) first_alarm_ack_us_ = now_us();
+            last_alarm_ack_us_ = now_us();
+            last_alarm_ack_ = rta.send_sequence;
+            if (options_.acknowledge_alarm_acks) {
+              pn::RtaFrame transport;
+              transport.frame_id = rta.frame_id;
+              transport.destination_endpoint = rta.source_endpoint;
+              transport.source_endpoint = rta.destination_endpoint;
+              transport.pdu_type = pn::RtaPduType::kAck;
+              transport.tack = false;
+              transport.send_sequence = static_cast<std::uint16_t>(alarm_sequence_ - 1);  // our last DATA
+              transport.ack_sequence = rta.send_sequence;
+              std::array<std::uint8_t, 128> ack{};
+              std::size_t written = 0;
+              const pn::EthernetHeader header{
+                  device.connection().ar.initiator_mac, raw.mac(),
+                  pn::VlanTag{
+                      rta.frame_id == pn::kFrameIdAlarmHigh ? pn::kPriorityAlarmHigh : pn::kPriorityAlarmLow,
+                      0}};
+              if (pn::encode(header, transport, ack, written) == pn::ProfinetError::kNone)
+                raw.send(std::span(ack).first(written));
+            }
           }
         } else if (const std::uint64_t t = now_us();
                    device.on_cyclic(in, t) && (++output_frames_, note_gap(max_output_gap_us_, last_output, t),
@@ -244,7 +274,10 @@ class DeviceHost {
       last_loop = now_us();
       (void)take(200);
       pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
-      if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) ++ars_;
+      if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) {
+        ++ars_;
+        last_alarm_ack_ = 0xFFFE;  // a new AR: the controller's SendSeqNum starts at 0xFFFF again
+      }
       if (fault_requested_.exchange(false))
         host.drive().inject_fault(7900, tomc::drives::SimulatedDriveParameters::FaultReaction::kOff2);
       if (const std::uint32_t e = encoder_error_requested_.exchange(0); e != 0) {
@@ -308,6 +341,9 @@ class DeviceHost {
   std::atomic<std::uint32_t> encoder_error_requested_{0};  // 0x10000 | code; 0: nothing requested
   std::atomic<std::uint16_t> alarm_requested_{0};
   std::atomic<int> alarm_acks_{0};
+  std::atomic<int> alarm_ack_frames_{0};
+  std::atomic<std::uint64_t> first_alarm_ack_us_{0};
+  std::atomic<std::uint64_t> last_alarm_ack_us_{0};
   std::atomic<int> output_frames_{0};
   std::atomic<int> m_add1_max_{0};
   std::atomic<int> m_add1_last_{0};
@@ -316,8 +352,9 @@ class DeviceHost {
   std::atomic<std::uint64_t> max_loop_gap_us_{0};
   std::atomic<std::uint64_t> max_input_gap_us_{0};
   std::atomic<std::uint64_t> max_loop_gap_at_ms_{0};
-  std::string ar_ends_;               // under mutex_
-  std::uint16_t alarm_sequence_ = 0;  // device thread only
+  std::string ar_ends_;                    // under mutex_
+  std::uint16_t alarm_sequence_ = 0;       // device thread only
+  std::uint16_t last_alarm_ack_ = 0xFFFE;  // device thread only: SendSeqNum of the last AlarmAck taken
   mutable std::mutex mutex_;
   std::string error_;
 };

@@ -138,6 +138,7 @@ std::vector<std::pair<int, std::string>> json_blocks(const std::string& markdown
 // examples/profinet_gateway.json and every gateway file printed in docs/profinet-gateway.md and the README
 // load without a problem, so the examples cannot rot. A device object alone (the GSDML example) is loaded
 // in a file of its own with the emulated drive's GSDML folder as base.
+// Decisions I15, I18 and I29 (modules by hand or from a GSDML file, start-up records); issue 17.
 TEST(GatewayConfig, TheExampleFileAndTheDocumentedExamplesLoad) {
   const std::filesystem::path source(TOMC_SOURCE_DIR);
   sc::ProfinetGatewayConfig example;
@@ -1207,4 +1208,74 @@ TEST(GatewayNetns, TsharkDissectsEveryFrameTypeTheGatewaySends) {
   for (const auto& [kind, count] : seen)
     summary += "  " + std::to_string(count) + " × " + kind + "\n";
   std::printf("frames the gateway sent, as tshark dissects them:\n%s", summary.c_str());
+}
+
+// Decision I30 (the RTA timer, IEC 61158-6-10 APMS): a device that never acknowledges our AlarmAck DATA.
+// `tomc gateway` (RTATimeoutFactor 1, RTARetries 3 in its AlarmCRBlock) sends it once and again every
+// 100 ms, three times, then ends the AR as a lost one and reconnects; the status over DDS says why. The
+// device's notification, still queued on the start-up thread's socket, is not answered again in the new AR
+// (an AlarmAck for an alarm of the AR before would start the same end over).
+TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions silent;
+  silent.acknowledge_alarm_acks = false;
+  DeviceHost device(hosts.second, silent);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  const DdsObserver observer(hosts.first);
+  for (int i = 0; i < 500 && device.output_frames() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(device.ars(), 1) << gateway.log();
+  ASSERT_GT(device.output_frames(), 0) << gateway.log();
+  device.send_alarm(pn::alarm_type::kDiagnosis);
+  for (int i = 0; i < 500 && device.ars() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(device.ars(), 2) << device.ar_ends() << gateway.log();
+  EXPECT_EQ(device.alarm_acks(), 1);
+  EXPECT_EQ(device.alarm_ack_frames(), 4);          // sent, then RTARetries resends
+  EXPECT_GE(device.alarm_ack_span_us(), 295'000u);  // three timeouts of 100 ms (less the frames' own delays)
+  const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
+    return s.device.state == "connected" && s.device.detail.find("RTA timeout") != std::string::npos;
+  });
+  EXPECT_EQ(
+      seen.device.detail,
+      "RTA timeout: AlarmAck (low) resent 3 times every 100 ms; alarm 1 acknowledged: diagnosis, slot 1 "
+      "subslot 2, USI 0x8000")
+      << gateway.log();
+  // Longer than the timer's 400 ms: nothing of the first AR is acknowledged in the second.
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  EXPECT_EQ(device.alarm_acks(), 1);
+  EXPECT_EQ(device.alarm_ack_frames(), 4);
+  EXPECT_EQ(device.ars(), 2) << device.ar_ends();
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// Decision I32, commissioning from the product: `tomc gateway --identify` in the gateway namespace lists the
+// emulated device (DCP Identify All: its name, MAC and IP suite), `--set-name` renames it by its MAC (DCP
+// Set, permanent), and the next --identify lists it by the new name. No gateway runs: these are the
+// commissioning engineer's steps before one does.
+TEST(GatewayNetns, IdentifyListsTheStationsAndSetNameRenamesOne) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceHost device(hosts.second);
+  const std::string mac = mac_of(hosts.second, "pn-e");
+  ASSERT_FALSE(mac.empty());
+  const std::string tomc = std::string("ip netns exec ") + hosts.first + " " + TOMC_BINARY + " gateway ";
+  const auto identify = [&] {
+    return pn::testing::output_of(tomc + "--identify --interface pn-g --wait-ms 300 2>&1; echo rc=$?");
+  };
+  const std::string listed = identify();
+  EXPECT_NE(listed.find("gateway: 1 station(s) on pn-g answered DCP Identify All\n  drive-1  " + mac +
+                        "  10.218.0.2/255.255.255.0  VendorID 0x"),
+            std::string::npos)
+      << listed;
+  EXPECT_NE(listed.find("rc=0"), std::string::npos) << listed;
+  EXPECT_EQ(pn::testing::output_of(tomc + "--set-name axis-7.cell-2 --mac " + mac + " --interface pn-g 2>&1"),
+            "gateway: " + mac + " is now 'axis-7.cell-2'\n");
+  const std::string renamed = identify();
+  EXPECT_NE(renamed.find("\n  axis-7.cell-2  " + mac + "  10.218.0.2/"), std::string::npos) << renamed;
+  EXPECT_EQ(device.error(), "");
 }

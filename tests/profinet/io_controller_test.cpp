@@ -211,14 +211,14 @@ struct AlarmAnswer {
   std::vector<std::uint8_t> alarm_ack;
 };
 
-AlarmAnswer offer(Pair& pair, const pn::RtaFrame& rta) {
+AlarmAnswer offer(Pair& pair, const pn::RtaFrame& rta, std::uint64_t now_us = 0) {
   const RawAlarm raw = raw_alarm(pair, rta);
   std::array<std::uint8_t, 128> ack{};
   std::array<std::uint8_t, 128> alarm_ack{};
   std::size_t ack_bytes = 0;
   std::size_t alarm_ack_bytes = 0;
   AlarmAnswer answer;
-  answer.frames = pair.controller->on_alarm(raw.frame(), ack, alarm_ack, ack_bytes, alarm_ack_bytes);
+  answer.frames = pair.controller->on_alarm(raw.frame(), ack, alarm_ack, ack_bytes, alarm_ack_bytes, now_us);
   answer.ack.assign(ack.begin(), ack.begin() + static_cast<long>(ack_bytes));
   answer.alarm_ack.assign(alarm_ack.begin(), alarm_ack.begin() + static_cast<long>(alarm_ack_bytes));
   return answer;
@@ -260,6 +260,7 @@ TEST(IoController, RpcRequestsAddressTheDeviceOfTheDcpAnswer) {
 
 // A DCP answer without the DeviceID block leaves the object's IDs 0: the device rejects the Connect
 // (nca_s_unsupported_type), the controller reports it in last_reject() and goes back to kOffline.
+// Decision I27 (the RPC object UUID from the DCP DeviceID block; a Reject reported in last_reject()).
 TEST(IoController, ARejectedConnectIsReported) {
   Pair pair = make_pair(1);
   const auto identified = pair.device->on_dcp(pair.controller->identify_request(1));
@@ -284,6 +285,8 @@ TEST(IoController, ARejectedConnectIsReported) {
   EXPECT_EQ(pair.controller->last_reject(), 0u);
 }
 
+// A device's diagnosis alarm: the controller answers with an RTA ACK and an AlarmAck (block sequence number
+// and subslot of the notification), counts and keeps it, and acknowledges no AlarmAck (decisions I19, I28).
 TEST(IoController, AlarmIsAcknowledged) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -298,7 +301,7 @@ TEST(IoController, AlarmIsAcknowledged) {
   std::size_t transport_bytes = 0;
   std::size_t ack_bytes = 0;
   ASSERT_EQ(pair.controller->on_alarm(std::span(alarm).first(alarm_bytes), transport, ack, transport_bytes,
-                                      ack_bytes),
+                                      ack_bytes, 0),
             2u);
   pn::RtaFrame decoded;
   ASSERT_EQ(pn::decode_rta(std::span(transport).first(transport_bytes), decoded), pn::ProfinetError::kNone);
@@ -312,15 +315,16 @@ TEST(IoController, AlarmIsAcknowledged) {
   EXPECT_EQ(pair.controller->alarms_acknowledged(), 1u);
   EXPECT_EQ(pair.controller->last_alarm()->alarm_type, pn::alarm_type::kDiagnosis);
   // An AlarmAck (from the device's direction) or a non-alarm frame is not acknowledged again.
-  EXPECT_EQ(
-      pair.controller->on_alarm(std::span(ack).first(ack_bytes), transport, ack, transport_bytes, ack_bytes),
-      0u);
+  EXPECT_EQ(pair.controller->on_alarm(std::span(ack).first(ack_bytes), transport, ack, transport_bytes,
+                                      ack_bytes, 0),
+            0u);
 }
 
 // IEC 61158-6-10 RTA (as p-net's APMR/APMS): a DATA with the SendSeqNum of the last one taken is a resend
 // after a lost ACK. It is acknowledged again, and our AlarmAck DATA goes again with its own SendSeqNum
 // (0xFFFF: the first of an AR) while the device has not acknowledged it, at most RTARetries (3) times; the
 // notification is counted and kept once. High and low priority have their own sequence numbers.
+// Decision I28 (RTA duplicates and resends).
 TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -385,8 +389,8 @@ TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
   std::size_t ack_n = 0;
   std::size_t alarm_ack_n = 0;
   const std::uint64_t before = tomc::testing::allocation_count();
-  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n), 2u);
-  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n), 2u);
+  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n, 0), 2u);
+  EXPECT_EQ(pair.controller->on_alarm(raw.frame(), ack, alarm_ack_out, ack_n, alarm_ack_n, 0), 2u);
   EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
   EXPECT_EQ(pair.controller->alarms_acknowledged(), 4u);
 }
@@ -394,6 +398,7 @@ TEST(IoController, ARepeatedAlarmIsAcknowledgedAgainButCountedOnce) {
 // The alarm CR exists from the Connect on: a notification while the start-up records are written is
 // answered (and counted once when the device repeats it after ApplicationReady); before the Connect there
 // is no AR to take it.
+// Decision I28 (alarms during start-up).
 TEST(IoController, AnAlarmDuringStartUpIsAnswered) {
   Pair pair = make_pair(1);
   const pn::RtaFrame notification = pn::testing::diagnosis_alarm();
@@ -421,6 +426,195 @@ TEST(IoController, AnAlarmDuringStartUpIsAnswered) {
   EXPECT_EQ(fresh.frames, 2u);
   EXPECT_EQ(decoded_rta(fresh.alarm_ack).send_sequence, 0xFFFFu);
   EXPECT_EQ(pair.controller->alarms_acknowledged(), 2u);
+}
+
+namespace {
+
+// A pair whose Connect offers RTATimeoutFactor `factor` (× 100 ms) and RTARetries `retries`.
+Pair make_rta_pair(std::uint16_t factor, std::uint16_t retries) {
+  pn::ControllerDeviceConfig config = device_config(1);
+  config.rta_timeout_factor = factor;
+  config.rta_retries = retries;
+  return {std::make_unique<pn::IoController>(pn::testing::kController, "tomc-gateway", config,
+                                             pn::Uuid{0x10000001u, 1, 2, {3}}),
+          std::make_unique<pn::IoDevice>(device_identity(1))};
+}
+
+// What the RTA timers of one cycle did: each priority's action and the resent frame.
+struct TimerCycle {
+  pn::AlarmTimerAction high = pn::AlarmTimerAction::kNone;
+  pn::AlarmTimerAction low = pn::AlarmTimerAction::kNone;
+  std::vector<std::uint8_t> resent;
+};
+
+TimerCycle run_timers(Pair& pair, std::uint64_t now_us) {
+  TimerCycle result;
+  std::array<std::uint8_t, 128> out{};
+  for (const bool high : {true, false}) {
+    std::size_t bytes = 0;
+    const pn::AlarmTimerAction action = pair.controller->alarm_timer(high, now_us, out, bytes);
+    (high ? result.high : result.low) = action;
+    if (bytes > 0) result.resent.assign(out.begin(), out.begin() + static_cast<long>(bytes));
+  }
+  return result;
+}
+
+// The device's transport ACK of our DATA with this SendSeqNum (high priority).
+pn::RtaFrame device_ack_of(std::uint16_t our_send_sequence) {
+  pn::RtaFrame ack = pn::testing::diagnosis_alarm();
+  ack.pdu_type = pn::RtaPduType::kAck;
+  ack.tack = false;
+  ack.has_block = false;
+  ack.ack_sequence = our_send_sequence;
+  return ack;
+}
+
+// The high-priority notification after diagnosis_alarm(): its SendSeqNum, AckSeqNum and alarm sequence.
+pn::RtaFrame next_notification(std::uint16_t send_sequence, std::uint16_t ack_sequence, std::uint16_t alarm) {
+  pn::RtaFrame notification = pn::testing::diagnosis_alarm();
+  notification.send_sequence = send_sequence;
+  notification.ack_sequence = ack_sequence;
+  notification.block.specifier = static_cast<std::uint16_t>(0x0800 | 0x2000 | alarm);
+  return notification;
+}
+
+// The high-priority timer resends `sent`'s AlarmAck at `due_us`, not 1 µs earlier.
+void expect_resent_at(Pair& pair, const AlarmAnswer& sent, std::uint64_t due_us) {
+  EXPECT_EQ(run_timers(pair, due_us - 1).high, pn::AlarmTimerAction::kNone);
+  const TimerCycle resent = run_timers(pair, due_us);
+  EXPECT_EQ(resent.high, pn::AlarmTimerAction::kResend);
+  EXPECT_EQ(resent.resent, sent.alarm_ack);
+}
+
+}  // namespace
+
+// IEC 61158-6-10 APMS (as p-net's pf_alarm_apms_timeout on the device's side): our AlarmAck DATA that the
+// device does not acknowledge is sent again RTATimeoutFactor × 100 ms after it was last sent. Factor 2 at a
+// 1 ms cycle: the AlarmAck of cycle 10 is lost, resent in cycle 210 and 410 (not one cycle earlier), the
+// device's ACK in cycle 450 stops it; the next AlarmAck (SendSeqNum 0) is acknowledged by the AckSeqNum of
+// the device's next notification instead. The AR runs on throughout.
+TEST(IoController, ALostAlarmAckIsResentAfterTheRtaTimeoutUntilTheDeviceAcknowledges) {
+  Pair pair = make_rta_pair(2, 3);
+  ASSERT_TRUE(start_up(pair));
+  EXPECT_EQ(pair.device->connection().alarm_cr.rta_timeout_factor, 2);  // our AlarmCRBlock says so
+  EXPECT_EQ(pair.device->connection().alarm_cr.rta_retries, 3);
+  EXPECT_EQ(pair.controller->alarm_timeout_us(), 200'000u);
+  const pn::RtaFrame notification = pn::testing::diagnosis_alarm();  // high, SendSeqNum 0
+  std::vector<std::uint8_t> first;
+  std::vector<int> resend_cycles;
+  for (int k = 1; k <= 1500; ++k) {
+    const std::uint64_t now = static_cast<std::uint64_t>(k) * kCycleUs;
+    cycle(pair, now);
+    if (k == 10) first = offer(pair, notification, now).alarm_ack;  // sent, lost on its way
+    if (k == 450) {
+      EXPECT_EQ(offer(pair, device_ack_of(0xFFFF), now).frames, 0u);
+    }
+    const TimerCycle timers = run_timers(pair, now);
+    EXPECT_EQ(timers.low, pn::AlarmTimerAction::kNone) << k;
+    if (timers.high == pn::AlarmTimerAction::kResend) {
+      resend_cycles.push_back(k);
+      EXPECT_EQ(timers.resent, first) << k;  // byte for byte: same SendSeqNum 0xFFFF
+    } else {
+      EXPECT_EQ(timers.high, pn::AlarmTimerAction::kNone) << k;
+    }
+  }
+  EXPECT_EQ(decoded_rta(first).send_sequence, 0xFFFFu);
+  EXPECT_EQ(resend_cycles, (std::vector<int>{210, 410}));
+  EXPECT_FALSE(pair.controller->alarm_ack_pending(true));
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kRunning);
+  // The next notification's AlarmAck (SendSeqNum 0) is lost too: resent 200 ms later; the device's third
+  // notification carries AckSeqNum 0, which acknowledges it, so it is not resent again.
+  std::uint64_t now = 2'000'000;
+  const AlarmAnswer second = offer(pair, next_notification(1, 0xFFFF, 6), now);
+  ASSERT_EQ(second.frames, 2u);
+  EXPECT_EQ(decoded_rta(second.alarm_ack).send_sequence, 0u);
+  expect_resent_at(pair, second, now + 200'000);
+  now += 250'000;
+  const AlarmAnswer third = offer(pair, next_notification(2, 0, 7), now);
+  ASSERT_EQ(third.frames, 2u);
+  EXPECT_EQ(decoded_rta(third.alarm_ack).send_sequence, 1u);
+  // From now on only SendSeqNum 1 waits: its timeout runs from `now`, not from the resend of 0.
+  expect_resent_at(pair, third, now + 200'000);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 3u);
+}
+
+// After RTARetries resends without the device's acknowledge, one more timeout ends the AR (APMS
+// TimerExpired with the retry counter at 0: A_Data.cnf(-), the AR aborted with "AR alarm send.cnf(-)",
+// p-net PNET_ERROR_CODE_2_ABORT_AR_ALARM_SEND_CNF_NEG). Factor 1, retries 3, 1 ms cycles: the AlarmAck of
+// cycle 5 is resent in cycles 105, 205 and 305, the AR ends in cycle 405 (kOffline, PNIOStatus 0xCF81FD08),
+// the cyclic frames stop; the same controller reconnects and its channels start afresh. Low priority here;
+// a repeated notification's resend counts towards the same RTARetries and restarts the timeout (I28).
+TEST(IoController, RtaRetriesUnacknowledgedResendsEndTheAr) {
+  Pair pair = make_rta_pair(1, 3);
+  ASSERT_TRUE(start_up(pair));
+  pn::RtaFrame notification = pn::testing::diagnosis_alarm();
+  notification.frame_id = pn::kFrameIdAlarmLow;
+  notification.block.high_priority = false;
+  std::vector<int> resends;
+  int aborted_in = 0;
+  for (int k = 1; k <= 600 && aborted_in == 0; ++k) {
+    const std::uint64_t now = static_cast<std::uint64_t>(k) * kCycleUs;
+    cycle(pair, now);
+    if (k == 5) {
+      ASSERT_EQ(offer(pair, notification, now).frames, 2u);
+    }
+    const TimerCycle timers = run_timers(pair, now);
+    EXPECT_EQ(timers.high, pn::AlarmTimerAction::kNone) << k;
+    if (timers.low == pn::AlarmTimerAction::kResend) resends.push_back(k);
+    if (timers.low == pn::AlarmTimerAction::kAbort) aborted_in = k;
+    if (aborted_in == 0) {
+      EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kRunning) << k;
+    }
+  }
+  EXPECT_EQ(resends, (std::vector<int>{105, 205, 305}));
+  EXPECT_EQ(aborted_in, 405);
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD08u);
+  EXPECT_EQ(pn::kAlarmSendTimeoutStatus.value(), 0xCF81FD08u);
+  std::array<std::uint8_t, 1518> frame{};
+  EXPECT_EQ(pair.controller->next_output_frame(frame), 0u);  // the device's watchdog will end its side
+  EXPECT_EQ(run_timers(pair, 10'000'000).low, pn::AlarmTimerAction::kNone);  // nothing after the end
+  // Reconnect (as the gateway does after a lost AR): a new AR, fresh channels.
+  pair.device->abort_ar();
+  ASSERT_TRUE(start_up(pair, 9));
+  EXPECT_FALSE(pair.controller->alarm_ack_pending(false));
+  std::uint64_t now = 20'000'000;
+  const AlarmAnswer fresh = offer(pair, notification, now);
+  ASSERT_EQ(fresh.frames, 2u);
+  EXPECT_EQ(decoded_rta(fresh.alarm_ack).send_sequence, 0xFFFFu);
+  // The device repeats its notification 50 ms later (our ACK lost): the AlarmAck again (I28), which counts
+  // as the first of the three resends and restarts the timeout from there.
+  EXPECT_EQ(offer(pair, notification, now + 50'000).alarm_ack, fresh.alarm_ack);
+  EXPECT_EQ(run_timers(pair, now + 149'999).low, pn::AlarmTimerAction::kNone);
+  EXPECT_EQ(run_timers(pair, now + 150'000).low, pn::AlarmTimerAction::kResend);
+  EXPECT_EQ(run_timers(pair, now + 250'000).low, pn::AlarmTimerAction::kResend);
+  EXPECT_EQ(offer(pair, notification, now + 260'000).alarm_ack, std::vector<std::uint8_t>{});  // none left
+  EXPECT_EQ(run_timers(pair, now + 349'999).low, pn::AlarmTimerAction::kNone);
+  EXPECT_EQ(run_timers(pair, now + 350'000).low, pn::AlarmTimerAction::kAbort);
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(pair.controller->alarms_acknowledged(), 2u);
+}
+
+// The timer runs in the cyclic thread: its calls allocate nothing, whether idle, resending or ending the AR.
+TEST(IoController, TheRtaTimerDoesNotAllocate) {
+  Pair pair = make_rta_pair(1, 3);
+  ASSERT_TRUE(start_up(pair));
+  ASSERT_EQ(offer(pair, pn::testing::diagnosis_alarm(), 0).frames, 2u);
+  std::array<std::uint8_t, 128> out{};
+  int resends = 0;
+  int aborts = 0;
+  const std::uint64_t before = tomc::testing::allocation_count();
+  for (std::uint64_t now = 0; now <= 500'000; now += kCycleUs) {
+    for (const bool high : {true, false}) {
+      std::size_t bytes = 0;
+      const pn::AlarmTimerAction action = pair.controller->alarm_timer(high, now, out, bytes);
+      resends += action == pn::AlarmTimerAction::kResend;
+      aborts += action == pn::AlarmTimerAction::kAbort;
+    }
+  }
+  EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
+  EXPECT_EQ(resends, 3);
+  EXPECT_EQ(aborts, 1);
 }
 
 TEST(IoController, CyclicCallsDoNotAllocate) {

@@ -69,6 +69,7 @@ class ScenarioCli : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// docs/scenarios.md "Exit status and messages" (0) and "`trace`: names and CSV" (stdout without --out).
 TEST_F(ScenarioCli, TraceOnStdoutAndExitZero) {
   const SimRun r = sim(write("ok.json", scenario()));
   EXPECT_EQ(r.status, 0) << r.err;
@@ -77,6 +78,7 @@ TEST_F(ScenarioCli, TraceOnStdoutAndExitZero) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 21);
 }
 
+// docs/scenarios.md "Exit status and messages" (the one-line summary with --out).
 TEST_F(ScenarioCli, OutFileAndSummary) {
   const std::string csv = (dir_ / "trace.csv").string();
   SimRun r = sim(write("ok.json", scenario()) + " --out " + csv);
@@ -88,6 +90,7 @@ TEST_F(ScenarioCli, OutFileAndSummary) {
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (1).
 TEST_F(ScenarioCli, FailedExpectationExitsOne) {
   const SimRun r = sim(write("x.json", scenario("{}", "TO_SpeedAxis", "MC_Power", "[]",
                                                 R"([{ "cycle": 19, "values": { "p.Status": true } }])")));
@@ -95,12 +98,14 @@ TEST_F(ScenarioCli, FailedExpectationExitsOne) {
   EXPECT_NE(r.err.find("expect[0] (cycle 19): p.Status = 0, expected 1"), std::string::npos) << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, with line and column).
 TEST_F(ScenarioCli, MalformedJson) {
   const SimRun r = sim(write("bad.json", "{ \"cycles\": 3,, }"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("bad.json: malformed JSON: parse error at line 1"), std::string::npos) << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, the JSON path).
 TEST_F(ScenarioCli, UnknownConfigPath) {
   const SimRun r = sim(write("c.json", scenario(R"({"DynamicLimits.MaxSpeed": 1})")));
   EXPECT_EQ(r.status, 2);
@@ -110,6 +115,7 @@ TEST_F(ScenarioCli, UnknownConfigPath) {
       << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, the JSON path).
 TEST_F(ScenarioCli, WrongType) {
   const SimRun r = sim(write("c.json", scenario(R"({"DynamicLimits.MaxVelocity": "fast"})")));
   EXPECT_EQ(r.status, 2);
@@ -120,6 +126,7 @@ TEST_F(ScenarioCli, WrongType) {
       << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, the JSON path).
 TEST_F(ScenarioCli, UnknownInstruction) {
   const SimRun r = sim(write("i.json", scenario("{}", "TO_SpeedAxis", "MC_Teleport", "[]")));
   EXPECT_EQ(r.status, 2);
@@ -127,6 +134,7 @@ TEST_F(ScenarioCli, UnknownInstruction) {
       << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, the JSON path).
 TEST_F(ScenarioCli, UnknownTraceName) {
   const SimRun r =
       sim(write("t.json", scenario("{}", "TO_SpeedAxis", "MC_Power", R"(["Axis1.Temperature"])")));
@@ -135,6 +143,7 @@ TEST_F(ScenarioCli, UnknownTraceName) {
       << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (2, the JSON path).
 TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
   const SimRun r = sim(write("u.json", scenario("{}", "TO_Kinematics", "MC_Power", "[]")));
   EXPECT_EQ(r.status, 2);
@@ -142,6 +151,7 @@ TEST_F(ScenarioCli, UnsupportedTechnologyObjectType) {
       << r.err;
 }
 
+// docs/scenarios.md "Exit status and messages" (one line per problem, all of them).
 TEST_F(ScenarioCli, EveryProblemOnItsOwnLine) {
   const SimRun r = sim(write("m.json", scenario(R"({"Nope": 1, "Override.Velocity": 300})")));
   EXPECT_EQ(r.status, 2);
@@ -150,6 +160,7 @@ TEST_F(ScenarioCli, EveryProblemOnItsOwnLine) {
   EXPECT_NE(r.err.find("config.Override.Velocity: 300 out of range 0..200"), std::string::npos);
 }
 
+// docs/scenarios.md "Exit status and messages" (2: malformed command line, unreadable file).
 TEST_F(ScenarioCli, CommandLineErrors) {
   EXPECT_EQ(sim("").status, 2);
   SimRun r = sim("--frobnicate");
@@ -209,6 +220,7 @@ class ScenarioRetain : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// spec 02 §5.9 (retentive absolute-encoder adjustment); docs/scenarios.md "Top level" (`retain_file`).
 TEST_F(ScenarioRetain, AdjustmentPersistsBetweenRuns) {
   const std::string adjust =
       R"([ { "cycle": 10, "instance": "home", "instruction": "MC_Home", "axis": "Slide",

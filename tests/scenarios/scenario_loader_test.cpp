@@ -63,6 +63,7 @@ Json with_event(const char* event) {
   return d;
 }
 
+// docs/scenarios.md "A complete example" and "Top level".
 TEST(ScenarioLoader, ValidScenarioLoads) {
   const auto result = Scenario::load(base());
   ASSERT_TRUE(result.scenario) << ::testing::PrintToString(result.problems);
@@ -73,11 +74,13 @@ TEST(ScenarioLoader, ValidScenarioLoads) {
 
 // ---- TO configuration ----
 
+// docs/scenarios.md "`config`: start values by data-block path"; spec 04 (each variable's range).
 TEST(ScenarioConfig, OutOfRangeNamesThePathAndTheRange) {
   EXPECT_EQ(problem_of(with_config(R"({"DynamicLimits.MaxVelocity": 1e13})")),
             "technology_objects[0].config.DynamicLimits.MaxVelocity: 1e13 out of range 0..1e12");
 }
 
+// docs/scenarios.md "`config`: start values by data-block path".
 TEST(ScenarioConfig, UnknownPathWithSuggestion) {
   EXPECT_EQ(problem_of(with_config(R"({"DynamicLimits.MaxVelocityy": 1})")),
             "technology_objects[0].config.DynamicLimits.MaxVelocityy: unknown variable of TO_SpeedAxis");
@@ -90,12 +93,14 @@ TEST(ScenarioConfig, UnknownPathWithSuggestion) {
             std::string::npos);
 }
 
+// docs/scenarios.md "`config`: start values by data-block path"; spec 04 §0.2 (access column).
 TEST(ScenarioConfig, StatusVariablesAreNotConfiguration) {
   EXPECT_EQ(problem_of(with_config(R"({"StatusWord": 1})")),
             "technology_objects[0].config.StatusWord: cannot be configured: status variable, written by the "
             "technology object only");
 }
 
+// docs/scenarios.md "`config`: start values by data-block path"; spec 04 §0.4 (data types).
 TEST(ScenarioConfig, WrongTypes) {
   EXPECT_EQ(problem_of(with_config(R"({"Override.Velocity": "50"})")),
             "technology_objects[0].config.Override.Velocity: expected a number (LREAL), got a string");
@@ -110,6 +115,7 @@ TEST(ScenarioConfig, WrongTypes) {
             "technology_objects[0].config: expected an object of data-block paths, got an array");
 }
 
+// docs/scenarios.md "`config`: start values by data-block path"; spec 04 §0.4.
 TEST(ScenarioConfig, PermittedValuesAndHexLiterals) {
   EXPECT_EQ(
       problem_of(with_config(R"({"Actor.RemoveEnableReaction": 2})")),
@@ -122,12 +128,14 @@ TEST(ScenarioConfig, PermittedValuesAndHexLiterals) {
   EXPECT_TRUE(problems_of(with_config(R"({"Actor.RemoveEnableReaction": "0x5"})")).empty());
 }
 
+// docs/scenarios.md "`config`: start values by data-block path" (every problem of a file at once).
 TEST(ScenarioConfig, EveryProblemIsReported) {
   const auto problems = problems_of(with_config(
       R"({"DynamicLimits.MaxVelocity": 1e13, "Nope": 1, "StatusWord": 0, "Override.Velocity": false})"));
   EXPECT_EQ(problems.size(), 4u) << ::testing::PrintToString(problems);
 }
 
+// docs/scenarios.md "`config`: start values by data-block path".
 TEST(ScenarioConfig, LoaderWritesStartValues) {
   tomc::techobjects::SpeedAxisData data;
   Problems problems;
@@ -244,6 +252,7 @@ TEST(ScenarioDrive, StepperAdapter) {
   EXPECT_EQ(problem_of(d), "trace[0]: 'Axis1' has no stepper drive");
 }
 
+// docs/scenarios.md "`drive`: adapter, telegram and the simulated machine".
 TEST(ScenarioDrive, AdapterAndTelegram) {
   EXPECT_NE(problem_of(with_drive(R"({"adapter": "dds", "telegram": 2})"))
                 .find("technology_objects[0].drive.adapter: the gateway adapter is an object: {\"type\": "
@@ -266,6 +275,7 @@ TEST(ScenarioDrive, AdapterAndTelegram) {
   EXPECT_TRUE(problems_of(with_drive(R"({"telegram": 105, "supplementary_telegram": 750})")).empty());
 }
 
+// docs/scenarios.md "`drive`: adapter, telegram and the simulated machine".
 TEST(ScenarioDrive, ModelParameters) {
   EXPECT_EQ(
       problem_of(with_drive(R"({"telegram": 2, "servo_cycle_s": 0.002})")),
@@ -292,6 +302,7 @@ TEST(ScenarioDrive, ModelParameters) {
             "technology_objects[0].drive.backlash: -0.1 out of range: must be at least 0");
 }
 
+// docs/scenarios.md "`drive`: adapter, telegram and the simulated machine".
 TEST(ScenarioDrive, EncodersAndMachine) {
   EXPECT_EQ(problem_of(with_drive(R"({"telegram": 3, "encoder1": {"shaft": "gear"}})")),
             "technology_objects[0].drive.encoder1.shaft: 'gear' is not one of motor, load");
@@ -316,6 +327,7 @@ TEST(ScenarioDrive, EncodersAndMachine) {
             "technology_objects[0].drive.machine.positive_limit_switch: expected a number, got a string");
 }
 
+// docs/scenarios.md "`drive`: adapter, telegram and the simulated machine".
 TEST(ScenarioDrive, EveryFieldIsRead) {
   tomc::scenario::DriveSettings s;
   Problems problems;
@@ -398,6 +410,7 @@ TEST(ScenarioDrive, EveryFieldIsRead) {
 
 // ---- scenario level ----
 
+// docs/scenarios.md "Top level".
 TEST(ScenarioLoader, TopLevel) {
   Json d = base();
   d.erase("cycle_time");
@@ -482,6 +495,7 @@ TEST(ScenarioLoader, Cams) {
   EXPECT_NE(problem_of(d).find("MC_Power is not an instruction of TO_Cam C"), std::string::npos);
 }
 
+// docs/scenarios.md "`technology_objects[i]`".
 TEST(ScenarioLoader, TechnologyObjects) {
   Json d = base();
   d["technology_objects"] = Json::array();
@@ -534,6 +548,7 @@ TEST(ScenarioLoader, TechnologyObjects) {
   EXPECT_TRUE(problems_of(d).empty());
 }
 
+// docs/scenarios.md "`timeline`: events".
 TEST(ScenarioLoader, EventTiming) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 10, "instance": "power1"})")),
             "timeline[1].cycle: 10 out of range 0..9");
@@ -550,6 +565,7 @@ TEST(ScenarioLoader, EventTiming) {
   EXPECT_EQ(problem_of(t), "timeline: expected an array of events, got an object");
 }
 
+// docs/scenarios.md "`timeline`: events".
 TEST(ScenarioLoader, EventKinds) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1})")),
             "timeline[1]: an event needs one of 'instance', 'set', 'inject', 'clear'");
@@ -561,6 +577,7 @@ TEST(ScenarioLoader, EventKinds) {
   EXPECT_EQ(problem_of(with_event(R"(17)")), "timeline[1]: expected an object, got a number");
 }
 
+// docs/scenarios.md "`timeline`: events" (the first event of an instance names its instruction).
 TEST(ScenarioLoader, InstanceCreation) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "move1", "axis": "Axis1"})")),
             "timeline[1].instruction: missing (the first event of instance 'move1' must give instruction and "
@@ -602,6 +619,7 @@ TEST(ScenarioLoader, InstanceCreation) {
             "timeline[1].instance: expected a string, got a number");
 }
 
+// docs/scenarios.md "Instruction inputs".
 TEST(ScenarioLoader, Inputs) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "instance": "power1", "inputs": {"Enabled": true}})")),
             "timeline[1].inputs.Enabled: unknown input of MC_Power (inputs: Enable, StartMode, StopMode)");
@@ -644,6 +662,7 @@ TEST(ScenarioLoader, Inputs) {
             "timeline[1].inputs.STW2: -1 out of range 0..65535");
 }
 
+// docs/scenarios.md "`set`: write TO variables as user code"; spec 04 §0.2 (what user code may write).
 TEST(ScenarioLoader, SetEvents) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "set": {"Override.Velocity": 50}})")),
             "timeline[1].set.Override.Velocity: expected '<technology object>.<variable path>', e.g. "
@@ -668,6 +687,7 @@ TEST(ScenarioLoader, SetEvents) {
             "timeline[1].set: expected an object, got a number");
 }
 
+// docs/scenarios.md "`inject` / `clear`: simulated faults".
 TEST(ScenarioLoader, FaultEvents) {
   EXPECT_EQ(problem_of(with_event(R"({"cycle": 1, "inject": {"target": "Axis2", "fault": "drive_fault"}})")),
             "timeline[1].inject.target: unknown technology object 'Axis2'");
@@ -707,6 +727,7 @@ TEST(ScenarioLoader, FaultEvents) {
   EXPECT_EQ(problem_of(d), "timeline[1].inject.target: Axis1 has no simulated drive to inject faults into");
 }
 
+// docs/scenarios.md "`trace`: names and CSV".
 TEST(ScenarioLoader, TraceNames) {
   auto traced = [](const char* name) {
     Json d = base();
@@ -808,6 +829,44 @@ TEST(ScenarioLoader, MisplacedLeadingValueInterconnections) {
       << *other;
 }
 
+// A leader L and a follower F with one interconnection `interconnection` (its JSON without the braces).
+Json with_interconnection(const std::string& interconnection) {
+  Json d = base();
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "L", "type": "TO_PositioningAxis",
+    "config": { "VirtualAxis.Mode": 1 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "E", "type": "TO_ExternalEncoder",
+    "drive": { "adapter": "simulated", "encoder_telegram": 81 } })"));
+  d["technology_objects"].push_back(Json::parse(R"({ "name": "F", "type": "TO_SynchronousAxis",
+    "config": { "VirtualAxis.Mode": 1 }, "LeadingValueInterconnections": [ { )" +
+                                                interconnection + " } ] }"));
+  return d;
+}
+
+// LeadingValueReversalTolerance: 0…1e9 in the leader's length unit (spec 07 §1.6 [OPEN]; decision C27: at
+// most 1e9, so its conversion to float is defined). The bounds load; beyond them the key's path is named.
+TEST(ScenarioLoader, ReversalToleranceBounds) {
+  const std::string key = R"("Leader": "L", "LeadingValueReversalTolerance": )";
+  for (const char* accepted : {"0", "1e9"})
+    EXPECT_TRUE(problems_of(with_interconnection(key + accepted)).empty()) << accepted;
+  EXPECT_EQ(problem_of(with_interconnection(key + "1.000001e9")),
+            "technology_objects[3].LeadingValueInterconnections[0].LeadingValueReversalTolerance: 1000001000 "
+            "out of range 0..1e9");
+  EXPECT_EQ(problem_of(with_interconnection(key + "-0.1")),
+            "technology_objects[3].LeadingValueInterconnections[0].LeadingValueReversalTolerance: -0.1 out "
+            "of range 0..1e9");
+}
+
+// "Delayed" to an external encoder (decision C26: only an axis keeps the history of its setpoint) is a
+// problem of the interconnection's Coupling naming the follower and the leader; to an axis it loads.
+TEST(ScenarioLoader, DelayedCouplingToAnExternalEncoderNamesTheInterconnection) {
+  EXPECT_EQ(
+      problem_of(with_interconnection(R"("Leader": "E", "Coupling": "Delayed")")),
+      "technology_objects[3].LeadingValueInterconnections[0].Coupling: 'F' cannot couple \"Delayed\" to "
+      "'E', a TO_ExternalEncoder (only a positioning or synchronous axis can, decision C26)");
+  EXPECT_TRUE(problems_of(with_interconnection(R"("Leader": "E", "Coupling": "ActualValue")")).empty());
+  EXPECT_TRUE(problems_of(with_interconnection(R"("Leader": "L", "Coupling": "Delayed")")).empty());
+}
+
 // MC_CamIn.Cam names a cam of the scenario (spec 07 §3.4): another TO type or an unknown name is a problem of
 // the event's input, with its path.
 TEST(ScenarioLoader, CamInputNamesACam) {
@@ -835,6 +894,7 @@ TEST(ScenarioLoader, CamInputNamesACam) {
   EXPECT_EQ(unknown.front(), "timeline[1].inputs.Cam: unknown technology object 'D'");
 }
 
+// docs/scenarios.md "`expect`: expected values (tomc extension)".
 TEST(ScenarioLoader, Expectations) {
   auto expecting = [](const char* expect) {
     Json d = base();
@@ -861,6 +921,7 @@ TEST(ScenarioLoader, Expectations) {
             "expect: expected an array of expectations, got an object");
 }
 
+// docs/scenarios.md "Exit status and messages" (malformed JSON named with its line).
 TEST(ScenarioLoader, MalformedJsonAndFiles) {
   auto result = Scenario::load_text("{\"cycles\": 3,\n  \"cycle_time\": }", "x.json");
   ASSERT_EQ(result.problems.size(), 1u);
@@ -876,6 +937,7 @@ TEST(ScenarioLoader, MalformedJsonAndFiles) {
   EXPECT_EQ(result.problems[0], "/nonexistent/scenario.json: cannot read: No such file or directory");
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (how numbers are written).
 TEST(ScenarioLoader, FormatNumber) {
   using tomc::scenario::format_number;
   EXPECT_EQ(format_number(1e13), "1e13");
@@ -1036,6 +1098,7 @@ std::string replaced(std::string line, const std::string& from, const std::strin
   return line.replace(line.find(from), from.size(), to);
 }
 
+// spec 05b Part D 1 (A.1.1: the JOINT INTDEVICE declaration); decision A23.
 TEST(LegacyParameters, JointDeclarationPartD1) {
   EXPECT_TRUE(problems_of(declared(kDeclaration)).empty());
   // The spec's own line (TCamp 2 ms) parses; its TCamp must then be the cycle time.

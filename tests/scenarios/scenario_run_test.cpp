@@ -3,9 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "build_paths.hpp"
@@ -49,6 +55,7 @@ std::string scenario(int cycles, const std::string& timeline, const std::string&
          "}";
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (the header, values of every type, bits).
 TEST(ScenarioRun, TraceFormat) {
   auto s = load(scenario(3,
                          R"([{ "cycle": 1, "instance": "power1", "instruction": "MC_Power", "axis": "Axis1",
@@ -72,6 +79,7 @@ TEST(ScenarioRun, TraceFormat) {
   EXPECT_EQ(rows[3][5], "12.5");
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (LREALs print with the digits that read back).
 TEST(ScenarioRun, RealsRoundTrip) {
   auto s = load(scenario(1, "[]", R"(["Axis1.Override.Velocity"])"));
   ASSERT_TRUE(s);
@@ -85,6 +93,7 @@ TEST(ScenarioRun, RealsRoundTrip) {
   EXPECT_EQ(rows[1][2], "0.10000000000000001");
 }
 
+// docs/scenarios.md "`timeline`: events" and "Instruction inputs"; spec 03 §3.6 (call order).
 TEST(ScenarioRun, InputsKeepTheirValuesAndEventsOfOneCycleApplyInOrder) {
   auto s = load(scenario(6,
                          R"([{ "cycle": 0, "instance": "p", "instruction": "MC_Power", "axis": "Axis1",
@@ -100,6 +109,7 @@ TEST(ScenarioRun, InputsKeepTheirValuesAndEventsOfOneCycleApplyInOrder) {
   EXPECT_EQ(rows[6][3], "3");
 }
 
+// docs/scenarios.md "`timeline`: events" (an instance exists from its first event on).
 TEST(ScenarioRun, InstancesAreCalledOnlyOnceCreated) {
   // An MC_Reset traced before its first event shows its initial outputs; its edge is its first call.
   auto s = load(scenario(4,
@@ -123,6 +133,7 @@ std::unique_ptr<Scenario> enabled_axis_with(const std::string& fault_events, con
                        R"(["p.Status", "Axis1.ErrorDetail.Number", "Axis1.drive.active_fault"])", expect));
 }
 
+// docs/scenarios.md "`inject` / `clear`"; spec 06 §6.4 (G1_ZSW.15, the error code); decision S2 (401).
 TEST(ScenarioRun, EncoderErrorOfTheMotorEncoderFaultsTheDrive) {
   // A motor-shaft G1 error faults the drive with F31110 (docs/simulated-drive.md), seen as alarm 401.
   auto s = enabled_axis_with(
@@ -135,6 +146,7 @@ TEST(ScenarioRun, EncoderErrorOfTheMotorEncoderFaultsTheDrive) {
   EXPECT_TRUE(s->run(nullptr).ok());
 }
 
+// docs/scenarios.md "`trace`: names and CSV" (alarm names) and "`inject` / `clear`".
 TEST(ScenarioRun, AlarmTraceNamesShowPendingAndAdditionalValue) {
   // "<TO>.alarm.<n>" and "<TO>.alarm.<n>.additional_value": raised in cycle 50, acknowledged by MC_Reset.
   auto s = enabled_axis_with(
@@ -151,6 +163,7 @@ TEST(ScenarioRun, AlarmTraceNamesShowPendingAndAdditionalValue) {
   EXPECT_EQ(result.expectations_checked, 7u);
 }
 
+// docs/scenarios.md "`inject` / `clear`"; spec 06 §5.2 (sign-of-life monitoring); decision S2.
 TEST(ScenarioRun, SignOfLifeFreezeAndLinkLoss) {
   auto s = enabled_axis_with(
       R"({ "cycle": 50, "inject": { "target": "Axis1", "fault": "sign_of_life_freeze" } },
@@ -167,6 +180,7 @@ TEST(ScenarioRun, SignOfLifeFreezeAndLinkLoss) {
   EXPECT_TRUE(result.ok()) << ::testing::PrintToString(result.failed_expectations);
 }
 
+// docs/scenarios.md "`expect`: expected values (tomc extension)".
 TEST(ScenarioRun, FailedExpectationsAreReportedEach) {
   auto s = load(scenario(5, "[]", "[]",
                          R"([{ "cycle": 4, "values": { "Axis1.Override.Velocity": 99, "Axis1.Velocity": 0 } },
@@ -192,6 +206,7 @@ TEST(ScenarioRun, RunsOnce) {
   ASSERT_EQ(again.runtime_errors.size(), 1u);
 }
 
+// spec 01 §2.5 (virtual axis: no drive, enabled at once); docs/scenarios.md "`technology_objects[i]`".
 TEST(ScenarioRun, VirtualAxisWithoutDrive) {
   auto s = load(R"({ "cycle_time": 0.001, "cycles": 120, "technology_objects": [
       { "name": "V", "type": "TO_SpeedAxis", "config": { "VirtualAxis.Mode": 1, "DynamicLimits.MaxJerk": 0 } }],
@@ -205,40 +220,100 @@ TEST(ScenarioRun, VirtualAxisWithoutDrive) {
 }
 
 // Determinism (issue 22): every scenario file of the repository (tests/scenarios, its open_issues, the
-// examples `tomc sim` runs) gives a byte-identical trace on a second run in the same process: time is the
-// cycle counter, never the wall clock, and nothing depends on addresses or on the order of a hash container.
-// A failure names the file and the first line that differs.
-TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> files;
-  for (const char* dir : {"tests/scenarios", "tests/scenarios/open_issues"}) {
-    if (!fs::is_directory(fs::path(TOMC_SOURCE_DIR) / dir))
-      continue;  // open_issues/ only while there are some
-    for (const auto& entry : fs::directory_iterator(fs::path(TOMC_SOURCE_DIR) / dir)) {
-      if (entry.path().extension() == ".json") files.push_back(entry.path());
+// examples `tomc sim` runs) gives a byte-identical trace on a second run: time is the cycle counter, never
+// the wall clock, and nothing depends on addresses or on the order of a hash container. The second run is the
+// one ctest's `scenario.<name>` made with `tomc sim --out` in another process (ctest starts these tests after
+// them, DEPENDS in CMakeLists.txt) when its trace file is newer than the scenario file, `tomc` and this
+// program; otherwise (the tests run alone) this program runs the file twice. ctest runs it in six shards, so
+// that `ctest -j2` can balance them (decision V14). A failure names the file and the first line that differs.
+namespace fs = std::filesystem;
+
+struct ScenarioFile {
+  fs::path json;
+  fs::path sim_trace;  // where the ctest `scenario.<name>` writes its trace (tests/scenarios/CMakeLists.txt)
+};
+
+std::vector<ScenarioFile> scenario_files() {
+  const fs::path source(TOMC_SOURCE_DIR);
+  const fs::path traces = fs::path(tomc::testing::bin_dir()) / ".." / "tests" / "scenarios";
+  std::vector<ScenarioFile> files;
+  for (const auto& [dir, prefix] :
+       {std::pair{"tests/scenarios", ""}, std::pair{"tests/scenarios/open_issues", "open_issue_"}}) {
+    if (!fs::is_directory(source / dir)) continue;  // open_issues/ only while there are some
+    for (const auto& entry : fs::directory_iterator(source / dir)) {
+      if (entry.path().extension() == ".json")
+        files.push_back({entry.path(), traces / (prefix + entry.path().stem().string() + ".csv")});
     }
   }
-  for (const char* example : {"speed_axis_conveyor.json", "positioning_machine.json", "gearing_machine.json"})
-    files.push_back(fs::path(TOMC_SOURCE_DIR) / "examples" / example);
-  std::sort(files.begin(), files.end());
+  for (const char* example :
+       {"speed_axis_conveyor", "positioning_machine", "gearing_machine", "rotary_knife", "flying_saw"})
+    files.push_back(
+        {source / "examples" / (std::string(example) + ".json"), traces / (std::string(example) + ".csv")});
+  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.json < b.json; });
+  return files;
+}
+
+// The trace `tomc sim` wrote, if it was written after the file, `tomc` and this program last changed.
+std::optional<std::string> fresh_sim_trace(const ScenarioFile& file) {
+  std::error_code error;
+  const auto written = fs::last_write_time(file.sim_trace, error);
+  if (error) return std::nullopt;
+  for (const fs::path& input : {file.json, fs::path(TOMC_BINARY), fs::path("/proc/self/exe")}) {
+    const auto changed = fs::last_write_time(input, error);
+    if (error || changed >= written) return std::nullopt;
+  }
+  std::ifstream in(file.sim_trace, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string trace_of(const fs::path& file) {
+  auto loaded = Scenario::load_file(file);
+  EXPECT_TRUE(loaded.scenario) << file << ": " << (loaded.problems.empty() ? "" : loaded.problems.front());
+  std::ostringstream trace;
+  if (loaded.scenario) (void)loaded.scenario->run(&trace);
+  return trace.str();
+}
+
+// TOMC_SCENARIO_SHARD="k/n" (set by each of the ctest entries): the files whose place in the sorted list is k
+// modulo n; unset, all of them.
+std::pair<std::size_t, std::size_t> shard() {
+  const char* value = std::getenv("TOMC_SCENARIO_SHARD");
+  std::size_t k = 0;
+  std::size_t n = 1;
+  if (value != nullptr && (std::sscanf(value, "%zu/%zu", &k, &n) != 2 || n == 0 || k >= n)) {
+    ADD_FAILURE() << "TOMC_SCENARIO_SHARD='" << value << "': expected k/n with k < n";
+    return {0, 1};
+  }
+  return {k, n};
+}
+
+// Issue 22 (docs/reliability.md §3); decision V14 (the shards and the trace of `tomc sim`), described above.
+TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
+  const std::vector<ScenarioFile> files = scenario_files();
   ASSERT_GE(files.size(), 50u);
-  auto trace_of = [](const fs::path& file) {
-    auto loaded = Scenario::load_file(file);
-    EXPECT_TRUE(loaded.scenario) << file << ": " << (loaded.problems.empty() ? "" : loaded.problems.front());
-    std::ostringstream trace;
-    if (loaded.scenario) (void)loaded.scenario->run(&trace);
-    return trace.str();
-  };
-  for (const auto& file : files) {
-    const std::string first = trace_of(file);
-    const std::string second = trace_of(file);
-    EXPECT_GT(first.size(), 0u) << file;
+  const auto [k, n] = shard();
+  int shared = 0;
+  int mine = 0;
+  for (std::size_t i = k; i < files.size(); i += n) {
+    const ScenarioFile& file = files[i];
+    ++mine;
+    const std::string first = trace_of(file.json);
+    const std::optional<std::string> sim = fresh_sim_trace(file);
+    shared += sim ? 1 : 0;
+    const std::string second = sim ? *sim : trace_of(file.json);
+    EXPECT_GT(first.size(), 0u) << file.json;
     if (first == second) continue;
     const auto at =
         std::mismatch(first.begin(), first.end(), second.begin(), second.end()).first - first.begin();
     const auto line = std::count(first.begin(), first.begin() + at, '\n') + 1;
-    ADD_FAILURE() << file << ": the traces differ from line " << line;
+    ADD_FAILURE() << file.json << ": the traces differ from line " << line << " (second run: "
+                  << (sim ? "`tomc sim`'s " + file.sim_trace.string() : std::string("in this program"))
+                  << ")";
   }
+  std::cout << shared << " of " << mine
+            << " files compared with the trace of `tomc sim`, the others run twice here\n";
 }
 
 }  // namespace

@@ -148,6 +148,7 @@ TEST(RoundTrip, ByteOrderNames) {
 }
 
 // A frame of the wrong length is refused and nothing is read or written.
+// spec 06 §2.15 (the length of each telegram and direction).
 TEST(CodecErrors, WrongFrameLength) {
   for (const std::uint16_t telegram : supported_telegrams()) {
     SCOPED_TRACE("telegram " + std::to_string(telegram));
@@ -181,6 +182,7 @@ TEST(CodecErrors, WrongFrameLength) {
 }
 
 // Values of the other direction are refused (setpoint struct with an actual codec and vice versa).
+// spec 06 §2 (each telegram's setpoint and actual layouts are distinct).
 TEST(CodecErrors, WrongDirection) {
   for (const std::uint16_t telegram : supported_telegrams()) {
     SCOPED_TRACE("telegram " + std::to_string(telegram));
@@ -264,6 +266,7 @@ TEST(SharedCodec, SameFramesAsCreateForEveryTelegramOrderAndNistBOffset) {
   EXPECT_EQ((*at12)->layout().offset_of(Signal::NIST_B), 12);
 }
 
+// spec 06 §2.9 (telegram 104 not defined); §2 (the supported telegrams).
 TEST(SharedCodec, RejectsWhatCreateRejects) {
   EXPECT_EQ(TelegramCodec::shared(104, Direction::kSetpoint).error(), TelegramError::kTelegram104NotDefined);
   EXPECT_EQ(TelegramCodec::shared(7, Direction::kActual).error(), TelegramError::kUnknownTelegram);

@@ -2,6 +2,7 @@
 // (docs/profinet-gateway.md).
 #include <unistd.h>
 
+#include <chrono>
 #include <iostream>
 #include <optional>
 #include <ostream>
@@ -11,6 +12,7 @@
 #include "cli_error.hpp"
 #include "commands.hpp"
 #include "stop_signals.hpp"
+#include "tomc/gateway/commissioning.hpp"
 #include "tomc/gateway/profinet_gateway.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 
@@ -19,29 +21,108 @@ namespace {
 
 constexpr std::string_view kGatewayUsage =
     "usage: tomc gateway --config FILE\n"
+    "       tomc gateway --identify --interface IF [--wait-ms MS]\n"
+    "       tomc gateway --set-name NAME --mac MAC --interface IF [--temporary]\n"
     "\n"
     "A PROFINET IO controller (RT_CLASS_1) for the devices of FILE, served to tomc over the DDS gateway\n"
     "contract (docs/gateway.md, docs/profinet-gateway.md), until SIGINT/SIGTERM. Needs CAP_NET_RAW for the\n"
     "raw socket on the file's profinet.interface.\n"
     "\n"
-    "exit status: 0 stopped by a signal, 1 the host refused (interface, address, DDS),\n"
-    "2 bad command line or configuration (one line per problem, each naming its JSON path).\n";
+    "Commissioning (DCP, before any AR): --identify lists every station on IF that answers an Identify All\n"
+    "within MS milliseconds (default 1000; name of station, MAC, IP suite, VendorID/DeviceID); --set-name\n"
+    "gives the device with MAC (aa:bb:cc:dd:ee:ff) the name of station NAME, kept across power cycles\n"
+    "unless --temporary.\n"
+    "\n"
+    "exit status: 0 stopped by a signal (--identify, --set-name: done), 1 the host refused (interface,\n"
+    "address, DDS) or the device did not take the name, 2 bad command line or configuration (one line per\n"
+    "problem, each naming its JSON path).\n";
+
+// --identify and --set-name (decision I32).
+int commissioning_command(const std::string& interface, const std::optional<std::string>& name,
+                          const std::optional<std::string>& mac_text, bool permanent, int wait_ms,
+                          std::ostream& out) {
+  if (interface.empty()) throw UsageError("gateway: missing --interface IF (try: tomc gateway --help)");
+  std::optional<profinet::MacAddress> mac;
+  if (name) {
+    if (const std::string why = scenario::station_name_problem(*name); !why.empty())
+      throw UsageError("gateway: --set-name " + why);
+    if (!mac_text) throw UsageError("gateway: --set-name needs --mac MAC (try: tomc gateway --identify)");
+    mac = profinet::parse_mac(*mac_text);
+    if (!mac) throw UsageError("gateway: --mac '" + *mac_text + "' is not a MAC address (aa:bb:cc:dd:ee:ff)");
+  } else if (mac_text || !permanent) {
+    throw UsageError("gateway: --mac and --temporary go with --set-name");
+  }
+  if (wait_ms < 10 || wait_ms > 60'000) throw UsageError("gateway: --wait-ms out of range 10..60000");
+  try {
+    if (!name) {
+      const auto stations = profinet_gateway::identify_all(interface, std::chrono::milliseconds(wait_ms));
+      out << "gateway: " << stations.size() << " station(s) on " << interface << " answered DCP Identify All"
+          << std::endl;
+      for (const profinet::DcpStation& station : stations)
+        out << "  " << profinet::describe(station) << '\n';
+      return 0;
+    }
+    if (const std::string why = profinet_gateway::set_name_of_station(interface, *mac, *name, permanent,
+                                                                      std::chrono::milliseconds(500));
+        !why.empty()) {
+      std::cerr << "tomc: gateway: " << *mac_text << ": " << why << '\n';
+      return 1;
+    }
+    out << "gateway: " << profinet::to_string(*mac) << " is now '" << *name << "'"
+        << (permanent ? "" : " (temporary)") << std::endl;
+    return 0;
+  } catch (const std::runtime_error& e) {  // the host refused the raw socket
+    std::cerr << "tomc: gateway: " << e.what() << '\n';
+    return 1;
+  }
+}
 
 }  // namespace
 
 int gateway_command(std::span<const std::string_view> args, std::ostream& out) {
   std::optional<std::string> file;
+  bool identify = false;
+  std::optional<std::string> name;
+  std::optional<std::string> mac;
+  std::string interface;
+  bool permanent = true;
+  std::optional<int> wait_ms;
   for (std::size_t i = 0; i < args.size(); ++i) {
+    const bool has_value = i + 1 < args.size();
     if (args[i] == "--help" || args[i] == "-h") {
       out << kGatewayUsage;
       return 0;
     }
-    if (args[i] == "--config" && i + 1 < args.size()) {
+    if (args[i] == "--config" && has_value) {
       file = std::string(args[++i]);
+    } else if (args[i] == "--identify") {
+      identify = true;
+    } else if (args[i] == "--set-name" && has_value) {
+      name = std::string(args[++i]);
+    } else if (args[i] == "--mac" && has_value) {
+      mac = std::string(args[++i]);
+    } else if (args[i] == "--interface" && has_value) {
+      interface = std::string(args[++i]);
+    } else if (args[i] == "--wait-ms" && has_value) {
+      try {
+        wait_ms = std::stoi(std::string(args[++i]));
+      } catch (const std::exception&) {
+        throw UsageError("gateway: --wait-ms '" + std::string(args[i]) + "' is not a number of milliseconds");
+      }
+    } else if (args[i] == "--temporary") {
+      permanent = false;
     } else {
       throw UsageError("gateway: unknown argument '" + std::string(args[i]) + "' (try: tomc gateway --help)");
     }
   }
+  if (static_cast<int>(file.has_value()) + static_cast<int>(identify) + static_cast<int>(name.has_value()) >
+      1)
+    throw UsageError("gateway: --config, --identify and --set-name exclude each other");
+  if (identify || name)
+    return commissioning_command(interface, name, mac, permanent, wait_ms.value_or(1000), out);
+  if (!interface.empty() || mac || !permanent || wait_ms)
+    throw UsageError(
+        "gateway: --interface, --mac, --temporary and --wait-ms go with --identify or --set-name");
   if (!file) throw UsageError("gateway: missing --config FILE (try: tomc gateway --help)");
   scenario::ProfinetGatewayConfig config;
   scenario::Problems problems;

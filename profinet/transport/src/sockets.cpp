@@ -1,6 +1,7 @@
 #include "tomc/profinet/sockets.hpp"
 
 #include <arpa/inet.h>
+#include <linux/filter.h>
 #include <linux/if_packet.h>
 #include <net/ethernet.h>
 #include <net/if.h>
@@ -11,9 +12,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
+#include <iterator>
 #include <utility>
+
+#include "tomc/profinet/frame_id.hpp"
 
 namespace tomc::profinet {
 
@@ -30,6 +35,32 @@ std::string error(const char* what) {
 }
 
 }  // namespace
+
+std::string attach_dcp_and_alarm_filter(int fd) {
+  // A = EtherType; a VLAN tag (0x8100) moves EtherType and FrameID 4 bytes on. Offsets past the end of a
+  // short frame make the kernel drop it. Jump offsets count from the next instruction.
+  static constexpr std::uint16_t kVlan = 0x8100;
+  static sock_filter program[] = {
+      BPF_STMT(BPF_LD | BPF_H | BPF_ABS, 12),                                  // 0
+      BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, kVlan, 3, 0),                        // 1: tagged -> 5
+      BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, kEtherTypeProfinet, 0, 10),          // 2: else drop (13)
+      BPF_STMT(BPF_LD | BPF_H | BPF_ABS, 14),                                  // 3: FrameID
+      BPF_JUMP(BPF_JMP | BPF_JA, 3, 0, 0),                                     // 4: -> 8
+      BPF_STMT(BPF_LD | BPF_H | BPF_ABS, 16),                                  // 5: EtherType behind the tag
+      BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, kEtherTypeProfinet, 0, 6),           // 6: else drop (13)
+      BPF_STMT(BPF_LD | BPF_H | BPF_ABS, 18),                                  // 7: FrameID
+      BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, kFrameIdAlarmHigh, 3, 0),            // 8: -> accept (12)
+      BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, kFrameIdAlarmLow, 2, 0),             // 9: -> accept (12)
+      BPF_JUMP(BPF_JMP | BPF_JGE | BPF_K, kFrameIdDcpHello, 0, 2),             // 10: below DCP -> drop (13)
+      BPF_JUMP(BPF_JMP | BPF_JGT | BPF_K, kFrameIdDcpIdentifyResponse, 1, 0),  // 11: above -> drop
+      BPF_STMT(BPF_RET | BPF_K, 0x40000),                                      // 12: accept the whole frame
+      BPF_STMT(BPF_RET | BPF_K, 0),                                            // 13: drop
+  };
+  const sock_fprog filter{static_cast<unsigned short>(std::size(program)), program};
+  if (::setsockopt(fd, SOL_SOCKET, SO_ATTACH_FILTER, &filter, sizeof filter) < 0)
+    return error("SO_ATTACH_FILTER");
+  return {};
+}
 
 RawSocket::RawSocket(RawSocket&& other) noexcept
     : fd_(std::exchange(other.fd_, -1)), interface_index_(other.interface_index_), mac_(other.mac_) {}
@@ -48,7 +79,7 @@ RawSocket::~RawSocket() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::string RawSocket::open(const std::string& interface) {
+std::string RawSocket::open(const std::string& interface, RawSocketFrames frames) {
   if (interface.size() >= IFNAMSIZ) return "interface name too long: " + interface;
   const int fd = ::socket(AF_PACKET, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, htons(kEtherTypeProfinet));
   if (fd < 0) return error("socket(AF_PACKET)");
@@ -85,9 +116,25 @@ std::string RawSocket::open(const std::string& interface) {
     std::memcpy(membership.mr_address, group.data(), 6);
     (void)::setsockopt(fd, SOL_PACKET, PACKET_ADD_MEMBERSHIP, &membership, sizeof membership);
   }
+  if (frames == RawSocketFrames::kDcpAndAlarms) {
+    if (std::string text = attach_dcp_and_alarm_filter(fd); !text.empty()) {
+      ::close(fd);
+      return text;
+    }
+  }
   if (fd_ >= 0) ::close(fd_);
   fd_ = fd;
+  // Frames queued before the filter was attached (the socket takes frames from its creation on).
+  if (frames == RawSocketFrames::kDcpAndAlarms) (void)discard_queued(4096);
   return {};
+}
+
+std::size_t RawSocket::discard_queued(std::size_t max_frames) noexcept {
+  std::size_t dropped = 0;
+  std::array<std::uint8_t, 1518> frame{};
+  while (fd_ >= 0 && dropped<max_frames&& ::recv(fd_, frame.data(), frame.size(), 0)> 0)
+    ++dropped;
+  return dropped;
 }
 
 bool RawSocket::send(std::span<const std::uint8_t> frame) noexcept {

@@ -2,6 +2,8 @@
 #include "tomc/techobjects/synchronous/synchronous_axis.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace tomc::techobjects {
@@ -23,9 +25,17 @@ std::vector<LeadingValueInterconnection> SynchronousAxis::mark_leaders(
 
 void SynchronousAxis::attach(RuntimeServices& services) {
   // Before the start values move to the runtime: a throw leaves nothing attached.
-  for (const LeadingValueInterconnection& l : operation_.interconnections())
-    if (l.coupling == LeadingValueCoupling::kDelayed)
-      l.source->provide_delayed_leading_value(services.interpolator_cycle_s);
+  const auto& leaders = operation_.interconnections();
+  for (std::size_t i = 0; i < leaders.size(); ++i) {
+    if (leaders[i].coupling != LeadingValueCoupling::kDelayed) continue;
+    try {
+      leaders[i].source->provide_delayed_leading_value(services.interpolator_cycle_s);
+    } catch (const std::invalid_argument& e) {  // named as the machine file's key (decision C26)
+      throw std::invalid_argument(std::string(name()) + ".LeadingValueInterconnections[" + std::to_string(i) +
+                                  "] (\"Delayed\" to " + std::string(leaders[i].object->name()) +
+                                  "): " + e.what());
+    }
+  }
   PositioningAxis::attach(services);
 }
 

@@ -36,6 +36,7 @@ TEST(Alarms, DefinitionsCarryTheManualsReactions) {
   EXPECT_EQ(find_alarm(999), nullptr);
 }
 
+// spec 01 §7 (acknowledgement with MC_Reset), spec 04 §0.5 (alarm classes).
 TEST(Alarms, RaiseOnceAndAcknowledge) {
   AlarmList list;
   EXPECT_TRUE(list.raise(kAlarmFollowingErrorWarning, 0, 10));
@@ -55,6 +56,7 @@ TEST(Alarms, RaiseOnceAndAcknowledge) {
 }
 
 // ErrorDetail shows the highest-priority pending alarm: strongest reaction, then the oldest.
+// spec 02 §1.1 (ErrorDetail.Reaction), spec 04 §0.5 (alarm classes).
 TEST(Alarms, ErrorDetailPriority) {
   AlarmList list;
   list.raise(kAlarmSoftwareLimitReached, 0, 1);     // reaction 2
@@ -72,6 +74,7 @@ TEST(Alarms, ErrorDetailPriority) {
   EXPECT_EQ(configured.strongest_reaction(), AlarmReaction::kStopEmergencyRamp);
 }
 
+// Decision M1 (a TO keeps its 16 pending alarms).
 TEST(Alarms, ListCapacityIsBounded) {
   AlarmList list;
   std::size_t raised = 0;
@@ -80,6 +83,7 @@ TEST(Alarms, ListCapacityIsBounded) {
   EXPECT_EQ(raised, std::min(alarm_definitions().size(), AlarmList::kCapacity));
 }
 
+// Decision M1 (one alarm ring per runtime, 1,024 events).
 TEST(Alarms, LogKeepsTheHistoryAndCountsLosses) {
   AlarmLog runtime_log;  // the runtime's (Runtime::add_technology_object attaches it)
   AlarmList list;
@@ -145,6 +149,7 @@ TEST(Alarms, OneLogPerRuntimeShowsEachListItsOwnEvents) {
 }
 
 // Events of a TO overwritten by the other TOs' events are lost, never shown wrong.
+// Decision M1 (a TO's view of the shared ring).
 TEST(Alarms, ViewOfAnOverwrittenHistoryShowsWhatIsKept) {
   AlarmLog runtime_log;
   AlarmList quiet;

@@ -17,6 +17,7 @@ namespace {
 using namespace tomc::techobjects;
 using namespace tomc::instructions;
 
+// spec 07 §3.6 (the read instructions); decision C2 (only MC_InterpolateCam allocates).
 TEST(CamAllocation, EvaluationAndReadInstructionsAllocateNothing) {
   for (const auto mode : {0.0, 1.0, 2.0}) {
     Cam cam("Cam10k", CamVariant::kCam10k);
@@ -54,6 +55,7 @@ TEST(CamAllocation, EvaluationAndReadInstructionsAllocateNothing) {
 
 // Camming's synchronous function switching between cams every 100 cycles (as MC_CamIn profile 5 would at the
 // end of a cam) and between application modes: no allocation.
+// spec 07 §3.4 (MC_CamIn profile 5), §3.3 (application modes); decision C10.
 TEST(CamAllocation, SynchronousFunctionWithCamSwitchingAllocatesNothing) {
   Cam a("A");
   Cam b("B", CamVariant::kCam10k);

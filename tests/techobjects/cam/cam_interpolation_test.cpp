@@ -116,6 +116,7 @@ TEST(CamInterpolation, QuinticTransitionReproducesTheQuinticItBridges) {
 }
 
 // A gap below 1e-4 is closed by joining the elements (SYNC8 "Boundary conditions"), no transition.
+// spec 07 §3.1 (boundary rules: gaps), §3.2; decision C4 (gaps of 1e-4 or more get a transition).
 TEST(CamInterpolation, GapBelowTheToleranceIsJoined) {
   Cam cam("Cam1");
   ASSERT_TRUE(cam.write_segment(1, {.xmin = 0.0, .xmax = 1.0, .a1 = 1.0}, true));
@@ -127,6 +128,7 @@ TEST(CamInterpolation, GapBelowTheToleranceIsJoined) {
 
 // Every mode reproduces a straight line through its points exactly (linear, spline, B-spline: the Greville
 // control polygon of a line is the line).
+// spec 07 §3.2 (InterpolationMode 0, 1, 2); decision C4.
 TEST(CamInterpolation, EveryModeReproducesAStraightLine) {
   for (const auto mode : {CamInterpolationMode::kLinear, CamInterpolationMode::kCubicSpline,
                           CamInterpolationMode::kBezierSpline}) {
@@ -193,6 +195,7 @@ TEST(CamInterpolation, CubicSplineContinuityNaturalAndPeriodic) {
 
 // A cyclic cam from points: sin over one period with BoundaryConditions = 1 is C² across the period end too,
 // and close to sin (spline error O(h⁴)).
+// spec 07 §3.2 (cubic spline, BoundaryConditions 1); decision C4.
 TEST(CamInterpolation, PeriodicSplineOfASineIsCloseToTheSine) {
   Cam cam("Cam1");
   set_mode(cam, CamInterpolationMode::kCubicSpline, CamBoundaryConditions::kEqualFirstDerivative);
@@ -239,6 +242,7 @@ TEST(CamInterpolation, BezierSplineStaysInRangeAndIsC2) {
 // Boundary rules (SYNC8 "Show elements used > Boundary conditions"): a later segment over an earlier one is
 // used over its whole range and the earlier one continues after it; a segment wins over points in its
 // range; for points with the same x the later one wins.
+// spec 07 §3.1 (boundary rules of the elements).
 TEST(CamInterpolation, OverlapsAndPointsUnderSegments) {
   Cam cam("Cam1");
   ASSERT_TRUE(cam.write_segment(1, {.xmin = 0.0, .xmax = 100.0, .a0 = 1.0}, true));
@@ -306,6 +310,7 @@ TEST(CamInterpolation, ErrorsOfInterpolateCam) {
 }
 
 // Invalid points are ignored: one valid point among invalid ones is still a single point.
+// spec 07 §3.1 (only valid elements are interpolated).
 TEST(CamInterpolation, InvalidElementsAreIgnored) {
   Cam cam("Cam1");
   ASSERT_TRUE(cam.write_point(1, {0.0, 0.0}, true));

@@ -23,6 +23,7 @@ void cam_c(Cam& cam) {
 
 // CM-1 (ApplicationMode 1, SlaveScaling 2, SlaveOffset 10 from the direct synchronous setting at F = 10):
 // L = 90 → F = 2·50 + 10 = 110; at L = 360 (unwrapped, one period) F = 10 and EndOfProfile; at 450 F = 110.
+// spec 07 §8 CM-1; §3.3 (scaling, ApplicationMode 1 cyclic).
 TEST(CamSynchronousFunction, Cm1Cyclic) {
   Cam cam("C");
   cam_c(cam);
@@ -83,6 +84,7 @@ TEST(CamSynchronousFunction, Cm3NotCyclicEnds) {
 // The derivatives are those of the following value over time: with a leader at v = 120 °/s and
 // a = 50 °/s², the follower's velocity and acceleration match central differences of its position
 // (MasterScaling 1.5, SlaveScaling −0.8, a spline cam).
+// spec 07 §6.2 (the synchronous function: following value and its derivatives).
 TEST(CamSynchronousFunction, DerivativesFollowTheLeaderMotion) {
   Cam cam("Spline");
   ASSERT_TRUE(cam.write("InterpolationSettings.InterpolationMode", 1.0).ok());

@@ -130,11 +130,13 @@ const VariableInfo& must_find(std::string_view path) {
   return *info;
 }
 
+// spec 04 §2–§5 (column E), §0.2 (access), §0.4 (types and ranges).
 TEST(ExternalEncoderVariables, EveryPathOfColumnEWithTypeAccessRangeAndStartValue) {
   expect_table_matches<ExternalEncoderData>(external_encoder_variables(), expected_external_encoder(),
                                             TechnologyObjectType::kExternalEncoder);
 }
 
+// spec 04 §3 (every start value within its own range).
 TEST(ExternalEncoderVariables, EveryConfigurationStartValuePassesCheckValue) {
   const ExternalEncoderData defaults{};
   std::size_t configuration = 0;
@@ -146,6 +148,7 @@ TEST(ExternalEncoderVariables, EveryConfigurationStartValuePassesCheckValue) {
   EXPECT_GT(configuration, 200u);
 }
 
+// spec 04 §6.1 (the data-block enums: permitted values only).
 TEST(ExternalEncoderVariables, PermittedValues) {
   // spec 04 §4.10 / §6.1: E reaction 0 none, 10 remove enable (as printed, §14 item 7)
   const auto& reaction = must_find("ErrorDetail.Reaction");
@@ -165,6 +168,7 @@ TEST(ExternalEncoderVariables, PermittedValues) {
   EXPECT_EQ(must_find("Units.TimeUnit").allowed_values.size(), 1u);
 }
 
+// spec 04 §3 (the start values).
 TEST(ExternalEncoderVariables, StartValuesInTheStruct) {
   const ExternalEncoderData data{};
   EXPECT_EQ(data.Sensor.Parameter.BehaviorGx_XIST1, 1);  // manual
@@ -178,10 +182,12 @@ TEST(ExternalEncoderVariables, StartValuesInTheStruct) {
   EXPECT_EQ(static_cast<std::int32_t>(ExternalEncoderReaction::kRemoveEnable), 10);
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(ExternalEncoderVariables, RoundTripTouchesOnlyItsOwnMember) {
   expect_round_trips<ExternalEncoderData>(external_encoder_variables());
 }
 
+// spec 04 §0.4 (types and ranges: an invalid value changes nothing).
 TEST(ExternalEncoderVariables, AccessorsAndInvalidValues) {
   ExternalEncoderData data{};
   ASSERT_EQ(must_find("Sensor.Parameter.StepsPerRevolution").write(data, 8388608.0), ValueError::kNone);
@@ -207,6 +213,7 @@ TEST(ExternalEncoderVariables, AccessorsAndInvalidValues) {
   EXPECT_TRUE(std::isnan(find_positioning_axis_variable("Modulo.Length")->read(data)));
 }
 
+// spec 04 §0.2 (the W column), §0.3 (MC_WriteParameter).
 TEST(ExternalEncoderVariables, WriteAccessAndNoWriteParameters) {
   using enum AccessError;
   EXPECT_EQ(check_write_access(must_find("Sensor.PassiveHoming.SwitchLevel"), WriteContext::kStartValue),
@@ -226,6 +233,7 @@ TEST(ExternalEncoderVariables, WriteAccessAndNoWriteParameters) {
   }
 }
 
+// spec 04 §1 (only the paths of the structure map).
 TEST(ExternalEncoderVariables, UnknownPathsAreRejected) {
   for (const char* path : {
            "Sensor[1].Type",  // a single structure on E (man. §10.4.2)
@@ -251,6 +259,7 @@ TEST(ExternalEncoderVariables, UnknownPathsAreRejected) {
   EXPECT_EQ(array_upper_bound(external_encoder_variables(), "CrossPlcSynchronousOperation.Interface"), 32u);
 }
 
+// spec 04 §5 (the bit words).
 TEST(ExternalEncoderBits, ResolveAgainstTheTable) {
   ExternalEncoderData data{};
   const auto standstill = find_external_encoder_bit("StatusWord.X7");

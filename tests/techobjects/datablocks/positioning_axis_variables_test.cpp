@@ -334,6 +334,7 @@ const VariableInfo& must_find(std::string_view path) {
 
 // ---- the table against the spec ----
 
+// spec 04 §2–§5 (column P), §0.2 (access), §0.4 (types and ranges).
 TEST(PositioningAxisVariables, EveryPathOfColumnPWithTypeAccessRangeAndStartValue) {
   const auto expected = expected_positioning_axis();
   expect_table_matches<PositioningAxisData>(positioning_axis_variables(), expected,
@@ -350,6 +351,7 @@ TEST(PositioningAxisVariables, EveryPathOfColumnPWithTypeAccessRangeAndStartValu
   EXPECT_EQ(cross_plc_rows, 32u * 6u);
 }
 
+// spec 04 §3 (every start value within its own range).
 TEST(PositioningAxisVariables, EveryConfigurationStartValuePassesCheckValue) {
   const PositioningAxisData defaults{};
   std::size_t configuration = 0;
@@ -362,6 +364,7 @@ TEST(PositioningAxisVariables, EveryConfigurationStartValuePassesCheckValue) {
   EXPECT_GT(configuration, 400u);
 }
 
+// spec 04 §6.1 (the data-block enums: permitted values only).
 TEST(PositioningAxisVariables, PermittedValues) {
   // spec 04 §3.3 / §6.1: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 invalid
   const auto& reaction = must_find("Actor.RemoveEnableReaction");
@@ -397,6 +400,7 @@ TEST(PositioningAxisVariables, PermittedValues) {
   }
 }
 
+// spec 04 §3 (the start values).
 TEST(PositioningAxisVariables, StartValuesInTheStruct) {
   const PositioningAxisData data{};
   // manual
@@ -439,10 +443,12 @@ TEST(PositioningAxisVariables, StartValuesInTheStruct) {
 
 // ---- accessors ----
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(PositioningAxisVariables, RoundTripTouchesOnlyItsOwnMember) {
   expect_round_trips<PositioningAxisData>(positioning_axis_variables());
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(PositioningAxisVariables, ArrayPathsReachTheOneBasedElement) {
   PositioningAxisData data{};
   ASSERT_EQ(must_find("Sensor[1].Parameter.StepsPerRevolution").write(data, 4096.0), ValueError::kNone);
@@ -468,6 +474,7 @@ TEST(PositioningAxisVariables, ArrayPathsReachTheOneBasedElement) {
   EXPECT_EQ(must_find("StatusSensor[4].AbsEncoderOffset").read(data), 137.812);
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(PositioningAxisVariables, AccessorsReachTheNamedMember) {
   PositioningAxisData data{};
   ASSERT_EQ(must_find("PositionControl.Kv").write(data, 33.5), ValueError::kNone);
@@ -486,6 +493,7 @@ TEST(PositioningAxisVariables, AccessorsReachTheNamedMember) {
   EXPECT_EQ(must_find("OperativeSensor").read(data), 3.0);
 }
 
+// spec 04 §0.4 (types and ranges: an invalid value changes nothing).
 TEST(PositioningAxisVariables, InvalidValuesAreRejectedAndLeaveTheDataUnchanged) {
   struct Case {
     std::string path;
@@ -530,6 +538,7 @@ TEST(PositioningAxisVariables, InvalidValuesAreRejectedAndLeaveTheDataUnchanged)
   }
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(PositioningAxisVariables, AccessorsRefuseAnotherDataBlock) {
   SpeedAxisData speed{};
   const auto& info = must_find("Override.Velocity");
@@ -540,6 +549,7 @@ TEST(PositioningAxisVariables, AccessorsRefuseAnotherDataBlock) {
 
 // ---- access (spec 04 §0.2) and MC_WriteParameter (spec 04 §0.3) ----
 
+// spec 04 §0.2 (the W column), §0.3 (MC_WriteParameter).
 TEST(PositioningAxisVariables, WriteAccessFollowsTheWColumn) {
   struct Case {
     std::string path;
@@ -574,6 +584,7 @@ TEST(PositioningAxisVariables, WriteAccessFollowsTheWColumn) {
   }
 }
 
+// spec 04 §0.3 (the MC_WriteParameter numbers).
 TEST(PositioningAxisVariables, WriteParameterNumbers) {
   // spec 04 §0.3: 1000 PositionLimits_HW.Active (P, Y), 1020 Actor.RemoveEnableReaction; 1010-1012 no DB
   // variables
@@ -594,6 +605,7 @@ TEST(PositioningAxisVariables, WriteParameterNumbers) {
 
 // ---- lookup and array indices ----
 
+// spec 04 §1 (only the paths of the structure map).
 TEST(PositioningAxisVariables, UnknownPathsAreRejected) {
   for (const char* path : {
            "",
@@ -626,6 +638,7 @@ TEST(PositioningAxisVariables, UnknownPathsAreRejected) {
   }
 }
 
+// spec 04 §3.6 (Sensor[1..4]: one-based arrays, bounds from the table).
 TEST(ArrayElementPath, ParseValidAndInvalid) {
   EXPECT_EQ(parse_array_element("Sensor[1].Parameter.StepsPerRevolution"),
             (ArrayElementPath{"Sensor", 1, "Parameter.StepsPerRevolution"}));
@@ -642,6 +655,7 @@ TEST(ArrayElementPath, ParseValidAndInvalid) {
   }
 }
 
+// spec 04 §3.6 (Sensor[1..4]: one-based arrays, bounds from the table).
 TEST(ArrayElementPath, UpperBoundsComeFromTheTable) {
   const auto table = positioning_axis_variables();
   EXPECT_EQ(array_upper_bound(table, "Sensor"), 4u);
@@ -659,6 +673,7 @@ TEST(ArrayElementPath, UpperBoundsComeFromTheTable) {
 
 // ---- bits ----
 
+// spec 04 §5 (the bit words).
 TEST(PositioningAxisBits, ResolveAgainstTheTable) {
   PositioningAxisData data{};
   const auto homed = find_positioning_axis_bit("StatusWord.X5");

@@ -144,6 +144,7 @@ const VariableInfo& must_find(std::string_view path) {
 
 // ---- the table against the spec ----
 
+// spec 04 §2–§5 (column S), §0.2 (access), §0.4 (types and ranges).
 TEST(SpeedAxisVariables, EveryPathOfColumnSWithTypeAccessRangeAndStartValue) {
   const auto expected = expected_speed_axis();
   const SpeedAxisData defaults{};
@@ -170,6 +171,7 @@ TEST(SpeedAxisVariables, EveryPathOfColumnSWithTypeAccessRangeAndStartValue) {
     EXPECT_TRUE(seen.count(std::string(info.path))) << info.path;
 }
 
+// spec 04 §6.1 (the data-block enums: permitted values only).
 TEST(SpeedAxisVariables, PermittedValues) {
   // spec 04 §3.3 / §6.1: 16#1, 16#3, 16#5, 16#7; 16#0/2/4/6 invalid
   const auto& reaction = must_find("Actor.RemoveEnableReaction");
@@ -205,6 +207,7 @@ TEST(SpeedAxisVariables, PermittedValues) {
   }
 }
 
+// spec 04 §3 (the start values).
 TEST(SpeedAxisVariables, ManualStartValuesInTheStruct) {
   const SpeedAxisData data{};
   EXPECT_EQ(data.Actor.RemoveEnableReaction, 0x7);  // man. §10.2.4 / §9.15: 16#7 default
@@ -244,6 +247,7 @@ double other_valid_value(const VariableInfo& info, double current) {
   return info.maximum != current ? info.maximum : info.minimum;
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(SpeedAxisVariables, RoundTripTouchesOnlyItsOwnMember) {
   const auto table = speed_axis_variables();
   for (const auto& info : table) {
@@ -269,6 +273,7 @@ TEST(SpeedAxisVariables, RoundTripTouchesOnlyItsOwnMember) {
   }
 }
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(SpeedAxisVariables, AccessorsReachTheNamedMember) {
   SpeedAxisData data{};
   ASSERT_EQ(must_find("DynamicDefaults.Velocity").write(data, 750.25), ValueError::kNone);
@@ -293,6 +298,7 @@ TEST(SpeedAxisVariables, AccessorsReachTheNamedMember) {
   EXPECT_EQ(must_find("ActualSpeed").read(data), -1234.5);
 }
 
+// spec 04 §0.4 (types and ranges: an invalid value changes nothing).
 TEST(SpeedAxisVariables, InvalidValuesAreRejectedAndLeaveTheDataUnchanged) {
   struct Case {
     std::string path;
@@ -337,6 +343,7 @@ struct OtherDataBlock {
   double payload = 5.0;
 };
 
+// spec 04 §1 (the structure map: one path, one member).
 TEST(SpeedAxisVariables, AccessorsRefuseAnotherDataBlock) {
   OtherDataBlock other;
   const auto& info = must_find("Override.Velocity");
@@ -347,6 +354,7 @@ TEST(SpeedAxisVariables, AccessorsRefuseAnotherDataBlock) {
 
 // ---- access (spec 04 §0.2) ----
 
+// spec 04 §0.2 (the W column), §0.3 (MC_WriteParameter).
 TEST(SpeedAxisVariables, WriteAccessFollowsTheWColumn) {
   struct Case {
     std::string path;
@@ -383,6 +391,7 @@ TEST(SpeedAxisVariables, WriteAccessFollowsTheWColumn) {
   }
 }
 
+// spec 04 §0.3 (the MC_WriteParameter numbers).
 TEST(SpeedAxisVariables, WriteParameterNumbers) {
   // spec 04 §0.3: 1020 Actor.RemoveEnableReaction (S, P, Y); 1000 is P/Y only; 1010-1012 are no DB variables
   const VariableInfo* info = find_by_write_parameter(speed_axis_variables(), 1020);
@@ -395,6 +404,7 @@ TEST(SpeedAxisVariables, WriteParameterNumbers) {
 
 // ---- lookup ----
 
+// spec 04 §1 (only the paths of the structure map).
 TEST(SpeedAxisVariables, UnknownPathsAreRejected) {
   for (const char* path : {
            "",
@@ -422,6 +432,7 @@ TEST(SpeedAxisVariables, UnknownPathsAreRejected) {
   }
 }
 
+// spec 04 §5 (the bit words).
 TEST(ParseBitPath, ValidAndInvalid) {
   EXPECT_EQ(parse_bit_path("StatusWord.X5"), (BitPath{"StatusWord", 5}));
   EXPECT_EQ(parse_bit_path("StatusWord.%X5"), (BitPath{"StatusWord", 5}));  // SCL slice (spec 04 §0.1)
@@ -437,6 +448,7 @@ TEST(ParseBitPath, ValidAndInvalid) {
   }
 }
 
+// spec 04 §5 (the bit words).
 TEST(SpeedAxisBits, ResolveAgainstTheTable) {
   const auto done = find_speed_axis_bit("StatusWord.X6");
   ASSERT_TRUE(done.has_value());
@@ -453,6 +465,7 @@ TEST(SpeedAxisBits, ResolveAgainstTheTable) {
   EXPECT_FALSE(find_speed_axis_bit("StatusWord3.X0").has_value());
 }
 
+// spec 04 §5 (the bit words).
 TEST(SpeedAxisBits, ReadAndWriteThroughTheWord) {
   SpeedAxisData data{};
   const auto done = find_speed_axis_bit("StatusWord.X6");
@@ -483,6 +496,7 @@ TEST(SpeedAxisBits, ReadAndWriteThroughTheWord) {
   EXPECT_EQ(data.Actor.RemoveEnableReaction, 0x7);
 }
 
+// spec 04 §0.4 (data types).
 TEST(VariableType, NamesAndWidths) {
   EXPECT_EQ(to_string(kLreal), "LREAL");
   EXPECT_EQ(to_string(kDint), "DINT");

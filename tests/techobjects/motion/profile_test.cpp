@@ -152,6 +152,7 @@ TEST(VelocityProfileTest, EmergencyStopWithoutJerk) {
 }
 
 // Through zero without jerk: deceleration limit while slowing, acceleration limit after v = 0.
+// spec 01 §8.7 (velocity profiles: deceleration to zero, acceleration after it).
 TEST(VelocityProfileTest, ReversalWithoutJerkStepsAtZero) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan({0.0, -6.0, 0.0}, 4.0, {10.0, 2.0, 3.0, 0.0}));
@@ -175,6 +176,7 @@ TEST(VelocityProfileTest, ReversalWithJerkCrossesZeroAccelerating) {
   EXPECT_NEAR(profile.duration(), 56.0 / 12.0, 1e-12);
 }
 
+// spec 01 §8.3 (dynamic limits), §8.7.
 TEST(VelocityProfileTest, TargetClampedToVelocityLimit) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 0.0, 0.0}, -50.0, {20.0, 10.0, 10.0, 0.0}));
@@ -182,6 +184,7 @@ TEST(VelocityProfileTest, TargetClampedToVelocityLimit) {
   EXPECT_NEAR(profile.duration(), 2.0, 1e-12);
 }
 
+// spec 01 §8.3; decision M4 (a failed plan keeps the running profile).
 TEST(ProfileTest, InvalidLimitsAreRejectedAndKeepThePreviousProfile) {
   VelocityProfile velocity;
   PositionProfile position;
@@ -207,6 +210,7 @@ TEST(ProfileTest, InvalidLimitsAreRejectedAndKeepThePreviousProfile) {
   EXPECT_NEAR(velocity.duration(), 2.0, 1e-15);
 }
 
+// spec 01 §8.7.
 TEST(PositionProfileTest, AlreadyAtRestAtTarget) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({7.0, 0.0, 0.0}, 7.0, {1.0, 1.0, 1.0, 1.0}));
@@ -216,6 +220,7 @@ TEST(PositionProfileTest, AlreadyAtRestAtTarget) {
 }
 
 // Zero distance while moving: brake, reverse, come back (the "preceding braking/reversal").
+// spec 01 §8.8 (a new job while moving: brake and reverse).
 TEST(PositionProfileTest, ZeroDistanceWhileMovingReverses) {
   for (const double jerk : {0.0, 10.0}) {
     PositionProfile profile;
@@ -232,6 +237,7 @@ TEST(PositionProfileTest, ZeroDistanceWhileMovingReverses) {
 }
 
 // Target behind while moving forward (v0 = 4 toward +, target 10 units behind): brake, cruise back at -vmax.
+// spec 01 §8.8 (a new job while moving: brake and reverse).
 TEST(PositionProfileTest, TargetBehind) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 4.0, 0.0}, -10.0, {2.0, 4.0, 8.0, 0.0}));
@@ -242,6 +248,7 @@ TEST(PositionProfileTest, TargetBehind) {
 }
 
 // v0 above the (override-reduced) velocity limit: decelerate to the limit, cruise, brake; never faster.
+// spec 01 §8.8, §8.3 (a start above the limit is first decelerated to it).
 TEST(PositionProfileTest, StartAboveVelocityLimit) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 20.0, 0.0}, 1000.0, {10.0, 5.0, 5.0, 0.0}));
@@ -359,6 +366,7 @@ TEST(JobReplacementSeed677, RampToStandstillRaisesTheJerkOnlyWhereItWouldReverse
 // ---------------------------------------------------------------------------------------------------------
 
 // Rest to rest, neither plateau nor cruise: four ramps of t, D = 2·j·t³: D = 1, j = 4: t = 0.5, T = 2.
+// spec 01 §8.7 (jerk-limited profile).
 TEST(PositionProfileClassTest, RestToRestFourRamps) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 0.0, 0.0}, 1.0, {10.0, 5.0, 5.0, 4.0}));
@@ -371,6 +379,7 @@ TEST(PositionProfileClassTest, RestToRestFourRamps) {
 // 2.5 s over 5):
 //  * moving toward at v0 = 2: 2 -> 4 in 1.5 s over 4.5, cruise (20 − 9.5)/4 = 2.625 s;
 //  * over the velocity limit, v0 = 6: 6 -> 4 in 1.5 s over 7.5, cruise (30 − 12.5)/4 = 4.375 s.
+// spec 01 §8.7, §8.8.
 TEST(PositionProfileClassTest, MovingTowardAndOverTheVelocityLimit) {
   struct Row {
     double v0, target, duration, first_change_distance;
@@ -398,6 +407,7 @@ TEST(PositionProfileClassTest, MovingAwayCrossesZeroAccelerating) {
 // Over the acceleration limit, a0 = 3 > 2 at rest: 3 -> 2 in 0.25 s (v 0.625, p 1/12), 2 held for
 // (4 − 9/8)/2 = 1.4375 s (v 3.5), ramp out in 0.5 s (v 4): p = 1/12 + 2.96484375 + 23/12 = 4.96484375;
 // 4 -> 0 in 2.5 s over 5; cruise (20 − 9.96484375)/4.
+// spec 01 §8.7, §8.8 (a start beyond the acceleration limit).
 TEST(PositionProfileClassTest, OverTheAccelerationLimit) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 0.0, 3.0}, 20.0, {4.0, 2.0, 2.0, 4.0}));
@@ -411,6 +421,7 @@ TEST(PositionProfileClassTest, OverTheAccelerationLimit) {
 // crossing at min(a, d) = 2: peak sqrt((2j·1 + 2²)/2) = sqrt(6) < 3, ramps sqrt(6)/4 and (sqrt(6) − 2)/4;
 // then 2 held for (2 − (8 − 4)/8)/2 = 0.75 s and ramped out in 0.5 s. −2 -> 0: d²/j = 9/4 > 2, so no
 // plateau: 2·sqrt(2/j) s over 2·sqrt(2/j).
+// spec 01 §8.7, §8.8 (reversal: the smaller of acceleration and deceleration at zero).
 TEST(PositionProfileClassTest, ReversalCrossesZeroAtTheSmallerLimit) {
   PositionProfile profile;
   ASSERT_TRUE(profile.plan({0.0, 1.0, 0.0}, -10.0, {2.0, 2.0, 3.0, 4.0}));
@@ -578,6 +589,7 @@ void check_profile(const Profile& profile, const Case& c, const Bounds& bounds, 
   EXPECT_EQ(profile.at(duration * 2 + 1).velocity, bounds.end_velocity);
 }
 
+// spec 01 §8.3 (the limits hold), §8.7, §8.8 (random start states beyond them).
 TEST(VelocityProfileRandomTest, LimitsContinuityAndExactEnd) {
   Random r(0x70C0'0001);
   double worst_end_error = 0;
@@ -614,6 +626,7 @@ TEST(VelocityProfileRandomTest, LimitsContinuityAndExactEnd) {
   RecordProperty("worst_relative_end_error", std::to_string(worst_end_error));
 }
 
+// spec 01 §8.3 (the limits hold), §8.7, §8.8 (random start states beyond them).
 TEST(PositionProfileRandomTest, LimitsContinuityAndExactEnd) {
   Random r(0x70C0'0002);
   int worst_iterations = 0;
@@ -697,6 +710,7 @@ TEST(PositionProfileRandomTest, DistanceIsMonotonicOutsideTheStopInterval) {
 
 // The brief's premise "monotonic on all of [-vmax, vmax]" does not hold with jerk: decelerating to a peak
 // between 0 and v0 and then again to 0 lingers at a = 0, so f rises and falls back to the stop distance.
+// spec 01 §8.7 (jerk-limited profile).
 TEST(PositionProfileTest, DistanceIsNotMonotonicBetweenZeroAndStopVelocityWithJerk) {
   const MotionState start{0.0, 5.0, 0.0};
   const ProfileLimits limits{10.0, 2.0, 2.0, 4.0};

@@ -198,6 +198,7 @@ TEST(ActualValueChainMounting, DriveAndEncoderInversionTogether) {
 // ---------------------------------------------------------------------------------------------------------
 // Gx_XIST1 width and overflow (spec 01 §3.7, spec 06 §6.1, seed 004 §6.2.4.4)
 
+// spec 01 §3.7, spec 06 §6.1 (the width of Gx_XIST1 from the encoder parameters).
 TEST(Xist1Width, DerivedFromEncoderParameters) {
   struct Row {
     std::int32_t behavior;
@@ -256,6 +257,7 @@ TEST(Xist1Width, OverflowAt32BitsAndAtTheDerivedWidth) {
 }
 
 // Randomized: many wraps of a 16-bit counter forward and backward keep the exact position (fixed seed).
+// spec 06 §6.1 (Gx_XIST1 overflow), spec 01 §3.7.
 TEST(Xist1Width, RandomWalkAcrossManyWrapsIsExact) {
   auto enc = rotary_encoder(EncoderMounting::kLoadSide, 32, 11);  // W = 16
   enc.Parameter.BehaviorGx_XIST1 = 0;
@@ -308,6 +310,7 @@ TEST(AbsoluteEncoder, PositionFromXist2PlusOffset) {
 }
 
 // Absolute encoder adjustment (MC_Home Mode 7) sets AbsEncoderOffset; it survives power-up as a plain value.
+// spec 02 §5.9 (absolute encoder adjustment, retained); spec 01 §3.7.
 TEST(AbsoluteEncoder, AdjustmentOffsetIsRetained) {
   const auto enc = absolute_encoder(EncoderType::kAbsolute, 4096, 11, 9, 1024);  // 2^31 counts range
   auto axis = linear_axis(1, 1, 5.0);
@@ -389,6 +392,7 @@ TEST(CyclicAbsoluteEncoder, CountsMeasuringRangeOverflowsBothWays) {
 
 // The counter and offset are persisted as plain values; a later power-up continues, also when the encoder
 // crossed its zero while the CPU was off (nearest range to the retained position).
+// spec 01 §3.7 (cyclic absolute encoder), spec 02 §5.9 (retained values).
 TEST(CyclicAbsoluteEncoder, PersistedCounterAcrossPowerCycle) {
   const auto enc = absolute_encoder(EncoderType::kCyclicAbsolute, 4096, 11, 9, 16);
   const auto axis = linear_axis(1, 1, 10.0);
@@ -431,6 +435,7 @@ TEST(CyclicAbsoluteEncoder, PersistedCounterAcrossPowerCycle) {
 }
 
 // Randomized: a cyclic absolute encoder with XIST2 present in random cycles follows the true position.
+// spec 01 §3.7, spec 06 §6.2 (Gx_XIST2 only in some cycles).
 TEST(CyclicAbsoluteEncoder, RandomWalkWithSparseAbsoluteValues) {
   const auto enc = absolute_encoder(EncoderType::kCyclicAbsolute, 1024, 2, 2, 4);  // range 16384
   ActualValueChain chain(rotary_axis(), enc, kServoCycle);
@@ -452,6 +457,7 @@ TEST(CyclicAbsoluteEncoder, RandomWalkWithSparseAbsoluteValues) {
 // ---------------------------------------------------------------------------------------------------------
 // Modulo (spec 01 §2.4, §2.4.1, A1, A18)
 
+// spec 01 §2.4, §2.4.1 (modulo range and cycle counter).
 TEST(Modulo, WrapTable) {
   struct Row {
     double p, start, length, wrapped;
@@ -499,6 +505,7 @@ TEST(Modulo, ActualPositionWrapsWithCycleCounter) {
 }
 
 // Modulo on a linear axis with a start value: range [-50, 150) mm.
+// spec 01 §2.4 (Modulo.StartValue on a linear axis).
 TEST(Modulo, LinearAxisWithStartValue) {
   auto axis = linear_axis(1, 1, 10.0);
   axis.Modulo = {true, -50.0, 200.0};
@@ -511,6 +518,7 @@ TEST(Modulo, LinearAxisWithStartValue) {
   EXPECT_EQ(chain.modulo_cycle(), 1);
 }
 
+// spec 01 §2.4 (modulo: the shortest distance).
 TEST(Modulo, ShortestDistance) {
   struct Row {
     double from, to, distance;
@@ -594,6 +602,7 @@ TEST(Modulo, IncrementalHomingAndRestart) {
 // ---------------------------------------------------------------------------------------------------------
 // Actual velocity (spec 01 §3.9)
 
+// spec 01 §3.9 (actual velocity without NIST_B: position difference per servo cycle).
 TEST(ActualVelocity, FromPositionDifferencePerServoCycle) {
   ActualValueChain chain(linear_axis(1, 1, 10.0), rotary_encoder(), kServoCycle);
   SimEncoder sim(32, 0xFFFFF000u);
@@ -668,6 +677,7 @@ TEST(SetpointScaling, XerrTv12) {
   EXPECT_EQ(SetpointScaling(linear_axis(1, 1, 10.0), inverted).xerr(1.0), -419430);
 }
 
+// spec 01 §3.6 (setpoint normalisation), §5.2–§5.7 (mechanics).
 TEST(SetpointScaling, MotorSpeedTable) {
   struct Row {
     const char* name;
@@ -700,6 +710,7 @@ TEST(SetpointScaling, MotorSpeedTable) {
 
 // Randomized round trips (fixed seed): load velocity -> motor speed -> load velocity, and
 // position -> counts -> position through the chain's own scale.
+// spec 01 §3.6, §5.8 (the complete chain, both ways).
 TEST(SetpointScaling, RandomRoundTrips) {
   std::mt19937 rng(12345u);
   std::uniform_int_distribution<std::uint32_t> gear(1, 1000);
@@ -733,6 +744,7 @@ TEST(SetpointScaling, RandomRoundTrips) {
 // ---------------------------------------------------------------------------------------------------------
 // Validation: the first problem with its variable path
 
+// spec 01 §3.7, §5.2–§5.7 (the configuration the chain needs), spec 04 §3.6.
 TEST(Validation, FirstProblemWithPath) {
   struct Row {
     const char* path;
@@ -847,6 +859,7 @@ TEST(Validation, FirstProblemWithPath) {
 }
 
 // Real-time contract: the cyclic interface is noexcept (no allocation by construction: no dynamic members).
+// ARCHITECTURE-GUIDE §2 (MC_Servo: the cyclic path); the developer guide's real-time rules (no exceptions).
 TEST(RealTime, CyclicInterfaceIsNoexcept) {
   ActualValueChain chain(linear_axis(), rotary_encoder(), kServoCycle);
   static_assert(noexcept(chain.update(EncoderSample{})));

@@ -22,6 +22,7 @@ PidRegulator regulator(const PidGains& g, double ts = kTs) {
   return r;
 }
 
+// Decision A8 (all Pid.* 0 = the S7's P controller, bit-identical); spec 02 §7.4.
 TEST(PidRegulator, DefaultIsTheS7PController) {
   PidGains g;
   g.Kv = 33.0;
@@ -35,6 +36,7 @@ TEST(PidRegulator, DefaultIsTheS7PController) {
 }
 
 // Constant error e0 (step): I(k) = k·Kv·Ts/Ti·e0 — the integral equals P after Ti/Ts samples.
+// spec 05b A.2 (the PID regulator), C.2; decision A8.
 TEST(PidRegulator, IntegralStepResponseClosedForm) {
   PidGains g;
   g.Kv = 100.0;
@@ -48,6 +50,7 @@ TEST(PidRegulator, IntegralStepResponseClosedForm) {
 }
 
 // The integral clamp: it reaches IntegralLimit and stays there; a reversed error unwinds it at once.
+// Decision A9 (anti-windup: the integral clamp).
 TEST(PidRegulator, IntegralClampAndUnwind) {
   PidGains g;
   g.Kv = 100.0;
@@ -63,6 +66,7 @@ TEST(PidRegulator, IntegralClampAndUnwind) {
 
 // Anti-windup with the output clamp: while P + I is at OutputLimit, I does not grow; when the error drops the
 // output leaves saturation in the same sample (no wound-up integral to burn off).
+// Decision A9 (anti-windup: conditional integration at OutputLimit).
 TEST(PidRegulator, ConditionalIntegrationAtTheOutputLimit) {
   PidGains g;
   g.Kv = 100.0;
@@ -87,6 +91,7 @@ TEST(PidRegulator, ConditionalIntegrationAtTheOutputLimit) {
 
 // Error ramp e(k) = r·k: D = Kv·Td·r/Ts every sample; with a D sample of n cycles D = Kv·Td·(n·r)/(n·Ts),
 // updated every n cycles and held.
+// spec 05b A.2 (the derivative term and its sample time); decision A8.
 TEST(PidRegulator, DerivativeOnARampAndItsOwnSampleTime) {
   PidGains g;
   g.Kv = 100.0;
@@ -106,6 +111,7 @@ TEST(PidRegulator, DerivativeOnARampAndItsOwnSampleTime) {
     EXPECT_NEAR(slow.update(3.0).d, d, 1e-9);
 }
 
+// spec 05b A.2 (the dead band JOINT leaves to the framework); decision A8 (`PositionControl.Pid.DeadBand`).
 TEST(PidRegulator, DeadBand) {
   PidGains g;
   g.Kv = 10.0;
@@ -166,6 +172,7 @@ TEST(PidRegulator, DerivativeSwitchedOnAfterPOnlyCyclesHasNoKick) {
 
 // Closed loop on an ideal velocity actuator x(k+1) = x(k) + Ts·u(k) following a ramp v·t without precontrol:
 // P alone leaves the steady-state error v/Kv; with I it goes to zero (a type-2 loop).
+// spec 05b A.2, C.2 (the integral removes the ramp's steady-state error); decision A8.
 TEST(PidRegulator, RampSteadyStateErrorZeroWithIntegral) {
   const double v = 50.0;
   for (const double ti : {0.0, 0.2}) {
@@ -198,6 +205,7 @@ std::int32_t joint_dac_bits(double velocity, const LegacyRegulator& reg) {
   return drives::io::dac_code(volts, kJointDac);
 }
 
+// spec 05b A.8 (the JOINT per-axis parameters), C.2; decisions A18, A19.
 TEST(LegacyRegulator, JointConversion) {
   JointRegulatorParameters p;
   p.pgain = 1000;
@@ -240,6 +248,7 @@ TEST(LegacyRegulator, JointPartD3ProportionalTerm) {
 }
 
 // Part D 4: folterr 0, v_theor 50 Um/s = 5000 pulses/s: feedfw 1000 -> ≈ 16383, 985 -> ≈ 16137.
+// spec 05b Part D 4 (feed-forward).
 TEST(LegacyRegulator, JointPartD4FeedForward) {
   for (const auto& [feedfw, bits] : {std::pair{1000, 16383}, std::pair{985, 16137}}) {
     JointRegulatorParameters p;
@@ -252,6 +261,7 @@ TEST(LegacyRegulator, JointPartD4FeedForward) {
 
 // Part D 5: pgain 1000, integt 100 ms, folterr 10 (propreg ≈ 3276): after 10 samples intreg ≈ 3276; integt 0
 // -> intreg stays 0.
+// spec 05b Part D 5 (integral).
 TEST(LegacyRegulator, JointPartD5Integral) {
   for (const std::int32_t integt : {100, 0}) {
     JointRegulatorParameters p;
@@ -268,6 +278,7 @@ TEST(LegacyRegulator, JointPartD5Integral) {
 }
 
 // Part D 6: pgain 1000, derivt 20 ms, folterr growing by 1 pulse per sample -> derreg ≈ 655 every sample.
+// spec 05b Part D 6 (derivative).
 TEST(LegacyRegulator, JointPartD6Derivative) {
   JointRegulatorParameters p;
   p.derivt = 20;

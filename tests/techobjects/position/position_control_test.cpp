@@ -58,6 +58,7 @@ class SpeedLoopPlant {
 
 // ---- delay line ----
 
+// spec 02 §7.4 (2) (the communication/processing delay, fractional); decision M3.
 TEST(SetpointDelayLine, IntegerAndFractionalDelays) {
   SetpointDelayLine line;
   line.fill(0.0);
@@ -72,6 +73,7 @@ TEST(SetpointDelayLine, IntegerAndFractionalDelays) {
   EXPECT_DOUBLE_EQ(line.delayed(-3.0), 100.0);
 }
 
+// Decision M3 (24 samples: longer delays are clamped).
 TEST(SetpointDelayLine, ClampsToCapacity) {
   SetpointDelayLine line;
   line.fill(-1.0);
@@ -86,6 +88,7 @@ TEST(SetpointDelayLine, ClampsToCapacity) {
 
 // ---- configuration ----
 
+// spec 02 §7.3, §7.4 (2) (n_dead from T_i, T_o, T_DC, T_Servo).
 TEST(PositionController, DelaysFromCommunicationTimes) {
   PositionControlConfig c;
   c.ServoCycle = 0.002;
@@ -106,6 +109,7 @@ TEST(PositionController, DelaysFromCommunicationTimes) {
   EXPECT_DOUBLE_EQ(pc.control_delay_cycles(), 1.75);
 }
 
+// spec 02 §7.3 (the control variables); spec 04 §3.20 (PositionControl and its ranges).
 TEST(PositionController, RejectsInvalidConfiguration) {
   PositionController pc;
   PositionControlConfig c;
@@ -127,6 +131,7 @@ TEST(PositionController, RejectsInvalidConfiguration) {
 
 // ---- open loop: the equations of §7.4 and §6.2 ----
 
+// spec 02 §7.4 (2)–(4), §6.2 (the following error against the delayed setpoint).
 TEST(PositionController, FollowingErrorUsesDelayedSetpointWithFractionalDelay) {
   PositionControlConfig c;
   c.ServoCycle = 0.001;
@@ -150,6 +155,7 @@ TEST(PositionController, FollowingErrorUsesDelayedSetpointWithFractionalDelay) {
   EXPECT_DOUBLE_EQ(out.balanced_position, out.control_difference + 1.0);
 }
 
+// spec 02 §7.4 (2)–(4) (the delay line starts at the first setpoint: no step).
 TEST(PositionController, FirstCycleStartsWithoutStep) {
   PositionController pc;
   const auto out = pc.update(input(123.0, 0.0, 123.0));
@@ -162,6 +168,7 @@ TEST(PositionController, FirstCycleStartsWithoutStep) {
   EXPECT_DOUBLE_EQ(again.following_error, 0.0);
 }
 
+// spec 02 §7.4 (3) (the symmetry filter, T_vtc).
 TEST(PositionController, SymmetryFilterLagsRampByVelocityTimeConstant) {
   PositionControlConfig c;
   c.ServoCycle = 0.001;
@@ -178,6 +185,7 @@ TEST(PositionController, SymmetryFilterLagsRampByVelocityTimeConstant) {
   EXPECT_NEAR(out.velocity_setpoint, v + 30.0 * out.balanced_position, 1e-9);  // kpc·v + Kv·e
 }
 
+// spec 02 §7.4 (3) (kpc = 0: the filter drops out).
 TEST(PositionController, VelocityTimeConstantIrrelevantWithoutPrecontrol) {
   PositionControlConfig a;
   a.Kpc = 0.0;
@@ -195,6 +203,7 @@ TEST(PositionController, VelocityTimeConstantIrrelevantWithoutPrecontrol) {
   }
 }
 
+// spec 02 §7.2 (DSC: precontrol, XERR and KPC to the drive).
 TEST(PositionController, DscOutputsPrecontrolXerrAndKpc) {
   PositionControlConfig c;
   c.EnableDSC = true;
@@ -269,6 +278,7 @@ RampResult run_ramp(const PositionControlConfig& c, double plant_tvtc, std::size
   return {out.following_error, out.control_difference, plant.velocity()};
 }
 
+// spec 02 §7.4 (steady state with full precontrol: e = v·T_vtc).
 TEST(PositionControllerClosedLoop, FullPrecontrolSteadyStateErrorIsVelocityTimesTvtc) {
   PositionControlConfig c;
   c.ServoCycle = 0.001;
@@ -283,6 +293,7 @@ TEST(PositionControllerClosedLoop, FullPrecontrolSteadyStateErrorIsVelocityTimes
   EXPECT_NEAR(r.control_difference, 0.0, 1e-6);
 }
 
+// spec 02 §7.4 (steady state without precontrol: e = v/Kv).
 TEST(PositionControllerClosedLoop, NoPrecontrolSteadyStateErrorIsVelocityOverKv) {
   PositionControlConfig c;
   c.ServoCycle = 0.002;
@@ -295,6 +306,7 @@ TEST(PositionControllerClosedLoop, NoPrecontrolSteadyStateErrorIsVelocityOverKv)
   EXPECT_NEAR(r.control_difference, v / 25.0, 1e-6);
 }
 
+// spec 02 §7.4 (3), (5a) (kpc blends both errors).
 TEST(PositionControllerClosedLoop, PartialPrecontrolBlendsBothErrors) {
   PositionControlConfig c;
   c.ServoCycle = 0.001;
@@ -307,6 +319,7 @@ TEST(PositionControllerClosedLoop, PartialPrecontrolBlendsBothErrors) {
   EXPECT_NEAR(r.control_difference, 0.5 * v / 40.0, 1e-6);
 }
 
+// spec 02 §7.4, §6.1 (a move converges; positioning monitoring reports Done).
 TEST(PositionControllerClosedLoop, PositioningMoveConvergesAndPositioningMonitoringReportsDone) {
   PositionControlConfig c;
   c.ServoCycle = 0.001;
@@ -377,6 +390,7 @@ TEST(PositionControllerPid, RampErrorVanishesWithIntegral) {
   }
 }
 
+// Decision A8 (the PID is refused with DSC: the loop is in the drive).
 TEST(PositionControllerPid, RejectedWithDscOrInvalid) {
   PositionControlConfig c;
   c.IntegralTime = 0.1;
@@ -391,6 +405,7 @@ TEST(PositionControllerPid, RejectedWithDscOrInvalid) {
 }
 
 // FLdRP/FUpDRP: a loaded Kv acts from the update after apply_gains(), the integral is kept.
+// Decision A8 (Pid.* are DIR: new gains take effect without resetting the integral).
 TEST(PositionControllerPid, DoubleBufferedGainsKeepTheIntegral) {
   PositionControlConfig c;
   c.Kv = 10.0;

@@ -25,6 +25,7 @@ FollowingErrorMonitoringConfig fe_config() {
   return c;
 }
 
+// spec 02 §6.2 (following-error monitoring: the characteristic, 522 warning, 521 error).
 TEST(FollowingErrorMonitor, PermittedErrorCharacteristic) {
   const FollowingErrorMonitor m(fe_config());
   EXPECT_DOUBLE_EQ(m.permitted(0.0), 2.0);
@@ -38,6 +39,7 @@ TEST(FollowingErrorMonitor, PermittedErrorCharacteristic) {
   EXPECT_DOUBLE_EQ(m.permitted(800.0), 10.0);  // clamped above v_max
 }
 
+// spec 02 §6.2 (following-error monitoring: the characteristic, 522 warning, 521 error).
 TEST(FollowingErrorMonitor, DegenerateVelocityRange) {
   auto c = fe_config();
   c.MaxVelocity = 10.0;  // = MinVelocity
@@ -46,6 +48,7 @@ TEST(FollowingErrorMonitor, DegenerateVelocityRange) {
   EXPECT_DOUBLE_EQ(m.permitted(10.5), 10.0);
 }
 
+// spec 02 §6.2 (following-error monitoring: the characteristic, 522 warning, 521 error).
 TEST(FollowingErrorMonitor, WarningAndErrorThresholds) {
   auto c = fe_config();
   c.MinValue = 100.0;  // the spec example: FE_max = 100 mm, WarningLevel 90 % -> warning from 90 mm
@@ -66,6 +69,7 @@ TEST(FollowingErrorMonitor, WarningAndErrorThresholds) {
   EXPECT_EQ(m.check(std::nan(""), 0.0).alarm, FollowingErrorAlarm::kError521);
 }
 
+// spec 02 §6.2 (following-error monitoring: the characteristic, 522 warning, 521 error).
 TEST(FollowingErrorMonitor, DisabledMonitoringReportsNothing) {
   auto c = fe_config();
   c.EnableMonitoring = false;
@@ -81,6 +85,7 @@ PositioningMonitoringConfig pm_config(double tolerance, double dwell) {
   return PositioningMonitoringConfig{0.01, tolerance, dwell, 0.001};
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, InactiveUntilStarted) {
   PositioningMonitor m(pm_config(0.01, 0.005));
   EXPECT_EQ(m.update(0.0).outcome, PositioningOutcome::kInactive);
@@ -90,6 +95,7 @@ TEST(PositioningMonitor, InactiveUntilStarted) {
   EXPECT_EQ(m.update(5.0).outcome, PositioningOutcome::kInactive);
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, DoneExactlyMinDwellTimeAfterArrival) {
   PositioningMonitor m(pm_config(0.01, 0.005));  // 10 cycles tolerance, 5 cycles dwell
   EXPECT_EQ(m.dwell_cycles(), 5u);
@@ -105,6 +111,7 @@ TEST(PositioningMonitor, DoneExactlyMinDwellTimeAfterArrival) {
   EXPECT_EQ(m.update(50.0).outcome, PositioningOutcome::kDone);  // latched until the next start
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, WindowBoundaryCountsAsInside) {
   PositioningMonitor m(PositioningMonitoringConfig{0.5, 0.01, 0.0, 0.001});
   m.start(2.0);
@@ -115,6 +122,7 @@ TEST(PositioningMonitor, WindowBoundaryCountsAsInside) {
   EXPECT_EQ(m.update(2.5001).outcome, PositioningOutcome::kInProgress);
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, Alarm541TargetNotReachedAfterToleranceTime) {
   PositioningMonitor m(pm_config(0.01, 0.005));
   EXPECT_EQ(m.tolerance_cycles(), 10u);
@@ -129,6 +137,7 @@ TEST(PositioningMonitor, Alarm541TargetNotReachedAfterToleranceTime) {
   EXPECT_EQ(kPositioningAlarm, 541u);
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, EnteringExactlyAtToleranceTimeIsInTime) {
   PositioningMonitor m(pm_config(0.01, 0.005));
   m.start(10.0);
@@ -139,6 +148,7 @@ TEST(PositioningMonitor, EnteringExactlyAtToleranceTimeIsInTime) {
   EXPECT_EQ(m.update(10.0).outcome, PositioningOutcome::kDone);  // cycle 15 = 10 + 5
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, FractionalToleranceTimeRoundsToFirstCycleBeyond) {
   PositioningMonitor m(PositioningMonitoringConfig{0.01, 0.0025, 0.0, 0.001});
   m.start(1.0);
@@ -147,6 +157,7 @@ TEST(PositioningMonitor, FractionalToleranceTimeRoundsToFirstCycleBeyond) {
   EXPECT_EQ(m.update(0.0).outcome, PositioningOutcome::kFault);  // 3 ms > 2.5 ms
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, Alarm541TargetLeftDuringDwell) {
   PositioningMonitor m(pm_config(0.01, 0.005));
   m.start(10.0);
@@ -161,6 +172,7 @@ TEST(PositioningMonitor, Alarm541TargetLeftDuringDwell) {
   EXPECT_EQ(m.update(10.02).outcome, PositioningOutcome::kInProgress);
 }
 
+// spec 02 §6.1 (positioning monitoring: window, MinDwellTime, ToleranceTime, alarm 541).
 TEST(PositioningMonitor, TimesAreConvertedWithoutRoundingSlip) {
   PositioningMonitor m(PositioningMonitoringConfig{0.01, 0.3, 0.01, 0.001});
   EXPECT_EQ(m.tolerance_cycles(), 300u);
@@ -172,6 +184,7 @@ TEST(PositioningMonitor, TimesAreConvertedWithoutRoundingSlip) {
 
 // ---- §6.3 standstill signal ----
 
+// spec 02 §6.3 (standstill signal: window, MinDwellTime).
 TEST(StandstillSignal, SetAfterMinDwellTime) {
   StandstillSignal s(StandstillSignalConfig{1.0, 0.01, 0.001});
   EXPECT_EQ(s.dwell_cycles(), 10u);
@@ -183,11 +196,13 @@ TEST(StandstillSignal, SetAfterMinDwellTime) {
   EXPECT_TRUE(s.standstill());
 }
 
+// spec 02 §6.3 (standstill signal: window, MinDwellTime).
 TEST(StandstillSignal, ZeroDwellTimeSetsInFirstCycle) {
   StandstillSignal s(StandstillSignalConfig{1.0, 0.0, 0.001});
   EXPECT_TRUE(s.update(0.9));
 }
 
+// spec 02 §6.3 (standstill signal: window, MinDwellTime).
 TEST(StandstillSignal, HysteresisWhenLeaving) {
   StandstillSignal s(StandstillSignalConfig{1.0, 0.002, 0.001});
   s.update(0.0);
@@ -199,6 +214,7 @@ TEST(StandstillSignal, HysteresisWhenLeaving) {
   EXPECT_TRUE(s.update(0.5));
 }
 
+// spec 02 §6.3 (standstill signal: window, MinDwellTime).
 TEST(StandstillSignal, HysteresisBandHoldsTheDwellTimer) {
   StandstillSignal s(StandstillSignalConfig{1.0, 0.01, 0.001});
   for (int k = 0; k < 5; ++k)

@@ -84,6 +84,7 @@ struct Machine {
   techobjects::SynchronousAxis* follower = nullptr;
 };
 
+// Issue 14 (≤ 8 KiB per axis TO); decisions M1–M10, C26.
 TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
   Machine m;
   EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
@@ -113,6 +114,7 @@ TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
               sizeof(techobjects::SynchronousOperation));
 }
 
+// Issue 14 (≤ 8 KiB per axis TO); decisions M5, M6.
 TEST(MemoryPerAxis, SpeedAxisAndExternalEncoderSmallerStill) {
   Machine m;
   EXPECT_LT(m.speed->memory_footprint(), m.driven->memory_footprint());
@@ -145,6 +147,7 @@ TEST(MemoryPerAxis, FilterModeStartValueReservesTheHistories) {
 
 // memory_footprint() accounts for every allocation a TO makes: constructing one (not yet in a runtime, so it
 // still owns its start values) takes that much heap, give or take the allocator's per-block overhead.
+// Issue 14; decision M2 (start values and filter histories counted where they live).
 TEST(MemoryPerAxis, FootprintAccountsForTheHeap) {
 #ifdef TOMC_SANITIZED_BUILD
   GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";
@@ -190,7 +193,8 @@ struct FourEncoderDevice {
 
 // The budgets with several encoders, in a runtime (the start values went to its load memory), each encoder
 // beyond the first 208 bytes of heap: one to four encoders within the 8,192 bytes (7,544, 7,752, 7,960,
-// 8,168; decision M11, docs/performance.md "Memory per axis").
+// 8,168; docs/performance.md "Memory per axis").
+// Decisions B1 (encoders 2…4 beside the object, the 8,192-byte budget), M6, M10 and M11.
 TEST(MemoryPerAxis, UpToFourEncodersWithinEightKiB) {
   FourEncoderDevice d;
   const auto in_runtime = [&](std::size_t encoders, const char* name) -> PositioningAxis& {
@@ -210,6 +214,7 @@ TEST(MemoryPerAxis, UpToFourEncodersWithinEightKiB) {
   }
 }
 
+// Decision B1 (an AdditionalEncoder only for each further existing Sensor[n]).
 TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
   FourEncoderDevice d;
   const auto one = axis_with_encoders(d.io(), 1);
@@ -229,6 +234,7 @@ TEST(MemoryPerAxis, AdditionalEncodersOnlyForExistingEncoders) {
 }
 
 // The heap an additional encoder really takes is what memory_footprint() counts for it.
+// Decision B1 (the array reserved at construction, counted in memory_footprint()).
 TEST(MemoryPerAxis, AdditionalEncoderFootprintAccountsForTheHeap) {
 #ifdef TOMC_SANITIZED_BUILD
   GTEST_SKIP() << "the sanitizers' allocator does not report mallinfo2";

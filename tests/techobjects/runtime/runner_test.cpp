@@ -24,6 +24,7 @@ bool wait_for_calls(const std::atomic<int>& calls, int count) {
 }
 using tomc::techobjects::RealTimeRunnerConfig;
 
+// ARCHITECTURE-GUIDE §2 (the real-time runner: absolute-time sleeps, statistics).
 TEST(RealTimeRunner, RunsTheCycleAndRecordsJitter) {
   std::atomic<int> calls{0};
   RealTimeRunner runner(RealTimeRunnerConfig{1ms, 0, false}, [&] { ++calls; });
@@ -43,6 +44,7 @@ TEST(RealTimeRunner, RunsTheCycleAndRecordsJitter) {
   EXPECT_LE(s.jitter_p99_us, s.jitter_max_us + 1.0);
 }
 
+// ARCHITECTURE-GUIDE §2 (overrun counting).
 TEST(RealTimeRunner, CountsOverrunsOfASlowCycle) {
   // Every third cycle takes 3.5 periods: each of those is an overrun and skips its missed periods.
   std::atomic<int> calls{0};
@@ -58,6 +60,7 @@ TEST(RealTimeRunner, CountsOverrunsOfASlowCycle) {
   EXPECT_GE(s.skipped_periods, 3 * (s.cycles / 3));
 }
 
+// ARCHITECTURE-GUIDE §2 (optional SCHED_FIFO and mlockall: reported when refused).
 TEST(RealTimeRunner, ReportsWhatItCouldNotSetUp) {
   // SCHED_FIFO needs privileges a test run may not have; either it works or the reason is reported.
   std::atomic<int> calls{0};
@@ -72,6 +75,7 @@ TEST(RealTimeRunner, ReportsWhatItCouldNotSetUp) {
   }
 }
 
+// Decision I25 (the wake margin).
 TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   // 400 us early at 1 ms: each cycle spins what the kernel's wake-up latency left of the margin; a wake-up
   // later than the deadline is counted instead. Without a margin nothing spins.
@@ -116,6 +120,7 @@ TEST(RealTimeRunner, AWakeMarginSpinsToTheDeadlineAndCountsItsCost) {
   EXPECT_EQ(sleeping.statistics().early_starts, 0u);  // an absolute sleep does not end before its time
 }
 
+// ARCHITECTURE-GUIDE §2; decision I25 (wake_margin within its range).
 TEST(RealTimeRunner, RejectsBadConfiguration) {
   EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{0ms, 0, false}, [] {}), std::invalid_argument);
   EXPECT_THROW(RealTimeRunner(RealTimeRunnerConfig{1ms, 100, false}, [] {}), std::invalid_argument);

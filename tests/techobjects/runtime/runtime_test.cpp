@@ -94,6 +94,7 @@ TEST(Runtime, OneCycleRunsThePhasesInOrder) {
   EXPECT_EQ(rt.clock().interpolator_cycles, 1u);
 }
 
+// Decisions R1 (read_actual at the start of MC_Servo) and R9 (no fresh frame: a stale cycle).
 TEST(Runtime, StaleFramesAreFlagged) {
   LogGuard guard;
   Runtime rt(RuntimeConfig{});
@@ -106,6 +107,7 @@ TEST(Runtime, StaleFramesAreFlagged) {
 }
 
 // The interpolator runs every n servo cycles and the user program every m (m a multiple of n).
+// ARCHITECTURE-GUIDE §2 (one application cycle: servo, interpolator, user program).
 TEST(Runtime, InterpolatorAndUserProgramRatios) {
   LogGuard guard;
   Runtime rt(RuntimeConfig{0.0005, 2, 4});
@@ -132,6 +134,7 @@ TEST(Runtime, InterpolatorAndUserProgramRatios) {
   EXPECT_DOUBLE_EQ(rt.clock().time_s(), 0.004);
 }
 
+// ARCHITECTURE-GUIDE §6 (configuration at set-up, before the cycle starts).
 TEST(Runtime, SetUpEndsAtStart) {
   Runtime rt(RuntimeConfig{});
   rt.start();
@@ -140,6 +143,7 @@ TEST(Runtime, SetUpEndsAtStart) {
   EXPECT_THROW(rt.start(), std::logic_error);
 }
 
+// ARCHITECTURE-GUIDE §2, §6.
 TEST(Runtime, StepBeforeStartDoesNothing) {
   LogGuard guard;
   Runtime rt(RuntimeConfig{});
@@ -149,6 +153,7 @@ TEST(Runtime, StepBeforeStartDoesNothing) {
   EXPECT_EQ(rt.clock().servo_cycles, 0u);
 }
 
+// ARCHITECTURE-GUIDE §2 (the user-program cycle a multiple of the interpolator's), §6.
 TEST(Runtime, RejectsInvalidConfiguration) {
   EXPECT_THROW(Runtime(RuntimeConfig{0.0, 1, 1}), std::invalid_argument);
   EXPECT_THROW(Runtime(RuntimeConfig{0.001, 0, 1}), std::invalid_argument);

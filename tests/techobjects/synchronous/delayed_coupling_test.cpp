@@ -69,6 +69,7 @@ struct DelayedMachine {
 
 // The follower coupled "Delayed" lags the setpoint-coupled one by exactly the delay: 5 ms = 5 cycles gives
 // D(k) = F(k − 5) in position, velocity and acceleration; 2.5 ms gives the mean of F(k − 2) and F(k − 3).
+// spec 07 §1.5, §6.1 (the leader setpoint LocalLeadingValueDelayTime ago, interpolated); decision C26.
 TEST(DelayedCoupling, FollowerLagsTheSetpointCoupledOneByTheDelay) {
   struct Row {
     double delay_s;
@@ -151,6 +152,8 @@ TEST(DelayedCoupling, DelaysTheHistoryCannotHoldAreConfigurationErrors) {
       EXPECT_NE(std::string(e.what()).find("L.CrossPlcSynchronousOperation.LocalLeadingValueDelayTime"),
                 std::string::npos)
           << e.what();
+      EXPECT_TRUE(std::string(e.what()).starts_with("D.LeadingValueInterconnections[0] (\"Delayed\" to L): "))
+          << e.what();
     }
     EXPECT_EQ(runtime.technology_object_count(), 1u);
   }
@@ -167,10 +170,19 @@ TEST(DelayedCoupling, DelaysTheHistoryCannotHoldAreConfigurationErrors) {
   auto& io = runtime.add_device(
       std::make_unique<drives::SimulatedDrive>(encoder_device, drives::SimulatedDriveParameters{}));
   auto* E = &runtime.emplace<techobjects::ExternalEncoder>("E", &io, techobjects::ExternalEncoderData{});
-  EXPECT_THROW(runtime.emplace<SynchronousAxis>("DE", nullptr, virtual_linear(),
-                                                std::vector<techobjects::LeadingValueInterconnection>{
-                                                    {E, E, LeadingValueCoupling::kDelayed}}),
-               std::invalid_argument);
+  // The follower and its interconnection named as in a machine file (the leader L first, E second).
+  try {
+    runtime.emplace<SynchronousAxis>(
+        "DE", nullptr, virtual_linear(),
+        std::vector<techobjects::LeadingValueInterconnection>{{L, L, LeadingValueCoupling::kSetpoint},
+                                                              {E, E, LeadingValueCoupling::kDelayed}});
+    ADD_FAILURE() << "\"Delayed\" on an external encoder was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "DE.LeadingValueInterconnections[1] (\"Delayed\" to E): this leading value cannot be coupled "
+              "\"Delayed\" (only a positioning or synchronous axis can, decision C26)");
+  }
+  EXPECT_EQ(runtime.technology_object_count(), 3u);  // L, D and E: DE was not added
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void leader_at(GearingMachine& m, double v) {
   ASSERT_GT(m.run_until([&] { return m.move_L.InVelocity; }, 2000), 0);
 }
 
-// GI-1: both at rest: InGear at once, X22, FunctionState 1, ActualMaster = L.
+// spec 07 §8 GI-1: both at rest: InGear at once, X22, FunctionState 1, ActualMaster = L.
 TEST(Gearing, GI1StandstillCoupling) {
   GearingMachine m;
   m.gear.RatioNumerator = 2;
@@ -50,7 +50,8 @@ TEST(Gearing, GI1StandstillCoupling) {
   EXPECT_EQ(m.F->read("StatusSynchronizedMotion.FunctionState"), 1.0);
 }
 
-// GI-2: locked 2:1, L moves +10 at 50: F ends at 20.000000 and F.Velocity = 2·L.Velocity every cycle.
+// spec 07 §8 GI-2: locked 2:1, L moves +10 at 50: F ends at 20.000000 and F.Velocity = 2·L.Velocity every
+// cycle.
 TEST(Gearing, GI2LockedRatio) {
   GearingMachine m;
   m.gear.RatioNumerator = 2;
@@ -73,7 +74,7 @@ TEST(Gearing, GI2LockedRatio) {
   EXPECT_TRUE(m.gear.InGear);
 }
 
-// GI-3: rotary modulo leader and follower locked −3/1 at 0/0; L +10° -> F −30° = 330° (modulo).
+// spec 07 §8 GI-3: rotary modulo leader and follower locked −3/1 at 0/0; L +10° -> F −30° = 330° (modulo).
 TEST(Gearing, GI3NegativeRatioModulo) {
   GearingMachine m(virtual_rotary_modulo(), virtual_rotary_modulo());
   m.gear.RatioNumerator = -3;
@@ -88,8 +89,9 @@ TEST(Gearing, GI3NegativeRatioModulo) {
   EXPECT_EQ(m.f().ModuloCycle, -1);
 }
 
-// GI-4: L at 100, F at rest, GearIn 2/1 with Acceleration 1000, Jerk 0: X21 from t0, InGear at t0 + 0.200 s,
-// F travelled 20.0 ± 0.2 during synchronization; afterwards F.Velocity = 200 and ΔF = 2·ΔL exactly.
+// spec 07 §8 GI-4: L at 100, F at rest, GearIn 2/1 with Acceleration 1000, Jerk 0: X21 from t0, InGear at t0
+// + 0.200 s, F travelled 20.0 ± 0.2 during synchronization; afterwards F.Velocity = 200 and ΔF = 2·ΔL
+// exactly.
 TEST(Gearing, GI4SynchronizeToAMovingLeader) {
   GearingMachine m;
   leader_at(m, 100.0);
@@ -113,8 +115,8 @@ TEST(Gearing, GI4SynchronizeToAMovingLeader) {
   EXPECT_NEAR(m.f().Position - fs, 2.0 * (m.l().Position - ls), 1e-9);
 }
 
-// GI-5: F in MoveVelocity(300), L at 100; GearIn 1/1 with Deceleration 2000: the MoveVelocity is aborted in
-// that cycle (R8 x C3 = A); F decelerates at 2000 and is InGear after 0.100 s.
+// spec 07 §8 GI-5: F in MoveVelocity(300), L at 100; GearIn 1/1 with Deceleration 2000: the MoveVelocity is
+// aborted in that cycle (R8 x C3 = A); F decelerates at 2000 and is InGear after 0.100 s.
 TEST(Gearing, GI5SlowDownSynchronization) {
   GearingMachine m;
   leader_at(m, 100.0);
@@ -131,8 +133,8 @@ TEST(Gearing, GI5SlowDownSynchronization) {
   EXPECT_NEAR(cycles + 2, 100, 1);
 }
 
-// GI-6: RatioNumerator 0 -> 16#8017; RatioDenominator 0 or −5 -> 16#8018; the follower as its leader's leader
-// -> 16#8019. A running job is not affected.
+// spec 07 §8 GI-6: RatioNumerator 0 -> 16#8017; RatioDenominator 0 or −5 -> 16#8018; the follower as its
+// leader's leader -> 16#8019. A running job is not affected.
 TEST(Gearing, GI6ParameterErrors) {
   GearingMachine m;
   m.move_F.Velocity = 10.0;
@@ -156,8 +158,8 @@ TEST(Gearing, GI6ParameterErrors) {
   EXPECT_TRUE(m.move_F.Busy);
 }
 
-// GI-7: a leader that is not interconnected: alarm 601, ErrorWord.X14; the job ends with an error (O-5:
-// 16#8001), no InGear.
+// spec 07 §8 GI-7: a leader that is not interconnected: alarm 601, ErrorWord.X14; the job ends with an error
+// (O-5: 16#8001), no InGear.
 TEST(Gearing, GI7LeaderNotInterconnected) {
   GearingMachine m;
   techobjects::PositioningAxis stranger("Stranger", nullptr, virtual_linear());
@@ -172,8 +174,8 @@ TEST(Gearing, GI7LeaderNotInterconnected) {
   EXPECT_FALSE(m.gear.InGear);
 }
 
-// GI-8: the leader not position-controlled (StartMode 0): alarm 603 on F, F disabled, the job ends with
-// Error.
+// spec 07 §8 GI-8: the leader not position-controlled (StartMode 0): alarm 603 on F, F disabled, the job ends
+// with Error.
 TEST(Gearing, GI8LeaderNotPositionControlled) {
   GearingMachine m;
   m.power_L.Enable = false;
@@ -190,7 +192,7 @@ TEST(Gearing, GI8LeaderNotPositionControlled) {
   EXPECT_FALSE(m.power_F.Status);  // remove enable
 }
 
-// GI-9: leader switchover: A1 (L) InGear, A2 (L2) starts: A1 CommandAborted, ActualMaster = L2.
+// spec 07 §8 GI-9: leader switchover: A1 (L) InGear, A2 (L2) starts: A1 CommandAborted, ActualMaster = L2.
 TEST(Gearing, GI9LeaderSwitchover) {
   GearingMachine m;
   m.gear.Execute = true;
@@ -203,8 +205,9 @@ TEST(Gearing, GI9LeaderSwitchover) {
   EXPECT_EQ(m.F->synchronized_motion().ActualMaster, 2);
 }
 
-// GI-10: F geared at 200 mm/s: a BufferMode-1 MoveAbsolute is rejected (N) and the gearing continues; MC_Halt
-// (Deceleration 4000) aborts it: X22 FALSE, FunctionState 0; F stops after 0.05 s and 5.0 mm.
+// spec 07 §8 GI-10: F geared at 200 mm/s: a BufferMode-1 MoveAbsolute is rejected (N) and the gearing
+// continues; MC_Halt (Deceleration 4000) aborts it: X22 FALSE, FunctionState 0; F stops after 0.05 s and 5.0
+// mm.
 TEST(Gearing, GI10HaltEndsGearingBufferedRejected) {
   GearingMachine m;
   leader_at(m, 100.0);
@@ -230,8 +233,8 @@ TEST(Gearing, GI10HaltEndsGearingBufferedRejected) {
   EXPECT_NEAR(m.f().Position - p0, 5.0, 0.25);
 }
 
-// GI-12: disabling the leader does not end the gearing: F follows its emergency ramp offset-exactly;
-// disabling F ends it (CommandAborted).
+// spec 07 §8 GI-12: disabling the leader does not end the gearing: F follows its emergency ramp
+// offset-exactly; disabling F ends it (CommandAborted).
 TEST(Gearing, GI12LeaderDisabledFollowerDisabled) {
   GearingMachine m;
   leader_at(m, 100.0);
@@ -249,8 +252,9 @@ TEST(Gearing, GI12LeaderDisabledFollowerDisabled) {
   EXPECT_TRUE(m.gear.CommandAborted);
 }
 
-// GI-13: F.MaxVelocity 150, locked 2/1 with L at 50 (F at 100): L to 100 -> F 200 without limitation or alarm
-// 501, StatusSynchronizedMotion.StatusWord.X0 while |F.Velocity| > 150, FALSE again with L at 60.
+// spec 07 §8 GI-13: F.MaxVelocity 150, locked 2/1 with L at 50 (F at 100): L to 100 -> F 200 without
+// limitation or alarm 501, StatusSynchronizedMotion.StatusWord.X0 while |F.Velocity| > 150, FALSE again with
+// L at 60.
 TEST(Gearing, GI13NoLimitsInSynchronousTravel) {
   auto f = virtual_linear();
   f.DynamicLimits.MaxVelocity = 150.0;
@@ -271,9 +275,9 @@ TEST(Gearing, GI13NoLimitsInSynchronousTravel) {
   EXPECT_EQ(m.F->read("StatusSynchronizedMotion.StatusWord.X0"), 0.0);
 }
 
-// GI-14: F.MaxVelocity 150, MaxAcceleration 2000; L at 100; GearIn 2/1 with Acceleration 5000: alarm 502, the
-// ramp at 2000; F reaches 150 and stays Synchronizing (no InGear, no 501); L slows to 60 (target 120):
-// InGear.
+// spec 07 §8 GI-14: F.MaxVelocity 150, MaxAcceleration 2000; L at 100; GearIn 2/1 with Acceleration 5000:
+// alarm 502, the ramp at 2000; F reaches 150 and stays Synchronizing (no InGear, no 501); L slows to 60
+// (target 120): InGear.
 TEST(Gearing, GI14LimitsDuringSynchronization) {
   auto f = virtual_linear();
   f.DynamicLimits.MaxVelocity = 150.0;
@@ -299,8 +303,8 @@ TEST(Gearing, GI14LimitsDuringSynchronization) {
   EXPECT_NEAR(m.f().Velocity, 120.0, 1e-9);
 }
 
-// GI-15: L modulo 0..360, F linear, locked 1/1 with L at 350, F at 0: L +20 (across 360 -> 0): F = 20 (not
-// −340).
+// spec 07 §8 GI-15: L modulo 0..360, F linear, locked 1/1 with L at 350, F at 0: L +20 (across 360 -> 0): F =
+// 20 (not −340).
 TEST(Gearing, GI15ModuloLeaderWrap) {
   GearingMachine m(virtual_rotary_modulo(), virtual_linear());
   m.move_rel_L.Distance = 350.0;
@@ -320,8 +324,8 @@ TEST(Gearing, GI15ModuloLeaderWrap) {
   EXPECT_NEAR(m.f().Position - f0, 20.0, 1e-9);
 }
 
-// GI-17: F's software limit 500 with LimitReachedBehavior 1: as a following axis it stops with maximum
-// dynamics (reaction 2) at 533, ErrorWord.X8.
+// spec 07 §8 GI-17: F's software limit 500 with LimitReachedBehavior 1: as a following axis it stops with
+// maximum dynamics (reaction 2) at 533, ErrorWord.X8.
 TEST(Gearing, GI17SoftwareLimitOfAFollower) {
   auto f = virtual_linear();
   f.PositionLimits_SW.Active = true;
@@ -340,8 +344,8 @@ TEST(Gearing, GI17SoftwareLimitOfAFollower) {
   EXPECT_TRUE(m.gear.Error);
 }
 
-// GI-18: the leader reverses during synchronization: alarm 608 (stop with maximum dynamics), the gearing
-// ends.
+// spec 07 §8 GI-18: the leader reverses during synchronization: alarm 608 (stop with maximum dynamics), the
+// gearing ends.
 TEST(Gearing, GI18ReversalDuringSynchronization) {
   GearingMachine m;
   leader_at(m, 100.0);
@@ -359,7 +363,8 @@ TEST(Gearing, GI18ReversalDuringSynchronization) {
   EXPECT_EQ(m.gear.ErrorID, eid::kAbortedByAlarmReaction);
 }
 
-// GP-1's job: MC_GearInPos 1/1, synchronous at L = 200 with F = 50 after 100 of leading value (profile 1).
+// spec 07 §8 GP-1's job: MC_GearInPos 1/1, synchronous at L = 200 with F = 50 after 100 of leading value
+// (profile 1).
 void start_gp1_gear_in_pos(GearingMachine& m) {
   m.gear_pos.MasterSyncPosition = 200.0;
   m.gear_pos.SlaveSyncPosition = 50.0;
@@ -369,9 +374,10 @@ void start_gp1_gear_in_pos(GearingMachine& m) {
   m.run(1);
 }
 
-// GP-1: MC_GearInPos 1/1, MasterSyncPosition 200, SlaveSyncPosition 50, profile 1, MasterStartDistance 100, L
-// at +100 from 0: pending (WaitingFunctionState 2) until L = 100, StartSync / X21 there, InSync / X22 at L =
-// 200 with F = 50.0; F(L = 150) = 9.375 [IMPL quintic]; afterwards F = 50 + (L − 200).
+// spec 07 §8 GP-1: MC_GearInPos 1/1, MasterSyncPosition 200, SlaveSyncPosition 50, profile 1,
+// MasterStartDistance 100, L at +100 from 0: pending (WaitingFunctionState 2) until L = 100, StartSync / X21
+// there, InSync / X22 at L = 200 with F = 50.0; F(L = 150) = 9.375 [IMPL quintic]; afterwards F = 50 + (L −
+// 200).
 TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
   GearingMachine m;
   start_gp1_gear_in_pos(m);
@@ -402,6 +408,7 @@ TEST(Gearing, GP1GearInPosOverALeadingValueDistance) {
 // tolerance keeps the synchronization (InSync at L = 200, F = 50 + (L − 200)); 0.001 more is alarm 608 and
 // the job ends with 16#8001; tolerance 0: any reversal the leader's velocity shows is (GI-18; 0.1 mm back
 // takes 9 cycles at 5,000 mm/s² — a move back that starts and ends within one cycle shows no velocity).
+// spec 07 §1.6, §1.10 (alarm 608) and §8 (GI-18); decision C27.
 TEST(Gearing, ReversalToleranceDuringSynchronizationAtItsEdge) {
   struct Row {
     float tolerance;
@@ -436,8 +443,8 @@ TEST(Gearing, ReversalToleranceDuringSynchronizationAtItsEdge) {
   }
 }
 
-// GP-2: profile 3 (subsequent): MasterSyncPosition 100, SlaveSyncPosition 0, MasterStartDistance 50:
-// StartSync at L = 100, InSync at L = 150, then F = L − 100.
+// spec 07 §8 GP-2: profile 3 (subsequent): MasterSyncPosition 100, SlaveSyncPosition 0, MasterStartDistance
+// 50: StartSync at L = 100, InSync at L = 150, then F = L − 100.
 TEST(Gearing, GP2SubsequentSynchronization) {
   GearingMachine m;
   m.gear_pos.MasterSyncPosition = 100.0;
@@ -457,8 +464,8 @@ TEST(Gearing, GP2SubsequentSynchronization) {
   EXPECT_NEAR(m.f().Position, m.l().Position - 100.0, 1e-6);
 }
 
-// GP-3: a pending GearInPos lets a running MoveVelocity on F continue; an MC_Halt before the start does not
-// abort the pending job (S3 "-"); at the start the Halt is aborted (R10 x C3 = A).
+// spec 07 §8 GP-3: a pending GearInPos lets a running MoveVelocity on F continue; an MC_Halt before the start
+// does not abort the pending job (S3 "-"); at the start the Halt is aborted (R10 x C3 = A).
 TEST(Gearing, GP3PendingLetsRunningJobsContinue) {
   GearingMachine m;
   m.move_F.Velocity = 20.0;
@@ -483,9 +490,9 @@ TEST(Gearing, GP3PendingLetsRunningJobsContinue) {
   EXPECT_TRUE(m.halt_F.CommandAborted);
 }
 
-// GP-4's sequence: MC_GearInPos (profile 3 over 10 from L = 0) in sync with L at 100 mm/s; MC_Home Mode 3 ->
-// 16#80A1 (spec 07 §1.10), the gearing goes on; then MC_GearIn InGear and MC_Home Mode 3 again (what that
-// does, the callers check).
+// spec 07 §8 GP-4's sequence: MC_GearInPos (profile 3 over 10 from L = 0) in sync with L at 100 mm/s; MC_Home
+// Mode 3 -> 16#80A1 (spec 07 §1.10), the gearing goes on; then MC_GearIn InGear and MC_Home Mode 3 again
+// (what that does, the callers check).
 void home_during_gear_in_pos_then_during_gear_in(GearingMachine& m) {
   m.gear_pos.MasterSyncPosition = 0.0;
   m.gear_pos.SyncProfileReference = 3;
@@ -510,9 +517,9 @@ void home_during_gear_in_pos_then_during_gear_in(GearingMachine& m) {
   m.run(2);
 }
 
-// GP-4: MC_Home Mode 3 during an active GearInPos -> 16#80A1, the gearing continues. During a plain GearIn it
-// aborts the gearing — except on a virtual or simulated follower (footnote 1 of §9.19.2), as F is here: there
-// the homing is executed at once and the gearing goes on.
+// spec 07 §8 GP-4: MC_Home Mode 3 during an active GearInPos -> 16#80A1, the gearing continues. During a
+// plain GearIn it aborts the gearing — except on a virtual or simulated follower (footnote 1 of §9.19.2), as
+// F is here: there the homing is executed at once and the gearing goes on.
 TEST(Gearing, GP4HomingAgainstGearing) {
   GearingMachine m;
   home_during_gear_in_pos_then_during_gear_in(m);
@@ -521,9 +528,9 @@ TEST(Gearing, GP4HomingAgainstGearing) {
   EXPECT_TRUE(m.gear.InGear);
 }
 
-// GP-4 on a real follower (spec 07 §1.10 16#80A1; §9.19.2 row "MC_Home Mode 3, 5", footnote 1 only for a
-// virtual or simulated axis): F on a simulated PROFIdrive drive (telegram 3). MC_Home Mode 3 during an active
-// MC_GearInPos -> 16#80A1, the gearing goes on; during a plain MC_GearIn it is accepted and aborts the
+// spec 07 §8 GP-4 on a real follower (spec 07 §1.10 16#80A1; §9.19.2 row "MC_Home Mode 3, 5", footnote 1 only
+// for a virtual or simulated axis): F on a simulated PROFIdrive drive (telegram 3). MC_Home Mode 3 during an
+// active MC_GearInPos -> 16#80A1, the gearing goes on; during a plain MC_GearIn it is accepted and aborts the
 // gearing (S1 "A"), where GP-4's virtual follower kept it.
 TEST(Gearing, GP4HomingAgainstGearingOnADrivenFollower) {
   auto driven = virtual_linear();
@@ -546,9 +553,9 @@ TEST(Gearing, GP4HomingAgainstGearingOnADrivenFollower) {
   EXPECT_FALSE(m.gear.InGear);
 }
 
-// GP-5: GearInPos 2/1 in sync, L at 100 (F at 200 mm/s); GearOut(SlavePosition 1000, profile 0, Deceleration
-// 1000, Jerk 0): WaitingFunctionState 4 until F = 980; StartSyncOut and StatusWord2.X1 at F = 980, the
-// gearing CommandAborted in that cycle; FunctionState 4; Done at F = 1000 after 0.200 s with X7.
+// spec 07 §8 GP-5: GearInPos 2/1 in sync, L at 100 (F at 200 mm/s); GearOut(SlavePosition 1000, profile 0,
+// Deceleration 1000, Jerk 0): WaitingFunctionState 4 until F = 980; StartSyncOut and StatusWord2.X1 at F =
+// 980, the gearing CommandAborted in that cycle; FunctionState 4; Done at F = 1000 after 0.200 s with X7.
 TEST(Gearing, GP5GearOutByDynamicParameters) {
   GearingMachine m;
   m.gear_pos.RatioNumerator = 2;
@@ -705,7 +712,8 @@ TEST(Gearing, GearInPosProfile0StartPositionAlreadyPassed) {
   }
 }
 
-// GP-6: GearOut profile 5 cancels a pending GearInPos (CommandAborted, GearOut Done); GearOut without gearing
+// spec 07 §8 GP-6: GearOut profile 5 cancels a pending GearInPos (CommandAborted, GearOut Done); GearOut
+// without gearing
 // -> 16#8077.
 TEST(Gearing, GP6GearOutCancelAndNoGearing) {
   GearingMachine m;
@@ -764,6 +772,7 @@ TEST(Gearing, GP8GearOutProfile1InsideTheStopTravelLinear) {
 }
 
 // The same with profile 0: braking distance 100² / (2·100) = 50 > 20: 16#8037, the gearing goes on.
+// spec 07 §6.7, §6.1 item 3; decision Y11 (MC_GearOut inside the stop travel).
 TEST(Gearing, GP8GearOutProfile0InsideTheBrakingDistanceLinear) {
   GearingMachine m;
   geared_at_100(m);
@@ -782,6 +791,7 @@ TEST(Gearing, GP8GearOutProfile0InsideTheBrakingDistanceLinear) {
 }
 
 // A stop position behind a linear follower (it moves away from it) is "past it": 16#8037 too.
+// spec 07 §6.7, §6.1 item 3; decision Y11 (MC_GearOut inside the stop travel).
 TEST(Gearing, GP8GearOutStopPositionBehindLinear) {
   GearingMachine m;
   geared_at_100(m);
@@ -828,6 +838,7 @@ TEST(Gearing, GP8GearOutProfile1InsideTheStopTravelModulo) {
 
 // A start seen exactly at the crossing on a modulo follower (the remaining distance a rounding below the stop
 // travel) starts there; it used to move the stop position one revolution further each time and never stop.
+// spec 07 §6.7, §6.1 item 3; decision Y11 (MC_GearOut inside the stop travel).
 TEST(Gearing, GP8GearOutProfile1ModuloStartAtTheCrossing) {
   GearingMachine m(virtual_linear(), virtual_rotary_modulo());
   geared_at_100(m);
@@ -1057,8 +1068,8 @@ TEST(Gearing, GearInPosDynamicParametersAreProfileZerosOnly) {
   EXPECT_EQ(g.ErrorID, eid::kInvalidDeceleration);
 }
 
-// GV-1: MC_GearInVelocity(100/100, ContinuousUpdate, Acceleration 1000), L at 100, F at rest: InSync after
-// 0.100 s, FunctionState 6; numerator 110 -> F.Velocity = 110 on the next cycle, InSync stays,
+// spec 07 §8 GV-1: MC_GearInVelocity(100/100, ContinuousUpdate, Acceleration 1000), L at 100, F at rest:
+// InSync after 0.100 s, FunctionState 6; numerator 110 -> F.Velocity = 110 on the next cycle, InSync stays,
 // ContinuousUpdateActive. GV-2: PositionControlled FALSE -> X28.
 TEST(Gearing, GV1VelocityGearingWithContinuousUpdate) {
   GearingMachine m;
@@ -1167,7 +1178,7 @@ TEST(Gearing, ChainsAreEvaluatedLeadersFirstAndCyclesRejected) {
   }
 }
 
-// EX-1: a leader at a constant actual 100 mm/s with SystemDefinedExtrapolation 0, no filters and
+// spec 07 §8 EX-1: a leader at a constant actual 100 mm/s with SystemDefinedExtrapolation 0, no filters and
 // FollowingAxisDependentTime 0.004 s: ExtrapolatedPosition = FilteredPosition + 0.4.
 TEST(Gearing, EX1ActualValueExtrapolation) {
   auto l = virtual_linear();

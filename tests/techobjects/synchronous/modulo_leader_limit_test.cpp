@@ -56,6 +56,7 @@ struct ModuloMachine {
   instructions::MC_MoveRelative<PositioningAxis> relative;
 };
 
+// spec 01 §8.6 (not a possible leading value: alarm 412 above one modulo length per servo cycle).
 TEST(ModuloVelocityLimit, NotALeadingValue412AboveOneLengthPerServoCycle) {
   ModuloMachine m(false);
   ASSERT_TRUE(m.power.Status);
@@ -74,6 +75,7 @@ TEST(ModuloVelocityLimit, NotALeadingValue412AboveOneLengthPerServoCycle) {
   EXPECT_FALSE(m.power.Status) << "alarm 412 disables the axis";
 }
 
+// spec 01 §8.6, spec 07 §1.4 (a possible leading value: limited to half of it, warning 501).
 TEST(ModuloVelocityLimit, PossibleLeadingValueLimitedWith501) {
   ModuloMachine m(true);
   ASSERT_TRUE(m.power.Status);

@@ -202,7 +202,7 @@ TEST(PhasingOffset, OF1FollowingValueOffsetOverADistance) {
   EXPECT_NEAR(m.sync().FunctionFollowingValue.Position, m.f().Position - 10.0, 1e-9);
 }
 
-// OF-1, reversal: the leading value reverses mid-offset -> Error 16#808C; the part covered stays.
+// spec 07 §8 OF-1, reversal: the leading value reverses mid-offset -> Error 16#808C; the part covered stays.
 TEST(PhasingOffset, OF1ReversalCancelsWithError808C) {
   ShiftMachine m;
   m.geared(1);
@@ -374,7 +374,8 @@ TEST(PhasingOffset, PH2RequirementsAndExclusion) {
   EXPECT_TRUE(m.offset_rel.Busy);
 }
 
-// PH-2 and GV-2: phasing profile 0 only in gearing (16#80A8); nothing during MC_GearInVelocity (16#8079).
+// spec 07 §8 PH-2 and GV-2: phasing profile 0 only in gearing (16#80A8); nothing during MC_GearInVelocity
+// (16#8079).
 TEST(PhasingOffset, PH2ProfileZeroOnlyInGearingNothingInVelocityGearing) {
   techobjects::Cam* cam = nullptr;
   ShiftMachine m([&](techobjects::Runtime& r) {

@@ -12,8 +12,8 @@ using namespace tomc;
 using tomc::testing::GearingMachine;
 namespace eid = techobjects::error_id;
 
-// GI-11: 2/1 locked at rest; MoveSuperimposed(10) on F, later MoveSuperimposed(5) on L: GearIn stays
-// InGear; L ends at 5 and F at 2·5 + 10 = 20.
+// spec 07 §8 GI-11: 2/1 locked at rest; MoveSuperimposed(10) on F, later MoveSuperimposed(5) on L: GearIn
+// stays InGear; L ends at 5 and F at 2·5 + 10 = 20.
 TEST(SuperimposedFollower, GI11OnFollowerAndLeader) {
   GearingMachine m;
   instructions::MC_MoveSuperimposed<techobjects::SynchronousAxis> on_f;

@@ -40,6 +40,7 @@ std::vector<std::string> split(const std::string& row) {
   return cells;
 }
 
+// spec 07 §5.1 (the §9.19.2 matrix), spec 03 §6.2.
 TEST(SyncPriority, MatrixMatchesTheManualCellByCell) {
   for (std::size_t r = 0; r < kSpecRows.size(); ++r) {
     const auto cells = split(kSpecRows[r]);
@@ -54,6 +55,7 @@ TEST(SyncPriority, MatrixMatchesTheManualCellByCell) {
 
 // Footnote 6: superimposed jobs against velocity gearing, and an active GearInPos against it, depend on the
 // follower's position control.
+// spec 07 §5.1, footnote 6.
 TEST(SyncPriority, Footnote6PositionControl) {
   SyncContext pc;
   SyncContext npc;
@@ -66,6 +68,7 @@ TEST(SyncPriority, Footnote6PositionControl) {
 
 // Footnote 7: MC_GearOut affects only gearing jobs; footnote 8: profile 5 only pending jobs; footnote 1:
 // active homing aborts nothing on a virtual or simulated axis.
+// spec 07 §5.1, footnotes 7, 8 and 1.
 TEST(SyncPriority, Footnotes7And8And1) {
   SyncContext other_family;
   other_family.same_family = false;

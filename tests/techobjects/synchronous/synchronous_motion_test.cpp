@@ -81,6 +81,7 @@ TEST(SynchronousMotion, JerkLimitedStartFromSynchronousTravelKeepsTheVelocityLim
 }
 
 // With a jerk limit the acceleration changes by at most jerk·T per cycle and is 0 at the lock.
+// spec 07 §6.3 (synchronization with dynamic parameters, the jerk limit).
 TEST(SynchronousMotion, JerkLimitedSynchronization) {
   MotionState f{};
   double previous_a = 0.0;
@@ -114,6 +115,7 @@ TEST(SynchronousMotion, LeaderDomainBlendGP1) {
 }
 
 // A negative leader direction (signed L) and a moving follower at the start: no velocity step.
+// spec 07 §6.4 (the leader-domain blend); decision Y5.
 TEST(SynchronousMotion, LeaderDomainBlendNegativeDirection) {
   LeaderDomainBlend b;
   const MotionState f{10.0, -30.0, 0.0};

@@ -19,6 +19,7 @@ using techobjects::PositioningAxis;
 using techobjects::SynchronousAxis;
 
 // Leader: a virtual axis; follower: the default linear axis (10 mm/rev, 79 kg, motor 1e-4 kg·m²) on a drive.
+// spec 03 §4.18.1, §4.18.2; spec 02 §7.5.
 TEST(SynchronousTorqueData, GearingFollowerPrecontrolAndTorqueJobs) {
   constexpr double kPi = std::numbers::pi;
   techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});

@@ -144,7 +144,9 @@ struct ProfinetGateway::Impl {
     std::atomic<bool> cyclic{false};
     std::atomic<bool> faulted{false};
     std::atomic<std::uint32_t> alarms{0};
-    std::atomic<std::uint64_t> last_alarm{0};  // the last acknowledged alarm, pack_alarm()
+    std::atomic<std::uint64_t> last_alarm{0};      // the last acknowledged alarm, pack_alarm()
+    std::atomic<std::uint32_t> alarm_timeouts{0};  // ARs the RTA timer ended in the cyclic thread
+    std::atomic<bool> alarm_timeout_high{false};   // the priority of the last one
     std::atomic<std::uint32_t> ars{0};
     std::atomic<float> reference_speed_rpm{0.0f};  // p2000 as read at start-up (0: not read)
     // Cyclic thread only.
@@ -164,7 +166,10 @@ struct ProfinetGateway::Impl {
   std::uint64_t watchdog_us = 0;
   std::vector<std::unique_ptr<Device>> devices;
   pn::RawSocket cyclic_socket;  // the cyclic thread's: input, alarm and output frames
-  pn::RawSocket start_socket;   // the start-up thread's: DCP (both see every frame of EtherType 0x8892)
+  // The start-up thread's: DCP and the starting device's alarms. Its kernel filter drops the cyclic frames,
+  // which would otherwise fill its queue between start-ups and, with several running devices, delay a
+  // starting device's alarm behind them (decision I30).
+  pn::RawSocket start_socket;
   pn::UdpSocket rpc_socket;
 
   dds::LatestValue<SetpointImage> setpoints;
@@ -270,14 +275,34 @@ struct ProfinetGateway::Impl {
       if (!d.cyclic.load(std::memory_order_acquire)) continue;
       if (const std::size_t n = d.controller->next_output_frame(frame); n > 0)
         cyclic_socket.send(std::span(frame).first(n));
-      if (d.controller->watchdog_expired(now)) {
-        d.has_setpoint = d.answered = false;
-        d.faulted.store(false, std::memory_order_relaxed);
-        d.encoder_errors.store(0, std::memory_order_relaxed);
-        d.cyclic.store(false, std::memory_order_release);  // back to the start-up thread: reconnect
-        wake();
+      if (alarm_timers(d, now) || d.controller->watchdog_expired(now)) lose_ar(d);
+    }
+  }
+
+  // The RTA timer of both priorities (IoController::alarm_timer): our unacknowledged AlarmAck again, or the
+  // AR ended after RTARetries resends (true; counted for the status, which names the priority).
+  bool alarm_timers(Device& d, std::uint64_t now) noexcept {
+    for (const bool high : {true, false}) {
+      if (!d.controller->alarm_ack_pending(high)) continue;  // inline: the usual case costs no call
+      std::size_t bytes = 0;
+      const pn::AlarmTimerAction action = d.controller->alarm_timer(high, now, alarm_ack, bytes);
+      if (action == pn::AlarmTimerAction::kResend) cyclic_socket.send(std::span(alarm_ack).first(bytes));
+      if (action == pn::AlarmTimerAction::kAbort) {
+        d.alarm_timeout_high.store(high, std::memory_order_relaxed);
+        d.alarm_timeouts.fetch_add(1, std::memory_order_release);
+        return true;
       }
     }
+    return false;
+  }
+
+  // A lost AR (watchdog or RTA timer) goes back to the start-up thread, which reconnects.
+  void lose_ar(Device& d) noexcept {
+    d.has_setpoint = d.answered = false;
+    d.faulted.store(false, std::memory_order_relaxed);
+    d.encoder_errors.store(0, std::memory_order_relaxed);
+    d.cyclic.store(false, std::memory_order_release);
+    wake();
   }
 
   void receive_frames(std::uint64_t now) noexcept {
@@ -301,7 +326,7 @@ struct ProfinetGateway::Impl {
           std::size_t ack_bytes = 0;
           std::size_t alarm_ack_bytes = 0;
           const std::uint32_t before = d.controller->alarms_acknowledged();
-          if (d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes) > 0) {
+          if (d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes, now) > 0) {
             if (ack_bytes > 0) cyclic_socket.send(std::span(ack).first(ack_bytes));
             if (alarm_ack_bytes > 0) cyclic_socket.send(std::span(alarm_ack).first(alarm_ack_bytes));
             if (d.controller->alarms_acknowledged() != before) {  // a resent notification is reported once
@@ -494,10 +519,11 @@ struct ProfinetGateway::Impl {
           s.state(gw::DEVICE_CONNECTED);
         }
       }
-      if (const std::string alarm = alarm_text(d.alarms.load(std::memory_order_acquire),
-                                               d.last_alarm.load(std::memory_order_relaxed));
-          !alarm.empty())
-        detail = detail.empty() ? alarm : detail + "; " + alarm;
+      for (const std::string& more :
+           {timeout_text(d), alarm_text(d.alarms.load(std::memory_order_acquire),
+                                        d.last_alarm.load(std::memory_order_relaxed))}) {
+        if (!more.empty()) detail = detail.empty() ? more : detail + "; " + more;
+      }
       s.fault(0);
       if (detail.size() > 127) detail.resize(127);
       s.detail(detail);
@@ -554,6 +580,15 @@ struct ProfinetGateway::Impl {
     }
   }
 
+  // The last AR the RTA timer ended in the cyclic thread, "" if none; "(n times)" from the second on.
+  static std::string timeout_text(const Device& d) {
+    const std::uint32_t count = d.alarm_timeouts.load(std::memory_order_acquire);
+    if (count == 0) return {};
+    return detail::describe_alarm_timeout(d.alarm_timeout_high.load(std::memory_order_relaxed),
+                                          d.controller->device()) +
+           (count > 1 ? " (" + std::to_string(count) + " times)" : "");
+  }
+
   void release_all() {
     for (auto& owned : devices) {
       Device& d = *owned;
@@ -575,7 +610,7 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
       dds::SetpointSession(std::chrono::nanoseconds(static_cast<std::int64_t>(config.watchdog * 1e9)));
   if (std::string e = m.cyclic_socket.open(config.interface); !e.empty())
     throw std::runtime_error("profinet.interface: " + e);
-  if (std::string e = m.start_socket.open(config.interface); !e.empty())
+  if (std::string e = m.start_socket.open(config.interface, pn::RawSocketFrames::kDcpAndAlarms); !e.empty())
     throw std::runtime_error("profinet.interface: " + e);
   if (std::string e = m.rpc_socket.open(config.ip, pn::kPnioUdpPort); !e.empty())
     throw std::runtime_error("profinet.ip: " + e + " (is it an address of '" + config.interface + "'?)");
@@ -696,8 +731,10 @@ std::vector<GatewayDeviceStatus> ProfinetGateway::devices() const {
   std::lock_guard<std::mutex> lock(impl_->detail_mutex);
   for (const auto& d : impl_->devices) {
     const std::uint32_t alarms = d->alarms.load(std::memory_order_acquire);
+    const std::string timeout = Impl::timeout_text(*d);
     out.push_back({d->config.name, d->cyclic.load(std::memory_order_acquire), d->ars.load(), alarms,
-                   d->reference_speed_rpm.load(), d->detail,
+                   d->reference_speed_rpm.load(),
+                   d->detail.empty() || timeout.empty() ? d->detail + timeout : d->detail + "; " + timeout,
                    alarm_text(alarms, d->last_alarm.load(std::memory_order_relaxed))});
   }
   return out;

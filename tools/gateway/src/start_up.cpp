@@ -65,21 +65,39 @@ std::vector<std::uint8_t> receive_dcp(pn::RawSocket& raw, std::uint32_t xid) {
 // call before it.
 // Alarms of the starting device (its alarm CR exists from the Connect on): answered here, since the cyclic
 // thread offers frames only to running ARs; a notification left unacknowledged would block the device's
-// next ones (IEC 61158-6-10 RTA, window size 1). Non-blocking: the frames already received.
-void answer_alarms(pn::IoController& controller, pn::RawSocket& raw) {
+// next ones (IEC 61158-6-10 RTA, window size 1). The RTA timer of our AlarmAcks runs here too, until the
+// cyclic thread takes the AR over. Non-blocking: the frames already received.
+struct AlarmTimeout {
+  bool ended = false;  // the RTA timer ended the AR
+  bool high_priority = false;
+};
+
+std::uint64_t now_us() {
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(Clock::now().time_since_epoch()).count());
+}
+
+void answer_alarms(pn::IoController& controller, pn::RawSocket& raw, AlarmTimeout& timeout) {
   std::array<std::uint8_t, 1518> frame{};
   std::array<std::uint8_t, 128> ack{};
   std::array<std::uint8_t, 128> alarm_ack{};
-  for (int k = 0; k < 64; ++k) {  // bounded: the frames of one wait
+  for (int k = 0; k < 64; ++k) {  // bounded: the frames of one wait (the socket's filter lets only DCP and
+                                  // alarm frames in, so running devices' cyclic frames cannot fill it)
     const std::size_t n = raw.receive(frame, 0);
-    if (n == 0) return;
+    if (n == 0) break;
     const auto in = std::span<const std::uint8_t>(frame.data(), n);
     if (pn::classify_frame_id(pn::peek_frame_id(in)) != pn::FrameKind::kAlarm) continue;
     std::size_t ack_bytes = 0;
     std::size_t alarm_ack_bytes = 0;
-    if (controller.on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes) == 0) continue;
+    if (controller.on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes, now_us()) == 0) continue;
     if (ack_bytes > 0) raw.send(std::span(ack).first(ack_bytes));
     if (alarm_ack_bytes > 0) raw.send(std::span(alarm_ack).first(alarm_ack_bytes));
+  }
+  for (const bool high : {true, false}) {
+    std::size_t bytes = 0;
+    const pn::AlarmTimerAction action = controller.alarm_timer(high, now_us(), alarm_ack, bytes);
+    if (action == pn::AlarmTimerAction::kResend) raw.send(std::span(alarm_ack).first(bytes));
+    if (action == pn::AlarmTimerAction::kAbort && !timeout.ended) timeout = {true, high};
   }
 }
 
@@ -143,10 +161,16 @@ std::string check_telegram(pn::IoController& controller, pn::UdpSocket& udp, Tel
 
 }  // namespace
 
-std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp, std::uint32_t& xid,
-                     TelegramCheck* check) {
+namespace {
+
+std::string start_up_steps(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp,
+                           std::uint32_t& xid, TelegramCheck* check, AlarmTimeout& timeout) {
   const std::string& name = controller.device().name_of_station;
   const pn::Ipv4Address& ip = controller.device().ip.address;
+  // What queued while no device was starting is older than this start-up: DCP answers to earlier xids and
+  // alarm notifications of ARs that have ended, which the new AR's fresh alarm channels would take for new
+  // ones and acknowledge (an AlarmAck the device never expects, so the RTA timer would end the new AR).
+  (void)raw.discard_queued(4096);
   const std::uint32_t identify = ++xid;
   raw.send(controller.identify_request(identify));
   const auto found = receive_dcp(raw, identify);
@@ -157,7 +181,7 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     if (receive_dcp(raw, set).empty()) return "DCP Set of the IP suite unanswered by '" + name + "'";
   }
   if (!controller.device_mac()) return "the DCP answer did not name '" + name + "'";
-  const auto alarms = [&] { answer_alarms(controller, raw); };
+  const auto alarms = [&] { answer_alarms(controller, raw, timeout); };
   const auto connect = call(udp, ip, controller.connect_request(), alarms);
   if (connect.empty()) return "no answer to Connect (UDP 34964)";
   if (!controller.on_connect_response(connect)) {
@@ -183,6 +207,7 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
     std::uint16_t port = 0;
     const std::size_t n = udp.receive(ready, 20'000, from, port);
     alarms();
+    if (timeout.ended) break;
     if (n == 0 || from != ip) continue;
     const auto answer = controller.on_application_ready(std::span(ready).first(n));
     if (!answer.empty()) udp.send_to(answer, from, port);
@@ -201,6 +226,26 @@ std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSo
   }
   controller.abort_ar();
   return "no ApplicationReady from '" + name + "'";
+}
+
+}  // namespace
+
+std::string start_up(pn::IoController& controller, pn::RawSocket& raw, pn::UdpSocket& udp, std::uint32_t& xid,
+                     TelegramCheck* check) {
+  AlarmTimeout timeout;
+  std::string problem = start_up_steps(controller, raw, udp, xid, check, timeout);
+  // The timer may end the AR in any wait, even one whose step then succeeded (the parameter read): the AR
+  // is gone, and that is the reason whatever the later steps said.
+  if (!timeout.ended) return problem;
+  controller.abort_ar();
+  return describe_alarm_timeout(timeout.high_priority, controller.device());
+}
+
+std::string describe_alarm_timeout(bool high_priority, const pn::ControllerDeviceConfig& device) {
+  // Short: the DDS status carries 127 characters of detail, and the last alarm follows it.
+  return std::string("RTA timeout: AlarmAck (") + (high_priority ? "high" : "low") + ") resent " +
+         std::to_string(device.rta_retries) + " times every " +
+         std::to_string(device.rta_timeout_factor * 100) + " ms";
 }
 
 std::string describe(const std::vector<pn::ModuleDiff>& diff) {

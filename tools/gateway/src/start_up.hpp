@@ -22,10 +22,14 @@ struct TelegramCheck {
 
 // "" when the AR runs; otherwise one line saying which step failed ("no DCP answer to Identify
 // 'drive-1'", "Connect refused, PNIOStatus 0xDB814004", "p0922 is 105: the drive sends telegram 105, the file
-// says 3"). With `check`, p0922 and p2000 are read once the AR runs, and a p0922 other than the configured
-// telegram releases the AR again.
+// says 3", describe_alarm_timeout() when the RTA timer ended the AR). With `check`, p0922 and p2000 are read
+// once the AR runs, and a p0922 other than the configured telegram releases the AR again.
 std::string start_up(profinet::IoController& controller, profinet::RawSocket& raw, profinet::UdpSocket& udp,
                      std::uint32_t& xid, TelegramCheck* check);
+
+// Why the RTA timer ended an AR (IoController::alarm_timer's kAbort; the AR's PNIOStatus is
+// kAlarmSendTimeoutStatus): "RTA timeout: AlarmAck (high) resent 3 times every 100 ms".
+std::string describe_alarm_timeout(bool high_priority, const profinet::ControllerDeviceConfig& device);
 
 // "slot 1 subslot 2: wrong submodule (ident 0x10002)"; "" when no module differs.
 std::string describe(const std::vector<profinet::ModuleDiff>& diff);

@@ -264,7 +264,7 @@ std::vector<to::PositioningAxis*> load_superimposing_axes(ObjectReader& r,
 
 // "LeadingValueInterconnections": [ {"Leader": "<TO defined before>", "Coupling": "Setpoint" | "ActualValue"
 // | "Delayed", "LeadingValueReversalTolerance": <≥ 0>} ] (spec 07 §1.2, §1.5, §1.6, O-15).
-std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader& r,
+std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader& r, std::string_view follower,
                                                                    std::span<const MachineObject> existing,
                                                                    Problems& problems) {
   std::vector<to::LeadingValueInterconnection> out;
@@ -279,6 +279,7 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
     ObjectReader e((*v)[i], path + "[" + std::to_string(i) + "]", problems);
     if (!e.valid()) continue;
     to::LeadingValueInterconnection c;
+    const MachineObject* leader = nullptr;
     if (const Json* l = e.get("Leader", true)) {
       if (auto name = detail::read_string(*l, e.path_of("Leader"), problems)) {
         const auto it = std::find_if(existing.begin(), existing.end(),
@@ -292,6 +293,7 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
           problems.add(e.path_of("Leader"), "'" + *name + "' is a " + std::string(it->type_name()) +
                                                 ", which cannot be a leading value (spec 07 §1.2)");
         } else if (it->built) {
+          leader = &*it;
           c.object = it->object;
           c.source = const_cast<to::LeadingValueSource*>(it->leading_value_source());
         }
@@ -305,6 +307,15 @@ std::vector<to::LeadingValueInterconnection> load_interconnections(ObjectReader&
                                         to::LeadingValueCoupling::kDelayed};
         c.coupling = kCouplings[static_cast<std::size_t>(*choice)];
       }
+    }
+    // Only an axis keeps the history of its setpoint (decision C26): refused at this key, before the TO's
+    // own refusal at emplace() would become a problem of the follower's whole `config`.
+    if (c.coupling == to::LeadingValueCoupling::kDelayed && leader != nullptr &&
+        leader->positioning_axis == nullptr) {
+      problems.add(e.path_of("Coupling"), "'" + std::string(follower) + "' cannot couple \"Delayed\" to '" +
+                                              leader->name + "', a " + std::string(leader->type_name()) +
+                                              " (only a positioning or synchronous axis can, decision C26)");
+      c.source = nullptr;
     }
     // A tomc extension for the V10 setting (spec 07 §1.6, decision C27), in the leader's length unit.
     double tolerance = 0.0;
@@ -506,7 +517,7 @@ std::optional<MachineObject> load_technology_object(const Json& value, const std
         needs_drive = speed_data.VirtualAxis.Mode != to::kModeOn && speed_data.Simulation.Mode != to::kModeOn;
         break;
       case TechnologyObjectKind::kSynchronousAxis:
-        interconnections = load_interconnections(r, existing, problems);
+        interconnections = load_interconnections(r, entry.name, existing, problems);
         [[fallthrough]];
       case TechnologyObjectKind::kPositioningAxis:
         superimposing_axes = load_superimposing_axes(r, existing, problems);

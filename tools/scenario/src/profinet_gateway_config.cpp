@@ -56,16 +56,6 @@ void read_ipv4(ObjectReader& r, std::string_view key, std::array<std::uint8_t, 4
   }
 }
 
-// A name of station: lower-case labels of letters, digits and '-' separated by '.' (IEC 61158-6-10).
-std::string station_name_problem(const std::string& name) {
-  if (name.empty() || name.size() > kMaxStationName) return "1..240 characters";
-  for (const char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.';
-    if (!ok) return "'" + name + "': only a-z, 0-9, '-' and '.' (DCP names are lower case)";
-  }
-  return {};
-}
-
 void read_modules(const Json& value, const std::string& path, ProfinetDeviceConfig& device,
                   Problems& problems) {
   if (!value.is_array() || value.empty() || value.size() > 64) {
@@ -335,6 +325,16 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
 }
 
 }  // namespace
+
+// A name of station: lower-case labels of letters, digits and '-' separated by '.' (IEC 61158-6-10).
+std::string station_name_problem(const std::string& name) {
+  if (name.empty() || name.size() > kMaxStationName) return "1..240 characters";
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '.';
+    if (!ok) return "'" + name + "': only a-z, 0-9, '-' and '.' (DCP names are lower case)";
+  }
+  return {};
+}
 
 ProfinetTelegramPlace ProfinetDeviceConfig::place(drives::Slot s) const noexcept {
   const std::uint16_t numbers[] = {telegram, supplementary_telegram, encoder_telegram, encoder2_telegram};

@@ -38,7 +38,23 @@ struct ControllerDeviceConfig {
   std::uint16_t data_hold_factor = 3;
   std::uint16_t input_frame_id = kFrameIdRtClass1First;  // proposed; the device may change it
   std::uint16_t output_frame_id = kFrameIdRtClass1First + 1;
+  // The AlarmCRBlock's RTA timer: our alarm DATA is resent after rta_timeout_factor × 100 ms without the
+  // device's acknowledge, at most rta_retries times (IEC 61158-6-10 allows 1..100 and 3..15).
+  std::uint16_t rta_timeout_factor = 1;
+  std::uint16_t rta_retries = 3;
 };
+
+// What the RTA timer of one priority did in this call (IoController::alarm_timer).
+enum class AlarmTimerAction : std::uint8_t {
+  kNone,    // nothing waits for the device, or its timeout has not run out
+  kResend,  // our AlarmAck DATA again, same SendSeqNum (the frame is in the caller's buffer)
+  kAbort,   // RTARetries resends stayed unacknowledged: the AR is ended (kOffline, last_error() says why)
+};
+
+// The PNIOStatus of an AR this controller ended because the device did not acknowledge our alarm DATA:
+// ErrorCode RTA error 0xCF, ErrorDecode PNIO 0x81, ErrorCode1 RTA_ERR_CLS_PROTOCOL 0xFD, ErrorCode2 0x08
+// "AR alarm send.cnf(-)" (IEC 61158-6-10 AR abort reasons; p-net pnet_api.h).
+inline constexpr PnioStatus kAlarmSendTimeoutStatus{0xCF, 0x81, 0xFD, 0x08};
 
 enum class ControllerArState : std::uint8_t {
   kOffline,         // not found yet / AR lost: Identify again
@@ -121,11 +137,22 @@ class IoController {
   //   while the device has not acknowledged it, our AlarmAck again with its SendSeqNum (at most RTARetries
   //   times); neither kept nor counted;
   // - the device's ACK of our AlarmAck (an ACK PDU, or AckSeqNum of its next DATA): 0 frames.
+  // now_us (the caller's cycle clock) starts the RTA timer of an AlarmAck sent.
   std::size_t on_alarm(std::span<const std::uint8_t> frame, std::span<std::uint8_t> ack_out,
                        std::span<std::uint8_t> alarm_ack_out, std::size_t& ack_bytes,
-                       std::size_t& alarm_ack_bytes) noexcept;
+                       std::size_t& alarm_ack_bytes, std::uint64_t now_us) noexcept;
   // True while an AlarmAck of ours waits for the device's ACK (high or low priority).
   bool alarm_ack_pending(bool high_priority) const noexcept { return channel(high_priority).unacknowledged; }
+  // The RTA timer of one priority (APMS, IEC 61158-6-10; as p-net's pf_alarm_apms_timeout on the device's
+  // side), called every cycle with the cycle's clock: while our AlarmAck DATA waits for the device's
+  // acknowledge, RTATimeoutFactor × 100 ms after it was last sent it is sent again (kResend, its bytes in out
+  // and out_bytes), at most RTARetries times counting the resends of on_alarm; one timeout after the last
+  // one, the AR ends (kAbort: kOffline, last_error() kAlarmSendTimeoutStatus; the caller reconnects).
+  // Resends from both causes share the RTARetries budget and restart the timeout.
+  AlarmTimerAction alarm_timer(bool high_priority, std::uint64_t now_us, std::span<std::uint8_t> out,
+                               std::size_t& out_bytes) noexcept;
+  std::uint64_t alarm_timeout_us() const noexcept { return alarm_timeout_us_; }
+  std::uint16_t alarm_retries() const noexcept { return alarm_retries_; }
   const std::optional<AlarmBlock>& last_alarm() const noexcept { return last_alarm_; }
   std::uint32_t alarms_acknowledged() const noexcept { return alarms_acknowledged_; }
 
@@ -146,6 +173,7 @@ class IoController {
     std::size_t alarm_ack_bytes = 0;
     bool unacknowledged = false;
     std::uint16_t resends = 0;
+    std::uint64_t sent_us = 0;  // when our AlarmAck was last sent: the RTA timer runs from here
   };
   AlarmChannel& channel(bool high) noexcept { return alarm_channels_[high ? 1 : 0]; }
   const AlarmChannel& channel(bool high) const noexcept { return alarm_channels_[high ? 1 : 0]; }
@@ -177,6 +205,7 @@ class IoController {
   std::uint64_t watchdog_us_ = 3000;
   std::array<AlarmChannel, 2> alarm_channels_{};  // low, high
   std::uint16_t alarm_retries_ = 3;               // RTARetries of our AlarmCRBlockReq
+  std::uint64_t alarm_timeout_us_ = 100'000;      // its RTATimeoutFactor × 100 ms
   std::optional<AlarmBlock> last_alarm_;
   std::uint32_t alarms_acknowledged_ = 0;
 };

@@ -12,6 +12,16 @@
 
 namespace tomc::profinet {
 
+// Which frames a raw socket takes in: every PROFINET frame, or only the acyclic ones a start-up needs (DCP
+// and RTA alarms) — the running devices' cyclic frames, one per device and cycle, are then dropped by the
+// kernel before they reach the socket's queue.
+enum class RawSocketFrames : std::uint8_t { kAll, kDcpAndAlarms };
+
+// Attaches the classic BPF program of kDcpAndAlarms to any socket whose data start with the Ethernet header
+// (an AF_PACKET socket; a test's AF_UNIX datagram socket): FrameID 0xFC01, 0xFE01 or 0xFEFC..0xFEFF after
+// EtherType 0x8892, with or without a VLAN tag. The error text is empty on success.
+std::string attach_dcp_and_alarm_filter(int fd);
+
 class RawSocket {
  public:
   RawSocket() = default;
@@ -22,7 +32,7 @@ class RawSocket {
   ~RawSocket();
 
   // Opens the socket on interface (e.g. "eth1"); the error text is empty on success.
-  std::string open(const std::string& interface);
+  std::string open(const std::string& interface, RawSocketFrames frames = RawSocketFrames::kAll);
   bool is_open() const noexcept { return fd_ >= 0; }
   const MacAddress& mac() const noexcept { return mac_; }
 
@@ -30,6 +40,9 @@ class RawSocket {
   // One received PROFINET frame into buffer, waiting up to timeout_us; 0 if none arrived. Frames this
   // socket sent itself are not returned.
   std::size_t receive(std::span<std::uint8_t> buffer, int timeout_us) noexcept;
+  // Drops what is queued (at most max_frames frames, so a sender faster than this loop cannot hold it);
+  // returns how many were dropped.
+  std::size_t discard_queued(std::size_t max_frames) noexcept;
 
  private:
   int fd_ = -1;

@@ -117,4 +117,8 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
 void load_profinet_gateway_config_file(const std::filesystem::path& file, ProfinetGatewayConfig& config,
                                        Problems& problems);
 
+// Why `name` is no name of station ("" when it is one): lower-case labels of letters, digits and '-'
+// separated by '.', 1..240 characters (IEC 61158-6-10). The file's check and `tomc gateway --set-name`.
+std::string station_name_problem(const std::string& name);
+
 }  // namespace tomc::scenario
