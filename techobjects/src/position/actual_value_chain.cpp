@@ -277,28 +277,28 @@ ActualValueChain::ActualValueChain(const AxisMechanics& axis, const EncoderMecha
     : modulo_start_(axis.Modulo.StartValue),
       modulo_length_(axis.Modulo.Length),
       servo_cycle_s_(servo_cycle_s),
-      nist_reference_(encoder.System == EncoderSystem::kRotary ? encoder.Parameter.ReferenceSpeed
-                                                               : encoder.Parameter.ReferenceVelocity),
       steps_per_revolution_(encoder.Parameter.StepsPerRevolution),
       fine_xist1_(static_cast<std::uint8_t>(encoder.Parameter.FineResolutionXist1)),
       fine_xist2_(static_cast<std::uint8_t>(encoder.Parameter.FineResolutionXist2)),
       type_(static_cast<std::uint8_t>(encoder.Type)),
+      modulo_enable_(axis.Modulo.Enable),
       nist_velocity_(encoder.VelocityMode == ActualVelocityMode::kProfidriveNist),
       nist_from_drive_(encoder.Nist == NistSource::kDriveTelegram),
       rotary_(encoder.System == EncoderSystem::kRotary),
-      inverse_(encoder.InverseDirection),
-      modulo_enable_(axis.Modulo.Enable) {
+      inverse_(encoder.InverseDirection) {
   auto problem = validate(axis, encoder);
   if (!problem && !positive_finite(servo_cycle_s))
     problem = ConfigProblem{"ServoCycle", "servo cycle time must be > 0"};
   if (problem) {
-    problem_path_ = problem->path.data();  // static strings (validate())
-    problem_message_ = problem->message.data();
+    config_.problem = Problem{problem->path.data(), problem->message.data()};  // static strings (validate())
+    has_problem_ = true;
   } else {
     scaling_ = SetpointScaling(axis, encoder);
     units_per_count_ = units_per_xist1_count(axis, encoder);
     width_ = xist1_width_bits(encoder);
-    range_ = measuring_range_of(encoder);
+    config_.values = Values{encoder.System == EncoderSystem::kRotary ? encoder.Parameter.ReferenceSpeed
+                                                                     : encoder.Parameter.ReferenceVelocity,
+                            measuring_range_of(encoder)};
   }
   power_up(nullptr);
 }
@@ -340,11 +340,11 @@ void ActualValueChain::power_up(const RetainedSensorState* retained) noexcept {
   restored_xist2_counts_ = 0;
   if (retained != nullptr && absolute_type()) {
     if (std::isfinite(retained->AbsEncoderOffset)) offset_ = retained->AbsEncoderOffset;
-    if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
+    if (type() == EncoderType::kCyclicAbsolute && range() != 0) {
       restored_ = true;
       restored_xist2_counts_ =
-          wrapping_add(wrapping_mul(retained->MeasuringRangeCount, static_cast<std::int64_t>(range_)),
-                       static_cast<std::int64_t>(retained->LastAbsoluteValue % range_));
+          wrapping_add(wrapping_mul(retained->MeasuringRangeCount, static_cast<std::int64_t>(range())),
+                       static_cast<std::int64_t>(retained->LastAbsoluteValue % range()));
     }
   }
 }
@@ -368,7 +368,7 @@ void ActualValueChain::restart() noexcept {
 }
 
 void ActualValueChain::update(const EncoderSample& sample) noexcept {
-  if (problem_path_ != nullptr) return;
+  if (has_problem_) return;
   const bool first_sample = !has_sample_;
   const std::int64_t previous_counts = tracker_.counts();
   tracker_.update(sample.xist1);  // first sample: reference only
@@ -377,18 +377,18 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
   bool anchored_now = false;
   if (absolute_type() && sample.xist2_absolute) {
     std::int64_t value = static_cast<std::int64_t>(*sample.xist2_absolute);
-    if (range_ != 0) value %= static_cast<std::int64_t>(range_);
+    if (config_.values.range != 0) value %= static_cast<std::int64_t>(config_.values.range);
     std::int64_t absolute = value;
-    if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
+    if (type() == EncoderType::kCyclicAbsolute && config_.values.range != 0) {
       // Measuring range nearest to the known position: overflow/underflow counting (spec 01 §3.7).
       std::int64_t k = 0;
       if (anchored_ || restored_) {
         const std::int64_t predicted =
             anchored_ ? xist1_to_xist2_counts(tracker_.counts()) : restored_xist2_counts_;
-        const auto r = static_cast<std::int64_t>(range_);
+        const auto r = static_cast<std::int64_t>(config_.values.range);
         k = floor_div(wrapping_add(predicted - value, r / 2), r);
       }
-      absolute = wrapping_add(wrapping_mul(k, static_cast<std::int64_t>(range_)), value);
+      absolute = wrapping_add(wrapping_mul(k, static_cast<std::int64_t>(config_.values.range)), value);
     }
     tracker_.set_counts(xist2_to_xist1_counts(absolute));
     anchored_now = !anchored_;
@@ -405,10 +405,10 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
     if (nist_from_drive_) {
       v = scaling_.load_velocity_from_nist_b(*sample.nist_b);  // motor speed through the mechanics
     } else if (rotary_) {
-      const double rev_per_s = tg::n4_to_speed(*sample.nist_b, nist_reference_) / 60.0;
+      const double rev_per_s = tg::n4_to_speed(*sample.nist_b, config_.values.nist_reference) / 60.0;
       v = rev_per_s * tg::counts_per_revolution(steps_per_revolution_, fine_xist1_) * units_per_count_;
     } else {
-      const double lin = tg::n4_to_speed(*sample.nist_b, nist_reference_);
+      const double lin = tg::n4_to_speed(*sample.nist_b, config_.values.nist_reference);
       v = inverse_ ? -lin : lin;
     }
   }
@@ -428,7 +428,7 @@ void ActualValueChain::update(const EncoderSample& sample) noexcept {
 }
 
 void ActualValueChain::set_position(double value, ModuloCycleRule rule, double home_position) noexcept {
-  if (problem_path_ != nullptr || !std::isfinite(value)) return;
+  if (has_problem_ || !std::isfinite(value)) return;
   const double old_position = position();
   offset_ = value - static_cast<double>(tracker_.counts()) * units_per_count_;
   if (modulo_enable_) {
@@ -457,7 +457,7 @@ void ActualValueChain::set_position(double value, ModuloCycleRule rule, double h
 }
 
 void ActualValueChain::shift_offset(double delta) noexcept {
-  if (problem_path_ != nullptr || !std::isfinite(delta) || delta == 0.0) return;
+  if (has_problem_ || !std::isfinite(delta) || delta == 0.0) return;
   offset_ += delta;
   if (!modulo_enable_) return;
   const std::int64_t k = cycle_index(continuous_position());
@@ -472,16 +472,16 @@ double ActualValueChain::position() const noexcept {
 }
 
 std::int64_t ActualValueChain::measuring_range_count() const noexcept {
-  if (type() != EncoderType::kCyclicAbsolute || range_ == 0) return 0;
-  return floor_div(xist1_to_xist2_counts(tracker_.counts()), static_cast<std::int64_t>(range_));
+  if (type() != EncoderType::kCyclicAbsolute || range() == 0) return 0;
+  return floor_div(xist1_to_xist2_counts(tracker_.counts()), static_cast<std::int64_t>(range()));
 }
 
 RetainedSensorState ActualValueChain::retained_state() const noexcept {
   RetainedSensorState s{};
   s.AbsEncoderOffset = abs_encoder_offset();
-  if (type() == EncoderType::kCyclicAbsolute && range_ != 0) {
+  if (type() == EncoderType::kCyclicAbsolute && range() != 0) {
     if (!anchored_ && restored_) {  // nothing new since the restore: hand the restored values back
-      const auto r = static_cast<std::int64_t>(range_);
+      const auto r = static_cast<std::int64_t>(range());
       s.MeasuringRangeCount = floor_div(restored_xist2_counts_, r);
       s.LastAbsoluteValue = static_cast<std::uint32_t>(restored_xist2_counts_ - s.MeasuringRangeCount * r);
       return s;
@@ -489,7 +489,7 @@ RetainedSensorState ActualValueChain::retained_state() const noexcept {
     const std::int64_t c = xist1_to_xist2_counts(tracker_.counts());
     s.MeasuringRangeCount = measuring_range_count();
     s.LastAbsoluteValue =
-        static_cast<std::uint32_t>(c - s.MeasuringRangeCount * static_cast<std::int64_t>(range_));
+        static_cast<std::uint32_t>(c - s.MeasuringRangeCount * static_cast<std::int64_t>(range()));
   }
   return s;
 }

@@ -223,8 +223,10 @@ void PositioningAxis::advance_superimposed() noexcept {
                                              (forward ? a_max : d_max) - a_base_up,
                                              (forward ? d_max : a_max) + a_base_down,
                                              j_max - j_base,
-                                             j_max + j_base}
-              : SuperimposedMotion::Headroom{inf, inf, inf, inf, inf, inf};
+                                             j_max + j_base,
+                                             a_base_up,
+                                             a_base_down}
+              : SuperimposedMotion::Headroom{inf, inf, inf, inf, inf, inf, 0.0, 0.0};
   if (superimposed_.advance(core_.ipo_cycle_s, headroom)) {
     // MoveSuperimposed: the distance is travelled; Halt: standing (id 0: the braking after a MotionIn
     // setpoint that was not a number).

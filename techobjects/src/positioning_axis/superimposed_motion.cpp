@@ -18,7 +18,7 @@ void SuperimposedMotion::move(JobId id, double distance, const ProfileLimits& li
   job_ = Job::kMove;
   limits_ = limits;
   target_ = state_.position + distance;
-  replan(limits.velocity);
+  replan(limits.velocity, 0.0);
 }
 
 void SuperimposedMotion::halt(JobId id, const ProfileLimits& limits, bool abort_acceleration) noexcept {
@@ -43,9 +43,13 @@ void SuperimposedMotion::plan_halt() noexcept {
 }
 
 // Planned into a temporary and taken over only when the plan succeeds: a running profile is never restarted.
-void SuperimposedMotion::replan(double velocity_limit) noexcept {
+// A velocity headroom below VelocityDiff moves with the base's acceleration towards the limit
+// (`base_approach`): the job's Deceleration counts relative to it, so that the total comes back within the
+// velocity limit however the job's Deceleration compares with the base's acceleration (decision U18).
+void SuperimposedMotion::replan(double velocity_limit, double base_approach) noexcept {
+  ProfileLimits l = limits_;
+  if (velocity_limit < limits_.velocity) l.deceleration += std::max(base_approach, 0.0);
   if (velocity_limit > 0.0) {
-    ProfileLimits l = limits_;
     l.velocity = velocity_limit;
     PositionProfile to_target;
     if (!to_target.plan(state_, target_, l)) return;
@@ -53,7 +57,7 @@ void SuperimposedMotion::replan(double velocity_limit) noexcept {
   } else {
     // No headroom in the direction of travel: the superimposed part stops and waits (as an override of 0 %).
     VelocityProfile stop;
-    if (!stop.plan(state_, 0.0, limits_)) return;
+    if (!stop.plan(state_, 0.0, l)) return;
     profile_ = stop;
   }
   planned_velocity_ = velocity_limit;
@@ -81,6 +85,10 @@ void SuperimposedMotion::end_motion_in() noexcept {
   end_job();
 }
 
+double SuperimposedMotion::approach(const Headroom& headroom) const noexcept {
+  return target_ - state_.position >= 0.0 ? headroom.base_acceleration_up : -headroom.base_acceleration_down;
+}
+
 bool SuperimposedMotion::limit_acceleration(const MotionState& before, double dt,
                                             const Headroom& headroom) noexcept {
   const double low = -std::max(headroom.acceleration_negative, 0.0);
@@ -89,12 +97,28 @@ bool SuperimposedMotion::limit_acceleration(const MotionState& before, double dt
   // MaxJerk; where that range and the acceleration headroom do not meet, the acceleration limit wins.
   const bool step = abort_step_;  // AbortAcceleration's step is the manual's, not limited
   abort_step_ = false;
-  const double rise = step ? high : std::clamp(before.acceleration + headroom.jerk_positive * dt, low, high);
-  const double fall = step ? low : std::clamp(before.acceleration - headroom.jerk_negative * dt, low, high);
+  // A base whose own jerk is above MaxJerk leaves no jerk headroom that way: held (U16's rule), not pushed.
+  const double rise_jerk = std::max(headroom.jerk_positive, 0.0);
+  const double fall_jerk = std::max(headroom.jerk_negative, 0.0);
+  double rise = step ? high : std::clamp(before.acceleration + rise_jerk * dt, low, high);
+  double fall = step ? low : std::clamp(before.acceleration - fall_jerk * dt, low, high);
+  double mean_low = low, mean_high = high;
+  // The total beyond the velocity limit (U18): its acceleration may not point further beyond. The
+  // superimposed part brakes it back with the job's Deceleration relative to the base (as replan() does),
+  // reached as fast as the jerk window lets it, whatever the profile asks for.
+  if (state_.velocity > headroom.velocity_positive) {
+    rise = std::min(rise, std::max(fall, -headroom.base_acceleration_up - limits_.deceleration));
+    mean_high = std::min(mean_high, rise);
+  } else if (state_.velocity < -headroom.velocity_negative) {
+    fall = std::max(fall, std::min(rise, -headroom.base_acceleration_down + limits_.deceleration));
+    mean_low = std::max(mean_low, fall);
+  }
   // The sample and the cycle's mean (its velocity step) both: a profile's acceleration changes within a
   // cycle.
   const double mean = (state_.velocity - before.velocity) / dt;
-  if (state_.acceleration >= fall && state_.acceleration <= rise && mean >= low && mean <= high) return false;
+  if (state_.acceleration >= fall && state_.acceleration <= rise && mean >= mean_low && mean <= mean_high) {
+    return false;
+  }
   const double a = std::clamp(state_.acceleration, fall, rise);
   // No headroom in a direction: the superimposed velocity cannot change that way and is held (U16).
   state_ =
@@ -103,7 +127,7 @@ bool SuperimposedMotion::limit_acceleration(const MotionState& before, double dt
   if (job_ == Job::kHalt) {
     plan_halt();
   } else {
-    replan(planned_velocity_);
+    replan(planned_velocity_, approach(headroom));
   }
   return true;
 }
@@ -118,14 +142,14 @@ bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
   if (job_ == Job::kMotionInAxes) return false;  // follow() took this cycle's setpoint
   if (job_ == Job::kMove) {
     const double direction = target_ - state_.position;
-    const double headroom = direction >= 0.0 ? headroom_positive : headroom_negative;
-    const double allowed = std::clamp(headroom, 0.0, limits_.velocity);
+    const double ahead = direction >= 0.0 ? headroom_positive : headroom_negative;
+    const double allowed = std::clamp(ahead, 0.0, limits_.velocity);
     const double tolerance = 1e-9 * limits_.velocity;
     const bool at_target = !planned_ && state_.position == target_;
     if (!at_target && (allowed < planned_velocity_ - tolerance ||
                        allowed > planned_velocity_ + kRaiseHysteresis * limits_.velocity ||
                        (allowed == limits_.velocity && planned_velocity_ < allowed - tolerance))) {
-      replan(allowed);
+      replan(allowed, approach(headroom));
     }
   }
   if (!planned_) {

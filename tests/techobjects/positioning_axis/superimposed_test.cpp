@@ -10,6 +10,7 @@
 
 #include "positioning_axis_fixture.hpp"
 #include "tomc/instructions/mc_halt_superimposed.hpp"
+#include "tomc/instructions/mc_motion_in.hpp"
 #include "tomc/instructions/mc_move_superimposed.hpp"
 #include "tomc/techobjects/axis/alarms.hpp"
 #include "tomc/techobjects/axis/error_ids.hpp"
@@ -441,6 +442,117 @@ TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
     EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, c.distance, 1e-9);
     EXPECT_NEAR(m.db().Velocity, c.base_to, 1e-9);
   }
+}
+
+// MC_MoveSuperimposed's rising edge with these inputs (distance mm, VelocityDiff mm/s, mm/s², mm/s³).
+void start_move_superimposed(MC_MoveSuperimposed<PositioningAxis>& fb, double distance, double velocity_diff,
+                             double acceleration, double deceleration, double jerk) {
+  fb.Distance = distance;
+  fb.VelocityDiff = velocity_diff;
+  fb.Acceleration = acceleration;
+  fb.Deceleration = deceleration;
+  fb.Jerk = jerk;
+  fb.Execute = true;
+}
+
+// Spec 01 §8.14 / seed 004 §6.7.10.1 (decision U18): the velocity headroom v_limit − v_base shrinks at the
+// base's acceleration; the superimposed job's Deceleration counts relative to it, so the total comes back
+// within the limit even where the job brakes more gently than the base accelerates, and a total beyond the
+// limit never has its acceleration pushed further. MaxVelocity 500 mm/s, limits 5000 mm/s²; base
+// MoveVelocity 0 -> 450 mm/s at 1000 mm/s²; MoveSuperimposed +100 mm at VelocityDiff 100, Acceleration 1000,
+// Deceleration 500, started at 200 mm/s (cruising at 100 from 300): from a total of 500 the base gains
+// 50 mm/s more in 50 ms, which the job's 500 mm/s² alone follows 25 mm/s above the limit (without U18:
+// 525 mm/s, 99 / 105 cycles beyond, 48 / 39 of them with the total's acceleration not taken back). Without
+// jerk and with MaxJerk = job and base jerk = 10^5 mm/s³.
+TEST(MoveSuperimposed, ShrinkingVelocityHeadroomKeepsTheTotalWithinTheLimit) {
+  for (const double jerk : {0.0, 1e5}) {
+    SCOPED_TRACE(jerk);
+    auto data = tomc::testing::linear_axis_data();
+    data.DynamicLimits.MaxVelocity = 500.0;
+    data.DynamicLimits.MaxAcceleration = 5000.0;
+    data.DynamicLimits.MaxDeceleration = 5000.0;
+    data.DynamicLimits.MaxJerk = jerk;
+    SuperimposedMachine m(data);
+    ASSERT_GT(m.enable(), 0);
+    m.move_velocity.Velocity = 450.0;
+    m.move_velocity.Acceleration = 1000.0;
+    m.move_velocity.Jerk = jerk;
+    m.move_velocity.Execute = true;
+    ASSERT_GT(m.run_until([&] { return m.db().Velocity >= 200.0; }, 500), 0);
+    start_move_superimposed(m.move_superimposed, 100.0, 100.0, 1000.0, 500.0, jerk);
+    double fastest = 0.0, acceleration = 0.0;
+    int beyond = 0, pushing = 0;
+    ASSERT_GT(m.run_until(
+                  [&] {
+                    const double v = m.db().Velocity, a = m.db().Acceleration;
+                    fastest = std::max(fastest, v);
+                    if (v > 500.0 + 1e-9) {
+                      ++beyond;
+                      if (a > 0.0 && a >= acceleration) ++pushing;
+                    }
+                    acceleration = a;
+                    return m.move_superimposed.Done;
+                  },
+                  2000),
+              0);
+    EXPECT_EQ(pushing, 0);
+    if (jerk == 0.0) {
+      EXPECT_NEAR(fastest, 500.0, 1e-6);  // the limit, reached and never exceeded
+      EXPECT_EQ(beyond, 0);
+    } else {
+      // U4's jerk overshoot, a0²/(2j) = 1000²/(2·10^5) = 5 mm/s at most (measured 3.5); back within the
+      // limit after the 10 ms jerk phase, 3.5/500 s and the 10 ms out of it, 27 cycles (measured 21).
+      EXPECT_LE(fastest, 505.0);
+      EXPECT_LE(beyond, 27);
+    }
+    EXPECT_NEAR(m.db().StatusPositioning.SuperimposedDistance, 100.0, 1e-9);
+    EXPECT_NEAR(m.db().Velocity, 450.0, 1e-9);
+  }
+}
+
+// Seed 004 §6.7.10.1 with MaxJerk (decision U17, its negative headroom): a base whose own jerk is above
+// MaxJerk leaves the superimposed acceleration where it is; it does not push it the other way to make up for
+// the base. MaxJerk 10^5 mm/s³, limits 1000 mm/s² and 1000 mm/s. The base is MC_MotionInVelocity (no
+// profile, no limits, spec 03 §4.17.1): it steps its acceleration 0 -> 500 mm/s² (5·10^5 mm/s³), ramps 0 ->
+// 100 mm/s in 200 cycles and steps back to 0. MC_MoveSuperimposed (VelocityDiff 50, 1000 mm/s², Jerk 10^5)
+// cruises at 50 mm/s meanwhile, far inside every headroom: its velocity and acceleration stay 50 and 0 in
+// every cycle (without the rule the window (MaxJerk ∓ j_base)·T pushed it by ∓400 mm/s² in the two step
+// cycles); the total's jerk is the base's own, 5·10^5, in those two cycles only.
+TEST(MoveSuperimposed, BaseJerkAboveMaxJerkDoesNotPushTheSuperimposedPart) {
+  auto data = thousand_limits_data();
+  data.DynamicLimits.MaxJerk = 1e5;
+  SuperimposedMachine m(data);
+  tomc::instructions::MC_MotionInVelocity<PositioningAxis> base;
+  m.user = [&] {
+    m.move_superimposed2(*m.axis);
+    base(*m.axis);
+  };
+  ASSERT_GT(m.enable(), 0);
+  base.Enable = true;
+  m.run(2);
+  ASSERT_TRUE(base.Busy);
+  start_move_superimposed(m.move_superimposed, 100.0, 50.0, 1000.0, 1000.0, 1e5);
+  const auto& sup = m.axis->superimposed().state();
+  ASSERT_GT(m.run_until([&] { return sup.velocity == 50.0 && sup.acceleration == 0.0; }, 200), 0);
+  m.run(5);
+  double acceleration = m.db().Acceleration, sharpest = 0.0, furthest = 0.0;
+  int steps = 0;  // cycles whose total jerk is above MaxJerk
+  for (int cycle = 0; cycle < 260; ++cycle) {
+    const bool ramping = cycle < 200;
+    base.Acceleration = ramping ? 500.0 : 0.0;
+    base.Velocity = ramping ? 500.0 * 0.001 * (cycle + 1) : 100.0;
+    m.run(1);
+    furthest = std::max({furthest, std::fabs(sup.velocity - 50.0), std::fabs(sup.acceleration)});
+    const double jerk = std::fabs(m.db().Acceleration - acceleration) / 0.001;
+    sharpest = std::max(sharpest, jerk);
+    if (jerk > 1e5 * (1.0 + 1e-9)) ++steps;
+    acceleration = m.db().Acceleration;
+  }
+  EXPECT_EQ(furthest, 0.0);
+  EXPECT_NEAR(sharpest, 5e5, 1e-3);  // the base's own steps
+  EXPECT_EQ(steps, 2);
+  EXPECT_TRUE(m.move_superimposed.Busy);
+  EXPECT_NEAR(m.db().Velocity, 150.0, 1e-9);
 }
 
 // Seed 004 §6.7.10.1 "the total motion is limited to the configured dynamic limits", for MC_HaltSuperimposed

@@ -226,8 +226,8 @@ class ActualValueChain {
   ActualValueChain(const AxisMechanics& axis, const EncoderMechanics& encoder, double servo_cycle_s) noexcept;
 
   std::optional<ConfigProblem> config_problem() const noexcept {
-    if (problem_path_ == nullptr) return std::nullopt;
-    return ConfigProblem{problem_path_, problem_message_};
+    if (!has_problem_) return std::nullopt;
+    return ConfigProblem{config_.problem.path, config_.problem.message};
   }
 
   // CPU power-up: incremental encoder at 0, ActualModuloCycle 0; absolute encoders wait for Gx_XIST2 and take
@@ -271,8 +271,8 @@ class ActualValueChain {
   std::int64_t encoder_counts() const noexcept { return tracker_.counts(); }  // continuous, Gx_XIST1 units
   double offset() const noexcept { return offset_; }  // homing offset / AbsEncoderOffset
   double abs_encoder_offset() const noexcept { return absolute_type() ? offset_ : 0.0; }
-  std::int64_t measuring_range_count() const noexcept;               // cyclic absolute; 0 otherwise
-  std::uint64_t measuring_range() const noexcept { return range_; }  // Gx_XIST2 counts; 0 incremental
+  std::int64_t measuring_range_count() const noexcept;                // cyclic absolute; 0 otherwise
+  std::uint64_t measuring_range() const noexcept { return range(); }  // Gx_XIST2 counts; 0 incremental
   RetainedSensorState retained_state() const noexcept;
 
   double units_per_count() const noexcept { return units_per_count_; }
@@ -286,20 +286,31 @@ class ActualValueChain {
   void add_cycles(std::int64_t delta) noexcept;
 
   EncoderType type() const noexcept { return static_cast<EncoderType>(type_); }
+  // The absolute measuring range in Gx_XIST2 counts (0: incremental, linear, or a configuration problem).
+  std::uint64_t range() const noexcept { return has_problem_ ? 0 : config_.values.range; }
 
   // Of the axis mechanics only the modulo setting is needed after construction (decision M5), of Sensor[n]
-  // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16); the first configuration
-  // problem is kept as its two static strings (nullptr: none). One-byte members last, without padding.
+  // only what the cycle reads (decision M6: 88 bytes of EncoderMechanics -> 16). The first configuration
+  // problem is kept as its two static strings in the storage of two values only update() reads, which a
+  // chain with a problem never runs (decision M11). One-byte members last, the flags as bits (M11).
+  struct Values {
+    double nist_reference;  // NIST_B of telegram 83: Parameter.ReferenceSpeed (rotary) / ReferenceVelocity
+    std::uint64_t range;    // absolute measuring range in Gx_XIST2 counts
+  };
+  struct Problem {
+    const char* path;
+    const char* message;
+  };
+  union Config {
+    Values values;    // !has_problem_
+    Problem problem;  // has_problem_
+  };
   SetpointScaling scaling_{};
-  const char* problem_path_ = nullptr;
-  const char* problem_message_ = nullptr;
+  Config config_{Values{0.0, 0}};
   double modulo_start_ = 0.0;     // Modulo.StartValue
   double modulo_length_ = 360.0;  // Modulo.Length
   double servo_cycle_s_ = 0.0;
   double units_per_count_ = 0.0;
-  double nist_reference_ =
-      0.0;                   // NIST_B of telegram 83: Parameter.ReferenceSpeed (rotary) / ReferenceVelocity
-  std::uint64_t range_ = 0;  // absolute measuring range in Gx_XIST2 counts
 
   // state
   telegrams::IncrementalCount tracker_{};  // continuous position in Gx_XIST1 counts
@@ -313,16 +324,17 @@ class ActualValueChain {
   std::uint8_t fine_xist1_ = 0;             // Parameter.FineResolutionXist1 (0 ... 31)
   std::uint8_t fine_xist2_ = 0;             // Parameter.FineResolutionXist2 (0 ... 31)
   std::uint8_t type_ = 0;                   // EncoderType
-  bool nist_velocity_ = false;              // VelocityMode = kProfidriveNist
-  bool nist_from_drive_ = true;             // Nist = kDriveTelegram
-  bool rotary_ = true;                      // System = kRotary
-  bool inverse_ = false;                    // InverseDirection
-  bool modulo_enable_ = false;              // Modulo.Enable
   std::uint8_t width_ = 32;
   bool has_sample_ = false;
   bool anchored_ = false;
-  bool derive_cycle_on_anchor_ = true;  // absolute power-up: ActualModuloCycle from the absolute value
-  bool restored_ = false;               // retained cyclic state present for the first anchor
+  bool modulo_enable_ = false;              // Modulo.Enable (a byte: read several times a cycle)
+  bool nist_velocity_ : 1 = false;          // VelocityMode = kProfidriveNist
+  bool nist_from_drive_ : 1 = true;         // Nist = kDriveTelegram
+  bool rotary_ : 1 = true;                  // System = kRotary
+  bool inverse_ : 1 = false;                // InverseDirection
+  bool derive_cycle_on_anchor_ : 1 = true;  // absolute power-up: ActualModuloCycle from the absolute value
+  bool restored_ : 1 = false;               // retained cyclic state present for the first anchor
+  bool has_problem_ : 1 = false;            // config_ holds the problem
 };
 
 }  // namespace tomc::techobjects

@@ -13,7 +13,8 @@
 // the dynamic limits"): a move's or halt's superimposed acceleration stays within what the base leaves of
 // MaxAcceleration / MaxDeceleration in each direction, and its change per cycle within what the base's jerk
 // leaves of MaxJerk; where the profile asks for more, the cycle takes the headroom and the profile is
-// replanned from that state (decisions U4, U16, U17).
+// replanned from that state (decisions U4, U16, U17). A base jerk above MaxJerk holds the superimposed
+// acceleration rather than pushing it; a total beyond the velocity limit is braked back (U18).
 //
 // MC_MotionInSuperimposed and MC_MotionInSuperimposedAxes (spec 03 §4.17.3–4.17.4, seed 004 §6.14.3) set the
 // superimposed part directly: no profile, no limits; the distance they give is the absolute value of the
@@ -65,7 +66,9 @@ class SuperimposedMotion {
 
   // What the base motion leaves of the dynamic limits in this cycle, in each direction (+inf: no limit, e.g.
   // a following axis, spec 01 §8.14). A value <= 0 leaves nothing in that direction. The jerk: how fast the
-  // superimposed acceleration may rise / fall in this cycle, MaxJerk ∓ the base's jerk (decision U17).
+  // superimposed acceleration may rise / fall in this cycle, MaxJerk ∓ the base's jerk (decision U17; a
+  // negative value holds the acceleration, U18). The base's acceleration, the larger and the smaller of its
+  // sample and its cycle mean: the rate at which the velocity headroom moves (U18).
   struct Headroom {
     double velocity_positive;
     double velocity_negative;
@@ -73,6 +76,8 @@ class SuperimposedMotion {
     double acceleration_negative;
     double jerk_positive;
     double jerk_negative;
+    double base_acceleration_up;
+    double base_acceleration_down;
   };
   // One interpolator cycle. Returns true in the cycle the job's motion is complete (the job itself is ended
   // by the caller: end_job()).
@@ -91,7 +96,9 @@ class SuperimposedMotion {
   void reset_distance() noexcept { folded_distance_ = 0.0; }
 
  private:
-  void replan(double velocity_limit) noexcept;
+  void replan(double velocity_limit, double base_approach) noexcept;
+  // kMove: the base's acceleration towards the velocity limit in the direction of travel (U18).
+  double approach(const Headroom& headroom) const noexcept;
   void plan_halt() noexcept;  // kHalt: braking to standstill from the present state with the job's limits
   // kMove, kHalt: the acceleration of the cycle's sample (its last one, the step to the end, included)
   // beyond the acceleration or jerk headroom is cut to it (the state integrated from `before` with the cut
