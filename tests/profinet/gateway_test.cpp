@@ -491,12 +491,11 @@ TEST(GatewayConfig, TheEncoderErrorBitsAreBit15OfEachEncoderStatusWordInTheByteO
   EXPECT_TRUE(speed_only.encoder_error_bits().empty());
 }
 
-TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
-  const auto file =
-      std::filesystem::temp_directory_path() / ("tomc17-bad-" + std::to_string(::getpid()) + ".json");
-  std::ofstream(file) << R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
-    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.0.0.256", "telegram": 3 } ] })";
-  const std::string command = std::string(TOMC_BINARY) + " gateway --config " + file.string() + " 2>&1";
+namespace {
+
+// `tomc <arguments>` with its standard error joined to its output: the exit status and what it printed.
+std::pair<int, std::string> run_tomc(const std::string& arguments) {
+  const std::string command = std::string(TOMC_BINARY) + " " + arguments + " 2>&1";
   std::string output;
   int status = -1;
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
@@ -505,9 +504,41 @@ TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
       output += buffer;
     status = ::pclose(pipe);
   }
+  return {WEXITSTATUS(status), output};
+}
+
+}  // namespace
+
+TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
+  const auto file =
+      std::filesystem::temp_directory_path() / ("tomc17-bad-" + std::to_string(::getpid()) + ".json");
+  std::ofstream(file) << R"({ "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "axis1", "name_of_station": "drive-1", "ip": "10.0.0.256", "telegram": 3 } ] })";
+  const auto [status, output] = run_tomc("gateway --config " + file.string());
   std::filesystem::remove(file);
-  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_EQ(status, 2);
   EXPECT_NE(output.find("devices[0].ip: '10.0.0.256' is not an IPv4 address"), std::string::npos) << output;
+}
+
+// Decision I32: the commissioning options are checked before any socket is opened; an option that does not
+// go with the command is refused with a usage error (exit 2), not ignored (review of stop 32: --wait-ms was
+// accepted with --set-name and had no effect).
+TEST(GatewayConfig, CommissioningOptionsThatDoNotGoTogetherAreRefused) {
+  const struct {
+    const char* options;
+    const char* message;
+  } cases[] = {
+      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface lo --wait-ms 200",
+       "--wait-ms goes with --identify"},
+      {"--identify --interface lo --mac 02:00:00:00:00:01", "--mac and --temporary go with --set-name"},
+      {"--identify", "missing --interface IF"},
+      {"--set-name drive-1 --interface lo", "--set-name needs --mac MAC"},
+  };
+  for (const auto& c : cases) {
+    const auto [status, output] = run_tomc(std::string("gateway ") + c.options);
+    EXPECT_EQ(status, 2) << c.options << ": " << output;
+    EXPECT_NE(output.find(c.message), std::string::npos) << c.options << ": " << output;
+  }
 }
 
 // ---- end to end in network namespaces ----
@@ -1052,6 +1083,15 @@ TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
   constexpr int kCycles = 500;
   const Json doc = velocity_scenario(kDrives, kCycles);
   std::string failure;
+  // The frames each device took before tomc's lock-step cycles, once every AR exchanges (10 s at most).
+  for (int i = 0; i < 1000; ++i) {
+    if (std::all_of(drives.begin(), drives.end(), [](const auto& d) { return d->output_frames() > 0; }))
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  std::vector<int> frames_before;
+  for (const auto& d : drives)
+    frames_before.push_back(d->output_frames());
   const auto rows = run(
       doc, hosts.first, [](int, const std::vector<double>&) {}, failure);
   ASSERT_EQ(failure, "") << gateway.log();
@@ -1067,7 +1107,9 @@ TEST(GatewayNetns, FourDrivesAtOneMillisecondThroughOneGateway) {
         << drives[static_cast<std::size_t>(k)]->ar_ends();
     // Each lock-step cycle waits for an input frame sent after its setpoint's output frame (docs/gateway.md
     // §4).
-    EXPECT_GE(drives[static_cast<std::size_t>(k)]->output_frames(), kCycles);
+    EXPECT_GE(
+        drives[static_cast<std::size_t>(k)]->output_frames() - frames_before[static_cast<std::size_t>(k)],
+        kCycles);
     std::printf("axis%d: longest output gap %llu us, input gap %llu us, loop gap %llu us at %llu ms; %s\n",
                 k + 1,
                 static_cast<unsigned long long>(drives[static_cast<std::size_t>(k)]->max_output_gap_us()),
@@ -1222,7 +1264,8 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   DeviceOptions silent;
   silent.acknowledge_alarm_acks = false;
   DeviceHost device(hosts.second, silent);
-  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  // Data hold 100 ms (I7): a machine pause of 20–34 ms must not end the AR before the RTA timer does.
+  GatewayHost gateway(hosts, one_device(kGsdmlModules), 100);
   const DdsObserver observer(hosts.first);
   for (int i = 0; i < 500 && device.output_frames() == 0; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -1233,8 +1276,10 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(device.ars(), 2) << device.ar_ends() << gateway.log();
   EXPECT_EQ(device.alarm_acks(), 1);
-  EXPECT_EQ(device.alarm_ack_frames(), 4);          // sent, then RTARetries resends
-  EXPECT_GE(device.alarm_ack_span_us(), 295'000u);  // three timeouts of 100 ms (less the frames' own delays)
+  EXPECT_EQ(device.alarm_ack_frames(), 4);  // sent, then RTARetries resends
+  // Three timeouts of 100 ms, timed by the gateway's cycle clock; measured where the device reads them, so a
+  // pause of the machine before it reads the first shortens the span (the CI's VM pauses up to 34 ms).
+  EXPECT_GE(device.alarm_ack_span_us(), 250'000u);
   const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
     return s.device.state == "connected" && s.device.detail.find("RTA timeout") != std::string::npos;
   });

@@ -39,8 +39,8 @@ constexpr std::string_view kGatewayUsage =
 
 // --identify and --set-name (decision I32).
 int commissioning_command(const std::string& interface, const std::optional<std::string>& name,
-                          const std::optional<std::string>& mac_text, bool permanent, int wait_ms,
-                          std::ostream& out) {
+                          const std::optional<std::string>& mac_text, bool permanent,
+                          std::optional<int> wait_ms_given, std::ostream& out) {
   if (interface.empty()) throw UsageError("gateway: missing --interface IF (try: tomc gateway --help)");
   std::optional<profinet::MacAddress> mac;
   if (name) {
@@ -52,6 +52,9 @@ int commissioning_command(const std::string& interface, const std::optional<std:
   } else if (mac_text || !permanent) {
     throw UsageError("gateway: --mac and --temporary go with --set-name");
   }
+  if (name && wait_ms_given)
+    throw UsageError("gateway: --wait-ms goes with --identify (--set-name waits 500 ms)");
+  const int wait_ms = wait_ms_given.value_or(1000);
   if (wait_ms < 10 || wait_ms > 60'000) throw UsageError("gateway: --wait-ms out of range 10..60000");
   try {
     if (!name) {
@@ -118,8 +121,7 @@ int gateway_command(std::span<const std::string_view> args, std::ostream& out) {
   if (static_cast<int>(file.has_value()) + static_cast<int>(identify) + static_cast<int>(name.has_value()) >
       1)
     throw UsageError("gateway: --config, --identify and --set-name exclude each other");
-  if (identify || name)
-    return commissioning_command(interface, name, mac, permanent, wait_ms.value_or(1000), out);
+  if (identify || name) return commissioning_command(interface, name, mac, permanent, wait_ms, out);
   if (!interface.empty() || mac || !permanent || wait_ms)
     throw UsageError(
         "gateway: --interface, --mac, --temporary and --wait-ms go with --identify or --set-name");
