@@ -32,28 +32,6 @@ std::string_view to_string(DriveState state) noexcept {
   return "?";
 }
 
-std::uint16_t stw1_for(DriveCommand command) noexcept {
-  switch (command) {
-    case DriveCommand::kIdle:
-      return 0x047E;
-    case DriveCommand::kSwitchOnAndRun:
-      return 0x047F;
-    case DriveCommand::kNormalStop:
-      return 0x047E;
-    case DriveCommand::kQuickStop:
-      return 0x047B;
-    case DriveCommand::kCoastStop:
-      return 0x047C;
-    case DriveCommand::kPulseInhibit:
-      return 0x0477;
-    case DriveCommand::kAcknowledgeFault:
-      return 0x04FE;
-    case DriveCommand::kNoPlcControl:
-      return 0x0000;
-  }
-  return 0x047E;
-}
-
 DriveState next_drive_state(DriveState state, std::uint16_t stw1, bool standstill) noexcept {
   const bool on = bit(stw1, 0);
   const bool no_off2 = bit(stw1, 1);

@@ -3,19 +3,6 @@
 
 namespace tomc::telegrams {
 
-std::uint8_t advance_sign_of_life(std::uint8_t current, std::uint8_t step) noexcept {
-  // Values 1..15 form a ring of 15; 0 is outside it ("not started" -> the first step lands on `step`).
-  // Subtraction instead of % keeps this a handful of instructions; step and current are at most 15.
-  unsigned next = (current & 0x0Fu) + (step < 15u ? step : step % 15u);  // no division in the usual case
-  if (next > 15u) next -= 15u;
-  return static_cast<std::uint8_t>(next == 0 ? 15u : next);
-}
-
-std::uint8_t SignOfLifeGenerator::next() noexcept {
-  current_ = current_ == 0 ? start_ : advance_sign_of_life(current_);
-  return current_;
-}
-
 void SignOfLifeGenerator::reset(std::uint8_t start) noexcept {
   start_ = (start == 0 || start > 15) ? 1 : start;
   current_ = 0;

@@ -189,8 +189,7 @@ ProfileLimits AxisCore::default_ramp(const TO_Struct_DynamicDefaults& d, Dynamic
 // ---------------------------------------------------------------------------------------------------------
 // Alarm reactions (spec 02 §1, seed §6.9.4)
 
-ReactionChange AxisCore::reaction_change() noexcept {
-  if (reaction_in_force == AlarmReaction::kNone && alarms.alarms().empty()) return ReactionChange::kNone;
+ReactionChange AxisCore::take_reaction() noexcept {
   const AlarmReaction r = alarms.strongest_reaction();
   if (r == reaction_in_force) return ReactionChange::kNone;
   const bool escalation = reaction_rank(r) > reaction_rank(reaction_in_force);
@@ -307,7 +306,7 @@ tg::DriveRequest AxisCore::drive_request(std::int32_t remove_enable_reaction) co
 // ---------------------------------------------------------------------------------------------------------
 // The power phase (spec 01 §6, spec 02 §3.1)
 
-PowerEvent AxisCore::update_power_phase(bool ready) noexcept {
+PowerEvent AxisCore::change_power_phase(bool ready) noexcept {
   if (phase == PowerPhase::kDisabled && enable && !enable_removed()) {
     phase = PowerPhase::kEnabling;
     enabling_since_ = cycle;
@@ -385,21 +384,8 @@ void AxisCore::restart() noexcept {
   torque.stw2_fixed_stop = false;  // the restarted connection cleared the STW bits; set again if active
 }
 
-void AxisCore::update_words(std::uint32_t& status_word, std::uint32_t& status_word2,
-                            std::uint32_t& error_word, std::uint32_t& warning_word,
-                            TO_Struct_ErrorDetail& detail, bool simulation) const noexcept {
-  assign(status_word, StatusWordBit::kEnable, phase == PowerPhase::kEnabled && !enable_removed());
-  const bool pending = !alarms.alarms().empty();
-  assign(status_word, StatusWordBit::kError, pending && alarms.any_error());
-  assign(status_word, StatusWordBit::kControlPanelActive, control.held());
-  assign(status_word, StatusWordBit::kTorqueLimitingCommand, torque.active);
-  assign(status_word, StatusWordBit::kInLimitation, in_limitation);
-  assign(status_word, StatusWordBit::kAxisSimulation, simulation);
-  assign(status_word2, StatusWord2Bit::kStopCommand, stop.id != 0);
-  if (!pending) {  // the usual cycle: nothing to look up
-    detail = TO_Struct_ErrorDetail{};
-    return;
-  }
+void AxisCore::alarm_status(std::uint32_t& error_word, std::uint32_t& warning_word,
+                            TO_Struct_ErrorDetail& detail) const noexcept {
   alarm_words(alarms.alarms(), error_word, warning_word);
   const PendingAlarm* top = alarms.error_detail();
   detail.Number = top == nullptr ? 0 : top->number;

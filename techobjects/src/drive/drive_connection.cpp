@@ -71,10 +71,6 @@ void DriveConnection::acknowledge() noexcept {
   slave_monitor_.reset();
 }
 
-bool DriveConnection::in_operation() const noexcept {
-  return communication_ok() && status_.state == tg::DriveState::kS4Operation;
-}
-
 void DriveConnection::read() noexcept {
   if (device_ == nullptr) return;
   bool fresh = device_->fresh;

@@ -258,15 +258,6 @@ SetpointScaling::SetpointScaling(const AxisMechanics& axis, const EncoderMechani
   counts_per_unit_ = upc != 0.0 ? 1.0 / upc : 0.0;
 }
 
-double SetpointScaling::motor_speed(double load_velocity) const noexcept {
-  return direction_ * load_velocity * motor_rev_per_unit_ * 60.0;
-}
-
-double SetpointScaling::load_velocity(double motor_speed_per_min) const noexcept {
-  if (motor_rev_per_unit_ == 0.0) return 0.0;
-  return direction_ * motor_speed_per_min / (60.0 * motor_rev_per_unit_);
-}
-
 std::int32_t SetpointScaling::nsoll_b(double load_velocity_value) const noexcept {
   return tg::speed_to_n4(motor_speed(load_velocity_value), reference_speed_);
 }
@@ -472,10 +463,6 @@ void ActualValueChain::shift_offset(double delta) noexcept {
   const std::int64_t k = cycle_index(continuous_position());
   add_cycles(k - cycle_index_);
   cycle_index_ = k;
-}
-
-double ActualValueChain::continuous_position() const noexcept {
-  return static_cast<double>(tracker_.counts()) * units_per_count_ + offset_;
 }
 
 double ActualValueChain::position() const noexcept {

@@ -244,10 +244,6 @@ void PositioningAxis::configure_monitoring() noexcept {
 // Helpers
 
 // spec 01 §8.5: v_eff = min(v_cmd · Override, v_limit) — the override applies before the limit clamp.
-double PositioningAxis::positioning_velocity(const Motion& motion) const noexcept {
-  return std::min(motion.command_velocity * override_factor(), velocity_limit());
-}
-
 bool PositioningAxis::homed() const noexcept {
   return homed_;
 }
@@ -269,11 +265,6 @@ std::optional<std::uint16_t> PositioningAxis::resolve_dynamics(double velocity, 
     out.velocity = leader_limit;
   }
   return error;
-}
-
-double PositioningAxis::modulo_leader_velocity_limit() const noexcept {
-  if (!possible_leading_value_ || !modulo()) return std::numeric_limits<double>::infinity();
-  return db_.Modulo.Length / (2.0 * servo_cycle_s_);
 }
 
 std::array<RunningJob, 5> PositioningAxis::running_jobs(std::size_t& n) const noexcept {

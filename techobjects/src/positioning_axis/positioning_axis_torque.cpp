@@ -49,12 +49,6 @@ TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs&
   return s;
 }
 
-bool PositioningAxis::position_monitorings_suspended() const noexcept {
-  return (core_.torque.active || core_.torque_data.range_active()) &&
-         db_.TorqueLimiting.PositionBasedMonitorings ==
-             static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
-}
-
 TorqueDataConditions PositioningAxis::torque_data_conditions() const noexcept {
   const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
   return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,

@@ -64,7 +64,28 @@ enum class DriveCommand : std::uint8_t {
   kAcknowledgeFault,  // 0x04FE for one cycle (bit 7 edge), then kIdle
   kNoPlcControl,      // 0x0000: drive ignores the process data
 };
-std::uint16_t stw1_for(DriveCommand command) noexcept;
+// Inline: the sequencer's constant commands fold into their words.
+constexpr std::uint16_t stw1_for(DriveCommand command) noexcept {
+  switch (command) {
+    case DriveCommand::kIdle:
+      return 0x047E;
+    case DriveCommand::kSwitchOnAndRun:
+      return 0x047F;
+    case DriveCommand::kNormalStop:
+      return 0x047E;
+    case DriveCommand::kQuickStop:
+      return 0x047B;
+    case DriveCommand::kCoastStop:
+      return 0x047C;
+    case DriveCommand::kPulseInhibit:
+      return 0x0477;
+    case DriveCommand::kAcknowledgeFault:
+      return 0x04FE;
+    case DriveCommand::kNoPlcControl:
+      return 0x0000;
+  }
+  return 0x047E;
+}
 
 // Drive side, spec 06 §4.1: the state after one evaluation of STW1 (already masked by any fault reaction).
 // `standstill` ends the OFF1/OFF3 ramps. STW1.10 = 0 only matters in S0 (no control by PLC).

@@ -7,13 +7,23 @@
 namespace tomc::telegrams {
 
 // The next counter value after `current` in steps of `step` (1..15, skipping 0). current 0 = not started.
-std::uint8_t advance_sign_of_life(std::uint8_t current, std::uint8_t step = 1) noexcept;
+// Inline: two calls per fresh frame (master counter and slave expectation).
+inline std::uint8_t advance_sign_of_life(std::uint8_t current, std::uint8_t step = 1) noexcept {
+  // Values 1..15 form a ring of 15; 0 is outside it ("not started" -> the first step lands on `step`).
+  // Subtraction instead of % keeps this a handful of instructions; step and current are at most 15.
+  unsigned next = (current & 0x0Fu) + (step < 15u ? step : step % 15u);  // no division in the usual case
+  if (next > 15u) next -= 15u;
+  return static_cast<std::uint8_t>(next == 0 ? 15u : next);
+}
 
 // Produces the own counter once per application cycle (controller: master LS in STW2; drive: slave LS).
 class SignOfLifeGenerator {
  public:
   // Advances and returns the counter; the first call after construction/reset returns start (1..15).
-  std::uint8_t next() noexcept;
+  std::uint8_t next() noexcept {
+    current_ = current_ == 0 ? start_ : advance_sign_of_life(current_);
+    return current_;
+  }
   std::uint8_t current() const noexcept { return current_; }
   void reset(std::uint8_t start = 1) noexcept;
 

@@ -22,6 +22,7 @@
 #include "tomc/techobjects/axis/job_table.hpp"
 #include "tomc/techobjects/axis/torque_data.hpp"
 #include "tomc/techobjects/axis/torque_limiting.hpp"
+#include "tomc/techobjects/datablocks/status_bits.hpp"
 #include "tomc/techobjects/datablocks/to_types.hpp"
 #include "tomc/techobjects/drive/drive_connection.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
@@ -163,7 +164,11 @@ class AxisCore {
   bool enable_removed() const noexcept { return reaction_in_force == AlarmReaction::kRemoveEnable; }
   // MC_Interpolator: takes the strongest pending reaction over. On release after "remove enable" / "follow
   // setpoint" an MC_Power whose Enable stayed TRUE enables the axis again (spec 03 §3.3 L2).
-  ReactionChange reaction_change() noexcept;
+  // Inline: the steady cycle (no reaction, no alarm) returns before the call (issue 23, decision P26).
+  ReactionChange reaction_change() noexcept {
+    if (reaction_in_force == AlarmReaction::kNone && alarms.alarms().empty()) return ReactionChange::kNone;
+    return take_reaction();
+  }
   // After an escalation: a running MC_Stop of at least the alarm's weight keeps control (seed §6.9.4), else
   // it ends with CommandAborted. `stop_may_keep` = FALSE where another rule takes over (software-limit stop).
   bool stop_keeps_control(bool stop_may_keep = true) noexcept;
@@ -197,7 +202,11 @@ class AxisCore {
   }
   // ---- the power phase, MC_Interpolator ----
   // `ready`: the drive is in operation with valid actual values (always TRUE on a virtual axis).
-  PowerEvent update_power_phase(bool ready) noexcept;
+  // Inline: an enabled axis whose Enable stays TRUE has nothing to change (issue 23, decision P26).
+  PowerEvent update_power_phase(bool ready) noexcept {
+    if (phase == PowerPhase::kEnabled && enable) return PowerEvent::kNone;
+    return change_power_phase(ready);
+  }
   // The ramp of a disable with StopMode 0 (emergency) or 2 (maximum dynamics); nullopt for 1/3.
   std::optional<ProfileLimits> disable_ramp(const TO_Struct_DynamicDefaults& d,
                                             const TO_Struct_DynamicLimits& l, DynamicUnits u) const noexcept;
@@ -215,9 +224,24 @@ class AxisCore {
   // The bits every axis shows: X0 Enable, X1 Error, X4 ControlPanelActive, X25 TorqueLimitingCommand, X26
   // InLimitation, X30 AxisSimulation, X3 kept; StatusWord2 X0 StopCommand; the ErrorWord/WarningWord bits of
   // the pending alarms (a column of the alarm table) and ErrorDetail.
+  // Inline: once per interpolator cycle of every axis; the words stay in registers (issue 23, P26).
   void update_words(std::uint32_t& status_word, std::uint32_t& status_word2, std::uint32_t& error_word,
                     std::uint32_t& warning_word, TO_Struct_ErrorDetail& detail,
-                    bool simulation) const noexcept;
+                    bool simulation) const noexcept {
+    assign(status_word, StatusWordBit::kEnable, phase == PowerPhase::kEnabled && !enable_removed());
+    const bool pending = !alarms.alarms().empty();
+    assign(status_word, StatusWordBit::kError, pending && alarms.any_error());
+    assign(status_word, StatusWordBit::kControlPanelActive, control.held());
+    assign(status_word, StatusWordBit::kTorqueLimitingCommand, torque.active);
+    assign(status_word, StatusWordBit::kInLimitation, in_limitation);
+    assign(status_word, StatusWordBit::kAxisSimulation, simulation);
+    assign(status_word2, StatusWord2Bit::kStopCommand, stop.id != 0);
+    if (!pending) {  // the usual cycle: nothing to look up
+      detail = TO_Struct_ErrorDetail{};
+      return;
+    }
+    alarm_status(error_word, warning_word, detail);
+  }
 
   // The start conditions of MC_TorqueAdditive / MC_TorqueRange (torque_data.hpp): `drive` nullptr on a
   // virtual or simulated axis; `reference` and `inverse` give the wire format of the limits.
@@ -256,6 +280,11 @@ class AxisCore {
 
  private:
   bool safe_stop(const DriveConnection& drive) noexcept;  // 421/550; TRUE while a safe stop is seen
+  // update_words() with alarms pending: their ErrorWord/WarningWord bits and ErrorDetail.
+  void alarm_status(std::uint32_t& error_word, std::uint32_t& warning_word,
+                    TO_Struct_ErrorDetail& detail) const noexcept;
+  ReactionChange take_reaction() noexcept;             // reaction_change() with an alarm or a reaction
+  PowerEvent change_power_phase(bool ready) noexcept;  // update_power_phase() off its steady state
   // A condition still present this long after MC_Reset is raised again (drive supervision, decision S8).
   static constexpr std::uint64_t kReRaiseHoldOffCycles = 20;
   std::uint64_t enabling_since_ = 0;

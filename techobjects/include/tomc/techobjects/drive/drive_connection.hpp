@@ -112,7 +112,10 @@ class DriveConnection {
     return encoder_act_[index == 0 ? 0 : 1];
   }
   const telegrams::DriveStatus& drive_status() const noexcept { return status_; }
-  bool in_operation() const noexcept;  // StatusDrive.InOperation: S4 (spec 06 §4.3 [UNCONFIRMED] -> ZSW1.2)
+  // StatusDrive.InOperation: S4 (spec 06 §4.3 [UNCONFIRMED] -> ZSW1.2). Inline: read several times a cycle.
+  bool in_operation() const noexcept {
+    return communication_ok() && status_.state == telegrams::DriveState::kS4Operation;
+  }
   bool communication_ok() const noexcept { return communication_fault_ == CommunicationFault::kNone; }
   CommunicationFault communication_fault() const noexcept { return communication_fault_; }
   double actual_speed_rpm() const noexcept { return actual_speed_rpm_; }

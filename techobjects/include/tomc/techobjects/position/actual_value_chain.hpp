@@ -176,8 +176,13 @@ class SetpointScaling {
 
   // Load velocity [unit/s] -> motor speed [1/min], incl. Actor.InverseDirection (spec 01 §3.6, §5.4); and
   // back.
-  double motor_speed(double load_velocity) const noexcept;
-  double load_velocity(double motor_speed_per_min) const noexcept;
+  double motor_speed(double load_velocity) const noexcept {
+    return direction_ * load_velocity * motor_rev_per_unit_ * 60.0;
+  }
+  double load_velocity(double motor_speed_per_min) const noexcept {
+    if (motor_rev_per_unit_ == 0.0) return 0.0;
+    return direction_ * motor_speed_per_min / (60.0 * motor_rev_per_unit_);
+  }
   // NSOLL_B / NIST_B (N4 of Actor.DriveParameter.ReferenceSpeed, saturated = ±200 %).
   std::int32_t nsoll_b(double load_velocity) const noexcept;
   double load_velocity_from_nist_b(std::int32_t nist_b) const noexcept;
@@ -251,7 +256,9 @@ class ActualValueChain {
   // <TO>.ActualPosition: modulo-wrapped if Modulo.Enable.
   double position() const noexcept;
   // Position without modulo wrap (counts * units_per_count + offset).
-  double continuous_position() const noexcept;
+  double continuous_position() const noexcept {
+    return static_cast<double>(tracker_.counts()) * units_per_count_ + offset_;
+  }
   // <TO>.ActualVelocity [unit/s]
   double velocity() const noexcept { return velocity_; }
   // <TO>.ActualModuloCycle (DINT, wraps like the PLC counter); 0 without modulo.

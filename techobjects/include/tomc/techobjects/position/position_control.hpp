@@ -121,8 +121,10 @@ class BasicSetpointDelayLine {
     for (auto& v : buffer_)
       v += delta;
   }
+  // The ring index wraps by a compare, not `%`: the capacity (24) is no power of two, and the servo cycle
+  // pushes and reads two lines (issue 23, decision P26).
   void push(double value) noexcept {
-    head_ = (head_ + 1) % Capacity;
+    head_ = head_ + 1 == Capacity ? 0 : head_ + 1;
     buffer_[head_] = value;
   }
   // Value delay_cycles ago (0 = the last pushed value); 0 <= delay_cycles <= Capacity − 1, clamped otherwise.
@@ -148,7 +150,10 @@ class BasicSetpointDelayLine {
   }
 
  private:
-  double at(std::size_t age) const noexcept { return buffer_[(head_ + Capacity - age) % Capacity]; }
+  // age <= Capacity - 1 (tap() clamps, delayed() reads n + 1 only for n < Capacity - 1).
+  double at(std::size_t age) const noexcept {
+    return buffer_[head_ >= age ? head_ - age : head_ + Capacity - age];
+  }
   std::array<double, Capacity> buffer_{};
   std::size_t head_ = 0;  // index of the newest sample
 };

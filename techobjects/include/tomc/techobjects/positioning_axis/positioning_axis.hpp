@@ -15,8 +15,10 @@
 // applies alarm reactions, generates the setpoint, runs the software-limit look-ahead and updates the status.
 // Both are noexcept and allocate nothing.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -397,9 +399,15 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
                     modulo_leader_velocity_limit());
   }
   // Modulo.Length / (2·T_servo) on a modulo axis that is a possible leading value (spec 01 §8.6), else ∞.
-  double modulo_leader_velocity_limit() const noexcept;
+  // Inline, as positioning_velocity(): the running positioning job reads them every interpolator cycle.
+  double modulo_leader_velocity_limit() const noexcept {
+    if (!possible_leading_value_ || !modulo()) return std::numeric_limits<double>::infinity();
+    return db_.Modulo.Length / (2.0 * servo_cycle_s_);
+  }
   DynamicUnits dynamic_units() const noexcept { return {units_.velocity, units_.acceleration}; }
-  double positioning_velocity(const Motion& motion) const noexcept;  // spec 01 §8.5 v_eff
+  double positioning_velocity(const Motion& motion) const noexcept {  // spec 01 §8.5 v_eff
+    return std::min(motion.command_velocity * override_factor(), velocity_limit());
+  }
   void raise(std::uint32_t number, std::uint32_t additional = 0) noexcept { core_.raise(number, additional); }
   void raise_with(std::uint32_t number, std::uint32_t additional, std::int32_t reaction) noexcept;
   void apply_alarm_reactions() noexcept;
@@ -422,7 +430,12 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   TorqueDataConditions torque_data_conditions() const noexcept;
   // TorqueLimiting.PositionBasedMonitorings = 0: following-error and positioning monitoring are off while
   // MC_TorqueLimiting or MC_TorqueRange limits (spec 01 §8.10, §8.13; decision Q4).
-  bool position_monitorings_suspended() const noexcept;
+  // Inline: the servo's monitoring asks it every cycle.
+  bool position_monitorings_suspended() const noexcept {
+    return (core_.torque.active || core_.torque_data.range_active()) &&
+           db_.TorqueLimiting.PositionBasedMonitorings ==
+               static_cast<std::int32_t>(PositionBasedMonitoringMode::kDeactivated);
+  }
   // servo
   void read_actual_values() noexcept;
   void simulate_actual_values() noexcept;
