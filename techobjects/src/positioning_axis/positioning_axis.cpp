@@ -565,6 +565,10 @@ Submission PositioningAxis::jog(JobId running, const JogInputs& in) noexcept {
     m.kind = JobKind::kJog;
     m.limits = limits;
     m.position_controlled = in.PositionControlled;
+    // Nothing planned yet: the jog plans in its first cycle whatever its target (0 under a 0 % override),
+    // from the base setpoint that now holds a superimposed state folded by the arbitration (U3, U18); the
+    // aborted job's profile does not go on.
+    m.planned_velocity = std::numeric_limits<double>::infinity();
     motion_ = m;
     position_controlled_ = in.PositionControlled;
     positioning_.cancel();

@@ -302,6 +302,45 @@ TEST(MoveSuperimposed, StopAbortsIt) {
   EXPECT_EQ(m.move_superimposed2.ErrorID, error_id::kLockedByStop);
 }
 
+// Decision U3 / spec 01 §8.8 ("current dynamics are carried into the new motion"), spec 03 §3.4: an
+// MC_MoveJog that replaces the base job under Override.Velocity 0 % (its velocity target 0) hands the
+// superimposed state over and brakes the total with its own Deceleration from there. The fault
+// PositioningProperty .RotaryModuloAxis found (base seed 10, its seed 113, cycle 98793: a step of the
+// superimposed 360 °/s): the jog planned nothing in its first cycle, so the aborted job's braking profile
+// went on without the folded superimposed part.
+TEST(MoveSuperimposed, JogAtZeroOverrideCarriesTheSuperimposedStateOver) {
+  SuperimposedMachine m;
+  start_t28(m);  // base 100 + superimposed 50 = 150 mm/s
+  ASSERT_TRUE(m.axis->write("Override.Velocity", 0.0).ok());
+  m.run(20);  // the base brakes at 1000 mm/s² (spec 01 §8.4), the superimposed part stays at 50
+  ASSERT_NEAR(m.axis->superimposed().state().velocity, 50.0, 1e-9);
+  ASSERT_NEAR(m.db().Velocity, 130.0, 1.0 + 1e-9);
+  m.jog.JogBackward = true;
+  m.jog.Velocity = 80.0;
+  m.jog.Acceleration = 2000.0;
+  m.jog.Deceleration = 2000.0;
+  double previous = m.db().Velocity;
+  m.run(1);
+  ASSERT_TRUE(m.jog.Busy);
+  // The hand-over cycle and every one after it: at most the jog's 2000 mm/s² (2 mm/s per 1 ms cycle), never
+  // the step of the 50 mm/s superimposed velocity.
+  double steepest = previous - m.db().Velocity;
+  previous = m.db().Velocity;
+  EXPECT_LE(steepest, 2.0 + 1e-9);
+  const int cycles = m.run_until(
+      [&] {
+        steepest = std::max(steepest, std::fabs(m.db().Velocity - previous));
+        previous = m.db().Velocity;
+        return m.db().Velocity == 0.0;
+      },
+      500);
+  EXPECT_LE(steepest, 2.0 + 1e-9);
+  EXPECT_TRUE(m.move_superimposed.CommandAborted);
+  EXPECT_TRUE(m.move_absolute.CommandAborted);
+  // From ~129 mm/s at the jog's 2000 mm/s² (not the aborted job's 1000): 65 ± 2 cycles.
+  EXPECT_NEAR(cycles + 1, 65, 2);
+}
+
 // Spec 01 scenario 39 (§8.14): base MoveVelocity at 100 mm/s, MaxVelocity 150; MoveSuperimposed +10 mm with
 // VelocityDiff 100: the total never exceeds 150 mm/s; SuperimposedDistance is 10 when done and stays 10 while
 // the base continues; it returns to 0 only when the base motion is finished too.
