@@ -199,7 +199,11 @@ Submission SpeedAxis::jog(JobId running, const JogInputs& in) noexcept {
     if (const auto e = resolve_dynamics(in.Acceleration, in.Deceleration, in.Jerk, limits)) return *e;
     if (const auto e = core_.motion_prerequisites()) return e;
     if (const auto e = arbitrate_motion(NewJob::kBaseMotion)) return e;
-    motion_ = Motion{core_.jobs.create(JobKind::kJog, JobState::kActive), JobKind::kJog, limits, 0.0, 0.0};
+    // Nothing planned yet (planned target +inf): the jog plans in its first cycle whatever its target, also 0
+    // under a 0 % override, so the aborted job's ramp does not go on with its own deceleration (spec 01 §8.8;
+    // the same fault as the positioning axis', decision U18).
+    motion_ = Motion{core_.jobs.create(JobKind::kJog, JobState::kActive), JobKind::kJog, limits, 0.0,
+                     std::numeric_limits<double>::infinity()};
     return 0;
   };
   const auto brake = [&](const ProfileLimits& limits) noexcept { plan_velocity(0.0, limits, false); };
