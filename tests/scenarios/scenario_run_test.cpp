@@ -308,8 +308,9 @@ TEST(ScenarioDeterminism, TwoRunsOfEveryScenarioFileGiveByteIdenticalTraces) {
     shared += sim ? 1 : 0;
     // State that leaks from one run into the next within a process (a static, a global counter) shows only
     // in a second run in the same process: the shard's first file always gets one.
-    if (i == k)
+    if (i == k) {
       EXPECT_EQ(trace_of(file.json), first) << file.json << ": a second run in this program differs";
+    }
     const std::string second = sim ? *sim : trace_of(file.json);
     EXPECT_GT(first.size(), 0u) << file.json;
     if (first == second) continue;
