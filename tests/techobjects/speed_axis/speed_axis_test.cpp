@@ -115,24 +115,24 @@ TEST(SpeedAxis, OverrideScalesTheRunningVelocity) {
 }
 
 // spec 01 §8.8, spec 03 §3.4 (decision U18): an MC_MoveJog that replaces a MoveVelocity braking under a 0 %
-// override brakes with its own Deceleration. 1200 1/min = 20 1/s braked at 100 1/s² for 20 ms (18 1/s left),
-// then the jog (its target 0 at 0 %) at 1000 1/s²: 60 1/min less per cycle, standstill 18 ms later — not the
-// 180 ms of the aborted job's ramp, which went on while the jog's target equalled the initial planned one.
+// override brakes with its own Deceleration. 1200 1/min = 20 1/s braked at 50 1/s² for 20 ms (19 1/s left),
+// then the jog (its target 0 at 0 %) at 100 1/s² (MaxDeceleration): 6 1/min less per cycle, standstill 190 ms
+// later — not the 380 ms of the aborted job's ramp, which went on while the jog's target equalled the target
+// a new job started with.
 TEST(SpeedAxis, JogAtZeroOverrideBrakesWithItsOwnDeceleration) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
   m.move.Velocity = 1200.0;
   m.move.Acceleration = 100.0;
-  m.move.Deceleration = 100.0;
+  m.move.Deceleration = 50.0;
   m.move.Execute = true;
   ASSERT_GT(m.run_until([&] { return m.move.InVelocity; }, 1000), 0);
   ASSERT_TRUE(m.axis->write("Override.Velocity", 0.0).ok());
   m.run(20);
-  const double before = m.axis->data().Velocity;
-  EXPECT_NEAR(before, 1080.0, 12.0);  // 20 ms at 100 1/s² = 2 1/s = 120 1/min less, ±2 cycles
+  EXPECT_NEAR(m.axis->data().Velocity, 1140.0, 6.0);  // 20 ms at 50 1/s² = 60 1/min less, ±2 cycles
   m.jog.Velocity = 300.0;
-  m.jog.Acceleration = 1000.0;
-  m.jog.Deceleration = 1000.0;
+  m.jog.Acceleration = 100.0;
+  m.jog.Deceleration = 100.0;
   m.jog.JogForward = true;
   double last = m.axis->data().Velocity;
   double largest_step = 0.0;
@@ -143,11 +143,12 @@ TEST(SpeedAxis, JogAtZeroOverrideBrakesWithItsOwnDeceleration) {
         last = v;
         return v == 0.0;
       },
-      500);
+      1000);
   EXPECT_TRUE(m.move.CommandAborted);
-  EXPECT_GE(cycles, 17);
-  EXPECT_LE(cycles, 21) << "braked with the aborted MoveVelocity's 100 1/s² instead of the jog's 1000";
-  EXPECT_LE(largest_step, 60.0 + 1e-6);  // 1000 1/s² for 1 ms = 60 1/min
+  EXPECT_FALSE(m.jog.Error);
+  EXPECT_GE(cycles, 187);
+  EXPECT_LE(cycles, 194) << "braked with the aborted MoveVelocity's 50 1/s² instead of the jog's 100";
+  EXPECT_LE(largest_step, 6.0 + 1e-6);  // 100 1/s² for 1 ms = 6 1/min
 }
 
 // spec 03 §4.4: MC_Halt aborts MoveVelocity (CommandAborted) and is Done at standstill.
