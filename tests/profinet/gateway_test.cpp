@@ -522,17 +522,19 @@ TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
 
 // Decision I32: the commissioning options are checked before any socket is opened; an option that does not
 // go with the command is refused with a usage error (exit 2), not ignored (review of stop 32: --wait-ms was
-// accepted with --set-name and had no effect).
+// accepted with --set-name and had no effect). The interface named does not exist, so that even a check that
+// came too late could send nothing on this machine's own interfaces.
 TEST(GatewayConfig, CommissioningOptionsThatDoNotGoTogetherAreRefused) {
   const struct {
     const char* options;
     const char* message;
   } cases[] = {
-      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface lo --wait-ms 200",
+      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface tomc-none0 --wait-ms 200",
        "--wait-ms goes with --identify"},
-      {"--identify --interface lo --mac 02:00:00:00:00:01", "--mac and --temporary go with --set-name"},
+      {"--identify --interface tomc-none0 --mac 02:00:00:00:00:01",
+       "--mac and --temporary go with --set-name"},
       {"--identify", "missing --interface IF"},
-      {"--set-name drive-1 --interface lo", "--set-name needs --mac MAC"},
+      {"--set-name drive-1 --interface tomc-none0", "--set-name needs --mac MAC"},
   };
   for (const auto& c : cases) {
     const auto [status, output] = run_tomc(std::string("gateway ") + c.options);
