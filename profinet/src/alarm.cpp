@@ -50,6 +50,8 @@ ProfinetError encode(const EthernetHeader& header, const RtaFrame& frame, std::s
       w.bytes(std::span(b.payload).first(b.payload_length));
     }
     w.patch_u16(block_at + 2, static_cast<std::uint16_t>(w.position() - block_at - 4));
+  } else if (frame.pdu_type == RtaPduType::kError) {
+    w.u32(frame.error.value());
   }
   w.patch_u16(var_part_at, static_cast<std::uint16_t>(w.position() - var_part_at - 2));
   pad_to_minimum(w);
@@ -119,6 +121,9 @@ ProfinetError decode_rta(std::span<const std::uint8_t> bytes, RtaFrame& frame) n
     if (!content.ok()) return ProfinetError::kBadBlockLength;
     if (b.is_ack && content.remaining() != 0) return ProfinetError::kBadBlockLength;
     result.has_block = true;
+  } else if (result.pdu_type == RtaPduType::kError) {
+    if (var_part_length < 4) return ProfinetError::kTruncated;  // an ERR without its PNIOStatus
+    result.error = PnioStatus::from(in.u32());
   }
   frame = result;
   return ProfinetError::kNone;

@@ -38,6 +38,17 @@ std::string hex4(std::uint16_t value) {
 
 }  // namespace
 
+std::optional<std::string> dcp_hello_name(std::span<const std::uint8_t> frame) {
+  MacAddress source{};
+  const std::optional<DcpMessage> message = decoded(frame, source);
+  if (!message || message->frame_id != kFrameIdDcpHello || message->service != DcpService::kHello ||
+      message->type != DcpServiceType::kRequest || !message->fields.name_of_station ||
+      message->fields.name_of_station->empty()) {
+    return std::nullopt;
+  }
+  return message->fields.name_of_station;
+}
+
 std::vector<std::uint8_t> DcpScan::request() const {
   return encoded(EthernetHeader{kDcpIdentifyMulticast, own_mac_, std::nullopt},
                  dcp_identify_request(xid_, std::nullopt));

@@ -136,6 +136,7 @@ std::vector<std::uint8_t> IoController::connect_request() {
   request.expected = device_.modules;
   // A new AR starts both alarm channels afresh (the device's APMR expects SendSeqNum 0xFFFF first).
   alarm_channels_ = {};
+  rta_error_received_ = false;
   request.alarm_cr.rta_timeout_factor = device_.rta_timeout_factor;
   request.alarm_cr.rta_retries = device_.rta_retries;
   alarm_retries_ = device_.rta_retries;
@@ -255,6 +256,7 @@ std::vector<std::uint8_t> IoController::next_request() {
     write.header.type = block_type::kIodWriteRequest;
     write.header.sequence_number = static_cast<std::uint16_t>(next_record_);
     write.header.ar_uuid = ar_uuid_;
+    write.header.api = record.api;
     write.header.slot = record.slot;
     write.header.subslot = record.subslot;
     write.header.index = record.index;
@@ -477,7 +479,21 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
   if (frame.size() < 12 || !std::equal(device_mac_->begin(), device_mac_->end(), frame.begin() + 6)) return 0;
   const bool high = received.frame_id == kFrameIdAlarmHigh;
   AlarmChannel& apm = channel(high);
-  // Any PDU of the device acknowledges our AlarmAck when its AckSeqNum names it.
+  if (received.pdu_type == RtaPduType::kError) {
+    // The device ends the AR (IEC 61158-6-10 RTA-ERR-PDU): so do we, with its reason (decision I35).
+    abort_ar();
+    last_error_ = received.error;
+    rta_error_received_ = true;
+    rta_error_high_ = high;
+    return 0;
+  }
+  if (received.pdu_type == RtaPduType::kNack) {
+    // The device could not take our DATA (out of sequence, no resources): our AlarmAck again at once, from
+    // the same RTARetries budget as the timer's resends (decision I35). A NACK acknowledges nothing.
+    if (!apm.unacknowledged || !resend_alarm_ack(apm, alarm_ack_out, alarm_ack_bytes, now_us)) return 0;
+    return 1;
+  }
+  // Any other PDU of the device acknowledges our AlarmAck when its AckSeqNum names it.
   if (apm.unacknowledged && received.ack_sequence == apm.last_sent) apm.unacknowledged = false;
   if (received.pdu_type != RtaPduType::kData || !received.has_block || received.block.is_ack) return 0;
   const bool repeated = apm.received == received.send_sequence;
@@ -495,12 +511,7 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
   if (repeated) {
     // A resend of the notification: our ACK was lost. Our AlarmAck goes again, with its SendSeqNum, until
     // the device acknowledges it or RTARetries resends are used up.
-    if (!apm.unacknowledged || apm.resends >= alarm_retries_ || alarm_ack_out.size() < apm.alarm_ack_bytes)
-      return 1;
-    ++apm.resends;
-    apm.sent_us = now_us;
-    std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, alarm_ack_out.begin());
-    alarm_ack_bytes = apm.alarm_ack_bytes;
+    if (!apm.unacknowledged || !resend_alarm_ack(apm, alarm_ack_out, alarm_ack_bytes, now_us)) return 1;
     return 2;
   }
   RtaFrame ack = transport;
@@ -519,6 +530,8 @@ std::size_t IoController::on_alarm(std::span<const std::uint8_t> frame, std::spa
   apm.last_sent = apm.send_sequence;
   apm.send_sequence = static_cast<std::uint16_t>((apm.send_sequence + 1) & 0x7FFF);  // 0xFFFF, 0 .. 0x7FFF
   apm.received = received.send_sequence;
+  apm.device_endpoint = received.source_endpoint;
+  apm.own_endpoint = received.destination_endpoint;
   apm.unacknowledged = true;
   apm.resends = 0;
   apm.sent_us = now_us;
@@ -537,16 +550,37 @@ AlarmTimerAction IoController::alarm_timer(bool high_priority, std::uint64_t now
       now_us < apm.sent_us + alarm_timeout_us_)
     return AlarmTimerAction::kNone;
   if (apm.resends >= alarm_retries_) {
+    // The ERR-RTA-PDU first (decision I35): the device learns why at once rather than by its data hold.
+    RtaFrame error;
+    error.frame_id = high_priority ? kFrameIdAlarmHigh : kFrameIdAlarmLow;
+    error.destination_endpoint = apm.device_endpoint;
+    error.source_endpoint = apm.own_endpoint;
+    error.pdu_type = RtaPduType::kError;
+    error.tack = false;
+    error.send_sequence = apm.last_sent;
+    error.ack_sequence = apm.received.value_or(0xFFFE);
+    error.error = kAlarmSendTimeoutStatus;
+    if (device_mac_) {
+      const EthernetHeader header{*device_mac_, own_mac_,
+                                  VlanTag{high_priority ? kPriorityAlarmHigh : kPriorityAlarmLow, 0}};
+      if (encode(header, error, out, out_bytes) != ProfinetError::kNone) out_bytes = 0;
+    }
     abort_ar();
     last_error_ = kAlarmSendTimeoutStatus;
     return AlarmTimerAction::kAbort;
   }
-  if (out.size() < apm.alarm_ack_bytes) return AlarmTimerAction::kNone;
+  if (!resend_alarm_ack(apm, out, out_bytes, now_us)) return AlarmTimerAction::kNone;
+  return AlarmTimerAction::kResend;
+}
+
+bool IoController::resend_alarm_ack(AlarmChannel& apm, std::span<std::uint8_t> out, std::size_t& out_bytes,
+                                    std::uint64_t now_us) noexcept {
+  if (apm.resends >= alarm_retries_ || out.size() < apm.alarm_ack_bytes) return false;
   ++apm.resends;
   apm.sent_us = now_us;
   std::copy_n(apm.alarm_ack.begin(), apm.alarm_ack_bytes, out.begin());
   out_bytes = apm.alarm_ack_bytes;
-  return AlarmTimerAction::kResend;
+  return true;
 }
 
 void IoController::abort_ar() noexcept {

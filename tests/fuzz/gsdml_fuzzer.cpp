@@ -1,7 +1,7 @@
 // Arbitrary bytes as a GSDML file (tomc::profinet_gsdml): parsing and, for what parses, every access point
-// with nothing chosen and with the first allowed place of each useable module and submodule. A file or
-// selection the controller cannot use must be a GsdmlError; anything else (a crash, another exception) is a
-// finding.
+// with nothing chosen and with the first allowed place of each useable module and submodule, and the
+// parameter records of what it plugs. A file or selection the controller cannot use must be a GsdmlError;
+// anything else (a crash, another exception) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -16,6 +16,15 @@ void select(const gsdml::Device& device, const gsdml::Selection& selection) {
   try {
     const auto modules = gsdml::expected_modules(device, selection);
     if (modules.empty()) __builtin_trap();  // the DAP is always there
+    // The ParameterRecordDataItems of the same plugged submodules (decision I34): each in a plugged place.
+    for (const gsdml::PlacedRecord& record : gsdml::parameter_records(device, selection)) {
+      bool placed = false;
+      for (const auto& m : modules) {
+        for (const auto& s : m.submodules)
+          placed = placed || (m.slot == record.slot && s.subslot == record.subslot && m.api == record.api);
+      }
+      if (!placed || record.data.empty()) __builtin_trap();
+    }
   } catch (const gsdml::GsdmlError&) {
   }
 }

@@ -3,6 +3,7 @@
 // never crash or read outside the input; what decodes without error must encode again and decode to the same
 // value.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -188,6 +189,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (pn::decode_parameter_response(pn::encode(*response)) != response) std::abort();
         (void)pn::integer_value(*response, 0);
         (void)pn::float_value(*response, 0);
+        (void)pn::error_value(*response, 0);
+        for (const pn::ParameterValue& v : response->parameters) {
+          // A value that reads as a number writes back to the same bits (integers exactly, finite floats).
+          if (v.values.empty()) continue;
+          const auto number = pn::numeric_value(v.format, v.values.front());
+          if (!number || !std::isfinite(*number)) continue;
+          if (pn::raw_value(v.format, *number) != v.values.front()) std::abort();
+        }
       }
       break;
     }

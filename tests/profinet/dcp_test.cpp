@@ -2,10 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "tomc/profinet/dcp.hpp"
 #include "tomc/profinet/dcp_commissioning.hpp"
+#include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/io_device.hpp"
 
 namespace pn = tomc::profinet;
@@ -257,4 +261,31 @@ TEST(DcpCommissioning, SetNameOfStationNamesTheDeviceOfThatMac) {
   refused.results.clear();
   EXPECT_EQ(pn::dcp_set_name_result(encode({kController, mac, std::nullopt}, refused), mac, 77),
             std::optional<std::string>("the device does not support DCP Set"));
+}
+
+// Decision I36: a DCP Hello (FrameID 0xFEFC, service Hello, a device starting up) names the device the
+// running gateway tries at once; an Identify request or answer, a Set, or a Hello of a device without a name
+// (as from the factory) name none. The controller takes the Hello like an Identify answer (learns the MAC).
+TEST(DcpCommissioning, AHelloNamesTheDeviceThatStarts) {
+  pn::IoDevice named(station(7, "drive-1", {{10, 0, 0, 11}, {255, 255, 255, 0}, {}}));
+  pn::IoDevice fresh(station(3, "", {}));
+  const std::vector<std::uint8_t> hello = named.hello();
+  EXPECT_EQ(pn::peek_frame_id(std::span(hello).subspan(0)), pn::kFrameIdDcpHello);
+  EXPECT_EQ(pn::dcp_hello_name(hello), std::optional<std::string>("drive-1"));
+  EXPECT_EQ(pn::dcp_hello_name(fresh.hello()), std::nullopt);
+  const std::vector<std::uint8_t> identify = pn::DcpScan(kController, 0x1234).request();
+  EXPECT_EQ(pn::dcp_hello_name(identify), std::nullopt);
+  EXPECT_EQ(pn::dcp_hello_name(named.on_dcp(identify)), std::nullopt);
+  EXPECT_EQ(
+      pn::dcp_hello_name(pn::dcp_set_name_request(kController, named.identity().mac, 5, "drive-1", true)),
+      std::nullopt);
+  for (std::size_t n = 0; n < hello.size(); n += 7)
+    (void)pn::dcp_hello_name(std::span(hello).first(n));  // cut frames: no crash, no name from a cut name
+  pn::ControllerDeviceConfig config;
+  config.name_of_station = "drive-1";
+  config.ip = {{10, 0, 0, 11}, {255, 255, 255, 0}, {}};
+  pn::IoController controller(kController, "gw", config, pn::Uuid{1, 2, 3, {4}});
+  EXPECT_TRUE(controller.on_dcp(hello, 9).empty());  // same IP suite: no Set needed
+  ASSERT_TRUE(controller.device_mac().has_value());
+  EXPECT_EQ(*controller.device_mac(), named.identity().mac);
 }

@@ -79,6 +79,9 @@ struct DeviceOptions {
   // The device acknowledges the controller's AlarmAck DATA with an RTA ACK (IEC 61158-6-10 APMR, as p-net's
   // pf_alarm_apmr_send_ack); false: it never does, and the controller's RTA timer ends the AR.
   bool acknowledge_alarm_acks = true;
+  // A device that answers no DCP Identify and announces itself with a DCP Hello every 300 ms while it has no
+  // AR: only a controller that acts on Hello finds it (decision I36).
+  bool hello_only = false;
 };
 
 // The emulated IO device on its own thread in the device namespace: ProfinetDrive behind the sockets. Its
@@ -120,6 +123,17 @@ class DeviceHost {
   int m_add1_last() const { return m_add1_last_.load(); }
   // The simulated drive's active fault (0: none), e.g. 8501 after its setpoint timeout.
   std::uint32_t drive_fault() const { return drive_fault_.load(); }
+  // ERR-RTA-PDUs the controller sent (decision I35) and the last one's PNIOStatus; the device ends its AR
+  // on one, as a real device does.
+  int rta_errors() const { return rta_errors_.load(); }
+  // hello_only: the Identify requests left unanswered and the Hellos sent.
+  int identify_ignored() const { return identify_ignored_.load(); }
+  int hellos() const { return hellos_.load(); }
+  std::uint32_t last_rta_error() const { return last_rta_error_.load(); }
+  // RTATimeoutFactor and RTARetries of the controller's AlarmCRBlock in the last AR.
+  std::pair<int, int> alarm_cr_timing() const { return {rta_timeout_factor_.load(), rta_retries_.load()}; }
+  // p2000 as the emulated drive holds it (changed by the controller's parameter access).
+  double reference_speed_rpm() const { return reference_speed_rpm_.load(); }
   // How each AR ended that the device had running ("" while none ended): by its own data-hold watchdog (the
   // controller's output frames stopped) or by the controller (Release, or a new Connect after the
   // controller's watchdog ended its side), with the time since the device's start and the silences behind it.
@@ -228,11 +242,23 @@ class DeviceHost {
         const auto in = std::span(frame).first(n);
         const pn::FrameKind kind = pn::classify_frame_id(pn::peek_frame_id(in));
         if (kind == pn::FrameKind::kDcp) {
-          if (const auto answer = device.on_dcp(in); !answer.empty()) raw.send(answer);
+          pn::WireReader dcp_in(in);
+          (void)pn::decode_ethernet(dcp_in);
+          const pn::DcpMessage asked = pn::decode_dcp(dcp_in);
+          if (options_.hello_only && dcp_in.ok() && asked.service == pn::DcpService::kIdentify) {
+            ++identify_ignored_;
+          } else if (const auto answer = device.on_dcp(in); !answer.empty()) {
+            raw.send(answer);
+          }
         } else if (kind == pn::FrameKind::kAlarm) {
           pn::RtaFrame rta;
-          if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kData &&
-              rta.has_block && rta.block.is_ack) {
+          if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone && rta.pdu_type == pn::RtaPduType::kError &&
+              device.state() != pn::ArState::kNone) {
+            ++rta_errors_;
+            last_rta_error_ = rta.error.value();
+            device.abort_ar();
+          } else if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone &&
+                     rta.pdu_type == pn::RtaPduType::kData && rta.has_block && rta.block.is_ack) {
             // A resend (the SendSeqNum taken last: our ACK was late or lost) is acknowledged again, counted
             // once.
             if (rta.send_sequence != last_alarm_ack_) ++alarm_acks_;
@@ -269,13 +295,21 @@ class DeviceHost {
       }
       return n > 0;
     };
+    std::uint64_t next_hello = now_us();
     while (!stop_) {
+      if (options_.hello_only && device.state() == pn::ArState::kNone && now_us() >= next_hello) {
+        next_hello = now_us() + 300'000;
+        raw.send(device.hello());
+        ++hellos_;
+      }
       if (device.state() == pn::ArState::kRunning) note_gap(max_loop_gap_us_, last_loop, now_us());
       last_loop = now_us();
       (void)take(200);
       pn::testing::serve_device_rpc(device, udp, frame, kGatewayIp);
       if (device.state() == pn::ArState::kRunning && last != pn::ArState::kRunning) {
         ++ars_;
+        rta_timeout_factor_ = device.connection().alarm_cr.rta_timeout_factor;
+        rta_retries_ = device.connection().alarm_cr.rta_retries;
         last_alarm_ack_ = 0xFFFE;  // a new AR: the controller's SendSeqNum starts at 0xFFFF again
       }
       if (fault_requested_.exchange(false))
@@ -294,6 +328,7 @@ class DeviceHost {
       }
       last = device.state();
       drive_fault_ = host.drive().active_fault();
+      reference_speed_rpm_ = host.drive().parameters().reference_speed_rpm;
       const std::uint64_t now = now_us();
       if (now >= next_send) {
         next_send = now + 1000;
@@ -348,6 +383,13 @@ class DeviceHost {
   std::atomic<int> m_add1_max_{0};
   std::atomic<int> m_add1_last_{0};
   std::atomic<std::uint32_t> drive_fault_{0};
+  std::atomic<double> reference_speed_rpm_{0.0};
+  std::atomic<int> rta_errors_{0};
+  std::atomic<int> identify_ignored_{0};
+  std::atomic<int> hellos_{0};
+  std::atomic<std::uint32_t> last_rta_error_{0};
+  std::atomic<int> rta_timeout_factor_{0};
+  std::atomic<int> rta_retries_{0};
   std::atomic<std::uint64_t> max_output_gap_us_{0};
   std::atomic<std::uint64_t> max_loop_gap_us_{0};
   std::atomic<std::uint64_t> max_input_gap_us_{0};

@@ -218,7 +218,7 @@ TEST(GatewayConfig, StartupRecordsAreWrittenBeforePrmEnd) {
     c.ip = {device.ip, device.netmask, {}};
     c.modules = tomc::drives::profidrive_modules(device.device_config());
     for (const sc::ProfinetRecordConfig& r : device.records)  // as the gateway does
-      c.startup_records.push_back({r.slot, r.subslot, r.index, r.data});
+      c.startup_records.push_back({r.slot, r.subslot, r.index, r.data, r.api});
     auto controller = std::make_unique<pn::IoController>(pn::MacAddress{2, 0, 0, 0, 0, 1}, "gw", c,
                                                          pn::Uuid{0x5E, 1, 2, {3}});
     pn::DeviceIdentity identity;
@@ -277,6 +277,85 @@ TEST(GatewayConfig, StartupRecordsAreWrittenBeforePrmEnd) {
   EXPECT_TRUE(has_line(lines, "devices[0].records[2].data: 1..4096 bytes expected")) << joined(lines);
   EXPECT_TRUE(has_line(lines, "devices[0].records[3].index")) << joined(lines);
   EXPECT_TRUE(has_line(lines, "devices[0].records[4].slot")) << joined(lines);
+}
+
+// "parameters" (decision I33): number, subindex (default 0), value and an optional slot per drive parameter
+// written at start-up; each problem named by its key.
+TEST(GatewayConfig, ParametersToWriteAtStartUpAreReadAndChecked) {
+  sc::ProfinetGatewayConfig config;
+  sc::Problems problems;
+  sc::load_profinet_gateway_config(
+      sc::Json::parse(
+          R"({ "gateway": "gw1", "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a", "name_of_station": "d-1", "ip": "10.0.0.2", "telegram": 3, "parameters": [
+      { "number": 2000, "value": 3000.0 }, { "number": 1082, "subindex": 2, "value": 4500, "slot": 2 } ] } ] })"),
+      config, problems);
+  ASSERT_TRUE(problems.empty()) << joined(problems.lines());
+  ASSERT_EQ(config.devices[0].parameters.size(), 2u);
+  EXPECT_EQ(config.devices[0].parameters[0].number, 2000);
+  EXPECT_EQ(config.devices[0].parameters[0].subindex, 0);
+  EXPECT_EQ(config.devices[0].parameters[0].slot, 0);  // the object p0922 is checked on
+  EXPECT_EQ(config.devices[0].parameters[0].value, 3000.0);
+  EXPECT_EQ(config.devices[0].parameters[1].subindex, 2);
+  EXPECT_EQ(config.devices[0].parameters[1].slot, 2);
+  EXPECT_EQ(config.devices[0].parameters[1].value, 4500.0);
+
+  const auto lines =
+      problems_of(R"({ "gateway": "gw1", "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1" },
+    "devices": [ { "name": "a", "name_of_station": "d-1", "ip": "10.0.0.2", "telegram": 1, "parameters": [
+      { "value": 1 }, { "number": 2000 }, { "number": 65536, "value": 1 }, { "number": 2000, "value": "3000" },
+      { "number": 2000, "subindex": -1, "value": 1 }, { "number": 922, "value": 1, "format": "U16" },
+      { "number": 2000, "value": 1 } ] } ] })");
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[0].number")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[1].value")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[2].number")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[3].value")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[4].subindex")) << joined(lines);
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[5].format")) << joined(lines);  // no such key
+  EXPECT_TRUE(has_line(lines, "devices[0].parameters[6]: parameter 2000 subindex 0 is written twice"))
+      << joined(lines);
+  EXPECT_TRUE(has_line(problems_of(R"({ "gateway": "gw1", "domain": 1,
+    "profinet": { "interface": "eth1", "ip": "10.0.0.1" }, "devices": [ { "name": "a", "name_of_station": "d-1",
+    "ip": "10.0.0.2", "telegram": 1, "parameters": { "number": 2000 } } ] })"),
+                       "devices[0].parameters: expected an array of at most 64 parameters"));
+}
+
+// Decision I35: "rta_timeout_factor" and "rta_retries" of the "profinet" object go into every device's
+// AlarmCRBlockReq; their ranges are the block's (IEC 61158-6-10: RTATimeoutFactor 1..100, RTARetries 3..15);
+// the defaults stay 1 and 3. Table-driven.
+TEST(GatewayConfig, TheRtaTimerKeysHaveTheAlarmCrBlockRanges) {
+  struct Case {
+    std::string keys;
+    int factor;
+    int retries;
+    std::string problem;  // "" when the file loads
+  };
+  const Case cases[] = {
+      {"", 1, 3, ""},
+      {R"(, "rta_timeout_factor": 100, "rta_retries": 15)", 100, 15, ""},
+      {R"(, "rta_timeout_factor": 1, "rta_retries": 3)", 1, 3, ""},
+      {R"(, "rta_timeout_factor": 0)", 0, 0, "profinet.rta_timeout_factor: 0 out of range 1..100"},
+      {R"(, "rta_timeout_factor": 101)", 0, 0, "profinet.rta_timeout_factor: 101 out of range 1..100"},
+      {R"(, "rta_retries": 2)", 0, 0, "profinet.rta_retries: 2 out of range 3..15"},
+      {R"(, "rta_retries": 16)", 0, 0, "profinet.rta_retries: 16 out of range 3..15"},
+  };
+  for (const Case& c : cases) {
+    sc::ProfinetGatewayConfig config;
+    sc::Problems problems;
+    sc::load_profinet_gateway_config(
+        sc::Json::parse(
+            R"({ "gateway": "gw1", "domain": 1, "profinet": { "interface": "eth1", "ip": "10.0.0.1")" +
+            c.keys + R"( }, "devices": [ { "name": "a", "name_of_station": "d-1", "ip": "10.0.0.2",
+                        "telegram": 1 } ] })"),
+        config, problems);
+    if (c.problem.empty()) {
+      EXPECT_TRUE(problems.empty()) << c.keys << ": " << joined(problems.lines());
+      EXPECT_EQ(config.rta_timeout_factor, c.factor) << c.keys;
+      EXPECT_EQ(config.rta_retries, c.retries) << c.keys;
+    } else {
+      EXPECT_TRUE(has_line(problems.lines(), c.problem)) << c.keys << ": " << joined(problems.lines());
+    }
+  }
 }
 
 TEST(GatewayConfig, EveryProblemNamesItsKey) {
@@ -560,7 +639,8 @@ std::string one_device(const std::string& module_keys) {
 // (kAnswerTimeout).
 class GatewayHost {
  public:
-  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& devices, int watchdog_factor = 20)
+  GatewayHost(const pn::testing::Namespaces& hosts, const std::string& devices, int watchdog_factor = 20,
+              const std::string& profinet_keys = "")
       : dir_(std::filesystem::temp_directory_path() / ("tomc17-gw-" + std::to_string(::getpid()))) {
     std::filesystem::create_directories(dir_);
     std::ofstream(dir_ / "gateway.json") << R"({ "gateway": "gw-pn", "domain": )" << kDomain
@@ -568,7 +648,8 @@ class GatewayHost {
                                          << R"(", "watchdog": 0.5,
       "profinet": { "interface": "pn-g", "ip": "10.218.0.1", "send_clock_factor": 32, "watchdog_factor": )"
                                          << watchdog_factor << R"(,
-                    "fifo_priority": 40 },
+                    "fifo_priority": 40)" << profinet_keys
+                                         << R"( },
       "devices": )" << devices << " }";
     process_ = std::make_unique<tomc::testing::GatewayProcess>(
         std::vector<std::string>{"ip", "netns", "exec", hosts.first, TOMC_BINARY, "gateway", "--config",
@@ -676,6 +757,54 @@ TEST(GatewayNetns, AWrongModuleAndAWrongP0922AreReportedOverDds) {
     EXPECT_GE(device.ars(), 1);  // the AR was built (ApplicationReady) before the check refused it
     EXPECT_EQ(device.error(), "");
   }
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// seed/issue 17 "read/write drive parameters" (decision I33): `tomc gateway` with "parameters" p2000 = 6000
+// and p0922 = 3 writes them through PROFIdrive parameter access after the p0922 check: the emulated drive
+// takes p2000 (read back equal) and refuses p0922 as read-only (PROFIdrive error 0x01), so the start-up fails
+// with a detail naming the parameter and the error, the AR is released and retried like an absent device.
+TEST(GatewayNetns, StartUpParametersAreWrittenAndARefusedOneFailsTheStartUp) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  GatewayHost gateway(hosts, one_device(kGsdmlModules + R"(,
+    "parameters": [ { "number": 2000, "value": 6000.0 }, { "number": 922, "value": 3 } ])"));
+  const DdsObserver observer(hosts.first);
+  DeviceHost device(hosts.second, {3, 0});
+  const std::string refused =
+      "p0922 = 3: the drive refused the change, PROFIdrive error 0x01 (parameter value cannot be changed)";
+  const SeenOverDds seen = observer.until(
+      [&](const SeenOverDds& s) { return s.device.detail.find("p0922 = 3") != std::string::npos; });
+  EXPECT_EQ(seen.device.state, "disconnected") << gateway.log();
+  EXPECT_EQ(seen.device.detail, refused);
+  EXPECT_EQ(seen.diagnosis, "gateway 'gw-pn' has no cyclic exchange with 'axis1': " + refused);
+  EXPECT_EQ(device.reference_speed_rpm(), 6000.0);  // the first parameter was written before the refusal
+  EXPECT_GE(device.ars(), 1);
+  EXPECT_EQ(device.output_frames(), 0);  // no AR carried setpoints
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
+// Decision I36: a device that answers no DCP Identify but announces itself with DCP Hello (every 300 ms while
+// it has no AR) is connected by `tomc gateway`: its Hello, taken while the gateway waits for an Identify
+// answer or between its retries, stands for the answer (name, MAC, IP suite), and the start-up goes on from
+// the Connect. Without acting on Hello the gateway would never find it.
+TEST(GatewayNetns, ADeviceThatOnlySaysHelloIsConnected) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceOptions hello_only;
+  hello_only.hello_only = true;
+  DeviceHost device(hosts.second, hello_only);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules));
+  const DdsObserver observer(hosts.first);
+  const SeenOverDds seen = observer.until([](const SeenOverDds& s) { return s.device.state == "connected"; });
+  EXPECT_EQ(seen.device.state, "connected") << gateway.log();
+  EXPECT_EQ(device.ars(), 1);
+  EXPECT_GE(device.hellos(), 1);
+  EXPECT_GE(device.identify_ignored(), 1) << "the gateway's Identify must have gone unanswered";
+  EXPECT_EQ(device.error(), "");
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
 
@@ -1237,15 +1366,16 @@ TEST(GatewayNetns, TsharkDissectsEveryFrameTypeTheGatewaySends) {
   }
   // Block types (IEC 61158-6-10): 0x0101 ARBlockReq, 0x0102 IOCRBlockReq (input, output), 0x0103
   // AlarmCRBlockReq, 0x0104 ExpectedSubmoduleBlockReq (two: the DAP in slot 0, the drive object in slot 1),
-  // 0x0008 IODWriteReqHeader, 0x0009 IODReadReqHeader, 0x0110 IODControlReq (ControlCommand 0x0001 PrmEnd),
-  // 0x8112 IOXBlockRes (0x0008 Done: the answer to the device's ApplicationReady), 0x0114 IODReleaseReq
-  // (0x0004 Release), 0x8002 AlarmAckLow; RTA PDU type 1 DATA, 3 ACK.
+  // 0x0008 IODWriteReqHeader (index 0x0100: the GSDML file's ParameterRecordDataItem of the DAP, decision
+  // I34; 0xB02E: the p0922 request), 0x0009 IODReadReqHeader, 0x0110 IODControlReq (ControlCommand 0x0001
+  // PrmEnd), 0x8112 IOXBlockRes (0x0008 Done: the answer to the device's ApplicationReady), 0x0114
+  // IODReleaseReq (0x0004 Release), 0x8002 AlarmAckLow; RTA PDU type 1 DATA, 3 ACK.
   for (const std::string expected :
        {"DCP Identify request", "DCP Set IP request 10.218.0.2",
-        "Connect request 0x0101,0x0102,0x0102,0x0103,0x0104,0x0104", "Write request 0x0008 index 0xb02e",
-        "Read request 0x0009 index 0xb02e", "Control request 0x0110 0x0001", "Control response 0x8112 0x0008",
-        "RT_CLASS_1 output 0x8001", "RTA ACK (low)", "RTA DATA (low) 0x8002",
-        "Release request 0x0114 0x0004"}) {
+        "Connect request 0x0101,0x0102,0x0102,0x0103,0x0104,0x0104", "Write request 0x0008 index 0x0100",
+        "Write request 0x0008 index 0xb02e", "Read request 0x0009 index 0xb02e",
+        "Control request 0x0110 0x0001", "Control response 0x8112 0x0008", "RT_CLASS_1 output 0x8001",
+        "RTA ACK (low)", "RTA DATA (low) 0x8002", "Release request 0x0114 0x0004"}) {
     EXPECT_GE(seen[expected], 1) << "not in the capture: " << expected;
   }
   std::string summary;
@@ -1254,9 +1384,10 @@ TEST(GatewayNetns, TsharkDissectsEveryFrameTypeTheGatewaySends) {
   std::printf("frames the gateway sent, as tshark dissects them:\n%s", summary.c_str());
 }
 
-// Decision I30 (the RTA timer, IEC 61158-6-10 APMS): a device that never acknowledges our AlarmAck DATA.
-// `tomc gateway` (RTATimeoutFactor 1, RTARetries 3 in its AlarmCRBlock) sends it once and again every
-// 100 ms, three times, then ends the AR as a lost one and reconnects; the status over DDS says why. The
+// Decisions I30, I35 (the RTA timer, IEC 61158-6-10 APMS): a device that never acknowledges our AlarmAck
+// DATA. `tomc gateway` (RTATimeoutFactor 1, RTARetries 4 from its file, in its AlarmCRBlock) sends it once
+// and again every 100 ms, four times, sends the device an ERR-RTA-PDU and ends the AR as a lost one and
+// reconnects; the status over DDS says why. The
 // device's notification, still queued on the start-up thread's socket, is not answered again in the new AR
 // (an AlarmAck for an alarm of the AR before would start the same end over).
 TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
@@ -1267,7 +1398,9 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   silent.acknowledge_alarm_acks = false;
   DeviceHost device(hosts.second, silent);
   // Data hold 100 ms (I7): a machine pause of 20–34 ms must not end the AR before the RTA timer does.
-  GatewayHost gateway(hosts, one_device(kGsdmlModules), 100);
+  // RTATimeoutFactor 1 and RTARetries 4 from the gateway file's keys (decision I35).
+  GatewayHost gateway(hosts, one_device(kGsdmlModules), 100,
+                      R"(, "rta_timeout_factor": 1, "rta_retries": 4)");
   const DdsObserver observer(hosts.first);
   for (int i = 0; i < 500 && device.output_frames() == 0; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -1277,23 +1410,29 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   for (int i = 0; i < 500 && device.ars() < 2; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_EQ(device.ars(), 2) << device.ar_ends() << gateway.log();
+  EXPECT_EQ(device.alarm_cr_timing(), (std::pair<int, int>{1, 4}));  // the AlarmCRBlock the device read
   EXPECT_EQ(device.alarm_acks(), 1);
-  EXPECT_EQ(device.alarm_ack_frames(), 4);  // sent, then RTARetries resends
-  // Three timeouts of 100 ms, timed by the gateway's cycle clock; measured where the device reads them, so a
+  EXPECT_EQ(device.alarm_ack_frames(), 5);  // sent, then RTARetries resends
+  // Four timeouts of 100 ms, timed by the gateway's cycle clock; measured where the device reads them, so a
   // pause of the machine before it reads the first shortens the span (the CI's VM pauses up to 34 ms).
-  EXPECT_GE(device.alarm_ack_span_us(), 250'000u);
+  EXPECT_GE(device.alarm_ack_span_us(), 350'000u);
+  // Before the gateway ended the AR it told the device so (decision I35): one ERR-RTA-PDU, low priority,
+  // PNIOStatus 0xCF81FD08 (RTA error, PNIO, RTA_ERR_CLS_PROTOCOL, "AR alarm send.cnf(-)").
+  EXPECT_EQ(device.rta_errors(), 1);
+  EXPECT_EQ(device.last_rta_error(), 0xCF81FD08u);
   const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
     return s.device.state == "connected" && s.device.detail.find("RTA timeout") != std::string::npos;
   });
   EXPECT_EQ(
       seen.device.detail,
-      "RTA timeout: AlarmAck (low) resent 3 times every 100 ms; alarm 1 acknowledged: diagnosis, slot 1 "
+      "RTA timeout: AlarmAck (low) resent 4 times every 100 ms; alarm 1 acknowledged: diagnosis, slot 1 "
       "subslot 2, USI 0x8000")
       << gateway.log();
-  // Longer than the timer's 400 ms: nothing of the first AR is acknowledged in the second.
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  // Longer than the timer's 500 ms: nothing of the first AR is acknowledged in the second.
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
   EXPECT_EQ(device.alarm_acks(), 1);
-  EXPECT_EQ(device.alarm_ack_frames(), 4);
+  EXPECT_EQ(device.alarm_ack_frames(), 5);
+  EXPECT_EQ(device.rta_errors(), 1);
   EXPECT_EQ(device.ars(), 2) << device.ar_ends();
   EXPECT_EQ(device.error(), "");
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();

@@ -7,12 +7,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "build_paths.hpp"
 #include "tomc/drives/profinet_drive.hpp"
 #include "tomc/profinet/gsdml.hpp"
+#include "tomc/profinet/io_controller.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 #include "tomc/scenario/profinet_gateway_config.hpp"
 #include "tomc/telegrams/codec.hpp"
 #include "tomc/telegrams/layout.hpp"
@@ -190,10 +195,10 @@ TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
   }
   EXPECT_EQ(error_of("<root/>"), "GSDML: the root element is not <ISO15745Profile> (is this a GSDML file?)");
   EXPECT_EQ(error_of(""), "GSDML line 0: not well-formed XML (XML_ERROR_EMPTY_DOCUMENT)");
-  // The line is the element's: the broken SubmoduleItem of telegram 3 is on line 123 of the file.
+  // The line is the element's: the broken SubmoduleItem of telegram 3 is on line 132 of the file.
   EXPECT_EQ(error_of(edited("<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x00010003\"",
                             "<SubmoduleItem ID=\"TEL3\"")),
-            "GSDML line 123: <SubmoduleItem ID=\"TEL3\">: no SubmoduleIdentNumber");
+            "GSDML line 132: <SubmoduleItem ID=\"TEL3\">: no SubmoduleIdentNumber");
   // 185 Unsigned64 items and NIST_A: 1482 bytes in telegram 1's input, more than one frame's C_SDU (1440).
   std::string items;
   for (int i = 0; i < 185; ++i)
@@ -395,8 +400,184 @@ TEST(GatewayConfig, AGsdmlProblemNamesTheKeyAndTheElement) {
                 "<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x1000G\"");
   EXPECT_EQ(only(gateway_problems("\"gsdml\": \"" + (broken / "drive.xml").string() + "\"", config)),
             "devices[0].gsdml: " + (broken / "drive.xml").string() +
-                ": GSDML line 123: <SubmoduleItem ID=\"TEL3\">: SubmoduleIdentNumber \"0x1000G\" is not a "
+                ": GSDML line 132: <SubmoduleItem ID=\"TEL3\">: SubmoduleIdentNumber \"0x1000G\" is not a "
                 "number in "
                 "0..4294967295");
   std::filesystem::remove_all(broken);
+}
+
+// GSDML RecordDataList/ParameterRecordDataItem (decision I34): Index, Length, the Const bytes at their
+// ByteOffset and each Ref's DefaultValue in its DataType (big-endian; Bit/BitArea at BitOffset of the byte),
+// the items of a submodule in TransferSequence order, placed where the submodule is plugged.
+TEST(Gsdml, ParameterRecordDataItemsBecomeTheRecordsOfTheirPlace) {
+  const gsdml::Device emulator = gsdml::parse(emulator_text());
+  ASSERT_EQ(emulator.access_points.at(0).submodules.at(0).records.size(), 1u);
+  const gsdml::ParameterRecord& monitoring = emulator.access_points[0].submodules[0].records[0];
+  EXPECT_EQ(monitoring.index, tomc::drives::kMonitoringRecordIndex);              // Index="256"
+  EXPECT_EQ(monitoring.data, (std::vector<std::uint8_t>{0x00, 0x01, 0x00, 20}));  // Const 00 01, Ref 20
+  EXPECT_EQ(gsdml::parameter_records(emulator, drive_on("TEL3")),
+            (std::vector<gsdml::PlacedRecord>{{0, 0, 1, 0x0100, {0x00, 0x01, 0x00, 20}}}));
+
+  // Two items in one submodule, the second written first (TransferSequence 1 before 2), every Ref type.
+  const std::string items = R"(<RecordDataList>
+      <ParameterRecordDataItem Index="0x20" Length="12" TransferSequence="2">
+        <Const Data="0xAA, 0xBB" ByteOffset="10"/>
+        <Ref DataType="Integer16" ByteOffset="0" DefaultValue="-2"/>
+        <Ref DataType="Unsigned32" ByteOffset="2" DefaultValue="0x01020304"/>
+        <Ref DataType="Float32" ByteOffset="6" DefaultValue="1.5"/>
+        <Ref DataType="Bit" ByteOffset="10" BitOffset="0" DefaultValue="1"/>
+        <Ref DataType="BitArea" ByteOffset="11" BitOffset="4" BitLength="3" DefaultValue="5"/>
+      </ParameterRecordDataItem>
+      <ParameterRecordDataItem Index="33" Length="1" TransferSequence="1">
+        <Ref DataType="Integer8" ByteOffset="0" DefaultValue="-128"/>
+      </ParameterRecordDataItem>
+    </RecordDataList>
+    <ModuleInfo>
+                <Name TextId="T_DAP"/>
+                <InfoText TextId="T_DAP_Info"/>)";
+  const auto replace_records = [&](const std::string& with) {
+    std::string text = emulator_text();
+    const auto from = text.find("<RecordDataList>");
+    const auto to = text.find("<InfoText TextId=\"T_DAP_Info\"/>", from);
+    EXPECT_NE(from, std::string::npos);
+    return text.replace(from, to + std::string("<InfoText TextId=\"T_DAP_Info\"/>").size() - from, with);
+  };
+  const gsdml::Device device = gsdml::parse(replace_records(items));
+  const auto records = gsdml::parameter_records(device, drive_on("TEL3"));
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0].index, 33);
+  EXPECT_EQ(records[0].data, (std::vector<std::uint8_t>{0x80}));
+  EXPECT_EQ(records[1].index, 0x20);
+  // FFFE, 01020304, 1.5f = 3FC00000, 0xAA with bit 0 set = 0xAB, 0xBB with bits 4..6 = 101 = 0xDB.
+  EXPECT_EQ(records[1].data, (std::vector<std::uint8_t>{0xFF, 0xFE, 0x01, 0x02, 0x03, 0x04, 0x3F, 0xC0, 0x00,
+                                                        0x00, 0xAB, 0xDB}));
+  EXPECT_EQ(records[1].slot, 0);
+  EXPECT_EQ(records[1].subslot, 1);
+
+  // What a controller cannot build is named with its element and line.
+  struct Case {
+    std::string item, message;
+  };
+  const Case cases[] = {
+      {R"(<ParameterRecordDataItem Length="4"/>)", "<ParameterRecordDataItem>: no Index"},
+      {R"(<ParameterRecordDataItem Index="0x8000" Length="4"/>)",
+       "Index \"0x8000\" is not a number in 0..32767"},
+      {R"(<ParameterRecordDataItem Index="1" Length="0"/>)", "<ParameterRecordDataItem>: Length 0"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Ref DataType="Unsigned16" ByteOffset="1" DefaultValue="1"/></ParameterRecordDataItem>)",
+       "<Ref>: ByteOffset 1 + 2 bytes is beyond the record's Length 2"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Ref DataType="Unsigned8" ByteOffset="0" DefaultValue="256"/></ParameterRecordDataItem>)",
+       "<Ref>: DefaultValue \"256\" is not a number in 0..255"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Ref DataType="Integer16" ByteOffset="0" DefaultValue="-32769"/></ParameterRecordDataItem>)",
+       "<Ref>: DefaultValue \"-32769\" is not a number in -32768..32767"},
+      {R"(<ParameterRecordDataItem Index="1" Length="8"><Ref DataType="Float64" ByteOffset="0" DefaultValue="1"/></ParameterRecordDataItem>)",
+       "<Ref>: DataType \"Float64\" of a parameter Ref is not supported"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Ref DataType="BitArea" ByteOffset="0" BitOffset="6" BitLength="3" DefaultValue="1"/></ParameterRecordDataItem>)",
+       "<Ref>: BitOffset 6 and BitLength 3 leave the byte at ByteOffset"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Const Data="0x01,0x02,0x03"/></ParameterRecordDataItem>)",
+       "<Const>: ByteOffset 2 + 1 bytes is beyond the record's Length 2"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"><Const Data="0x01,,0x03"/></ParameterRecordDataItem>)",
+       "<Const>: Data \"0x01,,0x03\" has an empty byte"},
+      {R"(<ParameterRecordDataItem Index="1" Length="2"/><ParameterRecordDataItem Index="1" Length="2"/>)",
+       "<ParameterRecordDataItem>: Index 1 twice in one submodule"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = error_of(replace_records(
+        "<RecordDataList>" + c.item + "</RecordDataList><ModuleInfo><InfoText TextId=\"T_DAP_Info\"/>"));
+    EXPECT_NE(message.find(c.message), std::string::npos) << c.item << ": " << message;
+    EXPECT_EQ(message.rfind("GSDML line ", 0), 0u) << message;
+  }
+}
+
+// Decision I34 in the gateway's file: the GSDML file's records come first (IODWriteReq before PrmEnd), then
+// the file's "records"; a file record of the same slot, subslot and index replaces the GSDML default. The
+// emulated drive takes its monitoring record (setpoint timeout 20 by default, 50 from the file) and refuses
+// another version with PNIOStatus DF 80 B8, which ends the start-up.
+TEST(GatewayConfig, GsdmlParameterRecordsAreWrittenFirstAndTheFileMayReplaceThem) {
+  const auto start = [](const sc::ProfinetDeviceConfig& c, std::vector<std::uint16_t>& indexes) {
+    pn::ControllerDeviceConfig config;
+    config.name_of_station = c.name_of_station;
+    config.ip = {c.ip, c.netmask, {}};
+    for (const sc::ProfinetModuleConfig& m : c.modules) {
+      pn::ExpectedModule module{m.api, m.slot, m.ident, {}};
+      for (const sc::ProfinetSubmoduleConfig& s : m.submodules) {
+        module.submodules.push_back(
+            {s.subslot, s.ident,
+             s.input_length != 0 ? pn::SubmoduleDirection::kInputOutput : pn::SubmoduleDirection::kNoIo,
+             s.input_length, s.output_length});
+      }
+      config.modules.push_back(module);
+    }
+    for (const sc::ProfinetRecordConfig& r : c.records) {  // as the gateway does
+      config.startup_records.push_back({r.slot, r.subslot, r.index, r.data, r.api});
+      indexes.push_back(r.index);
+    }
+    auto controller = std::make_unique<pn::IoController>(pn::MacAddress{2, 0, 0, 0, 0, 1}, "gw", config,
+                                                         pn::Uuid{0x5E, 1, 2, {3}});
+    pn::DeviceIdentity identity;
+    identity.name_of_station = c.name_of_station;
+    identity.ip = config.ip;
+    identity.mac = {2, 0, 0, 0, 0, 2};
+    auto drive = std::make_unique<tomc::drives::ProfinetDrive>(identity, c.device_config(),
+                                                               tomc::drives::SimulatedDriveParameters{});
+    const bool running = [&] {
+      (void)controller->on_dcp(drive->device().on_dcp(controller->identify_request(1)), 2);
+      if (!controller->on_connect_response(drive->device().on_rpc(controller->connect_request())))
+        return false;
+      while (controller->state() == pn::ControllerArState::kParameterizing ||
+             controller->state() == pn::ControllerArState::kPrmEnd) {
+        if (!controller->on_response(drive->device().on_rpc(controller->next_request()))) return false;
+      }
+      const auto ready = drive->device().take_application_ready();
+      return ready && !controller->on_application_ready(*ready).empty();
+    }();
+    return std::tuple{running, std::move(controller), std::move(drive)};
+  };
+
+  sc::ProfinetGatewayConfig config;
+  ASSERT_TRUE(gateway_problems(emulated_drive_with("TEL3") + R"(, "records": [
+      { "slot": 1, "index": "0xB02E", "data": "01 01 01 01 10 01 03 9A 00 00" } ])",
+                               config)
+                  .empty());
+  const auto& records = config.devices.at(0).records;
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_TRUE(records[0].from_gsdml);
+  EXPECT_EQ(records[0].index, tomc::drives::kMonitoringRecordIndex);
+  EXPECT_EQ(records[0].data, (std::vector<std::uint8_t>{0x00, 0x01, 0x00, 20}));
+  EXPECT_FALSE(records[1].from_gsdml);
+  EXPECT_EQ(records[1].index, pn::kParameterAccessIndex);
+  std::vector<std::uint16_t> indexes;
+  {
+    auto [running, controller, drive] = start(config.devices[0], indexes);
+    EXPECT_TRUE(running);
+    EXPECT_EQ(indexes, (std::vector<std::uint16_t>{0x0100, 0xB02E}));
+    EXPECT_EQ(drive->monitoring_records(), 1);
+    EXPECT_EQ(drive->drive().parameters().setpoint_timeout_cycles, 20u);
+  }
+
+  sc::ProfinetGatewayConfig replaced;
+  ASSERT_TRUE(gateway_problems(emulated_drive_with("TEL3") + R"(, "records": [
+      { "slot": 0, "subslot": 1, "index": 256, "data": "00 01 00 32" } ])",
+                               replaced)
+                  .empty());
+  ASSERT_EQ(replaced.devices.at(0).records.size(), 1u);
+  EXPECT_FALSE(replaced.devices[0].records[0].from_gsdml);
+  indexes.clear();
+  {
+    auto [running, controller, drive] = start(replaced.devices[0], indexes);
+    EXPECT_TRUE(running);
+    EXPECT_EQ(drive->monitoring_records(), 1);  // written once, with the file's data
+    EXPECT_EQ(drive->drive().parameters().setpoint_timeout_cycles, 50u);
+  }
+
+  sc::ProfinetGatewayConfig refused;
+  ASSERT_TRUE(gateway_problems(emulated_drive_with("TEL3") + R"(, "records": [
+      { "slot": 0, "subslot": 1, "index": 256, "data": "00 02 00 32" } ])",
+                               refused)
+                  .empty());
+  indexes.clear();
+  auto [running, controller, drive] = start(refused.devices[0], indexes);
+  EXPECT_FALSE(running);
+  EXPECT_EQ(controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(controller->last_error(), (pn::PnioStatus{0xDF, 0x80, 0xB8, 0x00}));
+  EXPECT_EQ(drive->monitoring_records(), 0);
 }

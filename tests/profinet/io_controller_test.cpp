@@ -4,6 +4,7 @@
 // module, a refused Connect, an alarm acknowledged, no allocation in the cyclic calls.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -46,7 +47,7 @@ pn::ControllerDeviceConfig device_config(int index) {
   config.name_of_station = "drive-" + std::to_string(index);
   config.ip = {{10, 0, 0, static_cast<std::uint8_t>(10 + index)}, {255, 255, 255, 0}, {}};
   config.modules = drive_modules();
-  config.startup_records = {{1, 1, 0xB02E, pn::testing::read_p0922_request().data}};
+  config.startup_records = {{1, 1, 0xB02E, pn::testing::read_p0922_request().data, 0}};
   config.input_frame_id = static_cast<std::uint16_t>(0x8000 + 2 * index);
   config.output_frame_id = static_cast<std::uint16_t>(0x8001 + 2 * index);
   return config;
@@ -636,4 +637,108 @@ TEST(IoController, CyclicCallsDoNotAllocate) {
   }
   EXPECT_EQ(tomc::testing::allocation_count() - before, 0u);
   EXPECT_EQ(bad, 0u);
+}
+
+// Decision I35, IEC 61158-6-10 RTA-ERR-PDU: when the RTA timer ends the AR (factor 1, retries 3: the
+// AlarmAck of cycle 5 resent in 105, 205, 305, the end in 405), the timer's buffer holds an ERR-RTA-PDU for
+// the device: PDUType 4, the device's alarm reference as destination (the notification's source endpoint),
+// the same priority's FrameID and VLAN priority, VarPart the PNIOStatus of the end (0xCF81FD08, "AR alarm
+// send.cnf(-)"), as the device would read it.
+TEST(IoController, TheRtaTimerSendsAnErrRtaPduBeforeItEndsTheAr) {
+  Pair pair = make_rta_pair(1, 3);
+  ASSERT_TRUE(start_up(pair));
+  const pn::RtaFrame notification = pn::testing::diagnosis_alarm();  // high priority, endpoints 1 ← 3
+  ASSERT_EQ(offer(pair, notification, 5 * kCycleUs).frames, 2u);
+  std::vector<std::uint8_t> error_frame;
+  int ended_in = 0;
+  for (int k = 6; k <= 500 && ended_in == 0; ++k) {
+    const TimerCycle timers = run_timers(pair, static_cast<std::uint64_t>(k) * kCycleUs);
+    if (timers.high == pn::AlarmTimerAction::kAbort) {
+      ended_in = k;
+      error_frame = timers.resent;
+    }
+  }
+  EXPECT_EQ(ended_in, 405);
+  ASSERT_FALSE(error_frame.empty());
+  const pn::RtaFrame error = decoded_rta(error_frame);
+  EXPECT_EQ(error.frame_id, pn::kFrameIdAlarmHigh);
+  EXPECT_EQ(error.pdu_type, pn::RtaPduType::kError);
+  EXPECT_EQ(error.destination_endpoint, notification.source_endpoint);
+  EXPECT_EQ(error.source_endpoint, notification.destination_endpoint);
+  EXPECT_FALSE(error.has_block);
+  EXPECT_EQ(error.error.value(), 0xCF81FD08u);
+  EXPECT_EQ(error.ack_sequence, notification.send_sequence);
+  // Ethernet: to the device, from us, VLAN priority 6 (high); then FrameID 0xFC01, the endpoints, PDUType
+  // 0x14 (ERR, version 1) at byte 24, AddFlags, SendSeqNum, AckSeqNum, VarPartLen 4 and the status bytes.
+  ASSERT_GE(error_frame.size(), 36u);
+  EXPECT_TRUE(std::equal(pair.device->identity().mac.begin(), pair.device->identity().mac.end(),
+                         error_frame.begin()));
+  EXPECT_EQ(error_frame[14] >> 5, 6);
+  EXPECT_EQ(error_frame[24], 0x14);
+  EXPECT_EQ((std::vector<std::uint8_t>(error_frame.begin() + 30, error_frame.begin() + 36)),
+            (std::vector<std::uint8_t>{0x00, 0x04, 0xCF, 0x81, 0xFD, 0x08}));
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+}
+
+// Decision I35: a NACK-RTA-PDU of the device while our AlarmAck waits gets the AlarmAck again at once (byte
+// for byte), from the same RTARetries budget as the timer: with retries 3 three NACKs are answered, the
+// fourth is not, and the timer ends the AR one timeout (100 ms) after the last resend. A NACK acknowledges
+// nothing, and without a pending AlarmAck it is ignored.
+TEST(IoController, ANackGetsOurAlarmAckAgainWithinTheRtaRetries) {
+  Pair pair = make_rta_pair(1, 3);
+  ASSERT_TRUE(start_up(pair));
+  pn::RtaFrame nack = pn::testing::diagnosis_alarm();
+  nack.pdu_type = pn::RtaPduType::kNack;
+  nack.has_block = false;
+  nack.tack = false;
+  EXPECT_EQ(offer(pair, nack, 1000).frames, 0u);  // nothing of ours waits
+  const AlarmAnswer sent = offer(pair, pn::testing::diagnosis_alarm(), 2000);
+  ASSERT_EQ(sent.frames, 2u);
+  nack.ack_sequence = decoded_rta(sent.alarm_ack).send_sequence;  // even naming ours, a NACK is no ACK
+  for (const std::uint64_t at : {10'000u, 20'000u, 30'000u}) {
+    const AlarmAnswer again = offer(pair, nack, at);
+    EXPECT_EQ(again.frames, 1u) << at;
+    EXPECT_TRUE(again.ack.empty()) << at;
+    EXPECT_EQ(again.alarm_ack, sent.alarm_ack) << at;
+    EXPECT_TRUE(pair.controller->alarm_ack_pending(true)) << at;
+  }
+  const AlarmAnswer none = offer(pair, nack, 40'000);  // the budget is used up
+  EXPECT_EQ(none.frames, 0u);
+  EXPECT_TRUE(none.alarm_ack.empty());
+  EXPECT_EQ(run_timers(pair, 129'999).high, pn::AlarmTimerAction::kNone);  // 100 ms after the last resend
+  EXPECT_EQ(run_timers(pair, 130'000).high, pn::AlarmTimerAction::kAbort);
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+}
+
+// Decision I35: an ERR-RTA-PDU of the device ends the AR on our side too, with the device's PNIOStatus in
+// last_error() and rta_error_received() (its priority named); nothing is sent back. A new AR clears it.
+TEST(IoController, TheDevicesErrRtaPduEndsTheAr) {
+  Pair pair = make_rta_pair(1, 3);
+  ASSERT_TRUE(start_up(pair));
+  pn::RtaFrame error = pn::testing::diagnosis_alarm();
+  error.frame_id = pn::kFrameIdAlarmLow;
+  error.pdu_type = pn::RtaPduType::kError;
+  error.has_block = false;
+  error.tack = false;
+  error.error = {0xCF, 0x81, 0xFD, 0x08};
+  const AlarmAnswer answer = offer(pair, error, 1000);
+  EXPECT_EQ(answer.frames, 0u);
+  EXPECT_TRUE(answer.ack.empty());
+  EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
+  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD08u);
+  EXPECT_TRUE(pair.controller->rta_error_received());
+  EXPECT_FALSE(pair.controller->rta_error_high_priority());
+  std::array<std::uint8_t, 1518> frame{};
+  EXPECT_EQ(pair.controller->next_output_frame(frame), 0u);
+  pair.device->abort_ar();
+  ASSERT_TRUE(start_up(pair, 9));
+  EXPECT_FALSE(pair.controller->rta_error_received());
+  // Codec: an ERR PDU cut inside its PNIOStatus does not decode.
+  const RawAlarm raw = raw_alarm(pair, error);
+  pn::RtaFrame decoded;
+  EXPECT_EQ(pn::decode_rta(raw.frame(), decoded), pn::ProfinetError::kNone);
+  EXPECT_EQ(decoded.error, error.error);
+  std::vector<std::uint8_t> cut(raw.frame().begin(), raw.frame().end());
+  cut[31] = 2;  // VarPartLen 2
+  EXPECT_NE(pn::decode_rta(cut, decoded), pn::ProfinetError::kNone);
 }

@@ -186,7 +186,7 @@ TEST(ProfinetNetns, NamingConnectionCyclicCableCutAndReconnect) {
     config.ip = {kDeviceIp, {255, 255, 255, 0}, {}};
     config.modules = {{0, 0, 0x1, {{1, 0x1, pn::SubmoduleDirection::kNoIo, 0, 0}}},
                       {0, 1, 0x100, {{2, 0x101, pn::SubmoduleDirection::kInputOutput, 4, 4}}}};
-    config.startup_records = {{1, 1, 0xB02E, pn::testing::read_p0922_request().data}};
+    config.startup_records = {{1, 1, 0xB02E, pn::testing::read_p0922_request().data, 0}};
     // 1 ms cycles with a 20 ms watchdog on both sides: the test's threads are not real-time and share two
     // cores with builds, so a 3 ms watchdog would end the AR at random (docs/profinet-gateway.md).
     config.watchdog_factor = 20;

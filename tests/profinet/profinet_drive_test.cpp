@@ -133,7 +133,7 @@ TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
   Link link;
   ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
   const pn::ParameterRequest request{
-      7, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}};
+      7, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}, {0x10, 1, 2000, 0}}, {}};
   const auto written = link.emulator.device().on_rpc(link.controller.record_write_request(
       dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, pn::encode(request)));
   ASSERT_TRUE(link.controller.on_record_response(written).has_value());
@@ -155,7 +155,7 @@ TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
   EXPECT_FALSE(link.controller.on_record_response(again).has_value());
   EXPECT_EQ(link.controller.last_error().value(), 0xDE80B800u);
   EXPECT_EQ(link.controller.state(), pn::ControllerArState::kRunning);
-  const pn::ParameterRequest unknown{8, pn::parameter_request_id::kRead, 1, {{0x10, 1, 9999, 0}}};
+  const pn::ParameterRequest unknown{8, pn::parameter_request_id::kRead, 1, {{0x10, 1, 9999, 0}}, {}};
   (void)link.controller.on_record_response(link.emulator.device().on_rpc(link.controller.record_write_request(
       dr::kDriveObjectSlot, 1, pn::kParameterAccessIndex, pn::encode(unknown))));
   const auto error = link.controller.on_record_response(link.emulator.device().on_rpc(
@@ -171,7 +171,7 @@ TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
 // The codec: the bytes of a p0922 read request (as in the tshark test's record) and of its response; round
 // trips; truncated and malformed input refused.
 TEST(ParameterAccess, BytesRoundTripsAndMalformedInput) {
-  const pn::ParameterRequest request{1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}}};
+  const pn::ParameterRequest request{1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}}, {}};
   const auto bytes = pn::encode(request);
   EXPECT_EQ(bytes, (std::vector<std::uint8_t>{0x01, 0x01, 0x01, 0x01, 0x10, 0x01, 0x03, 0x9A, 0x00, 0x00}));
   EXPECT_EQ(bytes, pn::testing::read_p0922_request().data);

@@ -124,9 +124,8 @@ const Module& choose_access_point(const Device& device, const std::string& id) {
   return *dap;
 }
 
-}  // namespace
-
-std::vector<ExpectedModule> expected_modules(const Device& device, const Selection& selection) {
+// Every plugged module by slot: the DAP, the chosen modules and the ones fixed in a slot nobody chose.
+std::map<std::uint16_t, Plugged> plug(const Device& device, const Selection& selection) {
   const Module& dap = choose_access_point(device, selection.access_point);
   std::map<std::uint16_t, Plugged> slots;
   slots.emplace(dap.slot, plug_module(device, dap, dap.slot, {}));
@@ -157,7 +156,13 @@ std::vector<ExpectedModule> expected_modules(const Device& device, const Selecti
     });
   }
   if (slots.size() > kMaxModules) throw GsdmlError("more than 64 modules");
+  return slots;
+}
 
+}  // namespace
+
+std::vector<ExpectedModule> expected_modules(const Device& device, const Selection& selection) {
+  const std::map<std::uint16_t, Plugged> slots = plug(device, selection);
   // One entry per slot and API (ExpectedSubmoduleBlockReq groups the submodules of a slot by API).
   std::vector<ExpectedModule> modules;
   for (const auto& [slot, plugged] : slots) {
@@ -175,6 +180,17 @@ std::vector<ExpectedModule> expected_modules(const Device& device, const Selecti
     if (modules.size() == first) modules.push_back({0, slot, plugged.module->ident, {}});
   }
   return modules;
+}
+
+std::vector<PlacedRecord> parameter_records(const Device& device, const Selection& selection) {
+  std::vector<PlacedRecord> records;
+  for (const auto& [slot, plugged] : plug(device, selection)) {
+    for (const auto& [subslot, submodule] : plugged.submodules) {
+      for (const ParameterRecord& r : submodule->records)
+        records.push_back({submodule->api, slot, subslot, r.index, r.data});
+    }
+  }
+  return records;
 }
 
 }  // namespace tomc::profinet::gsdml

@@ -1,7 +1,10 @@
 // Reading a GSDML file (gsdml.hpp) with tinyxml2: the elements of GSDML V2.x an IO controller needs.
 #include <tinyxml2.h>
 
+#include <algorithm>
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -180,6 +183,141 @@ std::uint16_t io_data_length(const xml::XMLElement& io_data, std::string_view di
   return static_cast<std::uint16_t>(total);
 }
 
+// ---- RecordDataList/ParameterRecordDataItem (decision I34) ----
+
+constexpr std::size_t kMaxRecordLength = 4096;  // as the gateway file's "records"
+constexpr std::size_t kMaxRecordsPerSubmodule = 64;
+
+// A signed or unsigned number in decimal or "0x" hex ("-5", "3000", "0x0BB8") within [low, high].
+std::int64_t integer_value(const xml::XMLElement& e, const char* attribute, std::int64_t low,
+                           std::int64_t high) {
+  const std::string owned = string_attribute(e, attribute);
+  std::string_view text = owned;
+  const bool negative = !text.empty() && text.front() == '-';
+  if (negative) text.remove_prefix(1);
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+    text.remove_prefix(2);
+    base = 16;
+  }
+  std::uint64_t magnitude = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), magnitude, base);
+  // The types here are at most 32 bits wide: a magnitude beyond 2^32 is out of range whatever its sign.
+  const bool parsed = error == std::errc() && end == text.data() + text.size() && !text.empty() &&
+                      magnitude <= (std::uint64_t{1} << 32);
+  const std::int64_t value =
+      negative ? -static_cast<std::int64_t>(magnitude) : static_cast<std::int64_t>(magnitude);
+  if (!parsed || value < low || value > high) {
+    fail(e, std::string(attribute) + " \"" + e.Attribute(attribute) + "\" is not a number in " +
+                std::to_string(low) + ".." + std::to_string(high));
+  }
+  return value;
+}
+
+// Puts `bytes` big-endian bytes of `value` at `offset` of the record (checked against its Length).
+void put_bytes(const xml::XMLElement& e, std::vector<std::uint8_t>& data, std::size_t offset,
+               std::size_t bytes, std::uint64_t value) {
+  if (offset + bytes > data.size()) {
+    fail(e, "ByteOffset " + std::to_string(offset) + " + " + std::to_string(bytes) +
+                " bytes is beyond the record's Length " + std::to_string(data.size()));
+  }
+  for (std::size_t k = 0; k < bytes; ++k)
+    data[offset + k] = static_cast<std::uint8_t>(value >> (8 * (bytes - 1 - k)));
+}
+
+// A Ref: its DefaultValue in its DataType at ByteOffset (and BitOffset/BitLength for Bit and BitArea).
+void apply_ref(const xml::XMLElement& ref, std::vector<std::uint8_t>& data) {
+  struct IntegerType {
+    const char* name;
+    std::size_t bytes;
+    bool is_signed;
+  };
+  static constexpr IntegerType kIntegers[] = {{"Integer8", 1, true},    {"Integer16", 2, true},
+                                              {"Integer32", 4, true},   {"Unsigned8", 1, false},
+                                              {"Unsigned16", 2, false}, {"Unsigned32", 4, false}};
+  const std::string type = string_attribute(ref, "DataType");
+  const auto offset = static_cast<std::size_t>(number_attribute(ref, "ByteOffset", kMaxRecordLength - 1));
+  if (type == "Bit" || type == "BitArea") {
+    // Bit 0 is the least significant bit of the byte at ByteOffset; a BitArea within that byte only.
+    const auto bit = static_cast<unsigned>(number_attribute(ref, "BitOffset", 7, 0));
+    const auto length = static_cast<unsigned>(type == "Bit" ? 1 : number_attribute(ref, "BitLength", 8, 1));
+    if (length == 0 || bit + length > 8) {
+      fail(ref, "BitOffset " + std::to_string(bit) + " and BitLength " + std::to_string(length) +
+                    " leave the byte at ByteOffset (not supported)");
+    }
+    if (offset >= data.size()) {
+      fail(ref, "ByteOffset " + std::to_string(offset) + " is beyond the record's Length " +
+                    std::to_string(data.size()));
+    }
+    const auto value = static_cast<unsigned>(integer_value(ref, "DefaultValue", 0, (1 << length) - 1));
+    const unsigned mask = ((1u << length) - 1) << bit;
+    data[offset] = static_cast<std::uint8_t>((data[offset] & ~mask) | (value << bit));
+    return;
+  }
+  for (const IntegerType& t : kIntegers) {
+    if (type != t.name) continue;
+    const std::int64_t bits = static_cast<std::int64_t>(8 * t.bytes);
+    const std::int64_t low = t.is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
+    const std::int64_t high =
+        t.is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
+    const std::int64_t value = integer_value(ref, "DefaultValue", low, high);
+    put_bytes(ref, data, offset, t.bytes, static_cast<std::uint64_t>(value));
+    return;
+  }
+  if (type == "Float32") {
+    const char* text = ref.Attribute("DefaultValue");
+    float value = 0;
+    if (text == nullptr || ref.QueryFloatAttribute("DefaultValue", &value) != xml::XML_SUCCESS)
+      fail(ref, "DefaultValue is not a Float32");
+    put_bytes(ref, data, offset, 4, std::bit_cast<std::uint32_t>(value));
+    return;
+  }
+  fail(ref,
+       "DataType \"" + type +
+           "\" of a parameter Ref is not supported (Bit, BitArea, Integer8..32, Unsigned8..32, Float32)");
+}
+
+// A Const: Data ("0x01,0x02,...", one byte each) at ByteOffset (default 0).
+void apply_const(const xml::XMLElement& c, std::vector<std::uint8_t>& data) {
+  auto offset = static_cast<std::size_t>(number_attribute(c, "ByteOffset", kMaxRecordLength - 1, 0));
+  const std::string text = string_attribute(c, "Data");
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto first = item.find_first_not_of(" \t\r\n");
+    const auto last = item.find_last_not_of(" \t\r\n");
+    if (first == std::string::npos) fail(c, "Data \"" + text + "\" has an empty byte");
+    const std::string byte = item.substr(first, last - first + 1);
+    put_bytes(c, data, offset++, 1, number(c, "Data", byte, 0xFF));
+  }
+}
+
+std::vector<ParameterRecord> read_records(const xml::XMLElement& submodule) {
+  std::vector<ParameterRecord> records;
+  const xml::XMLElement* list = child(submodule, "RecordDataList");
+  if (list == nullptr) return records;
+  for_each_child(*list, "ParameterRecordDataItem", [&](const xml::XMLElement& item) {
+    if (records.size() == kMaxRecordsPerSubmodule) fail(item, "more than 64 ParameterRecordDataItems");
+    ParameterRecord r;
+    r.line = item.GetLineNum();
+    r.index = static_cast<std::uint16_t>(number_attribute(item, "Index", 0x7FFF));
+    r.transfer_sequence = static_cast<std::uint32_t>(number_attribute(item, "TransferSequence", 0xFFFF, 0));
+    const auto length = static_cast<std::size_t>(number_attribute(item, "Length", kMaxRecordLength));
+    if (length == 0) fail(item, "Length 0");
+    for (const ParameterRecord& other : records) {
+      if (other.index == r.index) fail(item, "Index " + std::to_string(r.index) + " twice in one submodule");
+    }
+    r.data.assign(length, 0);
+    // Const first, then Ref on top (GSDML: a Ref's DefaultValue is what a user has not changed).
+    for_each_child(item, "Const", [&](const xml::XMLElement& c) { apply_const(c, r.data); });
+    for_each_child(item, "Ref", [&](const xml::XMLElement& ref) { apply_ref(ref, r.data); });
+    records.push_back(std::move(r));
+  });
+  std::stable_sort(records.begin(), records.end(), [](const ParameterRecord& a, const ParameterRecord& b) {
+    return a.transfer_sequence < b.transfer_sequence;
+  });
+  return records;
+}
+
 // A SubmoduleItem, VirtualSubmoduleItem, InterfaceSubmoduleItem or PortSubmoduleItem.
 Submodule read_submodule(const xml::XMLElement& e, const Texts& texts) {
   Submodule s;
@@ -192,6 +330,7 @@ Submodule read_submodule(const xml::XMLElement& e, const Texts& texts) {
     s.input_length = io_data_length(*io, "Input");
     s.output_length = io_data_length(*io, "Output");
   }
+  s.records = read_records(e);
   return s;
 }
 

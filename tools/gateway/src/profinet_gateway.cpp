@@ -20,6 +20,7 @@
 #include "tomc/drives/dds/participant.hpp"
 #include "tomc/drives/dds/type_support.hpp"
 #include "tomc/drives/profinet_drive.hpp"
+#include "tomc/profinet/dcp_commissioning.hpp"
 #include "tomc/profinet/io_controller.hpp"
 #include "tomc/profinet/sockets.hpp"
 #include "tomc/techobjects/runtime/realtime_runner.hpp"
@@ -144,9 +145,12 @@ struct ProfinetGateway::Impl {
     std::atomic<bool> cyclic{false};
     std::atomic<bool> faulted{false};
     std::atomic<std::uint32_t> alarms{0};
-    std::atomic<std::uint64_t> last_alarm{0};      // the last acknowledged alarm, pack_alarm()
-    std::atomic<std::uint32_t> alarm_timeouts{0};  // ARs the RTA timer ended in the cyclic thread
-    std::atomic<bool> alarm_timeout_high{false};   // the priority of the last one
+    std::atomic<std::uint64_t> last_alarm{0};        // the last acknowledged alarm, pack_alarm()
+    std::atomic<std::uint32_t> alarm_timeouts{0};    // ARs the RTA timer ended in the cyclic thread
+    std::atomic<bool> alarm_timeout_high{false};     // the priority of the last one
+    std::atomic<std::uint32_t> rta_errors{0};        // ARs the device ended with an ERR-RTA-PDU (I35)
+    std::atomic<std::uint32_t> rta_error_status{0};  // the last one's PNIOStatus
+    std::atomic<bool> rta_error_high{false};
     std::atomic<std::uint32_t> ars{0};
     std::atomic<float> reference_speed_rpm{0.0f};  // p2000 as read at start-up (0: not read)
     // Cyclic thread only.
@@ -286,7 +290,8 @@ struct ProfinetGateway::Impl {
       if (!d.controller->alarm_ack_pending(high)) continue;  // inline: the usual case costs no call
       std::size_t bytes = 0;
       const pn::AlarmTimerAction action = d.controller->alarm_timer(high, now, alarm_ack, bytes);
-      if (action == pn::AlarmTimerAction::kResend) cyclic_socket.send(std::span(alarm_ack).first(bytes));
+      // A resent AlarmAck, or the ERR-RTA-PDU that tells the device why its AR ends (decision I35).
+      if (bytes > 0) cyclic_socket.send(std::span(alarm_ack).first(bytes));
       if (action == pn::AlarmTimerAction::kAbort) {
         d.alarm_timeout_high.store(high, std::memory_order_relaxed);
         d.alarm_timeouts.fetch_add(1, std::memory_order_release);
@@ -326,7 +331,16 @@ struct ProfinetGateway::Impl {
           std::size_t ack_bytes = 0;
           std::size_t alarm_ack_bytes = 0;
           const std::uint32_t before = d.controller->alarms_acknowledged();
-          if (d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes, now) > 0) {
+          const std::size_t frames =
+              d.controller->on_alarm(in, ack, alarm_ack, ack_bytes, alarm_ack_bytes, now);
+          if (d.controller->rta_error_received()) {  // the device ended the AR (ERR-RTA-PDU, decision I35)
+            d.rta_error_status.store(d.controller->last_error().value(), std::memory_order_relaxed);
+            d.rta_error_high.store(d.controller->rta_error_high_priority(), std::memory_order_relaxed);
+            d.rta_errors.fetch_add(1, std::memory_order_release);
+            lose_ar(d);
+            break;
+          }
+          if (frames > 0) {
             if (ack_bytes > 0) cyclic_socket.send(std::span(ack).first(ack_bytes));
             if (alarm_ack_bytes > 0) cyclic_socket.send(std::span(alarm_ack).first(alarm_ack_bytes));
             if (d.controller->alarms_acknowledged() != before) {  // a resent notification is reported once
@@ -539,18 +553,35 @@ struct ProfinetGateway::Impl {
   // ---- the start-up thread ----
   void start_loop() {
     std::uint32_t xid = 0;
+    std::vector<std::uint8_t> hello;  // a DCP Hello of an absent device, seen while waiting (decision I36)
     while (!stop.load()) {
       bool waiting = false;
+      // The device whose Hello came is tried first, with its Hello instead of an Identify.
+      std::vector<Device*> order;
       for (auto& owned : devices) {
+        if (!hello.empty() && pn::dcp_hello_name(hello) == owned->config.name_of_station)
+          order.push_back(owned.get());
+      }
+      for (auto& owned : devices) {
+        if (order.empty() || order.front() != owned.get()) order.push_back(owned.get());
+      }
+      for (Device* next : order) {
         if (stop.load()) return;
-        Device& d = *owned;
+        Device& d = *next;
         if (d.cyclic.load(std::memory_order_acquire)) continue;
         // p0922 of the drive object, or of the encoder object in an encoder-only device.
         const Slot checked = d.config.telegram != 0 ? Slot::kDrive : Slot::kEncoder1;
-        detail::TelegramCheck check{d.config.place(checked).slot, d.device_config.telegram(checked), 0.0f};
+        detail::ParameterSteps steps{d.config.place(checked).slot,
+                                     d.config.check_telegram,
+                                     d.device_config.telegram(checked),
+                                     0.0f,
+                                     {}};
+        for (const scenario::ProfinetParameterConfig& p : d.config.parameters)
+          steps.writes.push_back({p.slot != 0 ? p.slot : steps.slot, {p.number, p.subindex, p.value}});
+        const bool parameter_access = steps.check_telegram || !steps.writes.empty();
         const std::uint32_t alarms_before = d.controller->alarms_acknowledged();
         const std::string problem = detail::start_up(*d.controller, start_socket, rpc_socket, xid,
-                                                     d.config.check_telegram ? &check : nullptr);
+                                                     parameter_access ? &steps : nullptr, hello);
         // Alarms answered during the start-up (start_up.hpp) are reported like the cyclic thread's.
         if (const std::uint32_t during = d.controller->alarms_acknowledged() - alarms_before; during > 0) {
           d.last_alarm.store(pack_alarm(*d.controller->last_alarm()), std::memory_order_relaxed);
@@ -565,7 +596,7 @@ struct ProfinetGateway::Impl {
           // race with publish_answer(), found by the TSan stage.
           d.controller->set_outputs_valid(false);  // until a controller's setpoint is applied (G6)
           d.ars.fetch_add(1, std::memory_order_relaxed);
-          d.reference_speed_rpm.store(check.reference_speed_rpm, std::memory_order_relaxed);
+          d.reference_speed_rpm.store(steps.reference_speed_rpm, std::memory_order_relaxed);
           d.cyclic.store(true, std::memory_order_release);
         } else {
           waiting = true;
@@ -574,19 +605,34 @@ struct ProfinetGateway::Impl {
         d.detail = text;
       }
       wake();
-      // Retry absent devices every 200 ms; otherwise look again for lost ARs every 20 ms.
-      for (int i = 0; i < (waiting ? 10 : 1) && !stop.load(); ++i)
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      // Retry absent devices every 200 ms, or at once when one announces itself with a DCP Hello (decision
+      // I36); otherwise look again for lost ARs every 20 ms.
+      hello.clear();
+      std::vector<std::string> absent;
+      for (auto& owned : devices) {
+        if (!owned->cyclic.load(std::memory_order_acquire)) absent.push_back(owned->config.name_of_station);
+      }
+      for (int i = 0; i < (waiting ? 10 : 1) && !stop.load() && hello.empty(); ++i)
+        hello = detail::wait_for_hello(start_socket, absent, std::chrono::milliseconds(20));
     }
   }
 
   // The last AR the RTA timer ended in the cyclic thread, "" if none; "(n times)" from the second on.
+  // And the last AR the device ended with an ERR-RTA-PDU (decision I35), the same way.
   static std::string timeout_text(const Device& d) {
-    const std::uint32_t count = d.alarm_timeouts.load(std::memory_order_acquire);
-    if (count == 0) return {};
-    return detail::describe_alarm_timeout(d.alarm_timeout_high.load(std::memory_order_relaxed),
-                                          d.controller->device()) +
-           (count > 1 ? " (" + std::to_string(count) + " times)" : "");
+    std::string text;
+    if (const std::uint32_t count = d.alarm_timeouts.load(std::memory_order_acquire); count > 0) {
+      text = detail::describe_alarm_timeout(d.alarm_timeout_high.load(std::memory_order_relaxed),
+                                            d.controller->device()) +
+             (count > 1 ? " (" + std::to_string(count) + " times)" : "");
+    }
+    if (const std::uint32_t count = d.rta_errors.load(std::memory_order_acquire); count > 0) {
+      text += (text.empty() ? "" : "; ") +
+              detail::describe_rta_error(d.rta_error_high.load(std::memory_order_relaxed),
+                                         d.rta_error_status.load(std::memory_order_relaxed)) +
+              (count > 1 ? " (" + std::to_string(count) + " times)" : "");
+    }
+    return text;
   }
 
   void release_all() {
@@ -633,11 +679,13 @@ ProfinetGateway::ProfinetGateway(const scenario::ProfinetGatewayConfig& config)
     pc.ip = {c.ip, c.netmask, {}};
     pc.modules = expected_modules(c);
     for (const scenario::ProfinetRecordConfig& r : c.records)
-      pc.startup_records.push_back({r.slot, r.subslot, r.index, r.data});
+      pc.startup_records.push_back({r.slot, r.subslot, r.index, r.data, r.api});
     pc.send_clock_factor = config.send_clock_factor;
     pc.reduction_ratio = config.reduction_ratio;
     pc.watchdog_factor = config.watchdog_factor;
     pc.data_hold_factor = config.watchdog_factor;
+    pc.rta_timeout_factor = config.rta_timeout_factor;  // into the AlarmCRBlock (decision I35)
+    pc.rta_retries = config.rta_retries;
     pc.input_frame_id = static_cast<std::uint16_t>(pn::kFrameIdRtClass1First + 2 * i);
     pc.output_frame_id = static_cast<std::uint16_t>(pn::kFrameIdRtClass1First + 2 * i + 1);
     d->controller = std::make_unique<pn::IoController>(m.cyclic_socket.mac(), "tomc-gateway", std::move(pc),

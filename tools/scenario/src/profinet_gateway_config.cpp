@@ -1,6 +1,7 @@
 // The PROFINET gateway's configuration file (profinet_gateway_config.hpp).
 #include "tomc/scenario/profinet_gateway_config.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <iterator>
 #include <map>
@@ -149,6 +150,35 @@ void read_records(const Json& value, const std::string& path, ProfinetDeviceConf
     }
     r.finish();
     device.records.push_back(std::move(record));
+  }
+}
+
+// "parameters": [ { "number": 2000, "subindex": 0, "value": 3000.0, "slot": 1 } ] (decision I33): number
+// 1..65535, subindex 0..65535 (default 0), value a finite number (whether it fits the parameter's format is
+// the drive's answer at start-up), slot optional.
+void read_parameters(const Json& value, const std::string& path, ProfinetDeviceConfig& device,
+                     Problems& problems) {
+  if (!value.is_array() || value.size() > ProfinetDeviceConfig::kMaxParameters) {
+    problems.add(path, "expected an array of at most 64 parameters");
+    return;
+  }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    ObjectReader r(value[i], path + "[" + std::to_string(i) + "]", problems);
+    if (!r.valid()) continue;
+    ProfinetParameterConfig parameter;
+    r.integer("slot", parameter.slot, 1, 0x7FFF);
+    r.integer("number", parameter.number, 1, 0xFFFF, false, true);
+    r.integer("subindex", parameter.subindex, 0, 0xFFFF);
+    r.real("value", parameter.value, detail::kAnyNumber, true);
+    r.finish();
+    for (const ProfinetParameterConfig& other : device.parameters) {
+      if (other.slot == parameter.slot && other.number == parameter.number &&
+          other.subindex == parameter.subindex) {
+        problems.add(r.path(), "parameter " + std::to_string(parameter.number) + " subindex " +
+                                   std::to_string(parameter.subindex) + " is written twice");
+      }
+    }
+    device.parameters.push_back(parameter);
   }
 }
 
@@ -319,6 +349,19 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
         module.submodules.push_back({s.subslot, s.ident, s.input_length, s.output_length});
       device.modules.push_back(std::move(module));
     }
+    // The plugged submodules' ParameterRecordDataItems go first (decision I34); a record of the file's own
+    // "records" for the same place and index replaces the GSDML default (the file is the user's setting).
+    std::vector<ProfinetRecordConfig> records;
+    for (gsdml::PlacedRecord& placed : gsdml::parameter_records(cached->second.device, selection)) {
+      const bool overridden = std::any_of(device.records.begin(), device.records.end(), [&](const auto& own) {
+        return own.slot == placed.slot && own.subslot == placed.subslot && own.index == placed.index;
+      });
+      if (!overridden)
+        records.push_back(
+            {placed.slot, placed.subslot, placed.index, std::move(placed.data), placed.api, true});
+    }
+    records.insert(records.end(), device.records.begin(), device.records.end());
+    device.records = std::move(records);
   } catch (const gsdml::GsdmlError& e) {
     problems.add(list != nullptr ? list_path : r.path_of("gsdml"), e.what());
   }
@@ -396,6 +439,8 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       p.integer("send_clock_factor", config.send_clock_factor, 32, 128);
       p.integer("reduction_ratio", config.reduction_ratio, 1, 512);
       p.integer("watchdog_factor", config.watchdog_factor, 3, 255);
+      p.integer("rta_timeout_factor", config.rta_timeout_factor, 1, 100);  // AlarmCRBlockReq (I35)
+      p.integer("rta_retries", config.rta_retries, 3, 15);
       p.integer("fifo_priority", config.fifo_priority, 0, 99);
       p.integer("wake_margin_us", config.wake_margin_us, 0, 500);  // half the shortest send clock (1 ms)
       p.boolean("lock_memory", config.lock_memory);
@@ -433,6 +478,8 @@ void load_profinet_gateway_config(const Json& document, ProfinetGatewayConfig& c
       r.boolean("check_telegram", device.check_telegram);
       if (const Json* records = r.get("records"))
         read_records(*records, r.path_of("records"), device, problems);
+      if (const Json* parameters = r.get("parameters"))
+        read_parameters(*parameters, r.path_of("parameters"), device, problems);
       if (r.has("gsdml")) {
         read_gsdml_modules(r, base_directory, gsdml_files, device, problems);
       } else if (const Json* m = r.get("modules")) {

@@ -56,6 +56,11 @@ class SimulatedDrive final : public DriveAdapter {
   void power_cycle() noexcept;
   // Encoder-only devices: speed of the measured shaft (load units per second).
   void set_external_speed(double load_units_per_second) noexcept { external_speed_ = load_units_per_second; }
+  // p2000 changed through parameter access (the PROFINET emulator): NSOLL/NIST scale with it from the next
+  // cycle on, as a drive's do.
+  void set_reference_speed_rpm(double rpm) noexcept { p_.reference_speed_rpm = rpm; }
+  // The setpoint monitoring set by a start-up record (the PROFINET emulator's DAP record 0x0100).
+  void set_setpoint_timeout_cycles(std::uint32_t cycles) noexcept { p_.setpoint_timeout_cycles = cycles; }
 
   // ---- observation (for tests, diagnostics and the simulated machine's inputs) ----
   telegrams::DriveState state() const noexcept { return state_; }

@@ -58,6 +58,8 @@ struct RtaFrame {
   std::uint16_t ack_sequence = 0;
   bool has_block = false;  // DATA PDUs carry one block
   AlarmBlock block;
+  // ERR PDUs: why the sender ends the AR (VarPart: PNIOStatus, IEC 61158-6-10 RTA-ERR-PDU; decision I35).
+  PnioStatus error;
 };
 
 // Writes the frame with its VLAN tag (priority 6 high, 5 low) and pads to the Ethernet minimum.

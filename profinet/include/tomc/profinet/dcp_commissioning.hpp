@@ -46,6 +46,10 @@ std::vector<std::uint8_t> dcp_set_name_request(const MacAddress& own_mac, const 
 std::optional<std::string> dcp_set_name_result(std::span<const std::uint8_t> frame, const MacAddress& device,
                                                std::uint32_t xid);
 
+// The NameOfStation a DCP Hello announces (a device starting up, IEC 61158-6-10 DCP Hello.req); nullopt for
+// any other frame or a Hello without a name. The running gateway tries that device at once (decision I36).
+std::optional<std::string> dcp_hello_name(std::span<const std::uint8_t> frame);
+
 // One line for a list: "drive-1  02:00:00:00:01:01  10.0.0.11/255.255.255.0  VendorID 0x002A DeviceID
 // 0x0C01  tomc emulated drive"; "(no name)" / "(no IP)" when the station has none (as from the factory).
 std::string describe(const DcpStation& station);

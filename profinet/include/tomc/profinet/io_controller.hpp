@@ -25,6 +25,7 @@ struct StartupRecord {
   std::uint16_t subslot = 1;
   std::uint16_t index = 0;
   std::vector<std::uint8_t> data;
+  std::uint32_t api = 0;  // of the submodule (e.g. 0x3A00 for a PROFIdrive one from a GSDML file)
 };
 
 struct ControllerDeviceConfig {
@@ -48,7 +49,8 @@ struct ControllerDeviceConfig {
 enum class AlarmTimerAction : std::uint8_t {
   kNone,    // nothing waits for the device, or its timeout has not run out
   kResend,  // our AlarmAck DATA again, same SendSeqNum (the frame is in the caller's buffer)
-  kAbort,   // RTARetries resends stayed unacknowledged: the AR is ended (kOffline, last_error() says why)
+  kAbort,   // RTARetries resends stayed unacknowledged: the AR is ended (kOffline, last_error() says why);
+            // the caller's buffer holds the ERR-RTA-PDU that tells the device so (decision I35)
 };
 
 // The PNIOStatus of an AR this controller ended because the device did not acknowledge our alarm DATA:
@@ -136,7 +138,11 @@ class IoController {
   // - the same notification again (same SendSeqNum: the device lost our ACK and resends): the ACK again and,
   //   while the device has not acknowledged it, our AlarmAck again with its SendSeqNum (at most RTARetries
   //   times); neither kept nor counted;
-  // - the device's ACK of our AlarmAck (an ACK PDU, or AckSeqNum of its next DATA): 0 frames.
+  // - the device's ACK of our AlarmAck (an ACK PDU, or AckSeqNum of its next DATA): 0 frames;
+  // - the device's NACK while our AlarmAck waits: the AlarmAck again at once (in alarm_ack_out), within the
+  //   RTARetries budget the timer's resends share; 1 frame (none once the budget is used up);
+  // - the device's ERR-RTA-PDU: the device has ended the AR; so does this controller (kOffline, last_error()
+  //   the ERR's PNIOStatus, rta_error_received() true); 0 frames. Decision I35.
   // now_us (the caller's cycle clock) starts the RTA timer of an AlarmAck sent.
   std::size_t on_alarm(std::span<const std::uint8_t> frame, std::span<std::uint8_t> ack_out,
                        std::span<std::uint8_t> alarm_ack_out, std::size_t& ack_bytes,
@@ -147,13 +153,17 @@ class IoController {
   // side), called every cycle with the cycle's clock: while our AlarmAck DATA waits for the device's
   // acknowledge, RTATimeoutFactor × 100 ms after it was last sent it is sent again (kResend, its bytes in out
   // and out_bytes), at most RTARetries times counting the resends of on_alarm; one timeout after the last
-  // one, the AR ends (kAbort: kOffline, last_error() kAlarmSendTimeoutStatus; the caller reconnects).
-  // Resends from both causes share the RTARetries budget and restart the timeout.
+  // one, the AR ends (kAbort: kOffline, last_error() kAlarmSendTimeoutStatus; the caller sends the
+  // ERR-RTA-PDU in out, which names that status to the device, and reconnects). Resends from all causes
+  // (timer, repeated notification, NACK) share the RTARetries budget and restart the timeout.
   AlarmTimerAction alarm_timer(bool high_priority, std::uint64_t now_us, std::span<std::uint8_t> out,
                                std::size_t& out_bytes) noexcept;
   std::uint64_t alarm_timeout_us() const noexcept { return alarm_timeout_us_; }
   std::uint16_t alarm_retries() const noexcept { return alarm_retries_; }
   const std::optional<AlarmBlock>& last_alarm() const noexcept { return last_alarm_; }
+  // The device ended the AR with an ERR-RTA-PDU (since the last Connect); its priority.
+  bool rta_error_received() const noexcept { return rta_error_received_; }
+  bool rta_error_high_priority() const noexcept { return rta_error_high_; }
   std::uint32_t alarms_acknowledged() const noexcept { return alarms_acknowledged_; }
 
   void abort_ar() noexcept;
@@ -173,8 +183,14 @@ class IoController {
     std::size_t alarm_ack_bytes = 0;
     bool unacknowledged = false;
     std::uint16_t resends = 0;
-    std::uint64_t sent_us = 0;  // when our AlarmAck was last sent: the RTA timer runs from here
+    std::uint64_t sent_us = 0;          // when our AlarmAck was last sent: the RTA timer runs from here
+    std::uint16_t device_endpoint = 0;  // the device's alarm reference (AlarmDstEndpoint of our PDUs)
+    std::uint16_t own_endpoint = 0;
   };
+  // Our AlarmAck of this channel again into out (a NACK or a repeated notification): false once the
+  // RTARetries budget is used up or out is too small.
+  bool resend_alarm_ack(AlarmChannel& apm, std::span<std::uint8_t> out, std::size_t& out_bytes,
+                        std::uint64_t now_us) noexcept;
   AlarmChannel& channel(bool high) noexcept { return alarm_channels_[high ? 1 : 0]; }
   const AlarmChannel& channel(bool high) const noexcept { return alarm_channels_[high ? 1 : 0]; }
 
@@ -208,6 +224,8 @@ class IoController {
   std::uint64_t alarm_timeout_us_ = 100'000;      // its RTATimeoutFactor × 100 ms
   std::optional<AlarmBlock> last_alarm_;
   std::uint32_t alarms_acknowledged_ = 0;
+  bool rta_error_received_ = false;
+  bool rta_error_high_ = false;
 };
 
 }  // namespace tomc::profinet

@@ -13,6 +13,7 @@
 #include "tomc/drives/simulated_drive.hpp"
 #include "tomc/drives/telegram_place.hpp"
 #include "tomc/profinet/io_device.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 #include "tomc/telegrams/codec.hpp"
 
 namespace tomc::drives {
@@ -20,6 +21,9 @@ namespace tomc::drives {
 inline constexpr std::uint32_t kDapIdent = 0x00000001;
 inline constexpr std::uint32_t kDriveObjectIdent = 0x00000100;
 inline constexpr std::uint32_t kEncoderObjectIdent = 0x00000200;
+// The DAP submodule's parameter record (its GSDML ParameterRecordDataItem, decision I34): version 0x0001 and
+// the drive's setpoint timeout in cycles (Unsigned16, default 20).
+inline constexpr std::uint16_t kMonitoringRecordIndex = 0x0100;
 constexpr std::uint32_t telegram_submodule_ident(std::uint16_t telegram) noexcept {
   return 0x00010000u + telegram;
 }
@@ -35,7 +39,9 @@ class ProfinetDrive {
   // Each object answers PROFIdrive base-mode parameter requests (record index 0xB02E, any subslot of its
   // slot) for p0922 (its telegram, Unsigned16: the drive telegram of the drive object, the encoder telegram
   // of an encoder object) and p2000 (the reference speed, FloatingPoint); any other parameter gets error
-  // value 0 (impermissible parameter number).
+  // value 0 (impermissible parameter number). Change requests: p2000 of the drive object (6..210000 rpm,
+  // else error 0x02; the drive's speed scaling follows it), p0922 refused as read-only (error 0x01).
+  // The DAP submodule (slot 0, subslot 1) takes record kMonitoringRecordIndex (write_monitoring_record).
   ProfinetDrive(profinet::DeviceIdentity identity, const DeviceConfig& config,
                 const SimulatedDriveParameters& parameters);
   ProfinetDrive(const ProfinetDrive&) = delete;  // the record handlers refer to this object
@@ -46,6 +52,8 @@ class ProfinetDrive {
   // without changing its GSDML module answers the new number, which the gateway's start-up check must refuse.
   void set_p0922(std::uint16_t telegram) noexcept { telegram_ = telegram; }
   SimulatedDrive& drive() noexcept { return drive_; }
+  // How many monitoring records (kMonitoringRecordIndex) the device took.
+  int monitoring_records() const noexcept { return monitoring_records_; }
   // The submodule that carries the master sign-of-life: the drive telegram's, or encoder 1's in an
   // encoder-only device.
   TelegramPlace master_place() const noexcept { return places_[master_slot_]; }
@@ -63,6 +71,13 @@ class ProfinetDrive {
   bool follow_controller() noexcept;
 
  private:
+  profinet::PnioStatus write_monitoring_record(std::span<const std::uint8_t> data);
+  std::uint16_t object_telegram(std::uint16_t slot) const noexcept;  // p0922 of the object in slot; 0: none
+  profinet::ParameterResponse read_parameters(const profinet::ParameterRequest& request,
+                                              std::uint16_t slot) const;
+  profinet::ParameterResponse change_parameters(const profinet::ParameterRequest& request,
+                                                std::uint16_t slot);
+
   profinet::IoDevice device_;
   SimulatedDrive drive_;
   DeviceFrames setpoint_;
@@ -75,6 +90,7 @@ class ProfinetDrive {
   DeviceConfig config_;
   double reference_speed_rpm_ = 0.0;
   std::vector<std::uint8_t> parameter_response_;  // the answer to the last parameter request, read once
+  int monitoring_records_ = 0;
 };
 
 }  // namespace tomc::drives

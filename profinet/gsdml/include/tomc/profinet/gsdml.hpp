@@ -31,15 +31,26 @@ struct ValueList {
   std::string text() const;  // as written in GSDML: "1 3..5"
 };
 
+// A RecordDataList/ParameterRecordDataItem: a record the controller writes to the submodule at start-up
+// (IODWriteReq before PrmEnd, decision I34), its bytes built from the item's Const and Ref elements (the
+// Ref's DefaultValue in its DataType at its ByteOffset/BitOffset, big-endian; unset bytes 0).
+struct ParameterRecord {
+  std::uint16_t index = 0;              // Index (0..0x7FFF: the submodule's own records)
+  std::uint32_t transfer_sequence = 0;  // TransferSequence: written in ascending order (0: the file's)
+  std::vector<std::uint8_t> data;       // Length bytes
+  int line = 0;
+};
+
 struct Submodule {
   std::string id;    // the ID attribute
   std::string name;  // ModuleInfo/Name in the primary language ("" without)
   std::uint32_t api = 0;
-  std::uint32_t ident = 0;          // SubmoduleIdentNumber
-  std::uint16_t input_length = 0;   // IOData/Input: bytes the device sends
-  std::uint16_t output_length = 0;  // IOData/Output: bytes the controller sends
-  ValueList fixed_in_subslots;      // a module's own (virtual / system-defined) submodule: where it sits
-  int line = 0;                     // in the file, for messages
+  std::uint32_t ident = 0;               // SubmoduleIdentNumber
+  std::uint16_t input_length = 0;        // IOData/Input: bytes the device sends
+  std::uint16_t output_length = 0;       // IOData/Output: bytes the controller sends
+  ValueList fixed_in_subslots;           // a module's own (virtual / system-defined) submodule: where it sits
+  std::vector<ParameterRecord> records;  // RecordDataList, in TransferSequence order
+  int line = 0;                          // in the file, for messages
 };
 
 // A ModuleItemRef (in a DAP's UseableModules) or SubmoduleItemRef (in a module's UseableSubmodules).
@@ -95,5 +106,17 @@ struct Selection {
 // plugged too. Submodules of another API than their module's first become an entry of their own (same slot,
 // that API).
 std::vector<ExpectedModule> expected_modules(const Device& device, const Selection& selection);
+
+// The ParameterRecordDataItems of every submodule expected_modules() plugs, where it plugs it: slot by slot,
+// subslot by subslot, each submodule's in its TransferSequence order (the IODWriteReqs at start-up).
+struct PlacedRecord {
+  std::uint32_t api = 0;
+  std::uint16_t slot = 0;
+  std::uint16_t subslot = 0;
+  std::uint16_t index = 0;
+  std::vector<std::uint8_t> data;
+  bool operator==(const PlacedRecord&) const = default;
+};
+std::vector<PlacedRecord> parameter_records(const Device& device, const Selection& selection);
 
 }  // namespace tomc::profinet::gsdml

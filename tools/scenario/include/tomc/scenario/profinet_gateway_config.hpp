@@ -34,13 +34,27 @@ struct ProfinetModuleConfig {
   std::vector<ProfinetSubmoduleConfig> submodules;
 };
 
-// A start-up parameter record ("records"): written to the device after the Connect, before PrmEnd, in the
-// file's order (IEC 61158-6-10 IODWriteReq), e.g. a PROFIdrive parameter request to index 0xB02E.
+// A start-up parameter record: written to the device after the Connect, before PrmEnd (IEC 61158-6-10
+// IODWriteReq), e.g. a PROFIdrive parameter request to index 0xB02E. First the GSDML file's
+// ParameterRecordDataItems of the plugged submodules (their DefaultValues), then the file's "records" in its
+// order; a file record of the same slot, subslot and index replaces the GSDML one (decision I34).
 struct ProfinetRecordConfig {
   std::uint16_t slot = 0;
   std::uint16_t subslot = 1;
   std::uint16_t index = 0;
   std::vector<std::uint8_t> data;  // "data": hex digits, two per byte, spaces allowed ("01 00 01 01 10 01")
+  std::uint32_t api = 0;           // the GSDML submodule's API; 0 for the file's records
+  bool from_gsdml = false;         // a ParameterRecordDataItem's default rather than the file's "records"
+};
+
+// A drive parameter written at start-up through PROFIdrive parameter access ("parameters", decision I33):
+// after the telegram check, in the file's order, each read back; its format is the one the drive answers a
+// read of it with (FloatingPoint, Unsigned16, ...), so the file gives only the number.
+struct ProfinetParameterConfig {
+  std::uint16_t slot = 0;  // the object's slot; 0: the one p0922 is checked on (telegram_slot / encoder_slot)
+  std::uint16_t number = 0;
+  std::uint16_t subindex = 0;
+  double value = 0.0;
 };
 
 // Where a slot's telegram submodule is (slot, subslot); the default layout is drives::telegram_place().
@@ -79,8 +93,10 @@ struct ProfinetDeviceConfig {
   // `telegram` (in an encoder-only device: the encoder object's p0922 is `encoder_telegram`); false for a
   // device without base-mode parameter access.
   bool check_telegram = true;
-  std::vector<ProfinetRecordConfig> records;  // at most kMaxRecords
+  std::vector<ProfinetRecordConfig> records;  // the GSDML file's, then at most kMaxRecords of "records"
   static constexpr std::size_t kMaxRecords = 64;
+  std::vector<ProfinetParameterConfig> parameters;  // at most kMaxParameters
+  static constexpr std::size_t kMaxParameters = 64;
   drives::DeviceConfig device_config() const;
   // G1_ZSW and G2_ZSW of the drive telegram, G1_ZSW of each encoder telegram, where the telegrams carry them
   // (at most kMaxEncoderErrorBits).
@@ -100,7 +116,11 @@ struct ProfinetGatewayConfig {
   std::uint16_t send_clock_factor = 32;  // × 31.25 µs: 32 = 1 ms (RT_CLASS_1: 32..128)
   std::uint16_t reduction_ratio = 1;
   std::uint16_t watchdog_factor = 3;  // the data-hold watchdog, in send clock × reduction ratio
-  int fifo_priority = 0;              // the cyclic thread: 1..99 SCHED_FIFO, 0 normal
+  // The AlarmCRBlock's RTA timer (decision I35): our alarm DATA resent after rta_timeout_factor × 100 ms,
+  // at most rta_retries times, then the AR ends (IEC 61158-6-10 AlarmCRBlockReq: 1..100, 3..15).
+  std::uint16_t rta_timeout_factor = 1;
+  std::uint16_t rta_retries = 3;
+  int fifo_priority = 0;  // the cyclic thread: 1..99 SCHED_FIFO, 0 normal
   // The cyclic thread wakes this early and spins to its send time (RealTimeRunnerConfig::wake_margin):
   // 0 = no spin; at most half the cycle.
   int wake_margin_us = 0;
