@@ -18,6 +18,8 @@
 #include "tomc/profinet/blocks.hpp"
 #include "tomc/profinet/cyclic.hpp"
 #include "tomc/profinet/dcp.hpp"
+#include "tomc/profinet/io_controller.hpp"
+#include "tomc/profinet/parameter_access.hpp"
 
 namespace pn = tomc::profinet;
 
@@ -143,6 +145,15 @@ std::vector<Frame> every_frame_type() {
   pn::RecordAccess read_answer = write;
   read_answer.header.type = pn::block_type::kIodReadResponse;
   frames.push_back(rpc(false, pn::PnioOperation::kRead, read_answer));
+  // A PROFIdrive change request (ID 0x02, decision I33): p2000 = 6000.0 as FloatingPoint.
+  pn::RecordAccess change = write;
+  change.data = pn::encode(pn::ParameterRequest{2,
+                                                pn::parameter_request_id::kChange,
+                                                1,
+                                                {{0x10, 1, 2000, 0}},
+                                                {{pn::parameter_format::kFloatingPoint, {0x45BB8000u}}}});
+  change.header.record_data_length = static_cast<std::uint32_t>(change.data.size());
+  frames.push_back(rpc(true, pn::PnioOperation::kWrite, change));
 
   for (const auto& [request, response, command] :
        {std::tuple{pn::block_type::kPrmEndRequest, pn::block_type::kPrmEndResponse,
@@ -188,7 +199,13 @@ std::vector<Frame> every_frame_type() {
   transport.frame_id = pn::kFrameIdAlarmHigh;
   transport.pdu_type = pn::RtaPduType::kAck;
   transport.tack = false;
-  for (const auto& [rta, to_controller] : {std::pair{alarm, true}, {transport, false}, {ack, false}}) {
+  // The ERR-RTA-PDU that tells the device why the controller ends its AR (decision I35).
+  pn::RtaFrame error = transport;
+  error.frame_id = pn::kFrameIdAlarmLow;
+  error.pdu_type = pn::RtaPduType::kError;
+  error.error = pn::kAlarmSendTimeoutStatus;
+  for (const auto& [rta, to_controller] :
+       {std::pair{alarm, true}, {transport, false}, {ack, false}, {error, false}}) {
     Frame f(256);
     EXPECT_EQ(pn::encode({to_controller ? kController : kDevice, to_controller ? kDevice : kController,
                           pn::VlanTag{6, 0}},
@@ -289,6 +306,8 @@ TEST(Tshark, EveryFrameTypeDissectsWithoutMalformedPackets) {
                                "Alarm Notification High",
                                "Alarm Ack High",
                                "ACK-RTA",
+                               "ERR-RTA",
+                               "ReqId:Change request",
                                "RTC1, ID:0x8001",
                                "CycleCounter: 32",
                                "PROFIDrive Parameter Request: ReqRef:0x01, ReqId:Read request, DO:1",
