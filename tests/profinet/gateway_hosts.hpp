@@ -123,8 +123,8 @@ class DeviceHost {
   int m_add1_last() const { return m_add1_last_.load(); }
   // The simulated drive's active fault (0: none), e.g. 8501 after its setpoint timeout.
   std::uint32_t drive_fault() const { return drive_fault_.load(); }
-  // ERR-RTA-PDUs the controller sent (decision I35) and the last one's PNIOStatus; the device ends its AR
-  // on one, as a real device does.
+  // ERR-RTA-PDUs the controller sent (decision I35) and the last one's PNIOStatus (counted only: the device's
+  // AR then ends by its data hold, or by the controller's next Connect, as before I35).
   int rta_errors() const { return rta_errors_.load(); }
   // hello_only: the Identify requests left unanswered and the Hellos sent.
   int identify_ignored() const { return identify_ignored_.load(); }
@@ -256,7 +256,6 @@ class DeviceHost {
               device.state() != pn::ArState::kNone) {
             ++rta_errors_;
             last_rta_error_ = rta.error.value();
-            device.abort_ar();
           } else if (pn::decode_rta(in, rta) == pn::ProfinetError::kNone &&
                      rta.pdu_type == pn::RtaPduType::kData && rta.has_block && rta.block.is_ack) {
             // A resend (the SendSeqNum taken last: our ACK was late or lost) is acknowledged again, counted
