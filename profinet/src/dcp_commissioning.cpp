@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 namespace tomc::profinet {
 
@@ -73,13 +74,32 @@ bool DcpScan::on_frame(std::span<const std::uint8_t> frame) {
 }
 
 std::vector<std::uint8_t> dcp_set_name_request(const MacAddress& own_mac, const MacAddress& device,
-                                               std::uint32_t xid, const std::string& name, bool permanent) {
-  return encoded(EthernetHeader{device, own_mac, std::nullopt},
-                 dcp_set_request(xid, name, std::nullopt, permanent));
+                                               std::uint32_t xid, const std::string& name, bool permanent,
+                                               const std::optional<IpSuite>& ip) {
+  return encoded(EthernetHeader{device, own_mac, std::nullopt}, dcp_set_request(xid, name, ip, permanent));
+}
+
+std::optional<Ipv4Address> parse_ipv4(std::string_view text) {
+  Ipv4Address address{};
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (k > 0) {
+      if (at >= text.size() || text[at] != '.') return std::nullopt;
+      ++at;
+    }
+    unsigned value = 0;
+    std::size_t digits = 0;
+    for (; at < text.size() && text[at] >= '0' && text[at] <= '9' && digits < 3; ++at, ++digits)
+      value = value * 10 + static_cast<unsigned>(text[at] - '0');
+    if (digits == 0 || value > 255) return std::nullopt;
+    address[k] = static_cast<std::uint8_t>(value);
+  }
+  if (at != text.size()) return std::nullopt;
+  return address;
 }
 
 std::optional<std::string> dcp_set_name_result(std::span<const std::uint8_t> frame, const MacAddress& device,
-                                               std::uint32_t xid) {
+                                               std::uint32_t xid, bool ip_set) {
   MacAddress source{};
   const std::optional<DcpMessage> message = decoded(frame, source);
   if (!message || source != device || message->service != DcpService::kSet || message->xid != xid ||
@@ -87,12 +107,22 @@ std::optional<std::string> dcp_set_name_result(std::span<const std::uint8_t> fra
     return std::nullopt;
   }
   if (message->type != DcpServiceType::kSuccess) return "the device does not support DCP Set";
-  for (const DcpSetResult& result : message->results) {
-    if (result.option != dcp_option::kNameOfStation) continue;
-    if (result.error == 0) return std::string{};
-    return "the device refused the name: BlockError " + std::to_string(result.error);
+  // Each option set needs its own entry without error: the name, and with it the IP suite (IP parameter).
+  const auto answered = [&](std::uint16_t option, const std::string& refused,
+                            const std::string& missing) -> std::string {
+    for (const DcpSetResult& result : message->results) {
+      if (result.option != option) continue;
+      return result.error == 0 ? std::string{} : refused + ": BlockError " + std::to_string(result.error);
+    }
+    return missing;
+  };
+  std::string why = answered(dcp_option::kNameOfStation, "the device refused the name",
+                             "the device's Set response does not answer the name of station");
+  if (why.empty() && ip_set) {
+    why = answered(dcp_option::kIpParameter, "the device refused the IP suite",
+                   "the device's Set response does not answer the IP suite");
   }
-  return "the device's Set response does not answer the name of station";
+  return why;
 }
 
 std::string describe(const DcpStation& station) {

@@ -289,3 +289,52 @@ TEST(DcpCommissioning, AHelloNamesTheDeviceThatStarts) {
   ASSERT_TRUE(controller.device_mac().has_value());
   EXPECT_EQ(*controller.device_mac(), named.identity().mac);
 }
+
+// Decision I37: `tomc gateway --set-name` with `--ip`: one DCP Set with the NameOfStation and the IP
+// parameter blocks (IP, netmask, gateway) to that MAC; the answer must take both (a Control/Response entry
+// without error for each), a refused or missing IP entry is named. parse_ipv4 takes dotted quads only.
+TEST(DcpCommissioning, SetNameWithAnIpSuiteSetsBoth) {
+  pn::IoDevice fresh(station(3, "", {}));
+  const pn::MacAddress mac = fresh.identity().mac;
+  const pn::IpSuite suite{{10, 218, 0, 9}, {255, 255, 0, 0}, {10, 218, 0, 1}};
+  const auto request = pn::dcp_set_name_request(kController, mac, 80, "axis-8", true, suite);
+  const pn::DcpMessage asked = decode(request);
+  EXPECT_EQ(asked.fields.name_of_station, "axis-8");
+  EXPECT_EQ(asked.fields.ip, suite);
+  EXPECT_TRUE(asked.permanent);
+  const auto answer = fresh.on_dcp(request);
+  EXPECT_EQ(pn::dcp_set_name_result(answer, mac, 80, true), std::optional<std::string>(""));
+  EXPECT_EQ(fresh.identity().name_of_station, "axis-8");
+  EXPECT_EQ(fresh.identity().ip, suite);
+  // An answer for the name only does not confirm the IP suite; a refused one is named.
+  pn::DcpMessage partial;
+  partial.frame_id = pn::kFrameIdDcpGetSet;
+  partial.service = pn::DcpService::kSet;
+  partial.type = pn::DcpServiceType::kSuccess;
+  partial.xid = 80;
+  partial.results = {{pn::dcp_option::kNameOfStation, 0}};
+  const auto name_only = encode({kController, mac, std::nullopt}, partial);
+  EXPECT_EQ(pn::dcp_set_name_result(name_only, mac, 80, false), std::optional<std::string>(""));
+  EXPECT_EQ(pn::dcp_set_name_result(name_only, mac, 80, true),
+            std::optional<std::string>("the device's Set response does not answer the IP suite"));
+  partial.results.push_back({pn::dcp_option::kIpParameter, 3});
+  EXPECT_EQ(pn::dcp_set_name_result(encode({kController, mac, std::nullopt}, partial), mac, 80, true),
+            std::optional<std::string>("the device refused the IP suite: BlockError 3"));
+
+  struct Case {
+    const char* text;
+    std::optional<pn::Ipv4Address> address;
+  };
+  const Case cases[] = {{"10.218.0.9", pn::Ipv4Address{10, 218, 0, 9}},
+                        {"255.255.255.0", pn::Ipv4Address{255, 255, 255, 0}},
+                        {"0.0.0.0", pn::Ipv4Address{0, 0, 0, 0}},
+                        {"10.0.0.256", std::nullopt},
+                        {"10.0.0", std::nullopt},
+                        {"10.0.0.1.", std::nullopt},
+                        {"10..0.1", std::nullopt},
+                        {"1000.0.0.1", std::nullopt},
+                        {" 10.0.0.1", std::nullopt},
+                        {"", std::nullopt}};
+  for (const Case& c : cases)
+    EXPECT_EQ(pn::parse_ipv4(c.text), c.address) << c.text;
+}

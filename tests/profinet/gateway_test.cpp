@@ -611,9 +611,19 @@ TEST(GatewayConfig, CommissioningOptionsThatDoNotGoTogetherAreRefused) {
       {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface tomc-none0 --wait-ms 200",
        "--wait-ms goes with --identify"},
       {"--identify --interface tomc-none0 --mac 02:00:00:00:00:01",
-       "--mac and --temporary go with --set-name"},
+       "--mac, --temporary and --ip/--netmask/--gateway go with --set-name"},
       {"--identify", "missing --interface IF"},
       {"--set-name drive-1 --interface tomc-none0", "--set-name needs --mac MAC"},
+      // Decision I37: the IP suite of --set-name.
+      {"--identify --interface tomc-none0 --ip 10.0.0.5",
+       "--mac, --temporary and --ip/--netmask/--gateway go with --set-name"},
+      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface tomc-none0 --ip 10.0.0.256",
+       "--ip '10.0.0.256' is not an IPv4 address"},
+      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface tomc-none0 --ip 10.0.0.5 --netmask 255.255.0",
+       "--netmask '255.255.0' is not an IPv4 address"},
+      {"--set-name drive-1 --mac 02:00:00:00:00:01 --interface tomc-none0 --gateway 10.0.0.1",
+       "--netmask and --gateway go with --ip"},
+      {"--config x.json --ip 10.0.0.5", "go with --identify or --set-name"},
   };
   for (const auto& c : cases) {
     const auto [status, output] = run_tomc(std::string("gateway ") + c.options);
@@ -1443,7 +1453,8 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
 
 // Decision I32, commissioning from the product: `tomc gateway --identify` in the gateway namespace lists the
 // emulated device (DCP Identify All: its name, MAC and IP suite), `--set-name` renames it by its MAC (DCP
-// Set, permanent), and the next --identify lists it by the new name. No gateway runs: these are the
+// Set, permanent), and the next --identify lists it by the new name; `--set-name` with `--ip`, `--netmask`
+// and `--gateway` sets the name and the IP suite in one Set (decision I37). No gateway runs: these are the
 // commissioning engineer's steps before one does.
 TEST(GatewayNetns, IdentifyListsTheStationsAndSetNameRenamesOne) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
@@ -1466,5 +1477,13 @@ TEST(GatewayNetns, IdentifyListsTheStationsAndSetNameRenamesOne) {
             "gateway: " + mac + " is now 'axis-7.cell-2'\n");
   const std::string renamed = identify();
   EXPECT_NE(renamed.find("\n  axis-7.cell-2  " + mac + "  10.218.0.2/"), std::string::npos) << renamed;
+  // Decision I37: the name and the IP suite in one DCP Set; the next Identify lists both.
+  EXPECT_EQ(pn::testing::output_of(tomc + "--set-name axis-8 --mac " + mac +
+                                   " --interface pn-g --ip 10.218.0.9 --netmask 255.255.0.0 --gateway "
+                                   "10.218.0.1 2>&1"),
+            "gateway: " + mac + " is now 'axis-8' at 10.218.0.9/255.255.0.0 via 10.218.0.1\n");
+  const std::string readdressed = identify();
+  EXPECT_NE(readdressed.find("\n  axis-8  " + mac + "  10.218.0.9/255.255.0.0  VendorID"), std::string::npos)
+      << readdressed;
   EXPECT_EQ(device.error(), "");
 }

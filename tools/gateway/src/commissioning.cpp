@@ -56,15 +56,16 @@ std::vector<pn::DcpStation> identify_all(const std::string& interface, std::chro
 }
 
 std::string set_name_of_station(const std::string& interface, const pn::MacAddress& mac,
-                                const std::string& name, bool permanent, std::chrono::milliseconds wait) {
+                                const std::string& name, bool permanent, std::chrono::milliseconds wait,
+                                const std::optional<pn::IpSuite>& ip) {
   pn::RawSocket socket = open_socket(interface);
   const std::uint32_t xid = fresh_xid();
-  const auto request = pn::dcp_set_name_request(socket.mac(), mac, xid, name, permanent);
+  const auto request = pn::dcp_set_name_request(socket.mac(), mac, xid, name, permanent, ip);
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (!socket.send(request)) throw std::runtime_error("interface '" + interface + "': send failed");
     std::optional<std::string> result;
     receive_until(socket, Clock::now() + wait, [&](std::span<const std::uint8_t> frame) {
-      result = pn::dcp_set_name_result(frame, mac, xid);
+      result = pn::dcp_set_name_result(frame, mac, xid, ip.has_value());
       return result.has_value();
     });
     if (result) return *result;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tomc/profinet/dcp.hpp"
@@ -38,13 +39,18 @@ class DcpScan {
   std::vector<DcpStation> stations_;
 };
 
-// Set NameOfStation of the device with MAC `device` (unicast), stored across power cycles when `permanent`.
+// Set NameOfStation of the device with MAC `device` (unicast), stored across power cycles when `permanent`;
+// with `ip`, the IP suite in the same request (IP parameter block, decision I37).
 std::vector<std::uint8_t> dcp_set_name_request(const MacAddress& own_mac, const MacAddress& device,
-                                               std::uint32_t xid, const std::string& name, bool permanent);
-// The device's answer to that request: "" when it took the name, otherwise why not ("the device refused
-// the name: BlockError 3"); nullopt when `frame` is not that answer (another xid, sender or service).
+                                               std::uint32_t xid, const std::string& name, bool permanent,
+                                               const std::optional<IpSuite>& ip = std::nullopt);
+// The device's answer to that request: "" when it took the name (and, with `ip_set`, the IP suite),
+// otherwise why not ("the device refused the name: BlockError 3", "the device refused the IP suite:
+// BlockError 3"); nullopt when `frame` is not that answer (another xid, sender or service).
 std::optional<std::string> dcp_set_name_result(std::span<const std::uint8_t> frame, const MacAddress& device,
-                                               std::uint32_t xid);
+                                               std::uint32_t xid, bool ip_set = false);
+// "192.168.0.10" -> its address; nullopt for anything else (four decimal numbers 0..255, no leading '+').
+std::optional<Ipv4Address> parse_ipv4(std::string_view text);
 
 // The NameOfStation a DCP Hello announces (a device starting up, IEC 61158-6-10 DCP Hello.req); nullopt for
 // any other frame or a Hello without a name. The running gateway tries that device at once (decision I36).

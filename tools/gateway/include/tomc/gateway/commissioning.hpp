@@ -5,6 +5,7 @@
 // Not used by the running gateway, which identifies its devices by name (start_up.hpp).
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,9 @@ std::vector<profinet::DcpStation> identify_all(const std::string& interface, std
 // DCP Set NameOfStation of the device with `mac` (`permanent`: kept across power cycles), sent up to three
 // times with `wait` for the answer each: "" when the device answered that it took the name, otherwise why
 // not. Throws like identify_all.
+// With `ip`, the IP suite is set in the same DCP Set (decision I37) and must be taken too.
 std::string set_name_of_station(const std::string& interface, const profinet::MacAddress& mac,
-                                const std::string& name, bool permanent, std::chrono::milliseconds wait);
+                                const std::string& name, bool permanent, std::chrono::milliseconds wait,
+                                const std::optional<profinet::IpSuite>& ip = std::nullopt);
 
 }  // namespace tomc::profinet_gateway
