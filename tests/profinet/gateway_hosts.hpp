@@ -110,6 +110,8 @@ class DeviceHost {
   // Encoder 1 of the drive reports an error (G1_ZSW bit 15, `code` in G1_XIST2); 0 clears it.
   void set_encoder_error(std::uint16_t code) { encoder_error_requested_ = 0x10000u | code; }
   void send_alarm(std::uint16_t type) { alarm_requested_ = type; }
+  // The device ends its running AR with an ERR-RTA-PDU (low priority) carrying `status` (decision I35).
+  void send_rta_error(std::uint32_t status) { rta_error_requested_ = status; }
   int alarm_acks() const { return alarm_acks_.load(); }
   // Every AlarmAck DATA frame taken, resends included, and the µs from the first to the last of them.
   int alarm_ack_frames() const { return alarm_ack_frames_.load(); }
@@ -325,6 +327,24 @@ class DeviceHost {
         if (const std::size_t n = alarm_frame(device, raw.mac(), type, alarm); n > 0)
           raw.send(std::span(alarm).first(n));
       }
+      if (const std::uint32_t status = rta_error_requested_.exchange(0);
+          status != 0 && device.state() == pn::ArState::kRunning) {
+        pn::RtaFrame error;
+        error.frame_id = pn::kFrameIdAlarmLow;
+        error.destination_endpoint = device.connection().alarm_cr.local_alarm_reference;
+        error.source_endpoint = 3;
+        error.pdu_type = pn::RtaPduType::kError;
+        error.tack = false;
+        error.send_sequence = 0xFFFF;
+        error.ack_sequence = 0xFFFE;
+        error.error = pn::PnioStatus::from(status);
+        std::array<std::uint8_t, 128> frame_out{};
+        std::size_t written = 0;
+        const pn::EthernetHeader header{device.connection().ar.initiator_mac, raw.mac(), pn::VlanTag{5, 0}};
+        if (pn::encode(header, error, frame_out, written) == pn::ProfinetError::kNone)
+          raw.send(std::span(frame_out).first(written));
+        device.abort_ar();  // its side of the AR ends with the PDU
+      }
       last = device.state();
       drive_fault_ = host.drive().active_fault();
       reference_speed_rpm_ = host.drive().parameters().reference_speed_rpm;
@@ -374,6 +394,7 @@ class DeviceHost {
   std::atomic<bool> fault_requested_{false};
   std::atomic<std::uint32_t> encoder_error_requested_{0};  // 0x10000 | code; 0: nothing requested
   std::atomic<std::uint16_t> alarm_requested_{0};
+  std::atomic<std::uint32_t> rta_error_requested_{0};
   std::atomic<int> alarm_acks_{0};
   std::atomic<int> alarm_ack_frames_{0};
   std::atomic<std::uint64_t> first_alarm_ack_us_{0};

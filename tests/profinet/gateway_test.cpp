@@ -1451,6 +1451,31 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
 
+// Decision I35: a device that ends its AR with an ERR-RTA-PDU (PNIOStatus 0xCF81FD05). `tomc gateway` ends
+// the AR on its side at once (not by its data hold), reconnects, and its status over DDS names the PDU.
+TEST(GatewayNetns, ADevicesErrRtaPduEndsTheArAndTheGatewayReconnects) {
+  pn::testing::Namespaces hosts("tomc17g", "tomc17e");
+  if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;
+  ASSERT_TRUE(own_interfaces_only(hosts));
+  DeviceHost device(hosts.second);
+  GatewayHost gateway(hosts, one_device(kGsdmlModules), 100);  // data hold 100 ms: the PDU must be first
+  const DdsObserver observer(hosts.first);
+  for (int i = 0; i < 500 && device.output_frames() == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(device.ars(), 1) << gateway.log();
+  device.send_rta_error(0xCF81FD05u);
+  for (int i = 0; i < 500 && device.ars() < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(device.ars(), 2) << device.ar_ends() << gateway.log();
+  const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
+    return s.device.state == "connected" && s.device.detail.find("RTA ERR") != std::string::npos;
+  });
+  EXPECT_EQ(seen.device.state, "connected");
+  EXPECT_EQ(seen.device.detail, "RTA ERR from the device (low): PNIOStatus 0xCF81FD05") << gateway.log();
+  EXPECT_EQ(device.error(), "");
+  EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
+}
+
 // Decision I32, commissioning from the product: `tomc gateway --identify` in the gateway namespace lists the
 // emulated device (DCP Identify All: its name, MAC and IP suite), `--set-name` renames it by its MAC (DCP
 // Set, permanent), and the next --identify lists it by the new name; `--set-name` with `--ip`, `--netmask`
