@@ -419,6 +419,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void complete_jobs() noexcept;
   void update_status() noexcept;
   void restart() noexcept;
+  // The start values a restart takes over, checked together (decision B8): Simulation.Mode and
+  // PositionControl.InitialOperativeSensor that break a rule of seed 004 §6.1.7 / spec 04 §3.20 keep the
+  // values in force (`simulation_mode`, `initial_sensor`) and return the rule (alarm 102's additional value);
+  // 0: all of them apply.
+  std::uint32_t restart_configuration(std::uint32_t& simulation_mode,
+                                      std::uint32_t& initial_sensor) const noexcept;
+  void choose_control_loop() noexcept;  // PositionController with a drive in use, else the simulated delay
   // torque limiting and fixed-stop detection (positioning_axis_torque.cpp)
   std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
   void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
@@ -443,9 +450,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void servo_monitoring() noexcept;
   void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
   bool blocked() const noexcept { return core_.blocked(); }
-  bool virtual_axis() const noexcept { return device_ == nullptr; }
-  // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6).
-  bool simulated() const noexcept { return device_ == nullptr && db_.VirtualAxis.Mode != kModeOn; }
+  // No drive in use: a virtual or a simulated axis, or one built without a drive (drive_used(), decision B8).
+  bool virtual_axis() const noexcept { return !drive_used(); }
+  // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6);
+  // the work memory's value, which a restart takes over (B8).
+  bool simulated() const noexcept {
+    return db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn;
+  }
   bool homed() const noexcept;
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }
