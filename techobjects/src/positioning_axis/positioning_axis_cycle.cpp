@@ -440,7 +440,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, target == 0.0);
   VelocityProfile planned;
   if (planned.plan(start, target, l)) {
-    profile_ = planned;
+    profile_.adopt(planned, start, target, l);
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kVelocity;
@@ -449,9 +449,10 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
   // The job's jerk, whatever the start state (seed 004 §6.7.7, decision S4).
+  const MotionState start = base_setpoint();
   PositionProfile planned;
-  if (planned.plan(base_setpoint(), target, limits)) {
-    profile_ = planned;
+  if (planned.plan(start, target, limits)) {
+    profile_.adopt(planned, start, target, limits);
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
@@ -480,26 +481,25 @@ void PositioningAxis::generate_setpoint() noexcept {
   switch (generator_) {
     case Generator::kVelocity: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= velocity_profile().duration() - 1e-9) {
-        const MotionState end = velocity_profile().at(velocity_profile().duration());
-        setpoint_ = MotionState{
-            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
-            end.velocity, 0.0};
+      if (profile_time_ >= profile_.duration() - 1e-9) {
+        const MotionState end = profile_.at(profile_.duration());
+        setpoint_ =
+            MotionState{end.position + profile_offset_ + end.velocity * (profile_time_ - profile_.duration()),
+                        end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
         if (motion_.kind == JobKind::kPositionProfile) {  // the relative transition ended within this cycle
-          enter_time_profile(setpoint_.position, profile_time_ - velocity_profile().duration());
+          enter_time_profile(setpoint_.position, profile_time_ - profile_.duration());
         }
       } else {
-        setpoint_ = velocity_profile().at(profile_time_);
+        setpoint_ = profile_.advance_to(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
     }
     case Generator::kPosition: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= position_profile().duration() - 1e-9) {
-        setpoint_ = MotionState{
-            position_profile().at(position_profile().duration() + 1.0).position + profile_offset_, 0.0, 0.0};
+      if (profile_time_ >= profile_.duration() - 1e-9) {
+        setpoint_ = MotionState{profile_.at(profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
         const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
         if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
@@ -514,7 +514,7 @@ void PositioningAxis::generate_setpoint() noexcept {
           enter_time_profile(setpoint_.position);
         }
       } else {
-        setpoint_ = position_profile().at(profile_time_);
+        setpoint_ = profile_.advance_to(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
@@ -546,20 +546,20 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
   const MotionState base = base_setpoint();
   MotionState s{base.position + base.velocity * dt, base.velocity, 0.0};
   if (generator_ == Generator::kVelocity) {
-    const double end = velocity_profile().duration();
+    const double end = profile_.duration();
     if (t >= end - 1e-9) {
-      const MotionState e = velocity_profile().at(end);
+      const MotionState e = profile_.at(end);
       s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
     } else {
-      s = velocity_profile().at(t);
+      s = profile_.at(t);
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kPosition) {
-    const double end = position_profile().duration();
+    const double end = profile_.duration();
     if (t >= end - 1e-9) {
-      s = MotionState{position_profile().at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+      s = MotionState{profile_.at(end + 1.0).position + profile_offset_, 0.0, 0.0};
     } else {
-      s = position_profile().at(t);
+      s = profile_.at(t);
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kTimeProfile && motion_.kind == JobKind::kPositionProfile) {
@@ -685,12 +685,12 @@ void PositioningAxis::complete_jobs() noexcept {
         if (motion_.jog_stopping && settled && at_zero) {
           core_.jobs.set(motion_.id, JobState::kDone);  // J2
           motion_ = Motion{};
-        } else if (auto* r = core_.jobs.find(motion_.id)) {
-          r->status.in_velocity = settled && !motion_.jog_stopping;
+        } else {
+          core_.jobs.set_in_velocity(motion_.id, settled && !motion_.jog_stopping);
         }
         break;
       case JobKind::kMoveVelocity:
-        if (auto* r = core_.jobs.find(motion_.id)) r->status.in_velocity = settled;
+        core_.jobs.set_in_velocity(motion_.id, settled);
         break;
       default:
         break;
@@ -761,7 +761,7 @@ void PositioningAxis::update_status() noexcept {
   db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
   db_.StatusPositioning.SuperimposedDistance = superimposed_.distance();
   db_.StatusPositioning.SetpointExecutionTime =
-      generator_ == Generator::kPosition ? std::max(0.0, position_profile().duration() - profile_time_) : 0.0;
+      generator_ == Generator::kPosition ? std::max(0.0, profile_.duration() - profile_time_) : 0.0;
 
   std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
   std::uint32_t sw2 = 0;

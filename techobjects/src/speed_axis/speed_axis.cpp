@@ -439,8 +439,8 @@ void SpeedAxis::generate_setpoint() noexcept {
     } else if (motion_.kind == JobKind::kJog && motion_.jog_stopping && settled && at_zero) {
       core_.jobs.set(motion_.id, JobState::kDone);  // J2: Busy ends at standstill
       motion_ = Motion{};
-    } else if (auto* r = core_.jobs.find(motion_.id)) {
-      r->status.in_velocity = settled && !motion_.jog_stopping;
+    } else {
+      core_.jobs.set_in_velocity(motion_.id, settled && !motion_.jog_stopping);
     }
   }
   if (settled && at_zero) core_.stop_reached_standstill();

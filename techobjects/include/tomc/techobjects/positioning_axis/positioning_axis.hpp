@@ -41,6 +41,7 @@
 #include "tomc/techobjects/drive/encoder_channel.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/motion/running_profile.hpp"
 #include "tomc/techobjects/motion/time_position_profile.hpp"
 #include "tomc/techobjects/position/actual_value_chain.hpp"
 #include "tomc/techobjects/position/backlash.hpp"
@@ -465,17 +466,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   BasicSetpointDelayLine<kSimulationDelayCycles>* simulation_delay() noexcept {
     return std::get_if<BasicSetpointDelayLine<kSimulationDelayCycles>>(&control_loop_);
   }
-  const VelocityProfile& velocity_profile() const noexcept {
-    return *std::get_if<VelocityProfile>(&profile_);
-  }
-  const PositionProfile& position_profile() const noexcept {
-    return *std::get_if<PositionProfile>(&profile_);
-  }
 
   // Member order (decision O5): what the steady MC_Servo + MC_Interpolator cycle reads and writes comes first
   // and together — the superimposed motion, whose own state sits at its end, then the scalars and flags, then
   // the monitors and components with their hot parts; what only jobs, homing or configuration use comes last.
-  // bench/touched_bytes.py --offsets measures it; sizeof stays 7,840 (memory_per_axis_tests).
+  // bench/touched_bytes.py --offsets measures it; sizeof 6,864 since decision M12 (memory_per_axis_tests).
   SuperimposedMotion superimposed_{};
   double servo_cycle_s_ = 0.001;
   AxisUnitFactors units_{};
@@ -534,9 +529,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
   // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
   std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
-  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
-  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
-  std::variant<VelocityProfile, PositionProfile> profile_;
+  // The generator's profile: a velocity plan for Generator::kVelocity, a position plan for kPosition (one
+  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds), kept
+  // as its inputs and two segments (decision M12).
+  RunningProfile profile_;
 
   // ---- cold: options that are off in the steady cycle, jobs and homing state, configuration ----
   DynamicFilter dynamic_filter_;  // spec 02 §7.6
