@@ -197,6 +197,7 @@ void PositioningAxis::configure_components() noexcept {
 // simulated control loop's delay (spec 01 §2.5, §2.6) in the same storage. At construction and at every
 // restart (decision B8); the variant's storage is the object's own: no allocation.
 void PositioningAxis::choose_control_loop() noexcept {
+  drive_used_ = AxisObject::drive_used();
   if (drive_used()) {
     if (controller() == nullptr) control_loop_.emplace<PositionController>();
   } else if (simulation_delay() == nullptr) {

@@ -451,6 +451,9 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void servo_monitoring() noexcept;
   void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
   bool blocked() const noexcept { return core_.blocked(); }
+  // AxisObject::drive_used() as of the last construction or restart, the only moments its inputs change
+  // (Simulation.Mode is RES): one byte the cycle tests instead of three members (decision B8).
+  bool drive_used() const noexcept { return drive_used_; }
   // No drive in use: a virtual or a simulated axis, or one built without a drive (drive_used(), decision B8).
   bool virtual_axis() const noexcept { return !drive_used(); }
   // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6);
@@ -509,6 +512,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool acceleration_was_zero_ = true;    // the setpoint's acceleration in the last cycle (ConstantVelocity)
   bool superimposing_error_ = false;     // ErrorWord.X16: a superimposing axis was not a possible one
   bool positioning_on_base_ = false;     // the positioning check runs on actual - superimposed (U13)
+  bool drive_used_ = false;              // AxisObject::drive_used(), set by choose_control_loop() (B8)
 
   // monitors
   FollowingErrorMonitor following_error_;
