@@ -11,6 +11,7 @@ using R = AlarmReaction;
 // The ErrorWord/WarningWord bit numbers of spec 04 §5.3/§5.4 that alarms show (the same number in both
 // words).
 namespace B {
+constexpr std::int8_t kConfig = 1;           // ConfigFault
 constexpr std::int8_t kDrive = 4;            // DriveFault / DriveWarning
 constexpr std::int8_t kSensor = 5;           // SensorFault
 constexpr std::int8_t kDynamic = 6;          // DynamicError / DynamicWarning
@@ -24,6 +25,12 @@ constexpr std::int8_t kSynchronous = 14;     // SynchronousError (spec 07 §1.9)
 // Reactions as the manual states them (spec 02 §1.3, spec 04 §7); 533/534/531 are configurable and carry
 // their default here; the drive-communication alarms 401..406 are [OUR CHOICE] (docs/decisions.md A1).
 constexpr AlarmDefinition kAlarms[] = {
+    // Class R: only MC_Reset with Restart = TRUE clears it, and the restart checks the start values again.
+    {kAlarmConfiguration, C::kRestart, R::kRemoveEnable,
+     "configuration error at restart: start values that cannot be applied together (additional value: 1 "
+     "Simulation.Mode 0 without a drive, 2 simulation without encoder 1 in the loop, 3 "
+     "InitialOperativeSensor names no existing encoder); they are not taken over",
+     B::kConfig},
     {kAlarmDriveFault, C::kAcknowledge, R::kRemoveEnable, "drive fault (ZSW1.3 fault present)", B::kDrive},
     {kAlarmDriveNotReady, C::kAcknowledge, R::kRemoveEnable,
      "drive not ready: control not requested or left operation", B::kDrive},

@@ -125,10 +125,7 @@ MotionState PiecewiseJerkProfile::at(double t) const noexcept {
   std::size_t i = count_ - 1;
   while (i > 0 && segments_[i].start_time > t)
     --i;
-  const ProfileSegment& s = segments_[i];
-  const double d = std::max(0.0, t - s.start_time);
-  return MotionState{s.position + d * (s.velocity + d * (s.acceleration / 2 + d * s.jerk / 6)),
-                     s.velocity + d * (s.acceleration + d * s.jerk / 2), s.acceleration + d * s.jerk};
+  return segment_state(segments_[i], t);
 }
 
 namespace {

@@ -74,10 +74,13 @@ PositioningAxis::PositioningAxis(std::string name, DeviceIo* device, const Posit
     fail("PositionControl.InitialOperativeSensor", "names an encoder whose Sensor[n].Existent is FALSE");
   }
   db_.OperativeSensor = op;
-  if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
-  if (device_ == nullptr) control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
+  // VirtualAxis.Mode changes only with a new download (RON, seed 004 §6.1.5): a virtual axis never has a
+  // drive. Simulation.Mode is RES (§6.1.7): the device stays for the axis' life, a restart that ends the
+  // simulation uses it (decision B8); drive_used() decides, the control loop follows it.
+  if (start_->VirtualAxis.Mode == kModeOn) device_ = nullptr;
+  choose_control_loop();
   // "To use a technology object in simulation, encoder 1 must be used for position control" (seed 004
-  // §6.1.7, decision B7).
+  // §6.1.7, decisions B7, B8; at a restart: alarm 102).
   if (simulated() && op != 1) {
     fail("PositionControl.InitialOperativeSensor",
          "a simulated axis closes the position loop on encoder 1 (seed 004 §6.1.7)");
@@ -190,6 +193,18 @@ void PositioningAxis::configure_components() noexcept {
   configure_backlash_and_filter();
 }
 
+// A drive in use closes the position loop (PositionController); a virtual or simulated axis has only the
+// simulated control loop's delay (spec 01 §2.5, §2.6) in the same storage. At construction and at every
+// restart (decision B8); the variant's storage is the object's own: no allocation.
+void PositioningAxis::choose_control_loop() noexcept {
+  drive_used_ = AxisObject::drive_used();
+  if (drive_used()) {
+    if (controller() == nullptr) control_loop_.emplace<PositionController>();
+  } else if (simulation_delay() == nullptr) {
+    control_loop_.emplace<BasicSetpointDelayLine<kSimulationDelayCycles>>();
+  }
+}
+
 // The position controller's configuration from the data block, the communication times in force and the
 // cycle time; the controller keeps only what its cycle reads (decision M5).
 PositionControlConfig PositioningAxis::position_control_config(double quantization) const noexcept {
@@ -213,9 +228,8 @@ PositionControlConfig PositioningAxis::position_control_config(double quantizati
 void PositioningAxis::configure_backlash_and_filter() noexcept {
   const auto& s = db_.Sensor[db_.PositionControl.InitialOperativeSensor - 1];
   const bool motor_shaft = s.MountingMode == static_cast<std::int32_t>(EncoderMounting::kMotorShaft);
-  (void)backlash_.configure(BacklashConfig{s.Backlash.Enable && motor_shaft && device_ != nullptr,
-                                           s.Backlash.Size, s.Backlash.Velocity / units_.velocity,
-                                           servo_cycle_s_});
+  (void)backlash_.configure(BacklashConfig{s.Backlash.Enable && motor_shaft && drive_used(), s.Backlash.Size,
+                                           s.Backlash.Velocity / units_.velocity, servo_cycle_s_});
   const auto& f = db_.SetpointFilter.DynamicFilter;
   (void)dynamic_filter_.configure(DynamicFilterConfig{f.Mode, f.T1, f.T2, f.Tt, servo_cycle_s_});
 }

@@ -51,7 +51,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   // Dynamic filter (spec 02 §7.6): x_ipo -> x_f, in position control only; before the actual values, which a
   // virtual axis takes from x_f.
   filtered_ = dynamic_filter_.update(setpoint_, !follows_actual() && position_controlled_);
-  if (device_ != nullptr) {
+  if (drive_used()) {
     read_actual_values();
     // Backlash compensation (spec 01 §5.9): a correction of the motor encoder's actual value — of the
     // start-up encoder it is configured for; after MC_SetSensor to another encoder (e.g. on the load side,
@@ -67,7 +67,7 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   servo_torque_limiting();
   servo_torque_data();
   homing_observe();
-  if (retained_.valid && device_ != nullptr) {
+  if (retained_.valid && drive_used()) {
     // A cyclic absolute encoder's traversed measuring ranges are kept retentively as they change.
     const RetainedSensorState r = encoder_.chain().retained_state();
     retained_.MeasuringRangeCount = r.MeasuringRangeCount;
@@ -75,12 +75,14 @@ void PositioningAxis::servo(const CycleClock& clock) noexcept {
   }
 
   // What the drive is asked to do (the axis core: spec 02 §3.1, §3.4).
-  if (device_ != nullptr) {
+  if (drive_used()) {
     command_.encoder = encoder_.source();
     command_.encoder_control = encoder_.control_word();  // absolute value cyclically, error acknowledge
     if (!additional_.all().empty()) write_additional_encoder_controls();
     drive_.request(core_.drive_request(db_.Actor.RemoveEnableReaction));
     drive_.write(command_);
+  } else if (device_ != nullptr) {
+    drive_.keep_off();  // simulated with a drive kept for a later restart: the link on, the drive off (B8)
   }
 }
 
@@ -131,13 +133,13 @@ void PositioningAxis::simulate_actual_values() noexcept {
     // simulated axis: it stands where it is.
     if (auto* loop = simulation_delay()) loop->fill(actual_position_);
     actual_velocity_ = 0.0;
-  } else if (db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn) {
+  } else if (simulated()) {
     const auto& pc = db_.PositionControl;
     const double t_add = db_.DynamicAxisModel.AdditionalPositionTimeConstant;
     const double tt =
         pc.Kpc > 0.0 ? core_.ipo_cycle_s + servo_cycle_s_ + db_.DynamicAxisModel.VelocityTimeConstant + t_add
                      : core_.ipo_cycle_s + (pc.Kv > 0.0 ? 1.0 / pc.Kv : 0.0) + t_add;
-    auto* loop = simulation_delay();  // always there on an axis without a device
+    auto* loop = simulation_delay();  // always there on an axis that uses no drive (choose_control_loop)
     loop->push(filtered_.position);
     actual_position_ = loop->delayed(tt / servo_cycle_s_);
     actual_velocity_ = (actual_position_ - previous) / servo_cycle_s_;
@@ -163,7 +165,7 @@ void PositioningAxis::control() noexcept {
   const bool active = drive_follows_to && !follows_actual();
   double velocity = 0.0;  // load velocity to the drive, position units / s
   PositionControlOutput out{};
-  if (active && position_controlled_ && device_ == nullptr) {
+  if (active && position_controlled_ && !drive_used()) {
     // Virtual axis / simulation (spec 01 §2.5, §2.6): no control loop; the following error is what the
     // simulated delay leaves (0 on a virtual axis, whose actual value is the setpoint of the cycle before).
     out.following_error = db_.VirtualAxis.Mode == kModeOn ? 0.0 : setpoint_.position - actual_position_;
@@ -180,7 +182,7 @@ void PositioningAxis::control() noexcept {
   db_.StatusServo.ControlDifference = out.control_difference;
   db_.StatusServo.PositionAfterDynamicFilter = filtered_.position;
   db_.StatusPositioning.FollowingError = active && position_controlled_ ? out.following_error : 0.0;
-  if (device_ == nullptr) {
+  if (!drive_used()) {
     db_.VelocitySetpoint = 0.0;  // spec 01 §2.5 table
     return;
   }
@@ -237,7 +239,7 @@ void PositioningAxis::servo_monitoring() noexcept {
   }
 
   // Hardware limit switches (spec 02 §4.1–§4.4): inactive on virtual and simulated axes (spec 01 §2.5).
-  if (device_ != nullptr) {
+  if (drive_used()) {
     limits::HardwareLimitInput hw;
     hw.min_switch_input = inputs_.MinSwitch;
     hw.max_switch_input = inputs_.MaxSwitch;
@@ -303,7 +305,7 @@ void PositioningAxis::interpolate(const CycleClock& clock) noexcept {
   if (const auto restart_requested = core_.begin_reset(core_.cycle)) {  // MC_Reset
     software_limits_.acknowledge();
     hardware_limits_.acknowledge();
-    if (device_ != nullptr) {
+    if (device_ != nullptr) {  // also a drive the axis keeps unused (decision B8)
       drive_.acknowledge();
       encoder_.acknowledge();
       for (AdditionalEncoder& e : additional_.all())
@@ -438,7 +440,7 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
   l.jerk = replanning_jerk(start.velocity, start.acceleration, l.jerk, target == 0.0);
   VelocityProfile planned;
   if (planned.plan(start, target, l)) {
-    profile_ = planned;
+    profile_.adopt(planned, start, target, l);
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kVelocity;
@@ -447,9 +449,10 @@ void PositioningAxis::plan_velocity(double target, const ProfileLimits& limits,
 
 void PositioningAxis::plan_position(double target, const ProfileLimits& limits) noexcept {
   // The job's jerk, whatever the start state (seed 004 §6.7.7, decision S4).
+  const MotionState start = base_setpoint();
   PositionProfile planned;
-  if (planned.plan(base_setpoint(), target, limits)) {
-    profile_ = planned;
+  if (planned.plan(start, target, limits)) {
+    profile_.adopt(planned, start, target, limits);
     profile_time_ = 0.0;
     profile_offset_ = 0.0;
     generator_ = Generator::kPosition;
@@ -478,26 +481,25 @@ void PositioningAxis::generate_setpoint() noexcept {
   switch (generator_) {
     case Generator::kVelocity: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= velocity_profile().duration() - 1e-9) {
-        const MotionState end = velocity_profile().at(velocity_profile().duration());
-        setpoint_ = MotionState{
-            end.position + profile_offset_ + end.velocity * (profile_time_ - velocity_profile().duration()),
-            end.velocity, 0.0};
+      if (profile_time_ >= profile_.duration() - 1e-9) {
+        const MotionState end = profile_.at(profile_.duration());
+        setpoint_ =
+            MotionState{end.position + profile_offset_ + end.velocity * (profile_time_ - profile_.duration()),
+                        end.velocity, 0.0};
         generator_ = Generator::kIdle;  // from here the velocity is constant (0 after a stop)
         if (motion_.kind == JobKind::kPositionProfile) {  // the relative transition ended within this cycle
-          enter_time_profile(setpoint_.position, profile_time_ - velocity_profile().duration());
+          enter_time_profile(setpoint_.position, profile_time_ - profile_.duration());
         }
       } else {
-        setpoint_ = velocity_profile().at(profile_time_);
+        setpoint_ = profile_.advance_to(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
     }
     case Generator::kPosition: {
       profile_time_ += core_.ipo_cycle_s;
-      if (profile_time_ >= position_profile().duration() - 1e-9) {
-        setpoint_ = MotionState{
-            position_profile().at(position_profile().duration() + 1.0).position + profile_offset_, 0.0, 0.0};
+      if (profile_time_ >= profile_.duration() - 1e-9) {
+        setpoint_ = MotionState{profile_.at(profile_.duration() + 1.0).position + profile_offset_, 0.0, 0.0};
         generator_ = Generator::kIdle;
         const bool homing_to_home = motion_.kind == JobKind::kHome && homing_.phase == HomingPhase::kToHome;
         if (motion_.kind == JobKind::kMoveAbsolute || motion_.kind == JobKind::kMoveRelative ||
@@ -512,7 +514,7 @@ void PositioningAxis::generate_setpoint() noexcept {
           enter_time_profile(setpoint_.position);
         }
       } else {
-        setpoint_ = position_profile().at(profile_time_);
+        setpoint_ = profile_.advance_to(profile_time_);
         setpoint_.position += profile_offset_;
       }
       break;
@@ -544,20 +546,20 @@ MotionState PositioningAxis::predicted_setpoint(double dt) const noexcept {
   const MotionState base = base_setpoint();
   MotionState s{base.position + base.velocity * dt, base.velocity, 0.0};
   if (generator_ == Generator::kVelocity) {
-    const double end = velocity_profile().duration();
+    const double end = profile_.duration();
     if (t >= end - 1e-9) {
-      const MotionState e = velocity_profile().at(end);
+      const MotionState e = profile_.at(end);
       s = MotionState{e.position + profile_offset_ + e.velocity * (t - end), e.velocity, 0.0};
     } else {
-      s = velocity_profile().at(t);
+      s = profile_.at(t);
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kPosition) {
-    const double end = position_profile().duration();
+    const double end = profile_.duration();
     if (t >= end - 1e-9) {
-      s = MotionState{position_profile().at(end + 1.0).position + profile_offset_, 0.0, 0.0};
+      s = MotionState{profile_.at(end + 1.0).position + profile_offset_, 0.0, 0.0};
     } else {
-      s = position_profile().at(t);
+      s = profile_.at(t);
       s.position += profile_offset_;
     }
   } else if (generator_ == Generator::kTimeProfile && motion_.kind == JobKind::kPositionProfile) {
@@ -683,12 +685,12 @@ void PositioningAxis::complete_jobs() noexcept {
         if (motion_.jog_stopping && settled && at_zero) {
           core_.jobs.set(motion_.id, JobState::kDone);  // J2
           motion_ = Motion{};
-        } else if (auto* r = core_.jobs.find(motion_.id)) {
-          r->status.in_velocity = settled && !motion_.jog_stopping;
+        } else {
+          core_.jobs.set_in_velocity(motion_.id, settled && !motion_.jog_stopping);
         }
         break;
       case JobKind::kMoveVelocity:
-        if (auto* r = core_.jobs.find(motion_.id)) r->status.in_velocity = settled;
+        core_.jobs.set_in_velocity(motion_.id, settled);
         break;
       default:
         break;
@@ -727,9 +729,9 @@ void PositioningAxis::update_status() noexcept {
     db_.ActualPosition = act.position;
     // The actual counter follows the encoder's rules (spec 01 §2.4.1); the setpoint's is the actual one plus
     // the cycles between them.
-    const std::int64_t actual_cycle = device_ != nullptr ? encoder_.chain().modulo_cycle() + act.cycle -
-                                                               cycle_index(actual_position_, start, length)
-                                                         : act.cycle;
+    const std::int64_t actual_cycle = drive_used() ? encoder_.chain().modulo_cycle() + act.cycle -
+                                                         cycle_index(actual_position_, start, length)
+                                                   : act.cycle;
     db_.ActualModuloCycle = static_cast<std::int32_t>(actual_cycle);
     db_.ModuloCycle = static_cast<std::int32_t>(actual_cycle + sp.cycle - act.cycle);
   } else {
@@ -759,7 +761,7 @@ void PositioningAxis::update_status() noexcept {
   db_.StatusPositioning.Distance = positioning ? std::fabs(motion_.target - setpoint_.position) : 0.0;
   db_.StatusPositioning.SuperimposedDistance = superimposed_.distance();
   db_.StatusPositioning.SetpointExecutionTime =
-      generator_ == Generator::kPosition ? std::max(0.0, position_profile().duration() - profile_time_) : 0.0;
+      generator_ == Generator::kPosition ? std::max(0.0, profile_.duration() - profile_time_) : 0.0;
 
   std::uint32_t sw = db_.StatusWord & (1u << static_cast<unsigned>(StatusWordBit::kOnlineStartValuesChanged));
   std::uint32_t sw2 = 0;
@@ -849,12 +851,22 @@ void PositioningAxis::restart() noexcept {
   std::array<std::int32_t, 4> adjusted{};  // StatusSensor[1..4]
   for (std::size_t n = 0; n < adjusted.size(); ++n)
     adjusted[n] = db_.StatusSensor[n].Adjusted;
+  // The start values are checked together first: what breaks a rule keeps its value in force and is alarm
+  // 102 (decision B8).
+  std::uint32_t simulation_mode = db_.Simulation.Mode;
+  std::uint32_t initial_sensor = db_.PositionControl.InitialOperativeSensor;
+  const std::uint32_t configuration_error = restart_configuration(simulation_mode, initial_sensor);
   // The start-up encoder closes the loop again (spec 04 PositionControl.InitialOperativeSensor).
-  const std::uint32_t operative = make_operative(start_->PositionControl.InitialOperativeSensor);
+  const std::uint32_t operative = make_operative(initial_sensor);
   db_ = *start_;
+  db_.Simulation.Mode = simulation_mode;
+  db_.PositionControl.InitialOperativeSensor = initial_sensor;
   core_.restart();
-  assign(db_.StatusWord, changed, false);
+  // A start value not taken over still waits for a restart (StatusWord.X3, spec 04 §0.2).
+  assign(db_.StatusWord, changed, configuration_error != 0);
   db_.OperativeSensor = operative;
+  // Whether the drive is used follows the work memory's Simulation.Mode from here on: the control loop too.
+  choose_control_loop();
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
   superimposed_ = SuperimposedMotion{};
   sensor_switch_difference_ = 0.0;
@@ -895,6 +907,29 @@ void PositioningAxis::restart() noexcept {
   setpoint_ = MotionState{actual_position_, 0.0, 0.0};
   command_.travel_to_fixed_stop = false;  // the restarted connection clears STW2 (AxisCore::restart)
   if (device_ != nullptr) drive_.restart(with_reference_values(drive_.config(), start_->Actor));
+  // After the acknowledgement of the restart (class R): pending until a restart with consistent values.
+  if (configuration_error != 0) raise(kAlarmConfiguration, configuration_error);
+}
+
+std::uint32_t PositioningAxis::restart_configuration(std::uint32_t& simulation_mode,
+                                                     std::uint32_t& initial_sensor) const noexcept {
+  const auto& next = *start_;
+  // Spec 04 §3.20: the start-up encoder is one of the existing encoders (Sensor[n].Existent is RON, fixed at
+  // construction). Otherwise the one in force stays: no encoder is left without its configuration.
+  const std::uint32_t op = next.PositionControl.InitialOperativeSensor;
+  if (op < 1 || op > 4 || !db_.Sensor[op - 1].Existent) return kConfigurationNoSuchEncoder;
+  // Seed 004 §6.1.7: "at the end of the simulation a valid drive and encoder integration must be present".
+  // An axis built without a drive stays in simulation.
+  const bool virtual_mode = next.VirtualAxis.Mode == kModeOn;
+  if (!virtual_mode && device_ == nullptr && simulation_mode == kModeOn && next.Simulation.Mode != kModeOn) {
+    return kConfigurationNoDrive;
+  }
+  // Seed 004 §6.1.7: "to use a technology object in simulation, encoder 1 must be used for position control".
+  // Neither value is taken over, so that the axis stays as it was (simulated on encoder 1, or on its drive).
+  if (!virtual_mode && next.Simulation.Mode == kModeOn && op != 1) return kConfigurationSimulationEncoder;
+  simulation_mode = next.Simulation.Mode;
+  initial_sensor = op;
+  return 0;
 }
 
 }  // namespace tomc::techobjects

@@ -146,7 +146,7 @@ void PositioningAxis::write_additional_encoder_controls() noexcept {
 void PositioningAxis::update_additional_encoder_status() noexcept {
   for (const AdditionalEncoder& e : additional_.all()) {
     auto& status = db_.StatusSensor[e.number - 1];
-    if (device_ == nullptr && !simulated()) {
+    if (!drive_used() && !simulated()) {
       // A virtual axis reads no encoder: every used encoder shows its actual values, the setpoints of one
       // servo cycle before, adjusted (seed 004 §6.1.5/§6.1.6 table, decision B7).
       const auto& operative = db_.StatusSensor[db_.OperativeSensor - 1];
@@ -189,7 +189,7 @@ ActualValueChain* PositioningAxis::sensor_chain(std::uint32_t n) noexcept {
 
 double PositioningAxis::sensor_position(std::uint32_t n) noexcept {
   // A virtual or simulated axis' operative encoder reads nothing: the axis' actual value is its position.
-  if (n == db_.OperativeSensor && device_ == nullptr) return actual_position_;
+  if (n == db_.OperativeSensor && !drive_used()) return actual_position_;
   return sensor_chain(n)->continuous_position();
 }
 
@@ -201,7 +201,7 @@ void PositioningAxis::transfer_position(std::uint32_t n, double position, bool a
   if (n == db_.OperativeSensor) {
     // Mode 3 onto the operative encoder: the setpoint moves with the actual value, as in direct homing, so
     // that the new position causes no motion.
-    shift_position(device_ != nullptr ? encoder_.set_position(position) : position - actual_position_);
+    shift_position(drive_used() ? encoder_.set_position(position) : position - actual_position_);
   } else {
     chain.set_position(position);
   }
@@ -231,7 +231,7 @@ Submission PositioningAxis::set_sensor(const SetSensorInputs& in) noexcept {
     return Submission::reject(error_id::kSensorSwitchBlocked);
   }
   const auto n = static_cast<std::uint32_t>(in.Sensor);
-  if (device_ == nullptr && !simulated()) {
+  if (!drive_used() && !simulated()) {
     // A virtual axis reads no encoder: every encoder shows the setpoints, so a switch changes only which
     // Sensor[n]'s configuration applies and a transfer has nothing to transfer (decision B7).
     if (in.Mode <= 1) (void)make_operative(n);

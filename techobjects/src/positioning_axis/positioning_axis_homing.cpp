@@ -48,7 +48,7 @@ void PositioningAxis::homing_observe() noexcept {
 void PositioningAxis::assign_reference(double mark_position, double value, double home_position) noexcept {
   const double now = value + (actual_position_ - mark_position);
   double delta = 0.0;
-  if (device_ != nullptr) {
+  if (drive_used()) {
     delta = encoder_.set_position(now, ModuloCycleRule::kHomePositionHalf, home_position);
   } else {
     delta = now - actual_position_;
@@ -236,7 +236,7 @@ Submission PositioningAxis::home_other_encoder(const HomeInputs& in) noexcept {
   AdditionalEncoder* e =
       in.Sensor >= 1 && in.Sensor <= 4 ? additional_.find(static_cast<std::uint32_t>(in.Sensor)) : nullptr;
   // A virtual axis reads no encoder, each shows the setpoints: none can be adjusted alone (decision B7).
-  if (e == nullptr || in.Mode != 13 || (device_ == nullptr && !simulated())) {
+  if (e == nullptr || in.Mode != 13 || (!drive_used() && !simulated())) {
     return Submission::reject(error_id::kInvalidSensor);
   }
   if (e->channel.chain().absolute_type()) return Submission::reject(error_id::kHomingModeNotAvailable);
@@ -345,7 +345,7 @@ Submission PositioningAxis::home(const HomeInputs& in) noexcept {
   if (in.Mode == 11) wanted = shown_actual + (in.Position - shown_setpoint);
   const ModuloCycleRule rule = in.Mode == 7 ? ModuloCycleRule::kZero : ModuloCycleRule::kShortestDistance;
   double delta = 0.0;
-  if (device_ != nullptr) {
+  if (drive_used()) {
     delta = encoder_.set_position(wanted, rule);
   } else if (modulo()) {
     const double w = modulo_wrap(wanted, start, length).position;

@@ -24,7 +24,7 @@ std::uint16_t PositioningAxis::torque_limiting_rejection(const TorqueLimitingInp
   }
   // Limiting needs a drive telegram with torque reduction (telegrams 10x); a virtual or simulated axis
   // accepts the job and outputs nothing (spec 01 §2.5 table).
-  if (device_ != nullptr && !drive_has_momred_ && in.Mode == 0) return error_id::kNoTorqueReduction;
+  if (drive_used() && !drive_has_momred_ && in.Mode == 0) return error_id::kNoTorqueReduction;
   if (in.Mode == 1 && !(core_.torque.active && core_.torque.mode == 1)) {
     // Fixed-stop detection: enabled, position-controlled, consistent tolerances (spec 03 §4.18.3, §8.11).
     if (core_.phase != PowerPhase::kEnabled) return error_id::kAxisNotEnabled;
@@ -51,7 +51,7 @@ TorqueLimitingState PositioningAxis::torque_limiting(const TorqueLimitingInputs&
 
 TorqueDataConditions PositioningAxis::torque_data_conditions() const noexcept {
   const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
-  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+  return core_.torque_data_conditions(drive_used() ? &drive_ : nullptr,
                                       linear_motor ? db_.Actor.LinearMotorDriveParameter.ReferenceForce
                                                    : db_.Actor.DriveParameter.ReferenceTorque,
                                       db_.Actor.InverseDirection);
@@ -69,7 +69,7 @@ double PositioningAxis::torque_precontrol() const noexcept {
   // Only with Mode 1, in position-controlled operation of a drive that follows the TO's setpoint (spec 02
   // §7.5; a virtual or simulated axis has no drive: "precontrol has no effect", spec 01 §2.5).
   if (db_.TorquePreControl.Mode != static_cast<std::int32_t>(TorquePreControlMode::kAccelerationBased) ||
-      device_ == nullptr || !position_controlled_ || follows_actual() || !core_.drive_follows_setpoint())
+      !drive_used() || !position_controlled_ || follows_actual() || !core_.drive_follows_setpoint())
     return 0.0;
   TorquePrecontrolMechanics m;
   m.linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
@@ -95,7 +95,7 @@ void PositioningAxis::servo_torque_data() noexcept {
   // A linear motor has force where a standard motor has torque (spec 04 §4.7).
   const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
   // Without telegram 750 nothing goes to the drive: the total is 0, the start conditions are not needed.
-  if (device_ == nullptr || drive_.device_config().supplementary_telegram != 750) {
+  if (!drive_used() || drive_.device_config().supplementary_telegram != 750) {
     (linear_motor ? status.TotalForceAdditive : status.TotalTorqueAdditive) = 0.0;
     return;
   }
@@ -112,12 +112,12 @@ void PositioningAxis::servo_torque_limiting() noexcept {
   if (!active) {  // the common case, kept short: only what the end of a job has to clear
     core_.in_limitation = false;
     clamping_.reset();
-    if (device_ != nullptr && (core_.torque.stw2_fixed_stop || command_.momred != 0))
+    if (drive_used() && (core_.torque.stw2_fixed_stop || command_.momred != 0))
       (void)drive_torque_limit(command_, drive_.drive_actual(), core_.torque, 0.0, 1.0, drive_has_momred_,
                                drive_has_meldw_);
     return;
   }
-  if (device_ != nullptr) {
+  if (drive_used()) {
     const bool linear_motor = db_.Actor.MotorType == static_cast<std::int32_t>(ActorMotorType::kLinearMotor);
     const bool linear_axis =
         db_.Properties.MotionType == static_cast<std::int32_t>(PropertiesMotionType::kLinear);

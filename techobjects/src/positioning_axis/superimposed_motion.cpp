@@ -36,7 +36,7 @@ void SuperimposedMotion::plan_halt() noexcept {
   l.jerk = replanning_jerk(state_.velocity, state_.acceleration, l.jerk, true);  // decision R1
   VelocityProfile stop;
   if (stop.plan(state_, 0.0, l)) {
-    profile_ = stop;
+    profile_.emplace<RunningProfile>().adopt(stop, state_, 0.0, l);
     time_ = 0.0;
     planned_ = true;
   }
@@ -53,12 +53,12 @@ void SuperimposedMotion::replan(double velocity_limit, double base_approach) noe
     l.velocity = velocity_limit;
     PositionProfile to_target;
     if (!to_target.plan(state_, target_, l)) return;
-    profile_ = to_target;
+    profile_.emplace<RunningProfile>().adopt(to_target, state_, target_, l);
   } else {
     // No headroom in the direction of travel: the superimposed part stops and waits (as an override of 0 %).
     VelocityProfile stop;
     if (!stop.plan(state_, 0.0, l)) return;
-    profile_ = stop;
+    profile_.emplace<RunningProfile>().adopt(stop, state_, 0.0, l);
   }
   planned_velocity_ = velocity_limit;
   time_ = 0.0;
@@ -158,18 +158,17 @@ bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
     return false;
   }
   time_ += dt;
-  const bool position = std::holds_alternative<PositionProfile>(profile_);
-  const double duration = position ? std::get<PositionProfile>(profile_).duration()
-                                   : std::get<VelocityProfile>(profile_).duration();
+  RunningProfile& profile = std::get<RunningProfile>(profile_);  // planned_: a profile runs
+  const bool position = profile.kind() == RunningProfile::Kind::kPosition;
+  const double duration = profile.duration();
   const bool finished = time_ >= duration - 1e-9;
   const MotionState before = state_;
   if (!finished) {
-    state_ = position ? std::get<PositionProfile>(profile_).at(time_)
-                      : std::get<VelocityProfile>(profile_).at(time_);
+    state_ = profile.advance_to(time_);
   } else if (position) {
     state_ = MotionState{target_, 0.0, 0.0};  // exact: the job's distance
   } else {
-    state_ = MotionState{std::get<VelocityProfile>(profile_).at(duration).position, 0.0, 0.0};
+    state_ = MotionState{profile.at(duration).position, 0.0, 0.0};
   }
   // The headroom holds in every cycle, the last one's step to the end included (U17): a cut replans.
   if ((job_ == Job::kMove || job_ == Job::kHalt) && limit_acceleration(before, dt, headroom)) return false;
@@ -182,11 +181,11 @@ bool SuperimposedMotion::advance(double dt, const Headroom& headroom) noexcept {
 MotionState SuperimposedMotion::predicted(double dt) const noexcept {
   if (!planned_) return MotionState{state_.position + state_.velocity * dt, state_.velocity, 0.0};
   const double t = time_ + dt;
-  if (const auto* p = std::get_if<PositionProfile>(&profile_)) {
-    return t >= p->duration() ? MotionState{target_, 0.0, 0.0} : p->at(t);
+  const auto& p = std::get<RunningProfile>(profile_);
+  if (p.kind() == RunningProfile::Kind::kPosition) {
+    return t >= p.duration() ? MotionState{target_, 0.0, 0.0} : p.at(t);
   }
-  const auto& v = std::get<VelocityProfile>(profile_);
-  return t >= v.duration() ? MotionState{v.at(v.duration()).position, 0.0, 0.0} : v.at(t);
+  return t >= p.duration() ? MotionState{p.at(p.duration()).position, 0.0, 0.0} : p.at(t);
 }
 
 void SuperimposedMotion::fold() noexcept {

@@ -33,7 +33,9 @@ SpeedAxis::SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& st
                      const DriveConnectionConfig& drive)
     : AxisObject(std::move(name), device, start_values) {
   check_start_values(name_, speed_axis_variables(), *start_);
-  if (start_->VirtualAxis.Mode == kModeOn || start_->Simulation.Mode == kModeOn) device_ = nullptr;
+  // VirtualAxis.Mode is RON (a virtual axis never has a drive); Simulation.Mode is RES: the device stays, a
+  // restart that ends the simulation uses it (seed 004 §6.1.7, decision B8; drive_used()).
+  if (start_->VirtualAxis.Mode == kModeOn) device_ = nullptr;
   if (device_ != nullptr) {
     drive_ = DriveConnection(*device_, with_reference_values(drive, start_->Actor));
     const std::uint16_t telegram = device_->adapter->config().drive_telegram;
@@ -233,7 +235,7 @@ TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) n
       if (core_.alarms.strongest_reaction() == AlarmReaction::kRemoveEnable)
         return error_id::kAxisBlockedByAlarm;
     }
-    if (device_ != nullptr && !drive_has_momred_) return error_id::kNoTorqueReduction;  // F1
+    if (drive_used() && !drive_has_momred_) return error_id::kNoTorqueReduction;  // F1
     // Mutual exclusion with MC_TorqueRange (spec 03 §4.18.3 priority).
     if (!core_.torque.active && core_.torque_data.range_active()) return error_id::kTorqueLimitingExclusion;
     return 0;
@@ -243,7 +245,7 @@ TorqueLimitingState SpeedAxis::torque_limiting(const TorqueLimitingInputs& in) n
 }
 
 TorqueDataConditions SpeedAxis::torque_data_conditions() const noexcept {
-  return core_.torque_data_conditions(device_ != nullptr ? &drive_ : nullptr,
+  return core_.torque_data_conditions(drive_used() ? &drive_ : nullptr,
                                       db_.Actor.DriveParameter.ReferenceTorque, db_.Actor.InverseDirection);
 }
 
@@ -267,7 +269,7 @@ void SpeedAxis::read_actual_values() noexcept {
   const double gear =
       static_cast<double>(db_.LoadGear.Numerator) / static_cast<double>(db_.LoadGear.Denominator);
   const double sign = db_.Actor.InverseDirection ? -1.0 : 1.0;
-  if (device_ == nullptr) {
+  if (!drive_used()) {
     actual_velocity_ = setpoint_.velocity;  // virtual axis / simulation: the actual value is the setpoint
     db_.ActualSpeed = sign * actual_velocity_ * 60.0 * gear;
     db_.StatusDrive.InOperation = core_.phase == PowerPhase::kEnabled;
@@ -301,7 +303,10 @@ void SpeedAxis::write_setpoint() noexcept {
     rpm = std::clamp(sign * setpoint_.velocity * 60.0 * gear, -max, max);
   }
   db_.VelocitySetpoint = sign * rpm / 60.0 / gear * velocity_unit_per_revolution_per_second();
-  if (device_ == nullptr) return;
+  if (!drive_used()) {
+    if (device_ != nullptr) drive_.keep_off();  // simulated, its drive kept for a later restart (B8)
+    return;
+  }
   // MC_TorqueLimiting (spec 01 §8.10): the speed axis is rotary; load side through the gear (and efficiency).
   double motor_limit = 0.0;
   const bool torque_output = core_.torque.active || core_.torque.stw2_fixed_stop || command_.momred != 0;
@@ -344,7 +349,7 @@ void SpeedAxis::interpolate(const CycleClock& clock) noexcept {
 void SpeedAxis::take_reset() noexcept {
   const auto restart_requested = core_.begin_reset(core_.cycle);
   if (!restart_requested) return;
-  if (device_ != nullptr) drive_.acknowledge();
+  if (device_ != nullptr) drive_.acknowledge();  // also a drive kept unused (decision B8)
   if (*restart_requested) restart();
   core_.finish_reset();
 }
@@ -434,8 +439,8 @@ void SpeedAxis::generate_setpoint() noexcept {
     } else if (motion_.kind == JobKind::kJog && motion_.jog_stopping && settled && at_zero) {
       core_.jobs.set(motion_.id, JobState::kDone);  // J2: Busy ends at standstill
       motion_ = Motion{};
-    } else if (auto* r = core_.jobs.find(motion_.id)) {
-      r->status.in_velocity = settled && !motion_.jog_stopping;
+    } else {
+      core_.jobs.set_in_velocity(motion_.id, settled && !motion_.jog_stopping);
     }
   }
   if (settled && at_zero) core_.stop_reached_standstill();
@@ -480,10 +485,15 @@ void SpeedAxis::update_status() noexcept {
 
 void SpeedAxis::restart() noexcept {
   // MC_Reset Restart = TRUE: re-initialise from the start values (spec 01 §7); RES and DIR values return to
-  // them.
+  // them. Seed 004 §6.1.7: "at the end of the simulation a valid drive and encoder integration must be
+  // present": an axis built without a drive stays in simulation, alarm 102 (decision B8).
+  const std::uint32_t simulation_mode = db_.Simulation.Mode;
+  const bool no_drive = start_->VirtualAxis.Mode != kModeOn && device_ == nullptr &&
+                        simulation_mode == kModeOn && start_->Simulation.Mode != kModeOn;
   db_ = *start_;
+  if (no_drive) db_.Simulation.Mode = simulation_mode;
   core_.restart();
-  assign(db_.StatusWord, StatusWordBit::kOnlineStartValuesChanged, false);
+  assign(db_.StatusWord, StatusWordBit::kOnlineStartValuesChanged, no_drive);  // X3: a value not taken
   db_.StatusDrive.AdaptionState = static_cast<std::int32_t>(DriveAdaptionState::NOT_APPLICABLE);
   motion_ = Motion{};
   generator_active_ = false;
@@ -492,6 +502,7 @@ void SpeedAxis::restart() noexcept {
   if (device_ != nullptr) {
     drive_.restart(with_reference_values(drive_.config(), start_->Actor));  // the PROFIdrive link runs on
   }
+  if (no_drive) core_.raise(kAlarmConfiguration, kConfigurationNoDrive);  // after the restart's acknowledge
 }
 
 }  // namespace tomc::techobjects

@@ -27,18 +27,19 @@ using techobjects::PositioningAxis;
 using techobjects::SpeedAxis;
 
 constexpr std::size_t kAxisBudget = 8192;
-// The layout as measured with decisions M8-M11 and C26 (docs/performance.md "Memory per axis"); each guard
+// The layout as measured with decisions M8-M12 and C26 (docs/performance.md "Memory per axis"); each guard
 // below fails if it grows back. A one-encoder positioning axis (8,128 before M5, 7,840 before M6, 7,760
 // before M8, 7,560 with M8-M10, 7,568 with C26's pointer to the delayed leading value, 7,544 with M11's
-// chain) and each further encoder (400 before M5, 312 before M6, 232 before M11): one to four encoders fit
-// the 8,192 bytes (7,544, 7,752, 7,960, 8,168; four took 8,264 before M11).
-constexpr std::size_t kPositioningAxisSize = 7544;
+// chain, 6,864 with M12's running profiles and job records) and each further encoder (400 before M5, 312
+// before M6, 232 before M11): one to four encoders fit the 8,192 bytes (6,864, 7,072, 7,280, 7,488; 7,544,
+// 7,752, 7,960, 8,168 before M12; four took 8,264 before M11).
+constexpr std::size_t kPositioningAxisSize = 6864;
 constexpr std::size_t kAdditionalEncoderSize = 208;
 // What TO_SynchronousAxis adds to a positioning axis (its SynchronousOperation): 1,760 bytes before the job
 // slots were shared (decision C17), 1,504 since, 1,464 without the job states' padding (M5), 1,240 since the
 // phasing travel keeps only its segment in progress (M6), 1,224 since a finished shift job keeps two LREALs
-// (M10). With it the synchronous axis is 8,832 bytes (8,856 before M11), not yet within the 8,192
-// (docs/performance.md "Memory per axis").
+// (M10). With it the synchronous axis is 8,152 bytes since M12 (8,832 before, 8,856 before M11): within the
+// 8,192 (docs/performance.md "Memory per axis").
 constexpr std::size_t kSynchronousOperationBudget = 1224;
 
 // The records every axis TO holds several of (decisions M8, M9): 16 pending alarms, four setpoint and four
@@ -84,7 +85,7 @@ struct Machine {
   techobjects::SynchronousAxis* follower = nullptr;
 };
 
-// Issue 14 (≤ 8 KiB per axis TO); decisions M1–M10, C26.
+// Issue 14 (≤ 8 KiB per axis TO); decisions M1–M12, C26.
 TEST(MemoryPerAxis, PositioningAxisWithinEightKiB) {
   Machine m;
   EXPECT_LE(m.driven->memory_footprint(), kAxisBudget);
@@ -108,8 +109,9 @@ TEST(MemoryPerAxis, SynchronousAxisIsThePositioningAxisPlusItsBudget) {
                 2 * sizeof(techobjects::TechnologyObject*));
   EXPECT_LE(sizeof(techobjects::SynchronousOperation), kSynchronousOperationBudget);
   // The whole axis: its positioning part may not grow back either (9,696 before M5, 9,368 before M6, 9,064
-  // before M8).
+  // before M8, 8,832 before M12), and it fits the 8 KiB of an axis TO since M12 (8,152).
   EXPECT_LE(footprint, kPositioningAxisSize + kSynchronousOperationBudget + 2 * 32);
+  EXPECT_LE(footprint, kAxisBudget);
   std::printf("SynchronousAxis footprint %zu (SynchronousOperation %zu)\n", footprint,
               sizeof(techobjects::SynchronousOperation));
 }
@@ -192,9 +194,9 @@ struct FourEncoderDevice {
 };
 
 // The budgets with several encoders, in a runtime (the start values went to its load memory), each encoder
-// beyond the first 208 bytes of heap: one to four encoders within the 8,192 bytes (7,544, 7,752, 7,960,
-// 8,168; docs/performance.md "Memory per axis").
-// Decisions B1 (encoders 2…4 beside the object, the 8,192-byte budget), M6, M10 and M11.
+// beyond the first 208 bytes of heap: one to four encoders within the 8,192 bytes (6,864, 7,072, 7,280,
+// 7,488 since M12; docs/performance.md "Memory per axis").
+// Decisions B1 (encoders 2…4 beside the object, the 8,192-byte budget), M6, M10, M11 and M12.
 TEST(MemoryPerAxis, UpToFourEncodersWithinEightKiB) {
   FourEncoderDevice d;
   const auto in_runtime = [&](std::size_t encoders, const char* name) -> PositioningAxis& {

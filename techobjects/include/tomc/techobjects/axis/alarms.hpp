@@ -43,6 +43,9 @@ const AlarmDefinition* find_alarm(std::uint32_t number) noexcept;
 std::span<const AlarmDefinition> alarm_definitions() noexcept;
 
 // Alarm numbers (seed-named ones and [OUR CHOICE] ones for drive communication, docs/decisions.md A1).
+// A restart found start values that cannot be applied together (ErrorWord.X1 ConfigFault, class R; the
+// additional value names the rule, kConfiguration* below), [OUR CHOICE] B8.
+inline constexpr std::uint32_t kAlarmConfiguration = 102;
 inline constexpr std::uint32_t kAlarmDriveFault = 401;          // drive reports a fault (ZSW1.3)
 inline constexpr std::uint32_t kAlarmDriveNotReady = 402;       // drive dropped "control requested" / left S4
 inline constexpr std::uint32_t kAlarmDriveCommunication = 405;  // no fresh frames (link lost)
@@ -68,6 +71,17 @@ inline constexpr std::uint32_t kAlarmLeadingAxisDefective = 601;         // spec
 inline constexpr std::uint32_t kAlarmLeaderNotPositionControlled = 603;  // spec 07 §1.10
 inline constexpr std::uint32_t kAlarmSynchronizationError = 608;  // leading value reversed, spec 07 §1.10
 inline constexpr std::uint32_t kAlarmCamNotInterpolated = 612;    // camming with such a cam, spec 07 §3.2
+
+// The additional values of alarm 102 (decision B8): which rule the start values of the restart broke.
+// 1: Simulation.Mode 0 on an axis built without a drive ("at the end of the simulation a valid drive and
+//    encoder integration must be present", seed 004 §6.1.7);
+// 2: Simulation.Mode 1 with PositionControl.InitialOperativeSensor ≠ 1 ("encoder 1 must be used for position
+//    control", seed 004 §6.1.7);
+// 3: PositionControl.InitialOperativeSensor names an encoder whose Sensor[n].Existent is FALSE (spec 04
+// §3.20).
+inline constexpr std::uint32_t kConfigurationNoDrive = 1;
+inline constexpr std::uint32_t kConfigurationSimulationEncoder = 2;
+inline constexpr std::uint32_t kConfigurationNoSuchEncoder = 3;
 
 // 16 bytes (24 before decision M8): the alarm numbers of the table fit 16 bits (find_alarm() admits no
 // other).

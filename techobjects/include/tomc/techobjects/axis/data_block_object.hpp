@@ -102,10 +102,11 @@ class DataBlockObject : public TechnologyObject {
   std::size_t shared_heap_bytes() const noexcept { return string_heap_bytes(name_) + start_.owned_bytes(); }
 
   std::string name_;
-  DeviceIo* device_ = nullptr;  // nullptr: a virtual axis or simulation
-  StartValues<Data> start_;     // load memory (the runtime's StartValueStore once attached)
-  Data db_;                     // work memory
-  DriveConnection drive_;       // its configuration: drive_.config()
+  DeviceIo* device_ =
+      nullptr;               // nullptr: built without a drive (axes: drive_used() tells whether it is used)
+  StartValues<Data> start_;  // load memory (the runtime's StartValueStore once attached)
+  Data db_;                  // work memory
+  DriveConnection drive_;    // its configuration: drive_.config()
   AxisCore core_;
 };
 
@@ -114,7 +115,15 @@ class DataBlockObject : public TechnologyObject {
 template <typename Data>
 class AxisObject : public DataBlockObject<Data> {
  public:
-  const DriveConnection* drive() const noexcept { return this->device_ == nullptr ? nullptr : &this->drive_; }
+  // The drive in use: nullptr on a virtual or simulated axis, also when it keeps a drive (decision B8).
+  const DriveConnection* drive() const noexcept { return drive_used() ? &this->drive_ : nullptr; }
+  // The axis commands and reads its drive: it has one (the device it was built with, kept for its life) and
+  // neither VirtualAxis.Mode nor Simulation.Mode of the work memory is 1. Both are read from the data block,
+  // so a restart that takes a changed Simulation.Mode (RES, seed 004 §6.1.7) over also decides this anew.
+  bool drive_used() const noexcept {
+    return this->device_ != nullptr && this->db_.VirtualAxis.Mode != kModeOn &&
+           this->db_.Simulation.Mode != kModeOn;
+  }
 
   // ---- the axis control panel (spec 02 §9.2) ----
   ControlPriority& control_priority() noexcept { return this->core_.control; }
@@ -136,7 +145,7 @@ class AxisObject : public DataBlockObject<Data> {
 
  protected:
   using DataBlockObject<Data>::DataBlockObject;
-  DriveConnection* drive_or_null() noexcept { return this->device_ == nullptr ? nullptr : &this->drive_; }
+  DriveConnection* drive_or_null() noexcept { return drive_used() ? &this->drive_ : nullptr; }
 };
 
 }  // namespace tomc::techobjects

@@ -5,45 +5,57 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "tomc/techobjects/axis/job.hpp"
 
 namespace tomc::techobjects {
 
+// A record is 8 bytes (12 before decision M12): the id, the ErrorID, the kind and the state; the InVelocity
+// flags of all records are one word beside them (−124 bytes per axis TO).
 template <typename Kind, std::size_t Capacity = 32>
 class JobTable {
- public:
-  struct Record {
-    JobId id = 0;
-    Kind kind{};
-    JobStatus status{};
-  };
+  static_assert(Capacity <= 32, "the InVelocity flags are one 32-bit word");
 
+ public:
   JobId create(Kind kind, JobState state) noexcept {
     const JobId id = next_++;
     if (next_ == 0) next_ = 1;
-    records_[id % Capacity] = Record{id, kind, JobStatus{state, 0, false}};
+    records_[id % Capacity] = Record{id, 0, kind, state};
+    in_velocity_ &= ~bit(id);
     return id;
-  }
-  Record* find(JobId id) noexcept {
-    auto& r = records_[id % Capacity];
-    return (id != 0 && r.id == id) ? &r : nullptr;
   }
   // Ends or changes a job; leaving the active state clears InVelocity.
   void set(JobId id, JobState state, std::uint16_t error_id = 0) noexcept {
-    if (auto* r = find(id)) {
-      r->status.state = state;
-      r->status.error_id = error_id;
-      if (state != JobState::kActive) r->status.in_velocity = false;
-    }
+    Record& r = records_[id % Capacity];
+    if (id == 0 || r.id != id) return;
+    r.state = state;
+    r.error_id = error_id;
+    if (state != JobState::kActive) in_velocity_ &= ~bit(id);
+  }
+  // MC_MoveVelocity / MC_MoveJog: the setpoint speed reached and constant (JobStatus::in_velocity).
+  void set_in_velocity(JobId id, bool in_velocity) noexcept {
+    const Record& r = records_[id % Capacity];
+    if (id == 0 || r.id != id) return;
+    in_velocity_ = in_velocity ? in_velocity_ | bit(id) : in_velocity_ & ~bit(id);
   }
   JobStatus status(JobId id) const noexcept {
-    const auto& r = records_[id % Capacity];
-    return (id != 0 && r.id == id) ? r.status : JobStatus{};
+    const Record& r = records_[id % Capacity];
+    if (id == 0 || r.id != id) return JobStatus{};
+    return JobStatus{r.state, r.error_id, (in_velocity_ & bit(id)) != 0};
   }
 
  private:
+  struct Record {
+    JobId id = 0;
+    std::uint16_t error_id = 0;
+    Kind kind{};
+    JobState state = JobState::kUnknown;
+  };
+  static constexpr std::uint32_t bit(JobId id) noexcept { return std::uint32_t{1} << (id % Capacity); }
+
   std::array<Record, Capacity> records_{};
+  std::uint32_t in_velocity_ = 0;  // bit id % Capacity: the record's InVelocity
   JobId next_ = 1;
 };
 

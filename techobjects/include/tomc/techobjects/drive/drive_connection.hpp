@@ -89,6 +89,16 @@ class DriveConnection {
     supplementary_sp_.M_LIMIT_NEG = m_limit_neg;
   }
 
+  // A drive its axis keeps but does not use (Simulation.Mode = 1, decision B8), once per servo cycle instead
+  // of read/write: the link runs on (both signs of life, frames read and written, so that the drive sees no
+  // communication loss) while the drive is asked to stay off (OFF1: STW1.0 = 0) with zero setpoints — a
+  // simulated axis "outputs no setpoint to the drive" (seed 004 §6.1.7).
+  void keep_off() noexcept {
+    read();
+    request(telegrams::DriveRequest::kOff);
+    write(ServoCommand{});
+  }
+
   // ---- what the TO asks of the drive ----
   void request(telegrams::DriveRequest request) noexcept { request_ = request; }
   telegrams::DriveRequest requested() const noexcept { return request_; }

@@ -51,6 +51,14 @@ struct ProfileSegment {
   double jerk = 0;
 };
 
+// The state `t` into the profile within segment `s` (t at or after its start_time), in closed form. Shared by
+// PiecewiseJerkProfile and RunningProfile (running_profile.hpp), so that both give the same bits.
+inline MotionState segment_state(const ProfileSegment& s, double t) noexcept {
+  const double d = t - s.start_time > 0.0 ? t - s.start_time : 0.0;  // std::max(0.0, t - start_time)
+  return MotionState{s.position + d * (s.velocity + d * (s.acceleration / 2 + d * s.jerk / 6)),
+                     s.velocity + d * (s.acceleration + d * s.jerk / 2), s.acceleration + d * s.jerk};
+}
+
 // Worst case: a velocity change through zero (2 × 3 segments) + cruise + braking (3) = 10; 3·10^6 random
 // plans from any state see at most 9 (decision U2: 10, not 12, to make room for the superimposed profile).
 // A plan that would need more is marked truncated(); the property tests assert it never is.
@@ -67,6 +75,7 @@ class PiecewiseJerkProfile {
   double duration() const noexcept { return duration_; }
   std::span<const ProfileSegment> segments() const noexcept { return {segments_.data(), count_}; }
   bool truncated() const noexcept { return truncated_; }  // more segments than kMaxProfileSegments were built
+  const MotionState& end_state() const noexcept { return end_; }
 
  private:
   friend class ProfileBuilder;
@@ -91,6 +100,7 @@ class VelocityProfile {
   double duration() const noexcept { return profile_.duration(); }    // time to target velocity with a = 0
   std::span<const ProfileSegment> segments() const noexcept { return profile_.segments(); }
   bool truncated() const noexcept { return profile_.truncated(); }
+  const MotionState& end_state() const noexcept { return profile_.end_state(); }  // exact, a = 0
   // Velocity error of the closed-form end state before it was snapped to the target (for tests).
   double end_error() const noexcept { return end_error_; }
 
@@ -110,6 +120,7 @@ class PositionProfile {
   double duration() const noexcept { return profile_.duration(); }
   std::span<const ProfileSegment> segments() const noexcept { return profile_.segments(); }
   bool truncated() const noexcept { return profile_.truncated(); }
+  const MotionState& end_state() const noexcept { return profile_.end_state(); }  // exact, at rest
   // Position error of the closed-form end state before it was snapped to the target (for tests).
   double end_error() const noexcept { return end_error_; }
   // Peak (or cruise) velocity the plan settled on, and the iterations of its longest root search (<= the

@@ -41,6 +41,7 @@
 #include "tomc/techobjects/drive/encoder_channel.hpp"
 #include "tomc/techobjects/motion/axis_units.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/motion/running_profile.hpp"
 #include "tomc/techobjects/motion/time_position_profile.hpp"
 #include "tomc/techobjects/position/actual_value_chain.hpp"
 #include "tomc/techobjects/position/backlash.hpp"
@@ -419,6 +420,13 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void complete_jobs() noexcept;
   void update_status() noexcept;
   void restart() noexcept;
+  // The start values a restart takes over, checked together (decision B8): Simulation.Mode and
+  // PositionControl.InitialOperativeSensor that break a rule of seed 004 §6.1.7 / spec 04 §3.20 keep the
+  // values in force (`simulation_mode`, `initial_sensor`) and return the rule (alarm 102's additional value);
+  // 0: all of them apply.
+  std::uint32_t restart_configuration(std::uint32_t& simulation_mode,
+                                      std::uint32_t& initial_sensor) const noexcept;
+  void choose_control_loop() noexcept;  // PositionController with a drive in use, else the simulated delay
   // torque limiting and fixed-stop detection (positioning_axis_torque.cpp)
   std::uint16_t torque_limiting_rejection(const TorqueLimitingInputs& in) const noexcept;
   void servo_torque_limiting() noexcept;  // MC_Servo: MOMRED, STW2.8, InLimitation, clamping
@@ -443,9 +451,16 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   void servo_monitoring() noexcept;
   void shift_position(double delta) noexcept;  // direct homing: actual and setpoint move together
   bool blocked() const noexcept { return core_.blocked(); }
-  bool virtual_axis() const noexcept { return device_ == nullptr; }
-  // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6).
-  bool simulated() const noexcept { return device_ == nullptr && db_.VirtualAxis.Mode != kModeOn; }
+  // AxisObject::drive_used() as of the last construction or restart, the only moments its inputs change
+  // (Simulation.Mode is RES): one byte the cycle tests instead of three members (decision B8).
+  bool drive_used() const noexcept { return drive_used_; }
+  // No drive in use: a virtual or a simulated axis, or one built without a drive (drive_used(), decision B8).
+  bool virtual_axis() const noexcept { return !drive_used(); }
+  // Simulation.Mode = 1 without VirtualAxis.Mode: actual values through a simulated control loop (§2.6);
+  // the work memory's value, which a restart takes over (B8).
+  bool simulated() const noexcept {
+    return db_.Simulation.Mode == kModeOn && db_.VirtualAxis.Mode != kModeOn;
+  }
   bool homed() const noexcept;
   bool follows_actual() const noexcept { return core_.follows_actual(); }
   bool modulo() const noexcept { return db_.Modulo.Enable; }
@@ -454,17 +469,11 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   BasicSetpointDelayLine<kSimulationDelayCycles>* simulation_delay() noexcept {
     return std::get_if<BasicSetpointDelayLine<kSimulationDelayCycles>>(&control_loop_);
   }
-  const VelocityProfile& velocity_profile() const noexcept {
-    return *std::get_if<VelocityProfile>(&profile_);
-  }
-  const PositionProfile& position_profile() const noexcept {
-    return *std::get_if<PositionProfile>(&profile_);
-  }
 
   // Member order (decision O5): what the steady MC_Servo + MC_Interpolator cycle reads and writes comes first
   // and together — the superimposed motion, whose own state sits at its end, then the scalars and flags, then
   // the monitors and components with their hot parts; what only jobs, homing or configuration use comes last.
-  // bench/touched_bytes.py --offsets measures it; sizeof stays 7,840 (memory_per_axis_tests).
+  // bench/touched_bytes.py --offsets measures it; sizeof 6,864 since decision M12 (memory_per_axis_tests).
   SuperimposedMotion superimposed_{};
   double servo_cycle_s_ = 0.001;
   AxisUnitFactors units_{};
@@ -503,6 +512,7 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   bool acceleration_was_zero_ = true;    // the setpoint's acceleration in the last cycle (ConstantVelocity)
   bool superimposing_error_ = false;     // ErrorWord.X16: a superimposing axis was not a possible one
   bool positioning_on_base_ = false;     // the positioning check runs on actual - superimposed (U13)
+  bool drive_used_ = false;              // AxisObject::drive_used(), set by choose_control_loop() (B8)
 
   // monitors
   FollowingErrorMonitor following_error_;
@@ -523,9 +533,10 @@ class PositioningAxis : public AxisObject<PositioningAxisData>, public LeadingVa
   // A drive-connected axis closes the position loop (PositionController); a virtual or simulated axis has
   // none, only the simulated control loop's delay (spec 01 §2.5, §2.6). One storage for either (issue 14).
   std::variant<PositionController, BasicSetpointDelayLine<kSimulationDelayCycles>> control_loop_;
-  // The generator's profile: a VelocityProfile for Generator::kVelocity, a PositionProfile for kPosition (one
-  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds).
-  std::variant<VelocityProfile, PositionProfile> profile_;
+  // The generator's profile: a velocity plan for Generator::kVelocity, a position plan for kPosition (one
+  // storage for both, issue 14; planned into a temporary and taken over only when the plan succeeds), kept
+  // as its inputs and two segments (decision M12).
+  RunningProfile profile_;
 
   // ---- cold: options that are off in the steady cycle, jobs and homing state, configuration ----
   DynamicFilter dynamic_filter_;  // spec 02 §7.6

@@ -24,6 +24,7 @@
 
 #include "tomc/techobjects/axis/job.hpp"
 #include "tomc/techobjects/motion/profiles.hpp"
+#include "tomc/techobjects/motion/running_profile.hpp"
 
 namespace tomc::techobjects {
 
@@ -107,7 +108,8 @@ class SuperimposedMotion {
 
   // The source of the superimposed part: a profile (kMove, kHalt), or MC_MotionInSuperimposed's inputs of the
   // last call (kMotionIn: the absolute superimposition; no profile runs then, so they take no extra bytes).
-  std::variant<VelocityProfile, PositionProfile, MotionState> profile_;
+  // The profile is kept as its inputs and two segments (running_profile.hpp, decision M12).
+  std::variant<RunningProfile, MotionState> profile_;
   MotionState state_{};
   ProfileLimits limits_{};  // the job's: velocity = VelocityDiff
   double target_ = 0.0;     // kMove: the superimposed position to reach

@@ -31,6 +31,8 @@ namespace tomc::techobjects {
 class SpeedAxis final : public AxisObject<SpeedAxisData> {
  public:
   // `device` is the drive; nullptr for a virtual axis or simulation (VirtualAxis.Mode / Simulation.Mode = 1).
+  // With Simulation.Mode = 1 a given drive is kept unused (the link on, the drive off) until a restart ends
+  // the simulation (decision B8).
   // Throws std::invalid_argument for start values the data block does not permit (reported with their path).
   SpeedAxis(std::string name, DeviceIo* device, const SpeedAxisData& start_values,
             const DriveConnectionConfig& drive = {});
@@ -98,8 +100,8 @@ class SpeedAxis final : public AxisObject<SpeedAxisData> {
   DynamicUnits units() const noexcept { return {velocity_unit_per_revolution_per_second(), 1.0}; }
   double velocity_unit_per_revolution_per_second() const noexcept;
   double override_factor() const noexcept;
-  double velocity_limit() const noexcept;  // rev/s
-  bool virtual_axis() const noexcept { return device_ == nullptr; }
+  double velocity_limit() const noexcept;                       // rev/s
+  bool virtual_axis() const noexcept { return !drive_used(); }  // virtual, simulated or built without drive
   TorqueDataConditions torque_data_conditions() const noexcept;
 
   ServoCommand command_{};  // what MC_Servo sends the drive (one writer: DriveConnection::write)
