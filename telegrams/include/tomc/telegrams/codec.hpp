@@ -98,12 +98,15 @@ class TelegramCodec {
     return e;
   }
 
-  TelegramLayout layout_{};
-  CodecOptions options_{};
-  std::array<detail::CompiledField, kMaxFieldsPerFrame> compiled_{};
+  // Member order (decision P28): what every cycle's encode()/decode() reads — the routine and, at the start of
+  // the layout, its direction and length — lies together in the first 24 bytes, one cache line; the rest is
+  // configuration and the reference loop's.
   // Set by create() for every valid layout; never called while the length is 0 (check() refuses first).
   detail::EncodeRoutine encode_ = nullptr;
   detail::DecodeRoutine decode_ = nullptr;
+  TelegramLayout layout_{};
+  CodecOptions options_{};
+  std::array<detail::CompiledField, kMaxFieldsPerFrame> compiled_{};
 };
 
 }  // namespace tomc::telegrams
