@@ -98,10 +98,9 @@ class TelegramCodec {
     return e;
   }
 
-  // Member order (decision P28): what every cycle's encode()/decode() reads — the routine and, at the start of
-  // the layout, its direction and length — lies together in the first 24 bytes, one cache line; the rest is
-  // configuration and the reference loop's.
-  // Set by create() for every valid layout; never called while the length is 0 (check() refuses first).
+  // Member order (decision P28): what a cycle's encode()/decode() reads (the routine, then the layout's
+  // direction and length) lies in the first 24 bytes, one cache line; the rest is configuration.
+  // The routines: set by create() for every valid layout; never called while the length is 0 (check() first).
   detail::EncodeRoutine encode_ = nullptr;
   detail::DecodeRoutine decode_ = nullptr;
   TelegramLayout layout_{};
