@@ -22,6 +22,11 @@ int main(int argc, char** argv) {  // argument `touched`: bench/touched_bytes.py
   const int cycles = touched ? tomc::bench::kTouchedCycles : kCycles;
   for (int i = 0; i < cycles; ++i)
     m.step();
-  std::printf("cycles=%d units=%d velocity=%g\n", cycles, kAxes, m.group().axes[0]->data().Velocity);
+  // The axis' state after the run, every digit: two builds of the same code (with and without link-time
+  // optimisation, decision P27) must print the same line.
+  const auto& d = m.group().axes[0]->data();
+  std::printf("cycles=%d units=%d velocity=%g position=%.17g actual=%.17g following_error=%.17g status=%u\n",
+              cycles, kAxes, d.Velocity, d.Position, d.ActualPosition, d.StatusPositioning.FollowingError,
+              static_cast<unsigned>(d.StatusWord));
   return 0;
 }

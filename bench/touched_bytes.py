@@ -10,7 +10,11 @@ A workload that also prints `object=<address> size=<bytes>` (its first axis) get
 lines inside that object; with --offsets, the touched byte ranges as offsets into it (to set against
 `ptype /o` of the class: which members the cycle touches, decision O4).
 
-Usage: bench/touched_bytes.py build-bench/bin/positioning_to_cycle_callgrind [units] [--offsets]
+With --lines, every touched line outside the first axis object and the stack, named by the program's symbol or
+section it falls in (`nm`, `readelf`; the program's load address from the marker's symbol), or "heap": where
+the lines beside the TO's own members come from (decision P28).
+
+Usage: bench/touched_bytes.py build-bench/bin/positioning_to_cycle_callgrind [units] [--offsets] [--lines]
   units: divide by this many axes (the workload's units=, e.g. 16 followers of gearing_cycle)
 """
 import subprocess
@@ -21,8 +25,9 @@ LINE = 64
 
 
 def main() -> int:
-    args = [a for a in sys.argv[1:] if a != "--offsets"]
+    args = [a for a in sys.argv[1:] if a not in ("--offsets", "--lines")]
     offsets = "--offsets" in sys.argv[1:]
+    list_lines = "--lines" in sys.argv[1:]
     program = args[0]
     units = int(args[1]) if len(args) > 1 else 1
     proc = subprocess.Popen(
@@ -106,7 +111,55 @@ def main() -> int:
             else:
                 ranges.append([off, off])
         print("  offsets:", " ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in ranges))
+    if list_lines:
+        object_base, object_size = objects[0] if objects else (0, 0)
+        outside = {}
+        for addr, size in cycle:
+            for b in range(addr, addr + size):
+                if b < stack_floor and not object_base <= b < object_base + object_size:
+                    outside.setdefault(b // LINE, set()).add(b)
+        name_of = program_symbols(program, marker[0])
+        print(f"  lines outside the axis object and the stack: {len(outside)}")
+        for line in sorted(outside):
+            print(f"    {line * LINE:#x} {len(outside[line]):3d} bytes  {name_of(min(outside[line]), max(outside[line]))}")
     return 0
+
+
+def program_symbols(program: str, marker_address: int):
+    """A function naming an address range by the program's data symbols and sections, or "heap"."""
+    import bisect
+    nm = subprocess.run(["nm", "-C", "-n", "-S", "--defined-only", program], capture_output=True, text=True).stdout
+    symbols = []  # (address, size, name)
+    marker_symbol = None
+    for row in nm.splitlines():
+        parts = row.split(maxsplit=3)
+        if len(parts) == 4 and parts[2].lower() in "bdrvug":
+            address, size, name = int(parts[0], 16), int(parts[1], 16), parts[3]
+            symbols.append((address, size, name))
+            if name == "tomc::bench::touched_marker":
+                marker_symbol = address
+    sections = []  # (address, size, name)
+    readelf = subprocess.run(["readelf", "-SW", program], capture_output=True, text=True).stdout
+    for row in readelf.splitlines():
+        parts = row.replace("[ ", "[").split()
+        if len(parts) > 5 and parts[0].startswith("[") and parts[1].startswith("."):
+            sections.append((int(parts[3], 16), int(parts[5], 16), parts[1]))
+    base = marker_address - marker_symbol if marker_symbol is not None else 0
+    starts = [s[0] for s in symbols]
+
+    def name_of(first: int, last: int) -> str:
+        names = []
+        for address in (first, last):
+            a = address - base
+            i = bisect.bisect_right(starts, a) - 1
+            if i >= 0 and symbols[i][0] <= a < symbols[i][0] + max(symbols[i][1], 1):
+                names.append(symbols[i][2][:90])
+                continue
+            section = next((n for s, z, n in sections if s <= a < s + z), None)
+            names.append(section if section is not None else "heap")
+        return names[0] if names[0] == names[1] else f"{names[0]} .. {names[1]}"
+
+    return name_of
 
 
 if __name__ == "__main__":

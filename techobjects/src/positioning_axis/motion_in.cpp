@@ -103,7 +103,9 @@ void PositioningAxis::end_motion_in(JobId running) noexcept {
 // The setpoints of the last call, as given (spec 03 §4.17: no profile, the TO's dynamic limits do not apply).
 // MotionInPosition on a modulo axis: the position within the range, reached by the shortest way from the
 // present setpoint, so that the continuous setpoint makes no jump of a modulo length.
-void PositioningAxis::follow_motion_in() noexcept {
+// Out of line even under link-time optimisation (decision P28): a path the steady cycle does not take, kept
+// out of the frame of the function that calls it every cycle, whose stack lines the cycle touches.
+[[gnu::noinline]] void PositioningAxis::follow_motion_in() noexcept {
   const double dt = core_.ipo_cycle_s;
   switch (motion_.kind) {
     case JobKind::kMotionInPosition: {

@@ -154,7 +154,9 @@ void PositioningAxis::check_profile_limits(const Motion& motion) noexcept {
 // (OnProfile FALSE, seed 004 §6.8.4) it chases the profile with MaxVelocity and the acceleration limits —
 // the velocity that would let it brake onto the profile, clamped — until it is within one cycle's step of
 // it again (decision L4).
-void PositioningAxis::follow_time_profile() noexcept {
+// Out of line even under link-time optimisation (decision P28): a path the steady cycle does not take, kept
+// out of the frame of the function that calls it every cycle, whose stack lines the cycle touches.
+[[gnu::noinline]] void PositioningAxis::follow_time_profile() noexcept {
   if (motion_.kind != JobKind::kPositionProfile) {  // the job ended without a new generator: hold
     generator_ = Generator::kIdle;
     setpoint_.position += setpoint_.velocity * core_.ipo_cycle_s;

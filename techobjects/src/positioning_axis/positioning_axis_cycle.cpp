@@ -575,10 +575,9 @@ void PositioningAxis::monitor_software_limits(const MotionState& previous_setpoi
   if (core_.phase != PowerPhase::kEnabled || follows_actual()) return;
   const auto& limits = software_limits_.effective_limits();
   if (!limits.monitored || !homed_) {
-    // Not effective (not active, or not homed): the monitor only resets its state; no look-ahead to prepare.
-    limits::SoftwareLimitInput idle;
-    idle.homed = homed_;
-    (void)software_limits_.update(idle);
+    // Not effective (not active, or not homed): the monitor only resets its state, as its update() does for
+    // an input it does not monitor; no look-ahead to prepare, no input to build (issue 23).
+    software_limits_.reset();
     return;
   }
   const std::int32_t reaction =

@@ -159,7 +159,9 @@ std::span<TechnologyObject* const> PositioningAxis::superimposing_axes() const n
   return {superimposing_axes_->axes.data(), superimposing_axes_->count};
 }
 
-void PositioningAxis::abort_superimposed(std::uint16_t error_id, bool fold) noexcept {
+// Out of line even under link-time optimisation (decision P28): a path the steady cycle does not take, kept
+// out of the frame of the function that calls it every cycle, whose stack lines the cycle touches.
+[[gnu::noinline]] void PositioningAxis::abort_superimposed(std::uint16_t error_id, bool fold) noexcept {
   const JobId id = superimposed_.job_id();
   if (id != 0) core_.jobs.set(id, error_id == 0 ? JobState::kAborted : JobState::kError, error_id);
   if (superimposed_.job() == SuperimposedMotion::Job::kMotionInAxes)
@@ -171,7 +173,9 @@ void PositioningAxis::abort_superimposed(std::uint16_t error_id, bool fold) noex
   }
 }
 
-void PositioningAxis::advance_superimposed() noexcept {
+// Out of line even under link-time optimisation (decision P28): a path the steady cycle does not take, kept
+// out of the frame of the function that calls it every cycle, whose stack lines the cycle touches.
+[[gnu::noinline]] void PositioningAxis::advance_superimposed() noexcept {
   // The headroom the base motion leaves (spec 01 §8.14): a following axis' synchronous motion is not limited
   // by its own dynamic limits, so there only VelocityDiff applies.
   const double inf = std::numeric_limits<double>::infinity();

@@ -98,12 +98,14 @@ class TelegramCodec {
     return e;
   }
 
+  // Member order (decision P28): what a cycle's encode()/decode() reads (the routine, then the layout's
+  // direction and length) lies in the first 24 bytes, one cache line; the rest is configuration.
+  // The routines: set by create() for every valid layout; never called while the length is 0 (check() first).
+  detail::EncodeRoutine encode_ = nullptr;
+  detail::DecodeRoutine decode_ = nullptr;
   TelegramLayout layout_{};
   CodecOptions options_{};
   std::array<detail::CompiledField, kMaxFieldsPerFrame> compiled_{};
-  // Set by create() for every valid layout; never called while the length is 0 (check() refuses first).
-  detail::EncodeRoutine encode_ = nullptr;
-  detail::DecodeRoutine decode_ = nullptr;
 };
 
 }  // namespace tomc::telegrams

@@ -172,10 +172,12 @@ class SoftwareLimitMonitor {
   LimitSide active_side() const noexcept { return side_; }
   bool alarm_pending() const noexcept { return pending_; }
   LimitStatusBits bits() const noexcept;
+  // What update() does with an input it does not monitor (not active, not homed): the state is forgotten. An
+  // axis whose limits are not effective calls it instead of building an input (issue 23).
+  void reset() noexcept;
 
  private:
   enum class Kind : std::uint8_t { kNone, kReached, kExceeded, kOutside };
-  void reset() noexcept;
   double linear_coordinate(double position, double velocity) const noexcept;
 
   SoftwareLimitConfig config_{};
