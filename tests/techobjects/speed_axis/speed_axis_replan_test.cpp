@@ -12,6 +12,8 @@ namespace {
 
 using tomc::testing::SpeedAxisMachine;
 
+// Decision S4 (the job's jerk kept; a ramp to standstill never reverses), spec 03 §4.4 (MC_Halt brakes to
+// standstill).
 TEST(SpeedAxisReplan, AHaltWithASofterJerkDoesNotReverse) {
   SpeedAxisMachine m;
   m.power.Enable = true;
