@@ -75,6 +75,8 @@ DscRun run_dsc(double kv, double xerr_bias, int extra_cycles) {
   return r;
 }
 
+// spec 06 §7 (DSC: n_ref = NSOLL_B + KPC · (XERR − Δx)), spec 02 §7.2; decisions T24 (KPC = Kv · 1000) and
+// T26 (XERR in encoder-1 counts).
 TEST(DscSim, FollowingErrorBoundedDuringRampAndConvergesAfter) {
   SimulatedDriveParameters p;
   const double kv = 200.0;  // 1/s -> KPC = 200 000
