@@ -214,7 +214,8 @@ TEST(CodecErrors, WrongDirection) {
 }
 
 // A default-constructed codec is empty and refuses everything.
-// Decision P2 (errors are values: a codec without a telegram answers kUnknownTelegram, never writes).
+// Project decision P2 (errors are values, Result<T>: a codec without a telegram answers kUnknownTelegram,
+// never writes).
 TEST(CodecErrors, EmptyCodec) {
   const TelegramCodec codec;
   EXPECT_EQ(codec.frame_size(), 0u);

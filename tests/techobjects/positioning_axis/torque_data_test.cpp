@@ -168,8 +168,8 @@ TEST(TorqueData, DriveAppliesRangeAndReportsActualTorque) {
 
 // MC_TorqueAdditive −1.25 Nm on an enabled axis at standstill (M_ADD1 = −2048, the value of TV16): sent in
 // the MC_Servo after the call, it enters the simulated drive's torque demand in the step after that — a
-// disturbance torque the drive's speed loop and the TO's position loop then work off. ActualTorque follows the
-// motor torque through M_ACT (N2 of 10 Nm, one step 10/16384 Nm).
+// disturbance torque the drive's speed loop and the TO's position loop then work off. ActualTorque follows
+// the motor torque through M_ACT (N2 of 10 Nm, one step 10/16384 Nm).
 // spec 01 §8.12 (MC_TorqueAdditive), spec 06 §8 and §11 TV16 (M_ADD1/M_ACT in N2 of the reference torque:
 // −1.25 Nm = −2048).
 TEST(TorqueData, AdditiveTorqueReachesTheMotor) {
