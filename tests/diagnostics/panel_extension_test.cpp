@@ -73,7 +73,7 @@ struct ExtendedMachine {
 };
 
 // Decision W10 (panel functions by capability), spec 02 §9.2 (the job runs while the panel holds priority),
-// §9.3 (STOP).
+// docs/diagnostics.md "Axis control panel" (STOP halts the axis).
 TEST(AxisPanelExtension, ExtraFunctionsRunThroughTheBase) {
   ExtendedMachine m;
   const auto* panel = m.diagnostics.panel(0);

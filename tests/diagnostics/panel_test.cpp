@@ -134,7 +134,8 @@ TEST(AxisControlPanel, ProgramJobsAreRejectedWith8012) {
 
 // Run at the panel velocity and stop with the panel deceleration (MC_Halt): 300 1/min = 5 rev/s at 200 1/s²
 // is standstill after 25 ms.
-// spec 02 §9.3 (panel velocity and dynamics; STOP as MC_Halt with the panel deceleration).
+// spec 02 §9.3 (the panel's velocity and dynamics), docs/diagnostics.md "Axis control panel" (STOP: MC_Halt
+// with the panel deceleration).
 TEST(AxisControlPanel, VelocityAndStop) {
   DiagnosticsMachine m;
   take_and_enable(m);
@@ -213,7 +214,7 @@ TEST(AxisControlPanel, GiveBackDisablesFirst) {
 }
 
 // Acknowledge (MC_Reset from the panel) clears a technology alarm; the program's MC_Reset could not.
-// spec 02 §9.3 (acknowledge from the panel: MC_Reset), decision D10.
+// docs/diagnostics.md "Axis control panel" (acknowledge: the panel's MC_Reset), decision D10.
 TEST(AxisControlPanel, AcknowledgeClearsAlarms) {
   DiagnosticsMachine m;
   take_and_enable(m);

@@ -119,7 +119,8 @@ TEST(PositioningAxisPanel, ActiveHoming) {
 }
 
 // Values out of range are refused before they reach an instruction; STOP ends a positioning job.
-// Decision D6 (panel values range-checked before posting), spec 02 §9.3 (STOP).
+// Decision D6 (panel values range-checked before posting), docs/diagnostics.md "Axis control panel" (STOP
+// aborts a positioning job).
 TEST(PositioningAxisPanel, BadValuesAreRefusedAndStopEndsPositioning) {
   PositioningDiagnosticsMachine m;
   const double nan = std::numeric_limits<double>::quiet_NaN();
