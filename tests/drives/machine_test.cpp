@@ -62,8 +62,8 @@ TEST(MachineSim, FixedStopBlocksLoadAndTorqueRisesToLimit) {
 // Limit switches (active at and beyond their position) and the reference cam (active inside its window) as
 // the load moves; the load position is taken from the encoder (XIST1 -> counts -> degrees), not from the
 // model.
-// Decision P10 (limit switches and the homing cam as digital inputs the machine provides),
-// docs/simulated-drive.md.
+// docs/simulated-drive.md "Parameters and defaults" (`machine`: limit switches, reference cam), the inputs
+// decision P10 hands to the TO.
 TEST(MachineSim, LimitSwitchesAndReferenceCamFollowTheLoad) {
   SimulatedDriveParameters p;
   p.initial_load_position = 0.0;

@@ -53,8 +53,7 @@ TEST(Alarm, NotificationLayoutAndRoundTrip) {
   EXPECT_FALSE(decoded.block.is_ack);
 }
 
-// IEC 61158-6-10 AlarmAckHigh (0x8001) mirrors the notification's type, API, slot, subslot, specifier;
-// decision I28.
+// IEC 61158-6-10 AlarmAckHigh (0x8001) mirrors the notification's type, API, slot, subslot, specifier.
 TEST(Alarm, AcknowledgeMirrorsTheNotification) {
   const pn::RtaFrame alarm = diagnosis_alarm();
   pn::RtaFrame ack;

@@ -203,8 +203,8 @@ TEST(Backlash, AssumedContactOfAnAdjustedAbsoluteEncoder) {
 }
 
 // An invalid encoder value makes the next valid one a new reference (e.g. the chain restarted from 0).
-// Decision P18 (the correction lives on the actual-value chain: an invalid value restarts it, no motion is
-// invented).
+// Decision P18 (the correction lives in the actual-value chain); tomc's own: an invalid value restarts the
+// reference, no motion is invented.
 TEST(Backlash, InvalidEncoderValueRestartsTheReference) {
   Rig r;
   double m = 0.0;
