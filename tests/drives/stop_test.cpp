@@ -38,8 +38,8 @@ struct RampStopCase {
 
 class RampStop : public ::testing::TestWithParam<RampStopCase> {};
 
-// spec 06 §4.1 (S5a/S5b end at standstill), decision R8 (OFF1 p1121 / OFF3 p1135 ramps, p1226 threshold),
-// docs/simulated-drive.md "One cycle" step 3.
+// spec 06 §4.1 (S5a/S5b end at standstill), decision R8 (the ramp generator acts only for OFF1/OFF3),
+// docs/simulated-drive.md "Parameters and defaults" (p1121, p1135, p1226) and "One cycle" step 3.
 TEST_P(RampStop, StopTimeFollowsFromRampParameters) {
   const auto& c = GetParam();
   SimulatedDriveParameters p;  // p2000 3000, p1082 6000, p1121 1 s, p1135 0.2 s, p1226 20 rpm, T 2 ms
