@@ -75,6 +75,8 @@ std::string adapter(int domain, const std::string& partition, const std::string&
          R"(, "device": "axis1", "partition": ")" + partition + R"(", )" + extra + " }";
 }
 
+// Decision N10 (the contract implementable on another vendor's DDS), docs/gateway.md Appendix B; 100 cycles
+// from spec 01 §8.7 (a trapezoid).
 TEST(CycloneInterop, SimDrivesAnAxisThroughACycloneDdsGateway) {
   const int domain = 171;
   const std::string partition = "tomc-cyclone-" + std::to_string(::getpid());
@@ -114,6 +116,7 @@ TEST(CycloneInterop, SimDrivesAnAxisThroughACycloneDdsGateway) {
 // The same gateway offering XCDR2 only on its writers: the controller says that the gateway was discovered
 // but its endpoints do not match, and why — not "no gateway" — and says it as soon as discovery shows it, not
 // after the 30 s connect timeout.
+// Decisions N6 (XCDR in the QoS) and N7 ("a gateway that does not match" is not "no gateway").
 TEST(CycloneInterop, AnXcdr2GatewayIsReportedAsNotMatching) {
   const int domain = 172;
   const std::string partition = "tomc-cyclone-" + std::to_string(::getpid());

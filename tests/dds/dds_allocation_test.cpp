@@ -29,6 +29,7 @@ namespace {
 using namespace tomc;
 using techobjects::SpeedAxis;
 
+// tomc's own: proves the per-thread counter counts, so the zero of the cycle test can fail.
 TEST(GatewayAllocation, CountingAllocatorCountsThisThread) {
   t_counting = true;
   const auto before = g_allocations.load();
@@ -39,6 +40,8 @@ TEST(GatewayAllocation, CountingAllocatorCountsThisThread) {
 }
 
 // 4 speed axes behind the gateway simulator, moving: 2000 cycles of Runtime::step() without one allocation.
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), decisions G4/G5 (sender thread and triple
+// buffers), docs/gateway.md §6 C6.
 TEST(GatewayAllocation, CycleWithGatewayDrivesDoesNotAllocate) {
   const int domain = 150;
   std::vector<std::pair<std::string, int>> devices = {{"a1", 2}, {"a2", 3}, {"a3", 105}, {"a4", 1}};

@@ -55,6 +55,7 @@ std::shared_ptr<GatewayLink> make_link(int domain) {
   return link;
 }
 
+// Decision N7 ("no gateway" named with the domain and what discovery saw).
 TEST(Diagnosis, NobodyOnTheDomainIsNoGateway) {
   auto link = make_link(163);
   const DeviceReport r = link->diagnose().at(0);
@@ -64,6 +65,7 @@ TEST(Diagnosis, NobodyOnTheDomainIsNoGateway) {
 }
 
 // A participant with nothing on the contract's topics is not a gateway: still "no gateway", naming it.
+// Decision N7 (only endpoints on tomc/gateway/* make a gateway).
 TEST(Diagnosis, AParticipantWithoutContractEndpointsIsStillNoGateway) {
   auto link = make_link(164);
   Participant other(164, "some other application", partition());
@@ -89,6 +91,7 @@ bool mismatched(const DeviceReport& r) {
 
 // (Fast DDS 2.9 does not announce a writer's data representation, so the XCDR2 case of the same check is
 // only reachable from another vendor's DDS; this is the writer side with a QoS Fast DDS does announce.)
+// Decision N7 (durability compared), docs/gateway.md §3 (status: transient-local).
 TEST(Diagnosis, AVolatileStatusWriterIsAnEndpointMismatch) {
   auto link = make_link(165);
   BadGateway gw(165);
@@ -106,6 +109,7 @@ TEST(Diagnosis, AVolatileStatusWriterIsAnEndpointMismatch) {
   EXPECT_STREQ(to_string(r.diagnosis), "endpoints do not match");
 }
 
+// Decision N7 (reliability compared), decision G3 (cyclic topics best effort).
 TEST(Diagnosis, SetpointReaderAskingForReliableIsAnEndpointMismatch) {
   auto link = make_link(166);
   BadGateway gw(166);
@@ -123,6 +127,7 @@ TEST(Diagnosis, SetpointReaderAskingForReliableIsAnEndpointMismatch) {
       << r.text;
 }
 
+// Decision N7 (type name compared), docs/gateway.md §1 (the contract's type names).
 TEST(Diagnosis, AnotherTypeNameIsAnEndpointMismatch) {
   auto link = make_link(167);
   BadGateway gw(167);
@@ -214,15 +219,19 @@ void sign_of_life_case(int domain, bool controller_counts, bool isochronous, Dev
   std::filesystem::remove_all(dir);
 }
 
+// Decision N8 (kSignOfLifeNotCounting after 32 answers without a change while ours counts).
 TEST(Diagnosis, ASignOfLifeThatNeverCountsIsFlagged) {
   sign_of_life_case(169, true, false, DeviceDiagnosis::kSignOfLifeNotCounting);
 }
 
+// Decision N8 (a counting drive sign-of-life is not flagged).
 TEST(Diagnosis, ACountingSignOfLifeIsNotFlagged) {
   sign_of_life_case(170, true, true, DeviceDiagnosis::kAnswering);
 }
 
 // Without isochronous operation neither side counts: nothing to flag.
+// Decision N8 (only while the controller's own STW2 sign-of-life counts), spec 06 §5.1 (RT operation: 0
+// accepted).
 TEST(Diagnosis, NoSignOfLifeOnEitherSideIsNotFlagged) {
   sign_of_life_case(173, false, false, DeviceDiagnosis::kAnswering);
 }

@@ -85,6 +85,8 @@ TEST(GatewayCli, ScenarioThroughTheGatewayGivesTheEmbeddedTrace) {
 }
 
 // No gateway on the domain: the scenario still runs (the TO raises its link alarm), and the user is told why.
+// docs/gateway.md §7 (no fresh answers: CommunicationOK FALSE, alarm 405), decision N7 (the warning says
+// why).
 TEST(GatewayCli, ScenarioWithoutAGatewayWarnsAndRaisesTheLinkAlarm) {
   const auto dir = test_directory("nogateway");
   const std::string scenario = R"({ "cycle_time": 0.001, "cycles": 10,
@@ -103,6 +105,8 @@ TEST(GatewayCli, ScenarioWithoutAGatewayWarnsAndRaisesTheLinkAlarm) {
   std::filesystem::remove_all(dir);
 }
 
+// ARCHITECTURE-GUIDE §6 (every problem with its path), docs/gateway.md §9 (the simulator's file), decision
+// T11 (telegram 104).
 TEST(GatewayCli, GatewaySimConfigurationProblemsNameTheirPaths) {
   const auto dir = test_directory("badconfig");
   std::ofstream(dir / "gw.json") << R"({ "gateway": "gw1", "domain": 300, "cycle_time": 0.001, "colour": 1,
@@ -133,6 +137,8 @@ TEST(GatewayCli, GatewaySimConfigurationProblemsNameTheirPaths) {
 
 // The adapter object is checked like every other part of a scenario, all problems at once, by JSON path; the
 // simulated drive's parameters are refused with the dds_gateway adapter (they belong to the gateway).
+// ARCHITECTURE-GUIDE §6 (all problems at once, by JSON path), docs/scenarios.md "`drive`: adapter, telegram
+// and the simulated machine", decision T2.
 TEST(GatewayCli, AdapterObjectProblemsNameTheirPaths) {
   const auto result = tomc::scenario::Scenario::load_text(R"({ "cycle_time": 0.001, "cycles": 10,
     "technology_objects": [
@@ -186,6 +192,7 @@ TEST(GatewayCli, DemoThroughTheGatewayWithOneOption) {
 
 // The same without a gateway on the domain: the demo still runs (the TOs raise their link alarms) and says
 // why.
+// docs/gateway.md §7 (the TOs raise their link alarm), decision N7 (the warning says why).
 TEST(GatewayCli, DemoWithoutAGatewayWarns) {
   const auto dir = test_directory("demo_nogw");
   std::ofstream(dir / "machine.json") << R"({ "cycle_time": 0.001, "technology_objects": [

@@ -246,6 +246,8 @@ TEST(GatewayTwoProcess, KillRaisesTheLinkAlarmWithinToleranceAndARestartRecovers
 // Delayed answers: shorter than the lock-step wait they are on time; longer, each arrives after its cycle
 // and is stale for the next one -> missed cycles -> alarm 405 after the tolerance. Back to no delay: MC_Reset
 // recovers.
+// docs/gateway.md §7 ("answers delayed beyond the allowed age"), decision G2 (fresh = the answer to cycle
+// k−1), decision R9 (tolerance 3).
 TEST(GatewayTwoProcess, DelayedAnswers) {
   const int domain = 142;
   GatewayProcess gateway(test_directory("delay"), gateway_config(domain, {{"axis1", 2}}));
@@ -279,6 +281,8 @@ TEST(GatewayTwoProcess, DelayedAnswers) {
 
 // Dropped answers: up to the tolerance (3 in a row) the axis rides through, each counted as a missed cycle
 // and as lost answers (sequence gap); one more and alarm 405 follows.
+// docs/gateway.md §7 ("up to 3 answers lost in a row: rides through") and §6 C4 (answers_lost), decision
+// R9.
 TEST(GatewayTwoProcess, DroppedAnswers) {
   const int domain = 143;
   GatewayProcess gateway(test_directory("drop"), gateway_config(domain, {{"axis1", 2}}));
@@ -304,6 +308,8 @@ TEST(GatewayTwoProcess, DroppedAnswers) {
 
 // A device the gateway does not serve: connect() says so and names what the gateway serves; the axis gets no
 // frames, CommunicationOK stays FALSE and MC_Power cannot enable it (alarm 405).
+// docs/gateway.md §7 (device not served: alarm 405, MC_Power cannot enable) and §6 C0 (connect() names
+// why).
 TEST(GatewayTwoProcess, DeviceTheGatewayDoesNotServe) {
   const int domain = 144;
   GatewayProcess gateway(test_directory("unserved"), gateway_config(domain, {{"axis1", 2}, {"axis2", 3}}));
@@ -323,6 +329,8 @@ TEST(GatewayTwoProcess, DeviceTheGatewayDoesNotServe) {
 
 // The controller and the gateway disagree on the telegram: neither side uses the other's bytes; the
 // diagnosis names the difference.
+// docs/gateway.md §5 G3 and §6 C5 (another telegram's bytes are never used; the diagnosis names the
+// difference), §7.
 TEST(GatewayTwoProcess, TelegramMismatch) {
   const int domain = 145;
   GatewayProcess gateway(test_directory("mismatch"), gateway_config(domain, {{"axis1", 3}}));
@@ -341,6 +349,7 @@ TEST(GatewayTwoProcess, TelegramMismatch) {
 
 // A restart of the gateway faster than the link tolerance (new incarnation after 0 ms of silence) is still a
 // broken exchange: alarm 405 in the cycle the new incarnation is seen.
+// Decision G6, docs/gateway.md §6 C3 (a new incarnation: alarm 405 in that cycle).
 TEST(GatewayTwoProcess, GatewayRestartIsALinkLossEvenWhenQuick) {
   const int domain = 147;
   GatewayProcess gateway(test_directory("restart"), gateway_config(domain, {{"axis1", 2}}));
@@ -359,6 +368,7 @@ TEST(GatewayTwoProcess, GatewayRestartIsALinkLossEvenWhenQuick) {
 // The gateway hangs (stop): alarm 405; the drive behind it, without setpoints, runs into its setpoint
 // timeout (F08501) on the gateway's own clock instead of holding the last setpoint. Resume + MC_Reset: the
 // drive's fault is acknowledged through the telegram and the axis enables again.
+// docs/gateway.md §5 G6 (watchdog: the drive's own F08501 takes over) and §7, decision G9.
 TEST(GatewayTwoProcess, HungGatewayAndResume) {
   const int domain = 146;
   GatewayProcess gateway(test_directory("stop"),
@@ -409,6 +419,7 @@ TEST(GatewayTwoProcess, HungGatewayAndResume) {
 
 // Two controllers on one gateway: the second is refused while the first is served; its device reads "other
 // controller", never the first one's frames.
+// Decision G10, docs/gateway.md §5 G1 (one controller at a time: another is refused).
 TEST(GatewayTwoProcess, SecondControllerIsRefused) {
   const int domain = 148;
   GatewayProcess gateway(test_directory("second"), gateway_config(domain, {{"axis1", 2}}));
@@ -438,6 +449,8 @@ TEST(GatewayTwoProcess, SecondControllerIsRefused) {
 
 // A drive fault injected behind the gateway arrives as ZSW1 fault -> alarm 401 (remove enable); cleared and
 // acknowledged with MC_Reset, the axis enables again.
+// docs/gateway.md §7 (ZSW1.3 in fresh frames: alarm 401; MC_Reset acknowledges through the gateway),
+// decision S2.
 TEST(GatewayTwoProcess, DriveFaultBehindTheGateway) {
   const int domain = 149;
   GatewayProcess gateway(test_directory("fault"), gateway_config(domain, {{"axis1", 2}}));

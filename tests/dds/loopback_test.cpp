@@ -45,6 +45,7 @@ namespace fdds = eprosima::fastdds::dds;
 using eprosima::fastdds::rtps::UDPv4TransportDescriptor;
 using eprosima::fastrtps::rtps::IPLocator;
 
+// Decisions G11 (UDPv4 on 127.0.0.1 only) and G12 (the QoS asserted field by field), N5.
 TEST(Loopback, ParticipantQosNamesOnlyLoopback) {
   const fdds::DomainParticipantQos qos = loopback_participant_qos("test");
   EXPECT_EQ(loopback_violations(qos), "");
@@ -63,6 +64,7 @@ TEST(Loopback, ParticipantQosNamesOnlyLoopback) {
 }
 
 // The checker can fail: Fast DDS's defaults and every single loosening are reported.
+// Decision G12 (the checker shown to reject every loosening).
 TEST(Loopback, CheckerRejectsDefaultsAndEachLoosening) {
   EXPECT_NE(loopback_violations(fdds::DomainParticipantQos{}), "");
   fdds::DomainParticipantQos q = loopback_participant_qos("test");
@@ -130,6 +132,7 @@ TEST(Loopback, ParticipantsOfOneProcessCanBeDeletedOneAfterTheOther) {
             eprosima::fastrtps::INTRAPROCESS_OFF);
 }
 
+// Decision G12 (a capture in a network namespace: 0 frames from tomc, > 0 from a default-QoS control).
 TEST(Loopback, NothingLeavesLoopbackInANetworkNamespace) {
   int pipe_fds[2];
   ASSERT_EQ(::pipe(pipe_fds), 0);

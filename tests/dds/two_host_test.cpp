@@ -315,6 +315,8 @@ void make_link(Hosts& hosts, bool& skipped) {
   ASSERT_EQ(interfaces_in(hosts, hosts.gateway()), (std::set<std::string>{"lo", kGatewayVeth}));
 }
 
+// docs/gateway.md §11 (the network and discovery), decisions N1, N4 and N9 (unicast only by default,
+// counted by the capture).
 TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
   Hosts hosts;
   bool skipped = false;
@@ -454,6 +456,7 @@ TEST(TwoHosts, SimDrivesAnAxisThroughAGatewayOnAnotherHostOverUnicastOnly) {
 // Multicast only when asked for: with "multicast_discovery": true and no peers on either side the two hosts
 // still find each other — by SPDP multicast to 239.255.0.1 on the link, which the capture now sees — so the
 // option works, and the unicast-only test above shows that nothing of it happens by default.
+// Decision N1 (multicast_discovery, false unless asked for), docs/gateway.md §11.
 TEST(TwoHosts, MulticastDiscoveryWhenAskedFor) {
   Hosts hosts;
   bool skipped = false;

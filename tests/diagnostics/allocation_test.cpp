@@ -26,6 +26,8 @@ constexpr int kCycles = 5'000;
 constexpr int kCycles = 50'000;
 #endif
 
+// tomc's own: proves the counting allocator sees the diagnostics' set-up, so the zero of the cycle tests
+// can fail.
 TEST(DiagnosticsAllocation, CountingAllocatorSeesAllocations) {
   const auto before = tomc::testing::allocation_count();
   tomc::testing::DiagnosticsMachine m;
@@ -33,6 +35,8 @@ TEST(DiagnosticsAllocation, CountingAllocatorSeesAllocations) {
   EXPECT_GT(tomc::testing::allocation_count(), before);
 }
 
+// ARCHITECTURE-GUIDE §2 (the RT side never waits for the web page) and §7 (no allocation in the cyclic
+// path); 32 channels as docs/diagnostics.md "Traces".
 TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
   tomc::testing::DiagnosticsMachine m(4, diagnostics::DiagnosticsConfig{1, 1024, 100});
   for (std::size_t i = 1; i < 4; ++i) {
@@ -101,6 +105,7 @@ TEST(DiagnosticsAllocation, CycleWithPanelSnapshotsAndTraceDoesNotAllocate) {
 
 // The positioning axis' panel: homing (set position and active), absolute and relative positioning, jog and
 // stop, in the cycle without allocation.
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over the panel functions of decisions W10/W17.
 TEST(DiagnosticsAllocation, PositioningPanelDoesNotAllocate) {
   tomc::testing::PositioningDiagnosticsMachine m;
   std::uint64_t in_cycle = 0;
@@ -152,6 +157,7 @@ struct CammingDiagnosticsMachine : SynchronousDiagnostics, tomc::testing::Gearin
         }) {}
 };
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over the synchronous view of decision W19.
 TEST(DiagnosticsAllocation, SynchronousViewAndCamDoNotAllocate) {
   CammingDiagnosticsMachine m;
   ASSERT_TRUE(m.cam->interpolate_cam().accepted());

@@ -27,6 +27,7 @@ struct Item {
   std::uint32_t sequence;
 };
 
+// ARCHITECTURE-GUIDE §2 (fixed-size lock-free mailboxes between threads: nothing lost, nothing reordered).
 TEST(BoundedQueue, EveryItemOnceAndInOrderPerProducer) {
   diagnostics::BoundedQueue<Item, 64> queue;
   constexpr std::uint32_t kProducers = 4;
@@ -57,6 +58,7 @@ TEST(BoundedQueue, EveryItemOnceAndInOrderPerProducer) {
   EXPECT_FALSE(queue.pop(item));
 }
 
+// ARCHITECTURE-GUIDE §2 (a fixed-size mailbox refuses when full; the RT side never waits).
 TEST(BoundedQueue, FullQueueRefuses) {
   diagnostics::BoundedQueue<int, 4> queue;
   for (int i = 0; i < 4; ++i)
@@ -73,6 +75,7 @@ struct Block {
   std::array<std::uint64_t, 64> copies{};  // all equal to serial in a consistent block
 };
 
+// ARCHITECTURE-GUIDE §2 (snapshot buffers TO -> diagnostics: whole values, never an older after a newer).
 TEST(TripleBuffer, ReaderSeesWholeValuesInOrder) {
   diagnostics::TripleBuffer<Block> buffer;
   std::atomic<bool> done{false};

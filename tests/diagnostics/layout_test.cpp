@@ -18,6 +18,7 @@ using techobjects::TechnologyObjectType;
 
 class EveryType : public ::testing::TestWithParam<TechnologyObjectType> {};
 
+// spec 04 §9.1–§9.3 (every item of each TO type's diagnostics page is a variable of its data block).
 TEST_P(EveryType, EveryItemResolves) {
   const auto table = diagnostics::variables_of(GetParam());
   ASSERT_FALSE(table.empty());
@@ -120,6 +121,7 @@ TEST(DiagnosticsLayout, ExpressionsEvaluate) {
   EXPECT_EQ(actual->evaluate(values), -12.5);
 }
 
+// tomc's own: layout expressions that name no variable or bit are refused with the name, never shown as 0.
 TEST(DiagnosticsLayout, MalformedExpressionsDoNotResolve) {
   const auto table = diagnostics::variables_of(TechnologyObjectType::kSpeedAxis);
   std::string problem;

@@ -72,6 +72,8 @@ struct ExtendedMachine {
   techobjects::SpeedAxis* axis = nullptr;
 };
 
+// Decision W10 (panel functions by capability), spec 02 §9.2 (the job runs while the panel holds priority),
+// docs/diagnostics.md "Axis control panel" (STOP halts the axis).
 TEST(AxisPanelExtension, ExtraFunctionsRunThroughTheBase) {
   ExtendedMachine m;
   const auto* panel = m.diagnostics.panel(0);

@@ -54,6 +54,7 @@ TEST(AxisControlPanel, TakeIsRefusedWhileTheProgramEnablesTheAxis) {
 }
 
 // Master control has one holder: another session is refused, and cannot command the axis.
+// spec 02 §9.2 (one holder of control priority), decision W4 (lifebeat 0.1…60 s).
 TEST(AxisControlPanel, OnlyOneHolder) {
   DiagnosticsMachine m;
   ASSERT_EQ(m.command(0, kSession, PanelCommandKind::kTake), PanelAnswer::kAccepted);
@@ -133,6 +134,8 @@ TEST(AxisControlPanel, ProgramJobsAreRejectedWith8012) {
 
 // Run at the panel velocity and stop with the panel deceleration (MC_Halt): 300 1/min = 5 rev/s at 200 1/s²
 // is standstill after 25 ms.
+// spec 02 §9.3 (the panel's velocity and dynamics), docs/diagnostics.md "Axis control panel" (STOP: MC_Halt
+// with the panel deceleration).
 TEST(AxisControlPanel, VelocityAndStop) {
   DiagnosticsMachine m;
   take_and_enable(m);
@@ -211,6 +214,7 @@ TEST(AxisControlPanel, GiveBackDisablesFirst) {
 }
 
 // Acknowledge (MC_Reset from the panel) clears a technology alarm; the program's MC_Reset could not.
+// docs/diagnostics.md "Axis control panel" (acknowledge: the panel's MC_Reset), decision D10.
 TEST(AxisControlPanel, AcknowledgeClearsAlarms) {
   DiagnosticsMachine m;
   take_and_enable(m);
@@ -233,6 +237,7 @@ TEST(AxisControlPanel, AcknowledgeClearsAlarms) {
 }
 
 // Commands for an object without a panel or an unknown object are answered without reaching a panel.
+// Decision W10 (panel functions by capability: homing and positioning only on axes that implement them).
 TEST(AxisControlPanel, PositionFunctionsAreNotSupportedOnASpeedAxis) {
   DiagnosticsMachine m;
   ASSERT_EQ(m.command(0, kSession, PanelCommandKind::kTake), PanelAnswer::kAccepted);

@@ -28,6 +28,8 @@ void take_and_enable(PositioningDiagnosticsMachine& m, double lifebeat_s = 60.0)
   ASSERT_GT(m.run_until([&] { return m.status_bit(StatusWordBit::kEnable); }, 500), 0);
 }
 
+// Decisions W10 and W17 (the positioning axis' panel: homing Mode 3/0, absolute and relative positioning),
+// spec 02 §9.4.
 TEST(PositioningAxisPanel, CapabilitiesAndInstructions) {
   PositioningDiagnosticsMachine m;
   const auto* panel = m.diagnostics.panel(0);
@@ -101,6 +103,7 @@ TEST(PositioningAxisPanel, SetPositionThenMoveAbsoluteAndRelative) {
 }
 
 // Active homing (MC_Home Mode 3) with the default configuration: the motor encoder's zero mark.
+// spec 02 §9.4 (panel homing), decision W17 (MC_Home Mode 3, the configured active homing).
 TEST(PositioningAxisPanel, ActiveHoming) {
   PositioningDiagnosticsMachine m;
   take_and_enable(m);
@@ -116,6 +119,8 @@ TEST(PositioningAxisPanel, ActiveHoming) {
 }
 
 // Values out of range are refused before they reach an instruction; STOP ends a positioning job.
+// Decision D6 (panel values range-checked before posting), docs/diagnostics.md "Axis control panel" (STOP
+// aborts a positioning job).
 TEST(PositioningAxisPanel, BadValuesAreRefusedAndStopEndsPositioning) {
   PositioningDiagnosticsMachine m;
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -30,6 +30,8 @@ double item(const diagnostics::Diagnostics& d, const diagnostics::ObjectSnapshot
   return -1.0;
 }
 
+// spec 04 §9.2 and §9.3 (the positioning axis' and the external encoder's diagnostics pages), decision W10
+// (no panel on an encoder).
 TEST(PositioningViews, PositioningAxisAndExternalEncoder) {
   to::Runtime runtime(to::RuntimeConfig{0.001, 1, 1});
   drives::DeviceConfig axis_device;

@@ -14,6 +14,8 @@ using namespace tomc;
 using tomc::testing::DiagnosticsMachine;
 namespace tg = tomc::telegrams;
 
+// ARCHITECTURE-GUIDE §3 (data blocks are data: a snapshot is the data block of the cycle it was published
+// in).
 TEST(Snapshots, ValuesAreTheDataBlock) {
   DiagnosticsMachine m;
   m.programs[0]->power.Enable = true;
@@ -59,6 +61,8 @@ TEST(Snapshots, TelegramWords) {
   EXPECT_TRUE(drive->drive_actual().ZSW1.test(tg::Zsw1Bit::kOperationEnabled));
 }
 
+// docs/diagnostics.md "Traces" (signals: data-block paths, bits of words, telegram words and bits; anything
+// else refused).
 TEST(Snapshots, Probes) {
   DiagnosticsMachine m;
   m.programs[0]->power.Enable = true;
@@ -83,6 +87,7 @@ TEST(Snapshots, Probes) {
 }
 
 // Four objects, period 8: each object is published once per 8 cycles, in its own cycle of the period.
+// Decision W12 (each TO published every publish_period_cycles, staggered).
 TEST(Snapshots, PublishingIsStaggered) {
   DiagnosticsMachine m(4, diagnostics::DiagnosticsConfig{8, 256, 100});
   std::vector<std::set<std::uint64_t>> seen(4);
@@ -105,6 +110,8 @@ TEST(Snapshots, PublishingIsStaggered) {
 
 // Every event reaches the history while the reader polls often enough; events overwritten in between are
 // counted, not invented.
+// Decision M1 (the bounded alarm ring); tomc's own: events the reader missed are counted as lost, never
+// invented.
 TEST(Snapshots, AlarmHistoryCountsWhatItMissed) {
   DiagnosticsMachine m;
   auto& axis = *m.axes[0];
@@ -190,6 +197,7 @@ TEST(Snapshots, AlarmHistoryHasWallClockTime) {
   EXPECT_LE(state.history_unix_s[0], after - age_s + 1e-6);
 }
 
+// Decision W15 (the program switch <axis>.automatic that releases an axis to the panel).
 TEST(Snapshots, ProgramSwitches) {
   techobjects::Runtime runtime(techobjects::RuntimeConfig{0.001, 1, 1});
   diagnostics::Diagnostics d;

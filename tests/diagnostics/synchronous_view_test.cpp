@@ -155,6 +155,7 @@ TEST(SynchronousView, FunctionStateNames) {
 }
 
 // The plot samples f, f', f'' of the interpolated form at evenly spaced leading values, end included.
+// Decision W20 (f, f′, f″ at N evenly spaced leading values, end exact; N capped).
 TEST(CamPlot, SamplesThePolynomialCamInClosedForm) {
   SyncMachine m;
   const auto result = plot_while_running(m, 1, 5, std::chrono::milliseconds(5000));

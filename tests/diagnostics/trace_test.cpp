@@ -36,6 +36,8 @@ double value(const TraceCapture& c, std::size_t row, std::size_t channel) {
 
 // Immediate trigger: the first sample after the cycle took the setup is the trigger; post_samples rows in
 // consecutive cycles, each the value of that cycle.
+// docs/diagnostics.md "Traces" (immediate trigger, post_samples rows in consecutive cycles); 3 1/min per
+// cycle from DynamicDefaults.Acceleration 50 1/s² (spec 01 §8.2).
 TEST(Trace, ImmediateRecordsConsecutiveCycles) {
   DiagnosticsMachine m;
   m.programs[0]->power.Enable = true;
@@ -63,6 +65,7 @@ TEST(Trace, ImmediateRecordsConsecutiveCycles) {
 
 // A bit trigger with samples before it: the trigger row is the first cycle in which StatusWord.X12
 // (ConstantVelocity) is set, and pre_samples rows precede it.
+// Decision W13 (an edge needs a previous sample; pre_samples before the trigger row).
 TEST(Trace, RisingEdgeWithPreTrigger) {
   DiagnosticsMachine m;
   diagnostics::TraceRequest r;
@@ -90,6 +93,7 @@ TEST(Trace, RisingEdgeWithPreTrigger) {
 }
 
 // A value trigger with decimation: every 4th cycle, trigger when Velocity rises above 300.
+// Decision W13 (above = previous ≤ threshold < current, evaluated on every decimation-th cycle).
 TEST(Trace, ValueAboveWithDecimation) {
   DiagnosticsMachine m;
   diagnostics::TraceRequest r;
@@ -118,6 +122,8 @@ TEST(Trace, ValueAboveWithDecimation) {
 
 // The reader falls behind: the cycle drops samples (counted), it never waits. A ring of 64 rows, polled only
 // after 500 cycles: 64 rows recorded, 436 lost, and the recording still completes.
+// ARCHITECTURE-GUIDE §2 (the cycle never waits for the reader), docs/diagnostics.md "Traces" (dropped
+// samples counted as lost).
 TEST(Trace, LossesAreCountedWhenTheReaderFallsBehind) {
   DiagnosticsMachine m(1, diagnostics::DiagnosticsConfig{1, 64, 100});
   diagnostics::TraceRequest r;
@@ -136,6 +142,8 @@ TEST(Trace, LossesAreCountedWhenTheReaderFallsBehind) {
 }
 
 // Stopped before the trigger: the samples kept so far remain, with no trigger row.
+// tomc's own: a stopped recording keeps its samples and shows no trigger row (docs/diagnostics.md
+// "Traces").
 TEST(Trace, StopBeforeTrigger) {
   DiagnosticsMachine m;
   diagnostics::TraceRequest r;
@@ -157,6 +165,8 @@ TEST(Trace, StopBeforeTrigger) {
 }
 
 // A new recording replaces the running one; rows of the old generation do not leak into it.
+// tomc's own: one recording at a time; a new request replaces the running one (docs/diagnostics.md
+// "Traces").
 TEST(Trace, NewRecordingReplacesTheOld) {
   DiagnosticsMachine m;
   diagnostics::TraceRequest a;
@@ -177,6 +187,8 @@ TEST(Trace, NewRecordingReplacesTheOld) {
   EXPECT_EQ(c.cycles[0], started);
 }
 
+// docs/diagnostics.md "Traces" (32 signals at most, known signals, at most 100,000 samples; one message per
+// problem).
 TEST(Trace, RequestsAreChecked) {
   DiagnosticsMachine m;
   diagnostics::TraceRequest r;

@@ -124,6 +124,7 @@ TEST(ServerAbuse, TrickledHeadersEndAtTheDeadline) {
 // Connection caps (global 32, per client 16): 100 idle and slow connections from this machine do not raise
 // the open connections above the caps (each new one evicts the oldest that holds no complete request), and
 // the engineer's STOP still gets through.
+// Decision D2 (at the caps a new connection evicts the oldest that holds no complete request).
 TEST(ServerAbuse, CapsEvictTheOldestIncompleteConnections) {
   diagnostics::ServerOptions options;
   options.limits.max_connections = 32;
@@ -149,6 +150,7 @@ TEST(ServerAbuse, CapsEvictTheOldestIncompleteConnections) {
 
 // Chunked request bodies are bounded like any other (413), and the connection is closed after the error;
 // a small chunked body is taken.
+// Decision W14 (bodies ≤ 64 KiB: 413), decision D3 (every error answer closes the connection).
 TEST(ServerAbuse, ChunkedBodiesAreBounded) {
   Held h;
   const std::string head = "POST /api/panel/Axis1 HTTP/1.1\r\nHost: 127.0.0.1\r\nAuthorization: Bearer " +
@@ -191,6 +193,7 @@ TEST(ServerAbuse, ChunkedBodiesAreBounded) {
 }
 
 // After an error the server closes the connection; after a success it keeps it (keep-alive).
+// Decision D3 (every error answer closes the connection; keep-alive otherwise).
 TEST(ServerAbuse, ConnectionsCloseAfterErrorsOnly) {
   Held h;
   const int port = h.server->port();
@@ -277,6 +280,7 @@ TEST(ServerAbuse, ParallelTraceExportsRenderOnce) {
 // "Control requests (STOP first)": while a control request is being handled, further ones wait in the control
 // queue; an urgent one (a STOP) is taken before those that came earlier. Reads and event streams have their
 // own lanes, so a blocked read does not hold up control either.
+// Decision D1 (bounded lanes; the control lane takes STOP/disable first).
 TEST(ServerAbuse, UrgentControlRequestsGoFirst) {
   diagnostics::http::Server http;
   std::mutex mutex;
@@ -344,6 +348,7 @@ TEST(ServerAbuse, UrgentControlRequestsGoFirst) {
 // connection times out (5 s) and spinning on a listener that stays readable. The server runs in a process of
 // its own limited to 48 descriptors (limited_server_main.cpp); it ends when the test closes its stdin, at the
 // latest after 10 s.
+// Decision D2 (out of descriptors, EMFILE, the same eviction makes room).
 TEST(ServerAbuse, OutOfDescriptorsTheNewestConnectionIsServed) {
   int to_child[2], from_child[2];
   ASSERT_EQ(::pipe2(to_child, O_CLOEXEC), 0);

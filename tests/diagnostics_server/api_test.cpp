@@ -250,6 +250,7 @@ TEST(WebApi, ObjectsAndStatus) {
   EXPECT_TRUE(alarms["pending"].empty());
 }
 
+// Decision W14 (bearer token on every POST: 401 without, 403 wrong).
 TEST(WebApi, ControlActionsNeedTheToken) {
   Served s;
   EXPECT_EQ(s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", nullptr).first, 401);
@@ -266,6 +267,7 @@ TEST(WebApi, ControlActionsNeedTheToken) {
   EXPECT_EQ(body["answer"], "accepted");
 }
 
+// Decision W14 (read-only unless a token is configured).
 TEST(WebApi, ReadOnlyWithoutToken) {
   Served s("");
   const auto [code, body] = s.post("/api/panel/Axis1", R"({"command":"take","session":"1"})", "anything");
@@ -483,6 +485,7 @@ TEST(WebApi, ExportLaneRunsAtIdlePriorityUnlessNormalIsChosen) {
     EXPECT_EQ(policy, expected) << (priority == ExportPriority::kIdle ? "idle" : "normal");
   }
 }
+// docs/diagnostics.md "HTTP API" (GET /api/events: one data: <status> event per period), decision W12.
 TEST(WebApi, ServerSentEvents) {
   Served s;
   auto c = s.client();

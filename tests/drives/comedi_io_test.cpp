@@ -31,6 +31,8 @@ std::string open_error(const ComediIoParameters& p, const io::ComediLibrary& lib
 }
 
 // A missing device file is a configuration error naming it (and what to check).
+// Decision A20 (a missing device at start is a configuration error naming the device file),
+// docs/analog-drives.md "The comedi backend".
 TEST(ComediIo, MissingDeviceIsAConfigurationErrorNamingTheFile) {
   ComediIoParameters p;
   p.device_file = "/dev/comedi_tomc_test_missing";
@@ -106,6 +108,8 @@ ComediIoParameters fake_wiring() {
 }
 
 // Every channel is checked at open: subdevice, its kind, the channel; the device is closed again.
+// Decision A20 (every channel checked at construction: the error names device, subdevice, channel and
+// role).
 TEST(ComediIo, ChannelChecksNameDeviceSubdeviceAndChannel) {
   fake = {};
   auto p = fake_wiring();
@@ -124,6 +128,8 @@ TEST(ComediIo, ChannelChecksNameDeviceSubdeviceAndChannel) {
 }
 
 // tomc's signed DAC codes become comedi's offset binary of a bipolar range; 0 V until the first write.
+// docs/analog-drives.md "The comedi backend" (signed DAC code + (maxdata + 1)/2, saturated: offset binary
+// of a bipolar range).
 TEST(ComediIo, CodesAndChannels) {
   fake = {};
   ComediIo card(fake_wiring(), kFake);
@@ -147,6 +153,8 @@ TEST(ComediIo, CodesAndChannels) {
 
 // A failing read or write is an IoStatus with the comedi error kept; behind the analog actor it is fault
 // 20002 in ZSW1.3 (the TO's alarm 401), enable off, acknowledged once the card works again.
+// Decision A20 (failures as IoStatus with the comedi text), docs/analog-drives.md (fault 20002 in ZSW1.3,
+// alarm 401, acknowledged once the card works).
 TEST(ComediIo, ReadAndWriteFailuresBecomeTheActorsIoFault) {
   fake = {};
   ComediIo card(fake_wiring(), kFake);

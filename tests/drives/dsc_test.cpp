@@ -75,6 +75,9 @@ DscRun run_dsc(double kv, double xerr_bias, int extra_cycles) {
   return r;
 }
 
+// spec 06 §7 (DSC: the drive's position loop on NSOLL_B, XERR, KPC), spec 02 §7.2; decisions T24 (KPC =
+// Kv · 1000) and T26 (XERR in encoder-1 counts); the drive's law n_ref = NSOLL_B + KPC · (XERR − Δx) is
+// docs/simulated-drive.md "One cycle" step 3.
 TEST(DscSim, FollowingErrorBoundedDuringRampAndConvergesAfter) {
   SimulatedDriveParameters p;
   const double kv = 200.0;  // 1/s -> KPC = 200 000

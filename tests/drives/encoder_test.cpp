@@ -40,6 +40,7 @@ TEST(EncoderSim, Xist1CountsForConstantSpeed) {
 }
 
 // The counts of an absolute motor encoder are its position: XIST1 = floor(revolutions * counts/rev).
+// spec 06 §6.1 (XIST1 of an absolute encoder within its range), docs/simulated-drive.md "One cycle" step 4.
 TEST(EncoderSim, Xist1OfAbsoluteEncoderIsThePosition) {
   SimulatedDriveParameters p;
   p.initial_load_position = 900.0;  // 2.5 revolutions, gear 1:1, 360 degrees per revolution
@@ -58,6 +59,7 @@ class Xist1Wrap : public ::testing::TestWithParam<WrapCase> {};
 
 // TV19: an incremental encoder starting at 0xFFFFFF00 wraps through 0 (and one starting at 0x100 going
 // backwards wraps below 0); xist1_delta over the wrap still gives the true movement.
+// spec 06 §6.1 and §11 TV19 (32-bit wrap: Δ = ±512 counts).
 TEST_P(Xist1Wrap, DeltaAcrossWrapIsTheMovement) {
   const auto& c = GetParam();
   SimulatedDriveParameters p;
@@ -105,6 +107,7 @@ struct MarkCase {
 
 class ReferenceMark : public ::testing::TestWithParam<MarkCase> {};
 
+// spec 06 §6.3 (reference-mark search: G1_STW 0x0011, G1_ZSW 0x0001 then 0x0011, XIST2 the captured value).
 TEST_P(ReferenceMark, CapturesExactMarkPosition) {
   const auto& c = GetParam();
   SimulatedDriveParameters p;

@@ -109,6 +109,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 
 // The acknowledge is an edge: holding bit 7 from before the cause went away does not acknowledge.
+// spec 06 §4.1 and §11 TV26 (acknowledge on a 0 → 1 edge of STW1.7: 0x0248 → 0x0270), decisions R3 and R4.
 TEST(FaultAcknowledgeSim, NeedsRisingEdgeOfBit7) {
   Harness h(drive_config(1), {});
   h.power_up_to_s4();

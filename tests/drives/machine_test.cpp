@@ -17,6 +17,8 @@ namespace {
 // Nm). Time to the limit: at standstill the proportional part gives K_p * ω_set with K_p ≈ J/T = 0.15
 // Nm/(rad/s), i.e. 0.47 Nm at 30 rpm, plus Tc; the integral adds J ω_set / T^2 = 236 Nm/s: (1 - 0.47 -
 // 0.02)/236 = 2.2 ms.
+// Decision R10 (a PI integral winds up only at a fixed stop, so the torque rises to its limit), spec 06 §9
+// (MOMRED), §3.3/§3.4 (STW2.8/ZSW2.8).
 TEST(MachineSim, FixedStopBlocksLoadAndTorqueRisesToLimit) {
   SimulatedDriveParameters p;
   p.machine.positive_fixed_stop = 90.0;
@@ -60,6 +62,8 @@ TEST(MachineSim, FixedStopBlocksLoadAndTorqueRisesToLimit) {
 // Limit switches (active at and beyond their position) and the reference cam (active inside its window) as
 // the load moves; the load position is taken from the encoder (XIST1 -> counts -> degrees), not from the
 // model.
+// docs/simulated-drive.md "Parameters and defaults" (`machine`: limit switches, reference cam), the inputs
+// decision P10 hands to the TO.
 TEST(MachineSim, LimitSwitchesAndReferenceCamFollowTheLoad) {
   SimulatedDriveParameters p;
   p.initial_load_position = 0.0;
@@ -115,6 +119,8 @@ TEST(MachineSim, LimitSwitchesAndReferenceCamFollowTheLoad) {
 // Link loss: read_actual() returns false and leaves the frames untouched, LinkHealth counts the misses; after
 // setpoint_timeout_cycles missed setpoints the drive raises F08501 with the OFF3 reaction. Clearing the link
 // and acknowledging recovers (TV26 sequence).
+// Decision R7 (F08501 after setpoint_timeout_cycles, OFF3), spec 06 §11 TV26 (acknowledge),
+// docs/simulated-drive.md "One cycle" step 1.
 TEST(MachineSim, LinkLossSetpointTimeoutAndRecovery) {
   SimulatedDriveParameters p;  // setpoint_timeout_cycles 20, communication_fault_reaction OFF3
   Harness h(drive_config(3), p);
@@ -214,6 +220,7 @@ TEST(MachineSim, BacklashIsADeadBandBetweenMotorAndLoad) {
 }
 
 // A fixed stop with backlash: the load stops at the stop, the motor half the play beyond it.
+// Decision P25 (at a fixed stop the load stops there and the motor half the play beyond).
 TEST(MachineSim, FixedStopWithBacklash) {
   SimulatedDriveParameters p;
   p.backlash = 2.0;

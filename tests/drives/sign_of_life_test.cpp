@@ -13,6 +13,8 @@ class SignOfLifeTolerance : public ::testing::TestWithParam<std::uint16_t> {};
 
 // Drive side: the controller's master LS stops advancing; ZSW1.3 with F01912 appears in the answer to the
 // (tolerance + 1)-th frozen cycle, with the communication fault reaction (OFF3 by default).
+// spec 06 §5.2 (drive side: +10 per wrong master value, fault above 10 × p0925), decision R7 (F01912 with
+// the communication fault reaction, OFF3).
 TEST_P(SignOfLifeTolerance, DriveDetectsFrozenMasterCounter) {
   const std::uint16_t tolerance = GetParam();
   SimulatedDriveParameters p;
@@ -69,6 +71,7 @@ TEST(SignOfLifeSim, SlaveCounterSequence) {
 
 // An isolated error is tolerated (tolerance 1) and decays (-1 per good cycle): a second isolated error ten
 // good cycles later is tolerated as well, a second one within fewer cycles trips.
+// spec 06 §5.2 (leaky counter, −1 per good value) and §11 TV18 (the expectation runs on after a bad value).
 TEST(SignOfLifeSim, IsolatedErrorsAreTolerated) {
   Harness h(drive_config(3), {});
   h.run_at_speed(500.0, 50);
@@ -91,6 +94,7 @@ TEST(SignOfLifeSim, IsolatedErrorsAreTolerated) {
 }
 
 // Telegram 1 has no STW2/ZSW2: never a sign-of-life fault, however long it runs.
+// spec 06 §2.1 (telegram 1 has no STW2/ZSW2) and §5.1 (the sign-of-life lives there).
 TEST(SignOfLifeSim, Telegram1NeverFaults) {
   Harness h(drive_config(1), {});
   h.run_at_speed(1000.0, 3000);

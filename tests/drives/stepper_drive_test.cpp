@@ -67,6 +67,8 @@ TEST(StepperDrive, PulseFrequencyFromNsollB) {
 
 // Whole pulses per cycle, the fraction carried: 8000 Hz = 8 pulses per 1 ms cycle; 1234.5 Hz for 1000 cycles
 // = 1234 or 1235 pulses (never a drift).
+// Decision A13 (pulse frequency from NSOLL_B, the PTO counts what it sent), decision R2 (the setpoint acts
+// one cycle later).
 TEST(StepperDrive, PulsesCountedExactlyWithFractionCarried) {
   StepperHarness s;
   s.h.power_up_to_s4();
@@ -130,6 +132,7 @@ TEST(StepperDrive, AccelerationAbovePullInLosesSteps) {
 }
 
 // Above the pull-out rate the motor falls out of step; at or below the pull-in rate it pulls in again.
+// Decision A12 (out of step above pull_out_rate_hz; in step again at or below pull_in_rate_hz).
 TEST(StepperDrive, PullOutRateAndPullInAgain) {
   StepperRig rig(Feedback::kEncoder);
   rig.motor.pull_out_rate_hz = 20000.0;
@@ -162,6 +165,8 @@ TEST(StepperDrive, PullOutRateAndPullInAgain) {
 
 // With the PTO's pulse count as the actual value a lost step is invisible to the TO (the open-loop stepper's
 // risk); with an encoder it is seen: the difference is exactly the lost steps (encoder: 1 count = 4 steps).
+// Decision A13 (position from the pulse count: a lost step is invisible; with an encoder it is seen),
+// decision A12.
 TEST(StepperDrive, FeedbackPulseCountVersusEncoder) {
   for (const Feedback feedback : {Feedback::kPulseCount, Feedback::kEncoder}) {
     StepperHarness s{StepperRig(feedback)};

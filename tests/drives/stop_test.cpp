@@ -38,6 +38,8 @@ struct RampStopCase {
 
 class RampStop : public ::testing::TestWithParam<RampStopCase> {};
 
+// spec 06 §4.1 (S5a/S5b end at standstill), decision R8 (the ramp generator acts only for OFF1/OFF3),
+// docs/simulated-drive.md "Parameters and defaults" (p1121, p1135, p1226) and "One cycle" step 3.
 TEST_P(RampStop, StopTimeFollowsFromRampParameters) {
   const auto& c = GetParam();
   SimulatedDriveParameters p;  // p2000 3000, p1082 6000, p1121 1 s, p1135 0.2 s, p1226 20 rpm, T 2 ms
@@ -96,6 +98,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Quick stop with a ramp so slow that the lag stays below the threshold: the same formula must hold in the
 // other branch (a = 6000 / 2 s = 3000 rpm/s, a*T = 6 rpm < 20 rpm: t = (1500 + 6 - 20) / 3000 = 0.4953 s).
+// spec 06 §4.1 (S5b ends at standstill, then S1: 0x0250), decision R8, docs/simulated-drive.md "One cycle"
+// step 3.
 TEST(RampStopSim, Off3WithSlowRampCrossesThresholdOnTheRamp) {
   SimulatedDriveParameters p;
   p.off3_ramp_down_time_s = 2.0;

@@ -85,6 +85,8 @@ TEST(TorqueSim, Telegram750LimitsAndActualTorque) {
 
 // At standstill with a zero speed setpoint the motor holds without torque: M_ACT = 0; M_ADD1 below the
 // static friction Tc (0.02 Nm) is held by friction and shows in M_ACT as it is.
+// spec 06 §8 (M_ADD1 / M_ACT in N2 of the reference torque), docs/simulated-drive.md "One cycle" step 3
+// (static friction Tc holds the shaft).
 TEST(TorqueSim, Telegram750StandstillTorque) {
   SimulatedDriveParameters p;
   Harness h(drive_config(3, 750), p);

@@ -52,6 +52,7 @@ struct Instance {
 };
 
 // T-A: Execute held until after Done.
+// spec 03 §3.7 T-A, rules E2, E4, E5 of §3.2.
 TEST(ExecuteHandshake, TA_NormalCompletionExecuteHeld) {
   FakeAxis axis;
   Instance i;
@@ -73,6 +74,7 @@ TEST(ExecuteHandshake, TA_NormalCompletionExecuteHeld) {
 }
 
 // T-B: Execute pulse of a single cycle; the job continues (E3) and Done shows for exactly one call (E5).
+// spec 03 §3.7 T-B, rules E3 and E5 of §3.2.
 TEST(ExecuteHandshake, TB_SingleCyclePulse) {
   FakeAxis axis;
   Instance i;
@@ -90,6 +92,7 @@ TEST(ExecuteHandshake, TB_SingleCyclePulse) {
 }
 
 // E1: a level that is still TRUE does not start another job.
+// spec 03 §3.2 E1 (a job starts on a rising edge only).
 TEST(ExecuteHandshake, E1_LevelDoesNotRestart) {
   FakeAxis axis;
   Instance i;
@@ -105,6 +108,7 @@ TEST(ExecuteHandshake, E1_LevelDoesNotRestart) {
 
 // T-C: instance 1 aborted by another instance; CommandAborted held while Execute 1 is TRUE, one call
 // otherwise.
+// spec 03 §3.7 T-C, rules E5 and E8 of §3.2.
 TEST(ExecuteHandshake, TC_AbortedByAnotherInstance) {
   FakeAxis axis;
   Instance i1;
@@ -128,6 +132,7 @@ TEST(ExecuteHandshake, TC_AbortedByAnotherInstance) {
 }
 
 // T-D: rejection; Error + ErrorID in the edge call, held while Execute = TRUE, cleared by the first FALSE.
+// spec 03 §3.7 T-D, rules E5 and E7 of §3.2.
 TEST(ExecuteHandshake, TD_Rejection) {
   FakeAxis axis;
   axis.reject_with = 0x8001;
@@ -144,6 +149,7 @@ TEST(ExecuteHandshake, TD_Rejection) {
 }
 
 // T-E: a pending (appended) job is Busy without Active until it becomes active.
+// spec 03 §3.7 T-E (BufferMode 1: Busy without Active while pending).
 TEST(ExecuteHandshake, TE_PendingThenActive) {
   FakeAxis axis;
   Instance i;
@@ -173,6 +179,7 @@ TEST(ExecuteHandshake, ErrorWhileRunning) {
 }
 
 // E6: a new edge on the same instance while Busy starts a new job; the outputs describe the new job.
+// spec 03 §3.2 E6 (a new edge on the same instance starts a new job).
 TEST(ExecuteHandshake, E6_NewEdgeWhileBusy) {
   FakeAxis axis;
   Instance i;
@@ -188,6 +195,7 @@ TEST(ExecuteHandshake, E6_NewEdgeWhileBusy) {
 }
 
 // E4: the three final flags are mutually exclusive and never coexist with Busy, for every end state.
+// spec 03 §3.2 E4 (exactly one of Done, CommandAborted, Error; Busy FALSE).
 TEST(ExecuteHandshake, E4_FinalFlagsExclusive) {
   for (JobState end : {JobState::kDone, JobState::kAborted, JobState::kError, JobState::kUnknown}) {
     FakeAxis axis;

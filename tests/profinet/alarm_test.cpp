@@ -22,6 +22,8 @@ std::size_t be16_at(const std::array<std::uint8_t, 256>& b, std::size_t at) {
 
 }  // namespace
 
+// IEC 61158-6-10 RTA DATA with an AlarmNotificationHigh block (FrameID 0xFC01, PDUType 0x11), decision I4
+// (big-endian).
 TEST(Alarm, NotificationLayoutAndRoundTrip) {
   std::array<std::uint8_t, 256> bytes{};
   std::size_t written = 0;
@@ -51,6 +53,7 @@ TEST(Alarm, NotificationLayoutAndRoundTrip) {
   EXPECT_FALSE(decoded.block.is_ack);
 }
 
+// IEC 61158-6-10 AlarmAckHigh (0x8001) mirrors the notification's type, API, slot, subslot, specifier.
 TEST(Alarm, AcknowledgeMirrorsTheNotification) {
   const pn::RtaFrame alarm = diagnosis_alarm();
   pn::RtaFrame ack;
@@ -83,6 +86,8 @@ TEST(Alarm, AcknowledgeMirrorsTheNotification) {
   EXPECT_FALSE(decoded.has_block);
 }
 
+// IEC 61158-6-10 RTA (version, VarPartLen, block type, FrameID checked); ARCHITECTURE-GUIDE §7 (outside
+// bytes never crash).
 TEST(Alarm, MalformedFramesAreErrors) {
   std::array<std::uint8_t, 256> bytes{};
   std::size_t written = 0;
@@ -108,6 +113,7 @@ TEST(Alarm, MalformedFramesAreErrors) {
   EXPECT_EQ(pn::encode(kToController, too_big, bytes, written), pn::ProfinetError::kTooMany);
 }
 
+// Decision I3 (RTA alarms: fixed-capacity structures, no allocation).
 TEST(Alarm, EncodeAndDecodeDoNotAllocate) {
   std::array<std::uint8_t, 256> bytes{};
   const pn::RtaFrame alarm = diagnosis_alarm();

@@ -34,6 +34,8 @@ pn::CyclicLayout drive_input_layout() {
 
 }  // namespace
 
+// Decisions I2/I9 (RT_CLASS_1 FrameIDs 0x8000–0xBBFF, legacy 0xC000–0xF7FF decoded; RT_CLASS_3 and
+// multicast refused), IEC 61158-6-10 C_SDU layout.
 TEST(Cyclic, LayoutChecks) {
   pn::CyclicCodec codec;
   EXPECT_EQ(pn::CyclicCodec::create(drive_input_layout(), codec), pn::ProfinetError::kNone);
@@ -58,6 +60,8 @@ TEST(Cyclic, LayoutChecks) {
   EXPECT_EQ(pn::CyclicCodec::create(layout, codec), pn::ProfinetError::kTooMany);
 }
 
+// IEC 61158-6-10 RT frame (VLAN priority 6, EtherType 0x8892, FrameID, C_SDU, APDU status), decision I4;
+// ZSW1/NIST_A as spec 06 §2.1.
 TEST(Cyclic, FrameBytesOfATelegram1Drive) {
   pn::CyclicCodec codec;
   ASSERT_EQ(pn::CyclicCodec::create(drive_input_layout(), codec), pn::ProfinetError::kNone);
@@ -97,6 +101,8 @@ TEST(Cyclic, FrameBytesOfATelegram1Drive) {
   EXPECT_EQ(pn::peek_frame_id(std::span(frame).first(written)), 0x8001);
 }
 
+// Decision I23 (a frame is offered only to the AR of its FrameID); a truncated frame is an error and leaves
+// the image as it was.
 TEST(Cyclic, ForeignOrShortFramesLeaveTheImageUntouched) {
   pn::CyclicCodec codec;
   ASSERT_EQ(pn::CyclicCodec::create(drive_input_layout(), codec), pn::ProfinetError::kNone);
@@ -132,6 +138,7 @@ TEST(Cyclic, ForeignOrShortFramesLeaveTheImageUntouched) {
   EXPECT_EQ(codec.encode({}, c_sdu, {}, short_out, written), pn::ProfinetError::kBufferTooSmall);
 }
 
+// Decision I3 (cyclic frames: fixed-capacity structures, no allocation).
 TEST(Cyclic, EncodeAndDecodeDoNotAllocate) {
   pn::CyclicCodec codec;
   ASSERT_EQ(pn::CyclicCodec::create(drive_input_layout(), codec), pn::ProfinetError::kNone);

@@ -63,6 +63,7 @@ TEST(Dcp, IdentifyAllIsTheMinimalFrameWithTheAllSelector) {
   EXPECT_FALSE(message.fields.name_of_station);
 }
 
+// IEC 61158-6-10 DCP Identify (NameOfStation option 2/2, blocks padded to even length), decision I4.
 TEST(Dcp, IdentifyByNameCarriesTheNameWithoutBlockInfoAndPadsOddLengths) {
   const auto bytes = encode({pn::kDcpIdentifyMulticast, kController, std::nullopt},
                             pn::dcp_identify_request(7, std::string("drive-1")));
@@ -76,6 +77,7 @@ TEST(Dcp, IdentifyByNameCarriesTheNameWithoutBlockInfoAndPadsOddLengths) {
   EXPECT_EQ(decode(bytes).fields.name_of_station, "drive-1");
 }
 
+// IEC 61158-6-10 DCP Identify response (NameOfStation, vendor, IDs, role, IP suite with BlockInfo).
 TEST(Dcp, IdentifyResponseRoundTripsEveryField) {
   pn::DcpMessage response;
   response.frame_id = pn::kFrameIdDcpIdentifyResponse;
@@ -93,6 +95,7 @@ TEST(Dcp, IdentifyResponseRoundTripsEveryField) {
   EXPECT_EQ(decoded, response);
 }
 
+// IEC 61158-6-10 DCP Set (BlockQualifier 1 permanent; the response names each option's result).
 TEST(Dcp, SetRequestUsesBlockQualifierAndTheResponseNamesEachOption) {
   const pn::DcpMessage set = pn::dcp_set_request(5, std::string("drive-3"),
                                                  pn::IpSuite{{10, 0, 0, 3}, {255, 255, 255, 0}, {}}, true);
@@ -114,6 +117,7 @@ TEST(Dcp, SetRequestUsesBlockQualifierAndTheResponseNamesEachOption) {
   EXPECT_EQ(decode(encode({kController, kDevice, std::nullopt}, answer)), answer);
 }
 
+// IEC 61158-6-10 DCP Hello (blocks with BlockInfo).
 TEST(Dcp, HelloCarriesBlockInfo) {
   pn::DcpMessage hello;
   hello.frame_id = pn::kFrameIdDcpHello;
@@ -126,6 +130,8 @@ TEST(Dcp, HelloCarriesBlockInfo) {
   EXPECT_EQ(decode(bytes), hello);
 }
 
+// IEC 61158-6-10 DCP (DCPDataLength, block length, ServiceID, FrameID checked); ARCHITECTURE-GUIDE §7
+// (outside bytes never crash).
 TEST(Dcp, MalformedInputIsAnErrorNotACrash) {
   auto bytes = encode({kController, kDevice, std::nullopt}, pn::dcp_identify_request(1, std::string("x")));
   // DCPDataLength beyond the frame.
@@ -154,6 +160,8 @@ TEST(Dcp, MalformedInputIsAnErrorNotACrash) {
   }
 }
 
+// tomc's own: the colon-separated MAC text of the gateway's file and CLI (decision I32), anything else
+// refused.
 TEST(Dcp, MacAddressText) {
   EXPECT_EQ(pn::to_string(kDevice), "02:00:00:00:00:02");
   EXPECT_EQ(pn::parse_mac("02:00:00:00:00:02"), kDevice);
@@ -162,6 +170,8 @@ TEST(Dcp, MacAddressText) {
   EXPECT_FALSE(pn::parse_mac("0g:00:00:00:00:02"));
 }
 
+// IEC 61158-6-10 DCP (Control/Response only in a Set response; an Identify filter by DeviceID kept); found
+// by the fuzzer (docs/reliability.md §2).
 TEST(Dcp, BlocksOutOfPlaceAreSkippedAndFiltersOtherThanTheNameAreKept) {
   // A Control/Response block belongs to a Set response only: in a Set request it is skipped (found by the
   // fuzzer, where it broke decode -> encode -> decode).
@@ -226,6 +236,8 @@ TEST(DcpCommissioning, IdentifyAllListsEveryStationOnce) {
 
 // `tomc gateway --set-name`: a Set of NameOfStation to one MAC (BlockQualifier 1: permanent) names that
 // device and no other; its answer is read as accepted, refused with the BlockError, or not that answer.
+// Decision I32 (tomc gateway --set-name: one Set of NameOfStation to one MAC, answer read by xid and
+// sender).
 TEST(DcpCommissioning, SetNameOfStationNamesTheDeviceOfThatMac) {
   pn::IoDevice fresh(station(3, "", {}));
   pn::IoDevice other(station(4, "drive-2", {}));

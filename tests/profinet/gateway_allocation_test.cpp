@@ -56,6 +56,7 @@ namespace pn = tomc::profinet;
 namespace sc = tomc::scenario;
 
 // The counter sees a thread of that name allocate (so the zero below can fail).
+// tomc's own: proves the counter sees the cyclic thread by name, so the zero of the cycle test can fail.
 TEST(ProfinetGatewayAllocation, TheCounterSeesTheCyclicThread) {
   const std::uint64_t before = g_cyclic_allocations.load();
   std::atomic<bool> named{false};

@@ -79,6 +79,8 @@ bool has_line(const std::vector<std::string>& lines, const std::string& start) {
 
 }  // namespace
 
+// docs/profinet-gateway.md "`tomc gateway --config FILE`" (cycle = send_clock_factor × 31.25 µs ×
+// reduction_ratio), decisions I15 and I25.
 TEST(GatewayConfig, AValidFileLoads) {
   sc::ProfinetGatewayConfig config;
   sc::Problems problems;
@@ -588,6 +590,8 @@ std::pair<int, std::string> run_tomc(const std::string& arguments) {
 
 }  // namespace
 
+// ARCHITECTURE-GUIDE §6 (every problem named by its path), project decision P3 (the CLI tested as the real
+// binary: status 2).
 TEST(GatewayConfig, TheCommandLineReportsAFileProblemWithItsKey) {
   const auto file =
       std::filesystem::temp_directory_path() / ("tomc17-bad-" + std::to_string(::getpid()) + ".json");
@@ -1114,6 +1118,8 @@ TEST(GatewayNetns, AnExternalEncoderFollowsTheEmulatedEncoderThroughTheGateway) 
   EXPECT_EQ(gateway.terminate(), 0) << gateway.log();
 }
 
+// docs/gateway.md §7 (a cut: alarm 405, recovery by MC_Reset) and §5 G1 (a new controller after the
+// watchdog), decisions I7, I13, I14.
 TEST(GatewayNetns, SimMovesTheEmulatedDriveThroughTheGatewayAndRecoversFromACableCut) {
   pn::testing::Namespaces hosts("tomc17g", "tomc17e");
   if (const std::string why = make_hosts(hosts); !why.empty()) GTEST_SKIP() << why;

@@ -161,6 +161,7 @@ TEST(Gsdml, TheSupplementaryAndEncoderTelegramSubmodulesDescribeTheEmulator) {
             (tomc::drives::TelegramPlace{1, 3}));
 }
 
+// Decision I17 (GSDML through tinyxml2), ARCHITECTURE-GUIDE §6 (every problem named where it is).
 TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
   struct Case {
     std::string from, to, message;
@@ -214,6 +215,8 @@ TEST(Gsdml, ABrokenFileIsNamedByItsElementAndLine) {
   }
 }
 
+// Decision I18 (a DAP and modules chosen by GSDML ID, checked against UseableModules,
+// AllowedInSlots/Subslots).
 TEST(Gsdml, ASelectionOutsideTheFileIsNamed) {
   const gsdml::Device device = gsdml::parse(emulator_text());
   EXPECT_EQ(selection_error(device, {"DAP2", {}}),
@@ -247,6 +250,8 @@ TEST(Gsdml, ASelectionOutsideTheFileIsNamed) {
 // A file shaped like a vendor's drive: a DAP with its interface and port submodules, a drive object fixed in
 // slot 1 with a parameter access point, a PROFIdrive telegram in API 0x3A00 (14848), a fixed submodule, and
 // OctetString data. Everything it plugs without being chosen, and the API grouping of the Connect.
+// Decision I18 (the DAP's own and system-defined submodules and fixed modules are plugged without being
+// chosen; grouped by API).
 TEST(Gsdml, FixedModulesSystemSubmodulesAndApisBecomeExpectedModules) {
   const gsdml::Device device = gsdml::parse(R"(<?xml version="1.0"?>
 <ISO15745Profile xmlns="http://www.profibus.com/GSDML/2003/11/DeviceProfile">

@@ -83,6 +83,8 @@ void cycle(Pair& pair, std::uint64_t now_us) {
 
 }  // namespace
 
+// IEC 61158-6-10 start-up (DCP naming and IP, Connect, record write, PrmEnd, ApplicationReady), decisions
+// I16 and I29; docs/profinet-gateway.md "How it is checked".
 TEST(IoController, StartUpNamesConnectsWritesAndRuns) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));
@@ -115,6 +117,8 @@ TEST(IoController, StartUpNamesConnectsWritesAndRuns) {
   EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
 }
 
+// Decision I7 (in memory: watchdog factor 3, its exact timing), docs/profinet-gateway.md "How it is
+// checked" (the AR ends after the 4th silent ms).
 TEST(IoController, FourDrivesAtOneMillisecondThenACableCutAndReconnect) {
   std::vector<Pair> drives;
   for (int i = 0; i < 4; ++i) {
@@ -160,6 +164,7 @@ TEST(IoController, FourDrivesAtOneMillisecondThenACableCutAndReconnect) {
   EXPECT_TRUE(drives[2].controller->input_valid(now));
 }
 
+// IEC 61158-6-10 ModuleDiffBlock (WrongModule) and IOPS BAD for its data, decision I15.
 TEST(IoController, WrongModuleIsReportedWithItsDifference) {
   Pair pair = make_pair(1, 0x102);
   ASSERT_TRUE(start_up(pair));
@@ -172,6 +177,7 @@ TEST(IoController, WrongModuleIsReportedWithItsDifference) {
   EXPECT_EQ(pair.controller->input_iops(1, 2), pn::kIoxsBad);
 }
 
+// IEC 61158-6-10 PNIOStatus DB 81 40 04 (no AR resources for a second controller); DCP Identify by name.
 TEST(IoController, RefusedConnectIsReportedAndIdentifyIgnoresOtherNames) {
   Pair first = make_pair(1);
   ASSERT_TRUE(start_up(first));
@@ -545,6 +551,7 @@ TEST(IoController, ALostAlarmAckIsResentAfterTheRtaTimeoutUntilTheDeviceAcknowle
 // cycle 5 is resent in cycles 105, 205 and 305, the AR ends in cycle 405 (kOffline, PNIOStatus 0xCF81FD08),
 // the cyclic frames stop; the same controller reconnects and its channels start afresh. Low priority here;
 // a repeated notification's resend counts towards the same RTARetries and restarts the timeout (I28).
+// IEC 61158-6-10 APMS (RTARetries, TimerExpired: the AR aborted), decisions I28 and I30.
 TEST(IoController, RtaRetriesUnacknowledgedResendsEndTheAr) {
   Pair pair = make_rta_pair(1, 3);
   ASSERT_TRUE(start_up(pair));
@@ -597,6 +604,7 @@ TEST(IoController, RtaRetriesUnacknowledgedResendsEndTheAr) {
 }
 
 // The timer runs in the cyclic thread: its calls allocate nothing, whether idle, resending or ending the AR.
+// Decision I30 (the RTA timer is called by the cyclic thread), decision I3 (no allocation there).
 TEST(IoController, TheRtaTimerDoesNotAllocate) {
   Pair pair = make_rta_pair(1, 3);
   ASSERT_TRUE(start_up(pair));
@@ -618,6 +626,7 @@ TEST(IoController, TheRtaTimerDoesNotAllocate) {
   EXPECT_EQ(aborts, 1);
 }
 
+// Decision I3 (cyclic frames without allocation), decision I10 (the cyclic thread owns running ARs).
 TEST(IoController, CyclicCallsDoNotAllocate) {
   Pair pair = make_pair(1);
   ASSERT_TRUE(start_up(pair));

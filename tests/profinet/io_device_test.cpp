@@ -113,6 +113,8 @@ void connect_and_run(pn::IoDevice& device) {
 
 }  // namespace
 
+// IEC 61158-6-10 DCP (Identify All and by name, Set NameOfStation and IP to the device's MAC, answered per
+// option).
 TEST(IoDevice, DcpIdentifyAndNaming) {
   pn::IoDevice device(drive_identity());
   // A new device has no name; Identify All finds it, Identify by name does not.
@@ -180,6 +182,8 @@ TEST(IoDevice, ARequestToAnotherObjectIsRejected) {
   EXPECT_EQ(device.state(), pn::ArState::kParameterizing);
 }
 
+// IEC 61158-6-10 AR start-up (Connect, record write/read, PrmEnd, ApplicationReady),
+// docs/profinet-gateway.md "How it is checked".
 TEST(IoDevice, ConnectParameterizeAndRun) {
   pn::IoDevice device(drive_identity());
   const Exchange connected = call(device, pn::PnioOperation::kConnect, pn::testing::drive_connect());
@@ -229,6 +233,8 @@ TEST(IoDevice, ConnectParameterizeAndRun) {
   EXPECT_EQ(device.state(), pn::ArState::kRunning);
 }
 
+// IEC 61158-6-10 (DataStatus DataValid, IOPS/IOCS, the watchdog factor × cycle), decision I7;
+// docs/profinet-gateway.md "How it is checked" (3 × 1 ms + 1 µs).
 TEST(IoDevice, CyclicExchangeAndWatchdog) {
   pn::IoDevice device(drive_identity());
   std::array<std::uint8_t, 128> frame{};
@@ -286,6 +292,7 @@ TEST(IoDevice, CyclicExchangeAndWatchdog) {
   EXPECT_FALSE(device.on_cyclic(std::span(frame).first(n), 4002));
 }
 
+// IEC 61158-6-10 ModuleDiffBlock (WrongModule), its data with IOPS BAD; decision I15.
 TEST(IoDevice, WrongModuleIsReportedAndItsDataAreBad) {
   pn::IoDevice device(drive_identity(0x102));  // the drive has another telegram module in slot 1
   const Exchange connected = call(device, pn::PnioOperation::kConnect, pn::testing::drive_connect());
@@ -324,6 +331,7 @@ TEST(IoDevice, WrongModuleIsReportedAndItsDataAreBad) {
   EXPECT_EQ(bare_response.module_diff[0].submodules[0].ident_info, pn::SubmoduleIdentInfo::kNoSubmodule);
 }
 
+// IEC 61158-6-10 PNIOStatus of out-of-place requests (DD 81 40 05, DB 81 40 04, DD 81 40 06).
 TEST(IoDevice, RequestsOutOfPlaceGetTheirPnioStatus) {
   pn::IoDevice device(drive_identity());
   // Control without an AR: AR UUID unknown.

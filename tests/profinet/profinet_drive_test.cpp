@@ -69,6 +69,8 @@ constexpr std::uint16_t kZsw1Fault = 1u << 3;
 
 }  // namespace
 
+// spec 06 §4.3 (STW1 0x047E then 0x047F to S4) and §1.2 (NSOLL_A 0x2000 = 50 % of p2000), over IEC
+// 61158-6-10 cyclic frames.
 TEST(ProfinetDrive, SwitchOnAndRunThroughProfinet) {
   Link link;
   ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
@@ -101,6 +103,7 @@ TEST(ProfinetDrive, DriveFaultReachesTheController) {
   EXPECT_EQ(link.zsw1() & kZsw1OperationEnabled, 0);
 }
 
+// Decision I14 (no setpoints taken without IOPS GOOD), decision R7 (F08501 setpoint timeout).
 TEST(ProfinetDrive, LostArEndsInTheSetpointTimeoutFault) {
   Link link;
   ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
@@ -112,6 +115,7 @@ TEST(ProfinetDrive, LostArEndsInTheSetpointTimeoutFault) {
   EXPECT_EQ(link.emulator.drive().active_fault(), dr::kFaultSetpointTimeout);
 }
 
+// IEC 61158-6-10 ModuleDiffBlock (submodule IdentInfo Wrong, IOPS BAD), decision I15.
 TEST(ProfinetDrive, ControllerConfiguredForAnotherTelegramGetsTheDifference) {
   Link link(2);  // the controller expects telegram 2; the drive runs telegram 1
   ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
@@ -129,6 +133,7 @@ TEST(ProfinetDrive, ControllerConfiguredForAnotherTelegramGetsTheDifference) {
 // PROFIdrive base-mode parameter access through record index 0xB02E, as `tomc gateway` checks a drive at
 // start-up: the request (write) for p0922 and p2000 of DO 1, then the response (read): Unsigned16 telegram
 // number, FloatingPoint reference speed; the AR runs on.
+// Decision I16 (base-mode parameter request for p0922 and p2000 through record index 0xB02E).
 TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
   Link link;
   ASSERT_TRUE(pn::testing::start_up(link.controller, link.emulator.device()));
@@ -170,6 +175,8 @@ TEST(ProfinetDrive, AnswersP0922AndP2000ThroughParameterAccess) {
 
 // The codec: the bytes of a p0922 read request (as in the tshark test's record) and of its response; round
 // trips; truncated and malformed input refused.
+// Decision I16 (PROFIdrive base-mode parameter access), ARCHITECTURE-GUIDE §7 (outside bytes: truncated or
+// malformed refused).
 TEST(ParameterAccess, BytesRoundTripsAndMalformedInput) {
   const pn::ParameterRequest request{1, pn::parameter_request_id::kRead, 1, {{0x10, 1, 922, 0}}, {}};
   const auto bytes = pn::encode(request);

@@ -30,6 +30,7 @@ std::uint16_t be16(const std::vector<std::uint8_t>& b, std::size_t at) {
 
 }  // namespace
 
+// IEC 61158-6-10 ARBlockReq (0x0101) and IOCRBlockReq (0x0102) layouts, decision I4 (blocks big-endian).
 TEST(RpcBlocks, ConnectRequestBlockLayout) {
   const auto bytes = blocks_of(drive_connect());
   // ARBlockReq: type 0x0101, BlockLength = 2 (version) + 52 + 12 (station name), version 1.0.
@@ -63,6 +64,7 @@ TEST(RpcBlocks, ConnectRequestBlockLayout) {
   EXPECT_EQ(at + 4 + be16(bytes, at + 2), bytes.size());
 }
 
+// IEC 61158-6-10 / C706 RPC header and NDR header in the sender's drep (decision I4), both byte orders.
 TEST(RpcBlocks, ConnectRequestAndResponseRoundTripThroughRpc) {
   const pn::ConnectRequest request = drive_connect();
   const auto blocks = blocks_of(request);
@@ -120,6 +122,7 @@ TEST(RpcBlocks, ConnectRequestAndResponseRoundTripThroughRpc) {
   EXPECT_EQ(pn::decode_connect_response(block_reader), response);
 }
 
+// IEC 61158-6-10 ModuleDiffBlock SubmoduleState (FormatIndicator, IdentInfo, ARInfo, Fault bits).
 TEST(RpcBlocks, ModuleDiffSubmoduleStateBits) {
   pn::ConnectResponse response;
   response.module_diff = {
@@ -130,6 +133,7 @@ TEST(RpcBlocks, ModuleDiffSubmoduleStateBits) {
   EXPECT_EQ(be16(bytes, bytes.size() - 2), 0x8000 | 2 << 11 | 1 << 7 | 0x40);
 }
 
+// IEC 61158-6-10 IODControlReq (PrmEnd) and IODWriteReqHeader/IODReadReqHeader layouts.
 TEST(RpcBlocks, ControlAndRecordBlocks) {
   const pn::ControlBlock prm_end{pn::block_type::kPrmEndRequest, kArUuid, 1, pn::control_command::kPrmEnd, 0};
   const auto control = blocks_of(prm_end);
@@ -165,6 +169,8 @@ TEST(RpcBlocks, ControlAndRecordBlocks) {
   EXPECT_EQ(pn::decode_record(read_in), read);
 }
 
+// IEC 61158-6-10 block checks (BlockLength, BlockVersion, name lengths); ARCHITECTURE-GUIDE §7 (outside
+// bytes never crash).
 TEST(RpcBlocks, MalformedInputIsAnError) {
   const auto blocks = blocks_of(drive_connect());
   // A BlockLength beyond the body.
@@ -227,6 +233,7 @@ TEST(RpcBlocks, MalformedInputIsAnError) {
   EXPECT_EQ(h.error(), pn::ProfinetError::kBadBlockLength);
 }
 
+// Decision I27 (object UUID DEA00000-6C97-11D1-8271-{instance}{DeviceID}{VendorID}), IEC 61158-6-10.
 TEST(RpcBlocks, ObjectUuidCarriesInstanceDeviceAndVendor) {
   EXPECT_EQ(pn::to_string(pn::pnio_object_uuid(1, 0x0C01, 0x002A)), "dea00000-6c97-11d1-8271-00010c01002a");
   EXPECT_EQ(pn::to_string(pn::kPnioDeviceInterface), "dea00001-6c97-11d1-8271-00a02442df7d");
@@ -236,6 +243,8 @@ TEST(RpcBlocks, ObjectUuidCarriesInstanceDeviceAndVendor) {
 // order, the last eight as they are): instance 0x0001, DeviceID 0x0C01, VendorID 0x002A big-endian at the
 // end whatever the drep, as Wireshark's PN-IO dissector reads them. And a Reject: 80 header bytes and the
 // 4-byte NCA status.
+// Decision I27 (the last six bytes big-endian whatever the drep; a Reject with the NCA status), C706
+// 12.5.2.
 TEST(RpcBlocks, ObjectUuidAndRejectGoldenBytes) {
   pn::RpcHeader header;
   header.object = pn::pnio_object_uuid(1, 0x0C01, 0x002A);

@@ -114,6 +114,7 @@ TEST(RawSocketFilter, OnlyDcpAndAlarmFramesPass) {
 
 // With running devices, cyclic frames arrive every cycle while the start-up thread waits on an RPC answer;
 // filtered, they never enter its queue, so an alarm behind a thousand of them is the first frame it reads.
+// Decision I31 (the start-up thread's BPF filter lets only DCP and alarm FrameIDs in).
 TEST(RawSocketFilter, AnAlarmBehindAThousandCyclicFramesIsTheFirstFrameRead) {
   const SocketPair pair;
   ASSERT_EQ(pair.filtered(), "");

@@ -197,6 +197,8 @@ TEST(ScenarioRun, FailedExpectationsAreReportedEach) {
             "expect[0] (cycle 4): Axis1.Override.Velocity = 100, expected 99 (tolerance 1e-9)");
 }
 
+// tomc's own (scenario.hpp): a Scenario runs once because the Runtime cannot be rewound; a second run() is
+// an error, not a silent replay.
 TEST(ScenarioRun, RunsOnce) {
   auto s = load(scenario(2, "[]", "[]"));
   ASSERT_TRUE(s);

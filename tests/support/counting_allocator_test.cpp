@@ -8,6 +8,8 @@
 
 #include "counting_allocator.hpp"
 
+// tomc's own: the counter behind ARCHITECTURE-GUIDE §7's "no allocation in the cyclic path" must see every
+// operator new.
 TEST(CountingAllocator, CountsEveryOperatorNew) {
   const auto before = tomc::testing::allocation_count();
   auto single = std::make_unique<int>(7);

@@ -240,6 +240,8 @@ TEST(BitTables, EncoderTelegramWords) {
 }
 
 // Signals that are not words have no named fields.
+// spec 06 §3 (bit tables exist only for the control/status words; the §2 setpoints and actual values are
+// numbers), decision T28.
 TEST(BitTables, NonWordSignalsHaveNoFields) {
   for (const Signal s : {NSOLL_A, NSOLL_B, XERR, KPC, MOMRED, M_ADD1, M_LIMIT_POS, M_LIMIT_NEG, NIST_A,
                          NIST_B, G1_XIST1, G1_XIST2, G2_XIST1, G2_XIST2, M_ACT}) {

@@ -245,6 +245,7 @@ TEST(DriveStateMachine, Stw1ForEachCommand) {
   EXPECT_EQ(stw1_for(DriveCommand::kNoPlcControl), 0x0000);
 }
 
+// spec 06 §4.1 (the state names S0…S5b and the fault condition).
 TEST(DriveStateMachine, StateNames) {
   EXPECT_EQ(to_string(kS0NotReady), "S0");
   EXPECT_EQ(to_string(kS1SwitchingOnInhibited), "S1");

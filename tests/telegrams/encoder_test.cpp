@@ -99,6 +99,8 @@ TEST(IncrementalCount, AccumulatesAcrossWraps) {
   EXPECT_EQ(count.counts(), -40LL * 0x40000000LL);
 }
 
+// spec 06 §6.1 and §11 TV20 (16-bit XIST1 wrap: +32), decision T21 (width a parameter); set_counts/restart
+// are tomc's own (homing sets the count, an encoder fault takes a new reference).
 TEST(IncrementalCount, NarrowWidthSetCountsAndRestart) {
   IncrementalCount count(16);
   count.update(0xFFF0u);

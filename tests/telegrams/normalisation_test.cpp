@@ -87,6 +87,7 @@ TEST(Normalisation, RoundHalfAwayFromZero) {
 }
 
 // Header contract (normalisation.hpp): NaN gives 0; a reference <= 0 or non-finite gives 0.
+// Decision T3 (a NaN value or a reference not finite or not > 0 gives 0, never a full-scale setpoint).
 TEST(Normalisation, NaNAndBadReferenceGiveZero) {
   EXPECT_EQ(speed_to_n2(kNaN, 3000.0), 0);
   EXPECT_EQ(speed_to_n4(kNaN, 3000.0), 0);
@@ -105,6 +106,7 @@ TEST(Normalisation, NaNAndBadReferenceGiveZero) {
 }
 
 // Header contract (normalisation.hpp): "A non-finite value gives 0 (never a random setpoint)".
+// Decision T3 (a non-finite value can never become a full-scale setpoint).
 TEST(Normalisation, InfiniteValueGivesZero) {
   for (const double v : {kInf, -kInf}) {
     EXPECT_EQ(speed_to_n2(v, 3000.0), 0) << v;
@@ -181,6 +183,8 @@ TEST(Normalisation, Xerr) {
 }
 
 // Decode then encode of every N2 raw value gives the raw value back (no drift through the physical unit).
+// spec 06 §1.2 (N2 = value / reference · 2^14), decision T3 (round half away from zero makes decode → encode
+// exact).
 TEST(Normalisation, N2DecodeEncodeIsIdentity) {
   for (int raw = -32768; raw <= 32767; ++raw) {
     const auto r = static_cast<std::int16_t>(raw);

@@ -214,6 +214,8 @@ TEST(CodecErrors, WrongDirection) {
 }
 
 // A default-constructed codec is empty and refuses everything.
+// Project decision P2 (errors are values, Result<T>: a codec without a telegram answers kUnknownTelegram,
+// never writes).
 TEST(CodecErrors, EmptyCodec) {
   const TelegramCodec codec;
   EXPECT_EQ(codec.frame_size(), 0u);
@@ -281,6 +283,7 @@ TEST(SharedCodec, RejectsWhatCreateRejects) {
 }
 
 // Every error has its own description (for messages).
+// Decision T11 (each refusal has its own error so the message says why); the texts themselves are tomc's own.
 TEST(CodecErrors, Descriptions) {
   EXPECT_EQ(describe(TelegramError::kNone), "no error");
   const TelegramError all[] = {TelegramError::kNone,

@@ -100,6 +100,8 @@ void check_codec(const TelegramCodec& codec, std::mt19937& rng, bool malformed) 
 // Table: every (telegram, direction, byte order, NIST_B offset) create() accepts — 13 telegrams × 2 × 4 × 3,
 // the offset changing only telegram 83's actual frame — once as created and once from the shared table the
 // drive connections use.
+// Decision O4 (one unrolled routine per layout × byte order × NIST_B offset, same bytes as the table loop),
+// decisions T2 and T6 (the byte orders and offsets).
 TEST(TelegramRoutines, SameBytesAndValuesAsTheReferenceLoop) {
   std::mt19937 rng(0x0A23u);  // fixed seed: reproducible
   int codecs = 0;
@@ -150,6 +152,8 @@ TEST(TelegramRoutines, Telegram83NistBOffsetSelectsTheRoutine) {
 
 // A codec without a telegram refuses everything on both paths; telegram 104 and an invalid option are
 // refused at create(), before any routine is chosen.
+// Decision T11 (telegram 104 refused at create()), decision T6 (NIST_B offset only 4, 8 or 12), decision T2
+// (the four byte orders), decision O4.
 TEST(TelegramRoutines, EmptyCodecAndInvalidConfigurationAreRefused) {
   const TelegramCodec& empty = TelegramCodec::empty();
   std::vector<std::byte> frame(4, std::byte{0x5A});

@@ -50,6 +50,8 @@ TEST(SignOfLifeGenerator, CountsAndNeverEmitsZero) {
   }
 }
 
+// spec 06 §5.1 (the counter runs 1…15 and 0 is never used), decision T18 (the controller's counter starts at
+// 1).
 TEST(SignOfLifeGenerator, ResetToStartValue) {
   SignOfLifeGenerator generator;
   generator.reset(15);
@@ -235,6 +237,7 @@ TEST(SignOfLifeMonitor, KeepsOwnExpectationAfterMismatch) {
 }
 
 // Generator and monitor agree with each other over many wraps.
+// spec 06 §5.1 (+1 per cycle, 15 → 1) and §5.2 (an expected value never counts as an error).
 TEST(SignOfLifeMonitor, GeneratorFeedsMonitorWithoutErrors) {
   for (std::uint8_t start = 1; start <= 15; ++start) {
     SignOfLifeGenerator generator;

@@ -58,6 +58,7 @@ TEST(JobPriority, HomingModesWithoutARowAreNoEffect) {
 }
 
 // R5 x C3 "-/N": append behind positioning / MC_Halt Mode 1, reject behind MoveVelocity / MoveJog.
+// spec 03 §6.1 (§9.19.1 R5 × C3 "–/N" and R5 × C4 = N; AMB-11 in §7).
 TEST(JobPriority, AppendBehindJobsThatEnd) {
   ArbitrationContext positioning;
   positioning.running_job_ends_by_itself = true;
@@ -71,6 +72,7 @@ TEST(JobPriority, AppendBehindJobsThatEnd) {
 }
 
 // Legend B: a new MC_Stop aborts a running one of equal or higher weight (0 emergency > 2 max > 3 specified).
+// spec 03 §6.1 (§9.19.1 legend B: equal or higher stop weight aborts, 0 > 2 > 3).
 TEST(JobPriority, StopAgainstStopByWeight) {
   const struct {
     int running_mode;
@@ -91,6 +93,7 @@ TEST(JobPriority, StopAgainstStopByWeight) {
 }
 
 // Footnote 1: on a virtual or simulated axis, active homing aborts no running job.
+// spec 03 §6.1 (§9.19.1 footnote 1: active homing on a virtual or simulated axis).
 TEST(JobPriority, ActiveHomingOnVirtualAxisAbortsNothing) {
   ArbitrationContext ctx;
   ctx.virtual_or_simulated_axis = true;

@@ -150,6 +150,7 @@ TEST(CamInterpolation, EveryModeReproducesAStraightLine) {
 }
 
 // Natural cubic spline through (0,0), (1,1), (2,0): M1 = −3, s(u) = 1.5u − 0.5u³ on [0, 1] (closed form).
+// spec 07 §3.2 (cubic spline interpolation), decision C4 (natural spline: M = 0 at the ends).
 TEST(CamInterpolation, NaturalCubicSplineClosedForm) {
   Cam cam("Cam1");
   set_mode(cam, CamInterpolationMode::kCubicSpline);
@@ -406,6 +407,8 @@ TEST(CamInterpolation, Vdi2143MotionLaws) {
 }
 
 // The hinted search finds the same piece as the binary search, for every hint, at joins and inside pieces.
+// tomc's own: the piece hint of the synchronous function must not change the result (docs/performance.md,
+// Cams (issue 19)).
 TEST(CamInterpolation, HintedFindAgreesWithBinarySearch) {
   Cam cam("Cam1");
   set_points(cam, scattered_points(50, 11u));

@@ -48,6 +48,7 @@ TEST(CamSynchronousFunction, Cm1Cyclic) {
 }
 
 // CM-2: C2 = line (0,0)…(360,100), ApplicationMode 2: F = 200 at unwrapped 720, 250 at 900.
+// spec 07 §8 CM-2 (ApplicationMode 2, cyclic appending), §3.3.
 TEST(CamSynchronousFunction, Cm2CyclicAppending) {
   Cam cam("C2");
   cam.write_point(1, {0.0, 0.0}, true);
@@ -62,6 +63,7 @@ TEST(CamSynchronousFunction, Cm2CyclicAppending) {
 }
 
 // CM-3: C3 = 100·(10ξ³ − 15ξ⁴ + 6ξ⁵) on [0, 360], not cyclic: past 360 the operation ends with F = 100.
+// spec 07 §8 CM-3 (non-cyclic end, F holds 100), decision C11.
 TEST(CamSynchronousFunction, Cm3NotCyclicEnds) {
   std::array<TO_Cam_Struct_SegmentData, kMaxLawSegments> law{};
   ASSERT_EQ(motion_law_segments(MotionLaw::kPolynomial5, 0.0, 0.0, 360.0, 100.0, law), 1u);

@@ -210,6 +210,8 @@ TEST(StatusBits, SpeedAxisDiagnosticsUsesDefinedBits) {
   EXPECT_FALSE(defined_on(S, StatusWordBit::kHomingDone));
 }
 
+// spec 04 §5.1 (StatusWord X0 Enable, X5 HomingDone, X31 MotionInCommand) and §5.3 (ErrorWord X0
+// SystemFault, X15 AdaptionError).
 TEST(BitWord32, SetTestReset) {
   StatusWordBits word;
   EXPECT_EQ(word.value(), 0u);
@@ -230,6 +232,8 @@ TEST(BitWord32, SetTestReset) {
   static_assert(built.value() == 0x8001u);
 }
 
+// spec 04 §5.4 (WarningWord X6 DynamicWarning, X16 SuperimposingWarning) and §5.2 (StatusWord2 X0
+// StopCommand, X2 PassingBacklash, X10 OnProfile).
 TEST(BitWord32, RawWordHelpers) {
   std::uint32_t word = 0;
   assign(word, WarningWordBit::kDynamicWarning, true);

@@ -83,6 +83,7 @@ TEST(DriveConnection, EnableSequenceWordByWord) {
 }
 
 // Before cyclic data the drive does not request control: CommunicationOK = FALSE (seed L11468).
+// Decision R9 (CommunicationOK FALSE while ZSW1.9 "control requested" is 0).
 TEST(DriveConnection, NotControlledBeforeTheDriveAnswers) {
   Machine m(2);
   m.run(1);
@@ -127,6 +128,8 @@ TEST(DriveConnection, FrozenDriveSignOfLifeTripsInToleranceCycles) {
 }
 
 // Telegram 1 carries no STW2/ZSW2: there is no sign-of-life to check, so none fails.
+// spec 06 §2.1 (telegram 1 is STW1/NSOLL_A and ZSW1/NIST_A: no STW2/ZSW2) and §5.1 (the sign-of-life lives
+// in STW2/ZSW2).
 TEST(DriveConnection, TelegramOneHasNoSignOfLife) {
   Machine m(1);
   m.connection().request(tg::DriveRequest::kOperate);
@@ -138,6 +141,8 @@ TEST(DriveConnection, TelegramOneHasNoSignOfLife) {
 
 // Link loss: CommunicationOK drops once more cycles than the tolerance have no fresh frame; the drive itself
 // faults after its setpoint timeout (F08501, OFF3); after the link returns, acknowledge recovers (TV26).
+// Decision R9 (more than link_loss_tolerance_cycles without a fresh frame), decision R7 (F08501 setpoint
+// timeout, OFF3), spec 06 §11 TV26 (acknowledge).
 TEST(DriveConnection, LinkLossAndRecovery) {
   SimulatedDriveParameters p;
   p.setpoint_timeout_cycles = 20;
@@ -235,6 +240,8 @@ class RestartingLink final : public tomc::drives::DriveAdapter {
   std::uint32_t restarts = 0;
 };
 
+// Decision G6 (a peer restart faster than the link tolerance is still a link loss, counted beyond the
+// tolerance).
 TEST(DriveConnection, PeerRestartIsALinkLoss) {
   Runtime runtime(RuntimeConfig{0.001, 1, 1});
   DeviceConfig device;

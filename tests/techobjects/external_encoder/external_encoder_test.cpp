@@ -238,6 +238,8 @@ TEST(ExternalEncoder, ExtrapolationWritesTakeEffectAtOnce) {
 }
 
 // A device without an encoder telegram is a configuration error naming the variable.
+// spec 01 §3.1/§3.3 (an external encoder is one encoder, read only through an encoder telegram),
+// ARCHITECTURE-GUIDE §6 (the error names its variable).
 TEST(ExternalEncoder, DeviceWithoutEncoderTelegramIsRejected) {
   techobjects::Runtime runtime(techobjects::RuntimeConfig{});
   drives::DeviceConfig device;

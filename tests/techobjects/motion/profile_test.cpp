@@ -270,6 +270,7 @@ constexpr MotionState kA1State{0.0, 15.0, 100.0};
 // A2, j = 200: a0 carries v on by a0²/(2j) = 25 to 40 at t = a0/j = 0.5 s; the deceleration peak ap
 // follows from (2ap² − a0²)/(2j) = 15 (the ramp 100 -> −ap -> 0 loses v0): ap = sqrt(8000) = 89.44 < 100.
 // Duration (100 + ap)/j + ap/j = 1.3944 s. The job's jerk throughout, never more.
+// seed 004 §6.7.7 (spec 01 §8.8) case A2, with the job's jerk kept (decision S4).
 TEST(JobReplacementSeed677, A2LowJerkCarriesTheAccelerationOverSlowly) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 200.0}));
@@ -285,6 +286,7 @@ TEST(JobReplacementSeed677, A2LowJerkCarriesTheAccelerationOverSlowly) {
 }
 
 // A3, j = 5000: 100 -> -100 in 0.04 s (v: 15 -> 16 -> 15), hold -100 for 0.14 s, ramp out in 0.02 s: 0.2 s.
+// seed 004 §6.7.7 (spec 01 §8.8) case A3, with the job's jerk kept (decision S4).
 TEST(JobReplacementSeed677, A3HighJerkCarriesTheAccelerationOverQuickly) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 5000.0}));
@@ -298,6 +300,7 @@ TEST(JobReplacementSeed677, A3HighJerkCarriesTheAccelerationOverQuickly) {
 }
 
 // A4 without jerk limitation: -100 at once, standstill after 15/100 = 0.15 s.
+// seed 004 §6.7.7 (spec 01 §8.8) case A4: without jerk the replacing deceleration acts at once.
 TEST(JobReplacementSeed677, A4WithoutJerkDeceleratesAtOnce) {
   VelocityProfile profile;
   ASSERT_TRUE(profile.plan(kA1State, 0.0, {50.0, 100.0, 100.0, 0.0}));

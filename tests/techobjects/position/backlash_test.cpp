@@ -132,6 +132,8 @@ TEST(Backlash, FollowUpCouplesTheActualValueOnlyAfterTheGap) {
 
 // The motor still runs on in the old direction for a few cycles after the reversal began (position-loop lag):
 // the gap position stays in contact, the shift is done, and PassingBacklash waits for the crossing.
+// seed 004 §6.4.8 (spec 01 §5.9; StatusWord2.X2 "ActualPosition is not changing", spec 04 §5.2), decision
+// P19 (X2 until the crossing is complete).
 TEST(Backlash, ReversalWhileTheMotorStillRunsOn) {
   Rig r;
   double m = 0.0;
@@ -149,6 +151,8 @@ TEST(Backlash, ReversalWhileTheMotorStillRunsOn) {
 }
 
 // A reversal back during the crossing turns the shift round; PassingBacklash continues.
+// spec 01 §5.9 (backlash compensated at each reversal), decision P19 (a reversal during the crossing turns
+// the shift round).
 TEST(Backlash, SecondReversalDuringTheCrossing) {
   Rig r;
   double m = 0.0;
@@ -199,6 +203,8 @@ TEST(Backlash, AssumedContactOfAnAdjustedAbsoluteEncoder) {
 }
 
 // An invalid encoder value makes the next valid one a new reference (e.g. the chain restarted from 0).
+// Decision P18 (the correction lives in the actual-value chain); tomc's own: an invalid value restarts the
+// reference, no motion is invented.
 TEST(Backlash, InvalidEncoderValueRestartsTheReference) {
   Rig r;
   double m = 0.0;
@@ -209,6 +215,8 @@ TEST(Backlash, InvalidEncoderValueRestartsTheReference) {
   EXPECT_EQ(r.b.contact(), 1);
 }
 
+// spec 04 §3.6 (Sensor[n].Backlash.Size ≥ 0, finite Velocity), ARCHITECTURE-GUIDE §6 (bad values never
+// reach the cycle).
 TEST(Backlash, InvalidConfigurationIsRejected) {
   BacklashCompensation b;
   EXPECT_FALSE(b.configure(BacklashConfig{true, -0.1, 0.0, kTs}));

@@ -93,6 +93,8 @@ TEST(DynamicFilter, TwoMovingAveragesInSeries) {
 
 // Dead time only (Mode 1 or 2 with T1 = T2 = 0): an exact delay; a fraction of a cycle interpolates linearly
 // between the two neighbouring samples, which delays a ramp exactly.
+// spec 02 §7.6 (dead time Tt of the dynamic filter), decision P22 (a fractional cycle interpolates
+// linearly).
 TEST(DynamicFilter, DeadTimeIsAnExactDelay) {
   for (std::int32_t mode : {1, 2}) {
     DynamicFilter f = make(mode, 0.0, 0.0, 0.002, 0.001);
@@ -196,6 +198,8 @@ TEST(DynamicFilter, TimesAreLimitedToSixteenServoCyclesWithoutError) {
 
 // Mode 0, or all times 0, or `run` FALSE (follow-up, no position control): the output is the input; and a
 // filter that starts running starts from its input (no step).
+// spec 02 §7.6 (Mode 0: no filter), decision P24 (without position control the setpoint passes through and
+// the filter restarts from its input).
 TEST(DynamicFilter, PassThroughAndSteplessStart) {
   DynamicFilter off = make(0, 0.01, 0.01, 0.01, 0.001);
   EXPECT_FALSE(off.active());
@@ -236,6 +240,8 @@ TEST(DynamicFilter, ShiftMovesTheHistory) {
 }
 
 // DIR changes at run time keep the history: a standing input stays where it is.
+// spec 04 §3.22 (SetpointFilter.DynamicFilter.* are DIR: effective at once), decision P23 (fixed histories
+// survive a change).
 TEST(DynamicFilter, ReconfigurationKeepsTheHistory) {
   DynamicFilter f = make(2, 0.008, 0.0, 0.0, 0.001);
   for (int k = 0; k < 20; ++k)
@@ -245,6 +251,7 @@ TEST(DynamicFilter, ReconfigurationKeepsTheHistory) {
 }
 
 // Values the data block forbids never reach the cycle: rejected, the previous configuration stays.
+// spec 04 §3.22 (Mode 0…2, times ≥ 0), decision P23 (values outside the data-block ranges are rejected).
 TEST(DynamicFilter, InvalidConfigurationIsRejected) {
   DynamicFilter f = make(1, 0.002, 0.0, 0.0, 0.001);
   EXPECT_FALSE(f.configure(DynamicFilterConfig{3, 0.002, 0.0, 0.0, 0.001}));

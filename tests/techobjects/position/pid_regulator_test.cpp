@@ -126,6 +126,8 @@ TEST(PidRegulator, DeadBand) {
 }
 
 // H3 FLdRP/FUpDRP: a loaded set acts only after apply(), from the next update on.
+// spec 05b §B.10 (H3 FLdRP buffers the PID set, FUpDRP activates it; out of range is an error), decision
+// A8.
 TEST(PidRegulator, DoubleBufferedGains) {
   PidGains g;
   g.Kv = 10.0;

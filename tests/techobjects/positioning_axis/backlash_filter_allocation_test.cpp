@@ -21,6 +21,8 @@ constexpr int kCycles = 20'000;
 constexpr int kCycles = 200'000;
 #endif
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path); spec 01 §5.9 and spec 02 §7.6 exercised; 40
+// cycles per crossing from decision P25's play at Backlash.Velocity.
 TEST(BacklashFilterAllocation, ReversingAxisWithBacklashAndFilterAllocatesNothing) {
   auto d = tomc::testing::linear_axis_data();
   d.Sensor[0].Backlash.Enable = true;

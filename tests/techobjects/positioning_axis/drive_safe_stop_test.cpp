@@ -41,6 +41,8 @@ void acknowledge_and_reenable(fixture::PositioningAxisMachine& m) {
   EXPECT_EQ(m.drive->state(), telegrams::DriveState::kS4Operation);
 }
 
+// spec 01 §4 (seed 004 §6.3.1: STO = OFF2 coast-down, alarm 421, reaction remove enable; re-enable only
+// once STO is inactive).
 TEST(DriveSafeStop, StoRaises421AndRemovesTheEnable) {
   fixture::PositioningAxisMachine m;
   moving(m);
@@ -69,6 +71,8 @@ TEST(DriveSafeStop, StoRaises421AndRemovesTheEnable) {
   acknowledge_and_reenable(m);
 }
 
+// spec 01 §4 (seed 004 §6.3.1: SS1 brakes on OFF3 then OFF2; alarm 550 with follow-up; keep MC_Power
+// enabled until STO 421).
 TEST(DriveSafeStop, Ss1Raises550FollowsTheBrakingDriveThenSto) {
   fixture::PositioningAxisMachine m;
   moving(m);
@@ -95,6 +99,8 @@ TEST(DriveSafeStop, Ss1Raises550FollowsTheBrakingDriveThenSto) {
 }
 
 // The TO's own stop reactions ask for OFF3 in STW1 (RemoveEnableReaction 16#7): that is no autonomous stop.
+// spec 01 §4 (421/550 are for autonomous drive stops), spec 02 §3.1 (MC_Power StopMode 1 asks the drive for
+// OFF3).
 TEST(DriveSafeStop, TheTosOwnQuickStopIsNotASafeStop) {
   fixture::PositioningAxisMachine m;
   moving(m);

@@ -54,6 +54,7 @@ TEST(DynamicFilterAxis, PositionAfterDynamicFilterIsTheMovingAverage) {
 
 // Filter off (Mode 0, the default): PositionAfterDynamicFilter is the interpolator's setpoint of the cycle
 // before.
+// spec 02 §7.6 (Mode 0: no filter), spec 04 §4.3 (StatusServo.PositionAfterDynamicFilter).
 TEST(DynamicFilterAxis, WithoutFilterTheSetpointPassesThrough) {
   PositioningAxisMachine m;
   ASSERT_GT(m.enable(), 0);
@@ -96,6 +97,8 @@ TEST(DynamicFilterAxis, AdditionalSetpointDelayTimeCompensatesTheFilterInTheFoll
 // The filter only delays and smooths: a positioning move with PT2 + dead time (T1 = T2 = 5 ms, Tt = 2 ms)
 // still reaches its target, Done after the window; the interpolator's profile itself is unchanged (1100
 // cycles).
+// spec 02 §7.6 (the filter delays the setpoint; AdditionalSetpointDelayTime = T1 + T2 + Tt, decision P22)
+// and §6.1 (Done after the positioning window).
 TEST(DynamicFilterAxis, PositioningWithTheFilterReachesTheTarget) {
   auto d = filtered(1, 0.005, 0.005, 0.002);
   d.FollowingError.AdditionalSetpointDelayTime = 0.012;

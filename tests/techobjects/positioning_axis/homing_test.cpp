@@ -342,6 +342,8 @@ TEST(Homing, PriorityCellsOfActiveHoming) {
 
 // Failure cases: homing needs an enabled axis for 3/5 and 2/8/10 (16#8103); Mode 4 is reserved; 6/7 need an
 // absolute encoder (16#8107).
+// spec 03 §4.3 (Mode 0…13, 4 reserved; active/passive homing need an enabled TO: 16#8103), spec 02 §5.1
+// (6/7 need an absolute encoder: 16#8107, docs/errors.md).
 TEST(Homing, RejectedJobs) {
   PositioningAxisMachine m(homing_data(SensorHomingMode::kZeroMarkViaTelegram));
   m.run(10);
@@ -366,6 +368,8 @@ TEST(Homing, RejectedJobs) {
 
 // An encoder error during active homing: alarm 431 removes the enable, the job ends with 16#8001, an
 // incremental encoder is not homed.
+// Decision P11 (encoder error: alarm 431, remove enable, an incremental encoder loses HomingDone), spec 03
+// §5 (16#8001), spec 02 §5.12.
 TEST(Homing, EncoderErrorDuringHoming) {
   PositioningAxisMachine m(homing_data(SensorHomingMode::kZeroMarkViaTelegram));
   ASSERT_GT(m.enable(), 0);
@@ -441,6 +445,8 @@ TEST(Homing, AbsoluteEncoderAdjustmentSurvivesARestart) {
 
 // A lost adjustment is reported, never a silently wrong position: alarm 432, ErrorWord.X10, not homed,
 // absolute positioning rejected.
+// Decision H5 (a lost adjustment raises alarm 432), spec 04 §5.3 (ErrorWord.X10 HomingError), spec 02 §5.12
+// (not homed).
 TEST(Homing, LostAdjustmentRaisesAnAlarm) {
   PositioningAxisMachine m(absolute_data());
   m.axis->report_adjustment_lost(2);

@@ -194,6 +194,8 @@ TEST(MotionIn, ReplacementReducesTheAccelerationThroughTheJerk) {
 
 // Bad input is an ErrorID, never a motion: a setpoint that is not a number rejects the new job, and ends a
 // running one with Error while the axis brakes with the default deceleration.
+// Decision L6 (a NaN/infinite input rejects the new job or ends the running one with 16#8186 and a brake
+// with DynamicDefaults), spec 03 §4.17.1.
 TEST(MotionIn, NonFiniteSetpointsAreErrors) {
   ProfileMachine m;
   ASSERT_GT(m.enable(), 0);

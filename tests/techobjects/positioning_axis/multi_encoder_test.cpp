@@ -248,6 +248,8 @@ TEST(MultipleEncoders, SetSensorMode1SmoothsTheDifferenceAndCompensates) {
 }
 
 // Mode 1 with SmoothingTimeByChangeDifference = 0: the difference is a control deviation at once.
+// spec 01 §3.8 (MC_SetSensor Mode 1: no position transfer, the difference smoothed with
+// SmoothingTimeByChangeDifference, here 0).
 TEST(MultipleEncoders, SetSensorMode1WithoutSmoothingJumps) {
   TwoEncoderAxis m;
   ASSERT_GT(m.enable(), 0);
@@ -334,6 +336,7 @@ TEST(MultipleEncoders, SetSensorPrerequisitesAndPriority) {
 }
 
 // MC_Reset with Restart: the start-up encoder (PositionControl.InitialOperativeSensor) is operative again.
+// spec 04 §3.20 (PositionControl.InitialOperativeSensor: the encoder after a TO restart), spec 01 §3.8.
 TEST(MultipleEncoders, RestartReturnsToTheStartUpEncoder) {
   TwoEncoderAxis m;
   EXPECT_EQ(m.switch_to(2, 1), 0);
@@ -350,6 +353,7 @@ TEST(MultipleEncoders, RestartReturnsToTheStartUpEncoder) {
 }
 
 // Start-up with InitialOperativeSensor = 2: the load encoder closes the loop from the first cycle.
+// spec 04 §3.20 (InitialOperativeSensor 1…4, RES), spec 01 §3.8 (exactly one encoder closes the loop).
 TEST(MultipleEncoders, InitialOperativeSensorTwo) {
   auto d = two_encoder_data();
   d.PositionControl.InitialOperativeSensor = 2;
@@ -363,6 +367,7 @@ TEST(MultipleEncoders, InitialOperativeSensorTwo) {
 }
 
 // Configuration: an existing encoder that no telegram of the device carries is named with its path.
+// Decision B3 (which telegram carries Sensor[n]), ARCHITECTURE-GUIDE §6 (the error names its path).
 TEST(MultipleEncoders, AnEncoderWithoutTelegramIsAConfigurationError) {
   try {
     tomc::testing::PositioningAxisMachine m(two_encoder_data(), tomc::testing::linear_drive(), 3);

@@ -26,6 +26,7 @@ namespace eid = techobjects::error_id;
 using Profile = instructions::MC_PositionProfile<techobjects::PositioningAxis>;
 
 // The profile's own shape: a monotone cubic through the points, at rest at both ends, never past a point.
+// Decision L1 (a monotone piecewise cubic with Fritsch–Butland slopes, velocity 0 at both ends).
 TEST(TimePositionProfile, MonotoneCubicThroughThePointsAtRestAtTheEnds) {
   const TimePositionProfile p = ramp_profile();
   for (int i = 0; i < 4; ++i) {
@@ -346,6 +347,8 @@ double cubic_velocity(double height, double t) {
 
 // The relative job on an interpolated cam from rest follows it at once: the setpoint is the cam's polynomial,
 // cycle by cycle, shifted to the start position; OnProfile while it does; Done at the end (40 mm).
+// Decision L8 (a TO_Cam as TimePosition: x = time, y = position), spec 03 §4.7 (OnProfile,
+// StatusWord2.X10).
 TEST(PositionProfile, FollowsATimePositionCamCycleByCycle) {
   ProfileMachine m;
   ASSERT_GT(m.enable(), 0);
@@ -376,6 +379,8 @@ TEST(PositionProfile, FollowsATimePositionCamCycleByCycle) {
 // that does not end at rest: 16#8187. A cam
 // faster than DynamicLimits.MaxVelocity (peak 60 mm/s, limit 50): 501 once the axis reaches the excess, the
 // setpoint within the limit, and the job still ends at the cam's end position.
+// Decision L8 (16#8150 not interpolated, 16#8183 StartTime, 16#8187 not at rest), decision L4 (501 and the
+// setpoint within MaxVelocity).
 TEST(PositionProfile, TimePositionCamErrorsAndLimits) {
   auto data = tomc::testing::linear_axis_data();
   data.DynamicLimits.MaxVelocity = 50.0;

@@ -338,6 +338,8 @@ std::vector<Step> script(const Axis& a) {
   return s;
 }
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over the jobs of spec 03 §4 on every axis
+// variant.
 TEST(PositioningAllocation, EveryJobKindRunsWithoutAllocating) {
   std::vector<Axis> axes;
   {

@@ -102,6 +102,7 @@ std::vector<ProgramJob> program_jobs() {
   };
 }
 
+// spec 02 §9.2 (seed 004 §7.2: while the panel holds control priority, program jobs get 16#8012).
 TEST(PositioningControlPriority, ProgramJobsAreRejectedWith8012WhilePanelHoldsPriority) {
   for (const ProgramJob& job : program_jobs()) {
     SCOPED_TRACE(job.instruction);

@@ -805,6 +805,7 @@ void run_scenario(const Scenario& s, std::uint32_t seed, Stats& total) {
               st.on_profile_cycles, st.motion_in_cycles, st.sensor_switches);
 }
 
+// Properties P1–P5 of the file header: spec 02 §4.5, §6.1, §6.2, spec 01 §8.3, §8.5, §8.9.
 TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
   std::printf("base seed %u, %d seeds x %d cycles\n", base_seed(), kSeeds, kCycles);
   Stats total;
@@ -824,6 +825,8 @@ TEST(PositioningProperty, LinearAxisWithSoftwareLimits) {
   EXPECT_GT(total.sensor_switches, kSeeds * 5);
 }
 
+// Properties P2–P5 of the file header (spec 02 §6.1, §6.2, spec 01 §8.3, §8.5, §8.9) on a modulo axis (spec
+// 01 §2.4).
 TEST(PositioningProperty, RotaryModuloAxis) {
   std::printf("base seed %u, %d seeds x %d cycles\n", base_seed(), kSeeds, kCycles);
   Stats total;

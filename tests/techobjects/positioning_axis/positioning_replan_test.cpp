@@ -105,6 +105,7 @@ TEST(PositioningReplan, AHaltWithASofterJerkDoesNotReverse) {
 // The braking state (v0 ≈ 92.5 mm/s, a0 = −5000 mm/s²) replaced by a reversing MC_MoveVelocity to −200 mm/s
 // with the halt's jerk 1e6 mm/s³: a0²/(2j) = 12.5 mm/s, so v passes zero still braking (S17: with a ≠ 0) and
 // goes on to −200 mm/s without overshoot; the acceleration steps at most j·T per cycle.
+// spec 01 §8.8 (job replacement with jerk), decisions S4 and S17 (the job's jerk kept through v = 0).
 TEST(PositioningReplan, AReversalKeepsTheJobsJerk) {
   PositioningAxisMachine m;
   brake_hard_to_100(m);

@@ -51,6 +51,7 @@ tomc::techobjects::PositioningAxisData limited(double max_jerk) {
 
 // From standstill at MaxPosition, a trapezoid (first step a·T²/2 = 2.5 µm at 5000 mm/s²) and a jerk-limited
 // MC_MoveRelative outwards: 533 again, the setpoint stays at the limit.
+// spec 02 §4.5 (setpoint look-ahead: a motion that would pass the limit stops at it, alarm 533).
 TEST(PositioningSoftwareLimit, AMotionStartingAtTheLimitDoesNotPassIt) {
   for (double jerk : {0.0, 100000.0}) {
     PositioningAxisMachine m(limited(jerk));

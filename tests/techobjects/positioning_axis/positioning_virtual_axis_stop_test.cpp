@@ -32,6 +32,8 @@ bool standstill(const PositioningAxisMachine& m) {
   return tomc::techobjects::test(m.db().StatusWord, tomc::techobjects::StatusWordBit::kStandstill);
 }
 
+// spec 01 §2.5/§2.6 and spec 02 §3.1 (a virtual or simulated axis following its actual value stands at
+// once).
 TEST(PositioningVirtualAxis, DisablingWithStopMode1EndsAtOnce) {
   for (int i = 0; i < 4; ++i) {
     const std::int16_t mode = i % 2 == 0 ? 1 : 3;
@@ -75,6 +77,8 @@ TEST(PositioningVirtualAxis, DisablingWithStopMode0KeepsTheEndOfTheRamp) {
   }
 }
 
+// spec 02 §3.4 (reaction "remove enable") on a virtual/simulated axis (spec 01 §2.5, §2.6): standstill at
+// once, MC_Reset recovers.
 TEST(PositioningVirtualAxis, RemoveEnableStopsTheAxis) {
   for (bool simulation : {false, true}) {
     PositioningAxisMachine m(virtual_data(simulation), tomc::testing::linear_drive(), 3, false);

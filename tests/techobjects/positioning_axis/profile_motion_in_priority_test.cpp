@@ -200,6 +200,7 @@ std::vector<Case> cases() {
   };
 }
 
+// spec 03 §6.1 (the §9.19.1 cells of MC_PositionProfile's and MotionIn's rows and columns).
 TEST(ProfileMotionInPriority, MatrixCellsAsBehaviour) {
   for (const Case& c : cases()) {
     ProfileMachine m;

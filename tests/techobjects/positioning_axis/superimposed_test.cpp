@@ -84,6 +84,7 @@ TEST(MoveSuperimposed, AddsItsDistanceToTheBaseMotion) {
 }
 
 // Section B: −50 at ②: the axis reverses; net travel 50 − 50 = 0, Done_2.
+// spec 03 §4.10 section B (−50 superimposed on 50: net travel 0, Done_2).
 TEST(MoveSuperimposed, NegativeDistanceReversesTheAxis) {
   SuperimposedMachine m;
   start_base_move_relative(m);
@@ -203,6 +204,7 @@ void start_t28(SuperimposedMachine& m) {
 
 // MC_Halt Mode 1 (R3 x C7 = "-"): A1 CommandAborted, A2 stays Busy; Done when the base velocity is 0 — the
 // axis then moves at the superimposed 50 mm/s.
+// spec 03 §8 T28 (MC_Halt Mode 1 vs Mode 0), §6.1 (R3 × C7 = "–").
 TEST(HaltSuperimposed, HaltMode1StopsTheBaseOnly) {
   SuperimposedMachine m;
   start_t28(m);
@@ -222,6 +224,7 @@ TEST(HaltSuperimposed, HaltMode1StopsTheBaseOnly) {
 
 // MC_Halt Mode 0 (R4 x C7 = A): A1 and A2 CommandAborted; Done when the total velocity is 0 (150 mm/s at
 // 1000 mm/s²: 150 ms).
+// spec 03 §8 T28 (MC_Halt Mode 0), §6.1 (R4 × C7 = A).
 TEST(HaltSuperimposed, HaltMode0StopsBoth) {
   SuperimposedMachine m;
   start_t28(m);
@@ -238,6 +241,7 @@ TEST(HaltSuperimposed, HaltMode0StopsBoth) {
 
 // T50: a second MoveSuperimposed aborts the first and continues from its state; MoveAbsolute BufferMode 0
 // aborts the superimposed motion (R4 x C7 = A) and takes its velocity over without a step.
+// spec 03 §8 T50 (superimposed independence, R6), §6.1 (R4 × C7 = A).
 TEST(MoveSuperimposed, PriorityRowR6AndColumnC7) {
   SuperimposedMachine m;
   start_t28(m);
@@ -283,6 +287,7 @@ TEST(MoveSuperimposed, PriorityRowR6AndColumnC7) {
 }
 
 // T51: MC_Stop aborts a running MoveSuperimposed (R7 x C7 = A); the stop brakes the total motion.
+// spec 03 §8 T51 (MC_Stop row R7), §6.1 (R6 × C6 = N), §4.13 (16#8102 while MC_Stop.Execute is TRUE).
 TEST(MoveSuperimposed, StopAbortsIt) {
   SuperimposedMachine m;
   start_t28(m);
@@ -407,6 +412,8 @@ struct AccelerationHeadroomCase {
   double jerk = 0.0;  // of the base and the superimposed job, mm/s³ (0: none)
 };
 
+// seed 004 §6.7.10.1 (spec 01 §8.14: the total motion is limited to the dynamic limits), decisions U16 and
+// U17.
 TEST(MoveSuperimposed, TotalAccelerationStaysWithinTheLimits) {
   const AccelerationHeadroomCase cases[] = {
       // Headroom 1000 - 800 = 200 for the 100 ms left of the ramp (v 20 mm/s, 1 mm), then 9 mm from 20 mm/s

@@ -168,8 +168,10 @@ TEST(TorqueData, DriveAppliesRangeAndReportsActualTorque) {
 
 // MC_TorqueAdditive −1.25 Nm on an enabled axis at standstill (M_ADD1 = −2048, the value of TV16): sent in
 // the MC_Servo after the call, it enters the simulated drive's torque demand in the step after that — a
-// disturbance torque the drive's speed loop and the TO's position loop then work off. ActualTorque follows the
-// motor torque through M_ACT (N2 of 10 Nm, one step 10/16384 Nm).
+// disturbance torque the drive's speed loop and the TO's position loop then work off. ActualTorque follows
+// the motor torque through M_ACT (N2 of 10 Nm, one step 10/16384 Nm).
+// spec 01 §8.12 (MC_TorqueAdditive), spec 06 §8 and §11 TV16 (M_ADD1/M_ACT in N2 of the reference torque:
+// −1.25 Nm = −2048).
 TEST(TorqueData, AdditiveTorqueReachesTheMotor) {
   TorqueDataMachine m;
   ASSERT_GT(m.enable(), 0);
@@ -374,6 +376,8 @@ TEST(TorquePrecontrol, TorqueFromAccelerationAndInertia) {
 // On the axis: MoveVelocity at 1000 mm/s² (trapezoid, no dynamic filter) -> TotalTorqueAdditive =
 // 0.188564 Nm while accelerating, 0 at constant velocity, −0.188564 Nm while braking; with MC_TorqueAdditive
 // 1 Nm the two add up (seed L7374) and M_ADD1 carries the sum (N2 of 10 Nm). Mode 0 sends nothing.
+// spec 02 §7.5 (seed 004 §6.13.5 torque precontrol, added to MC_TorqueAdditive, seed L7374), spec 06 §8
+// (M_ADD1).
 TEST(TorquePrecontrol, AccelerationBasedPrecontrolOnTheAxis) {
   const double expected = 1.0e-4 * 2.0 * kPi / 0.010 + 79.0 * 0.010 / (2.0 * kPi);
   auto d = TorqueDataMachine::reference_10();

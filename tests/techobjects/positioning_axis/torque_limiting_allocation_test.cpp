@@ -25,6 +25,8 @@ constexpr int kCycles = 20'000;
 constexpr int kCycles = 200'000;
 #endif
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over spec 01 §8.10/§8.11 (torque limiting,
+// fixed-stop clamping).
 TEST(TorqueLimitingAllocation, ClampReleaseAndLimitChangesAllocateNothing) {
   auto p = tomc::testing::linear_drive();
   p.machine.positive_fixed_stop = 32.0;
@@ -77,6 +79,8 @@ TEST(TorqueLimitingAllocation, ClampReleaseAndLimitChangesAllocateNothing) {
 // Positioning back and forth with torque precontrol on, while MC_TorqueAdditive and MC_TorqueRange are
 // switched on and off and their values change, and MC_TorqueLimiting is tried against MC_TorqueRange (the
 // exclusion's error path): nothing allocates.
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over spec 01 §8.12/§8.13 (MC_TorqueAdditive,
+// MC_TorqueRange) and spec 02 §7.5.
 TEST(TorqueLimitingAllocation, TelegramSevenFiftyJobsAllocateNothing) {
   auto d = tomc::testing::linear_axis_data();
   d.TorquePreControl.Mode = 1;

@@ -25,6 +25,7 @@ constexpr int kCycles = 20'000;
 constexpr int kCycles = 1'000'000;
 #endif
 
+// tomc's own: proves the counting allocator counts, so the zero of the cyclic-path tests can fail.
 TEST(Allocation, CountingAllocatorSeesSetUp) {
   // The counter works: set-up of a runtime allocates.
   const auto before = tomc::testing::allocation_count();
@@ -36,6 +37,8 @@ TEST(Allocation, CountingAllocatorSeesSetUp) {
   EXPECT_GT(tomc::testing::allocation_count(), before);
 }
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over the drive telegrams of spec 06 §2 (1–6,
+// 102, 103, 105, 106) and 750.
 TEST(Allocation, SixteenDrivesRunWithoutAllocating) {
   Runtime rt(RuntimeConfig{0.001, 1, 1});
   // A mix of telegrams so every codec path and the encoder, torque and DSC models run.

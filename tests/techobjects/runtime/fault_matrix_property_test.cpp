@@ -763,6 +763,8 @@ class Machine {
   Tally tally_;
 };
 
+// Properties F1–F5 of the file header: spec 02 §1.1, §3.4, §4.5, spec 04 §7, spec 06 §4, §5.2, spec 07
+// §2.1, spec 01 §7; table in docs/reliability.md §1.
 TEST(FaultMatrixProperty, AlarmsReactionsLimitsFollowersAndResetUnderRandomFaults) {
   Tally total;
   for (int s = 0; s < kSeeds; ++s) {

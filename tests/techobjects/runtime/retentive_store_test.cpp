@@ -43,6 +43,8 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
+// Decision H5 (the retentive store file), spec 02 §5.9 (the absolute-encoder adjustment survives
+// power-off).
 TEST_F(RetentiveStoreTest, RoundTripIsExact) {
   const fs::path file = dir_ / "retain.dat";
   std::vector<RetainedRecord> records{
@@ -68,6 +70,7 @@ TEST_F(RetentiveStoreTest, RoundTripIsExact) {
 }
 
 // A crash while writing leaves "<file>.tmp" behind and the previous file intact: it still reads.
+// Decision H5 (written atomically: tmp + fsync + rename).
 TEST_F(RetentiveStoreTest, AnInterruptedWriteLeavesTheOldFile) {
   const fs::path file = dir_ / "retain.dat";
   std::string error;
@@ -80,6 +83,7 @@ TEST_F(RetentiveStoreTest, AnInterruptedWriteLeavesTheOldFile) {
   EXPECT_EQ(read.records[0].data.AbsEncoderOffset, 5.0);
 }
 
+// Decision H5 (format line and FNV-1a checksum: a damaged file is never trusted).
 TEST_F(RetentiveStoreTest, DamagedFilesAreReportedNotTrusted) {
   const fs::path file = dir_ / "retain.dat";
   EXPECT_EQ(techobjects::read_retain_file(file).status, RetainFileStatus::kMissing);
@@ -256,6 +260,7 @@ TEST_F(RetentiveStoreTest, EveryAbsoluteEncoderKeepsItsAdjustment) {
 
 // Missing file, corrupt file, no record for this TO: alarm 432 with the cause, not homed; an incremental axis
 // attached to the same store is not concerned.
+// Decision H5 (missing file, damaged file, no record: alarm 432 with the cause, not homed), spec 02 §5.12.
 TEST_F(RetentiveStoreTest, LostAdjustmentsRaiseAlarm432) {
   const fs::path file = dir_ / "retain.dat";
   const auto check = [&](std::uint32_t cause) {

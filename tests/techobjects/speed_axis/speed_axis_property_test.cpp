@@ -115,6 +115,8 @@ void check(const SpeedAxisMachine& m, double previous_velocity, double previous_
     ++v.reaction;
 }
 
+// The properties of the file header: spec 01 §8.3, §8.9, seed 004 §6.7.7 (decision S4), spec 02 §3.4,
+// ARCHITECTURE-GUIDE §7.
 TEST(SpeedAxisProperty, RandomSequencesKeepTheLimits) {
   constexpr int kAxes = 3;
   std::vector<std::unique_ptr<SpeedAxisMachine>> machines;

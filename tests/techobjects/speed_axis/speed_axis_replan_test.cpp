@@ -12,6 +12,8 @@ namespace {
 
 using tomc::testing::SpeedAxisMachine;
 
+// Decision R1 of "Positioning axis: replanning" (a ramp to standstill replacing a braking one with a softer
+// jerk: the jerk is raised so that v and a reach 0 together; a halt never reverses), spec 03 §4.4.
 TEST(SpeedAxisReplan, AHaltWithASofterJerkDoesNotReverse) {
   SpeedAxisMachine m;
   m.power.Enable = true;

@@ -215,6 +215,7 @@ TEST(SpeedAxis, StopBlocksNewMotionWhileExecuteIsTrue) {
   EXPECT_FALSE(m.move.Error);
 }
 
+// spec 03 §4.13 (MC_Stop.Mode: 0, 1 invalid, 2, 3).
 TEST(SpeedAxis, StopModeOneIsInvalid) {
   SpeedAxisMachine m(2, trapezoid_data());
   ASSERT_GT(m.enable(), 0);
@@ -244,6 +245,7 @@ TEST(SpeedAxis, InvalidParametersAreRejected) {
   EXPECT_EQ(m.move.ErrorID, eid::kInvalidVelocity);
 }
 
+// spec 03 §4.8 prerequisites (the TO must be enabled: 16#8103, docs/errors.md).
 TEST(SpeedAxis, MotionNeedsAnEnabledAxis) {
   SpeedAxisMachine m(2, trapezoid_data());
   m.move.Execute = true;
@@ -329,6 +331,7 @@ TEST(SpeedAxis, DriveFaultRemovesEnableAndResetRecovers) {
 }
 
 // A frozen drive sign-of-life raises alarm 406 (docs/decisions.md) and removes the enable.
+// Decision S2 (alarm 406, reaction 4 remove enable), spec 06 §5.2 (controller-side monitor).
 TEST(SpeedAxis, SignOfLifeFailureRaisesAnAlarm) {
   SpeedAxisMachine m(3, trapezoid_data());
   ASSERT_GT(m.enable(), 0);

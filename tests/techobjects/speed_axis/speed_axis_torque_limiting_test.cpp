@@ -75,6 +75,8 @@ TEST(SpeedAxisTorqueLimiting, LoadSideLimitThroughTheGear) {
 
 // The drive accelerates at the reduced torque: with 0.1 N·m the motor torque stays at the limit while the
 // speed ramps up, and InLimitation (X27) shows it (MELDW.1 cleared at 90 % of the limit, p2194).
+// spec 01 §8.10 (torque limiting; InLimitation at p2194 = 90 % of the limit), spec 04 §5.1 (StatusWord.X27
+// InLimitation).
 TEST(SpeedAxisTorqueLimiting, InLimitationWhileTheDriveAcceleratesAtTheLimit) {
   TorqueSpeedAxis m;
   m.enable();

@@ -900,6 +900,8 @@ class CamRun {
   bool dumped_ = false;
 };
 
+// The properties of the file header: spec 07 §3.3, §3.4, §6.8, §1.9, §1.10, spec 03 §3.2, §6.6, decision
+// C23.
 TEST(CammingProperty, RandomCamsLeadersAndJobs) {
   std::printf(
       "base seed %u, 5 runs (3 axis leaders, 1 encoder leader with encoder faults, 1 modulo axis leader) x "

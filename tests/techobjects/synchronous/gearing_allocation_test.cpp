@@ -564,6 +564,7 @@ std::vector<Step> script() {
   return s;
 }
 
+// ARCHITECTURE-GUIDE §7 (no allocation in the cyclic path), over the gearing jobs of spec 07 §2.
 TEST(GearingAllocation, EveryGearingJobKindRunsWithoutAllocating) {
   Machine m;
   const std::vector<Step> steps = script();

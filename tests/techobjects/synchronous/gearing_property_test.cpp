@@ -934,6 +934,7 @@ void run_scenario(LeaderKind kind, std::uint32_t seed, bool jerk_limit, Stats& t
   total.dynamic_sync_cycles += s.dynamic_sync_cycles;
 }
 
+// The properties of the file header: spec 07 §2.1, §2.3, §6.1, §6.2, §6.5, §1.9, spec 02 §3.1.
 TEST(GearingProperty, RandomLeadersRatiosAndJobs) {
   std::printf("base seed %u, 8 runs (4 leader kinds, MaxJerk 0 / 1e6) x %d cycles\n", base_seed(), kCycles);
   Stats total;
