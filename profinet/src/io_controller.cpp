@@ -559,14 +559,14 @@ AlarmTimerAction IoController::alarm_timer(bool high_priority, std::uint64_t now
     error.tack = false;
     error.send_sequence = apm.last_sent;
     error.ack_sequence = apm.received.value_or(0xFFFE);
-    error.error = kAlarmSendTimeoutStatus;
+    error.error = kAlarmAckSendTimeoutStatus;
     if (device_mac_) {
       const EthernetHeader header{*device_mac_, own_mac_,
                                   VlanTag{high_priority ? kPriorityAlarmHigh : kPriorityAlarmLow, 0}};
       if (encode(header, error, out, out_bytes) != ProfinetError::kNone) out_bytes = 0;
     }
     abort_ar();
-    last_error_ = kAlarmSendTimeoutStatus;
+    last_error_ = kAlarmAckSendTimeoutStatus;
     return AlarmTimerAction::kAbort;
   }
   if (!resend_alarm_ack(apm, out, out_bytes, now_us)) return AlarmTimerAction::kNone;

@@ -1435,9 +1435,9 @@ TEST(GatewayNetns, AnUnacknowledgedAlarmAckEndsTheArAndTheGatewayReconnects) {
   // pause of the machine before it reads the first shortens the span (the CI's VM pauses up to 34 ms).
   EXPECT_GE(device.alarm_ack_span_us(), 350'000u);
   // Before the gateway ended the AR it told the device so (decision I35): one ERR-RTA-PDU, low priority,
-  // PNIOStatus 0xCF81FD08 (RTA error, PNIO, RTA_ERR_CLS_PROTOCOL, "AR alarm send.cnf(-)").
+  // PNIOStatus 0xCF81FD09 (RTA error, PNIO, RTA_ERR_CLS_PROTOCOL, "AR alarm-ack-send.cnf(-)").
   EXPECT_EQ(device.rta_errors(), 1);
-  EXPECT_EQ(device.last_rta_error(), 0xCF81FD08u);
+  EXPECT_EQ(device.last_rta_error(), 0xCF81FD09u);
   const SeenOverDds seen = observer.until([](const SeenOverDds& s) {
     return s.device.state == "connected" && s.device.detail.find("RTA timeout") != std::string::npos;
   });

@@ -484,6 +484,13 @@ TEST(Gsdml, ParameterRecordDataItemsBecomeTheRecordsOfTheirPlace) {
        "<Const>: Data \"0x01,,0x03\" has an empty byte"},
       {R"(<ParameterRecordDataItem Index="1" Length="2"/><ParameterRecordDataItem Index="1" Length="2"/>)",
        "<ParameterRecordDataItem>: Index 1 twice in one submodule"},
+      // A Float32 default is one finite number, all of the attribute (review of stop 33).
+      {R"(<ParameterRecordDataItem Index="1" Length="4"><Ref DataType="Float32" ByteOffset="0" DefaultValue="1.5abc"/></ParameterRecordDataItem>)",
+       "<Ref>: DefaultValue \"1.5abc\" is not a finite Float32"},
+      {R"(<ParameterRecordDataItem Index="1" Length="4"><Ref DataType="Float32" ByteOffset="0" DefaultValue="nan"/></ParameterRecordDataItem>)",
+       "<Ref>: DefaultValue \"nan\" is not a finite Float32"},
+      {R"(<ParameterRecordDataItem Index="1" Length="4"><Ref DataType="Float32" ByteOffset="0" DefaultValue="1e39"/></ParameterRecordDataItem>)",
+       "<Ref>: DefaultValue \"1e39\" is not a finite Float32"},
   };
   for (const Case& c : cases) {
     const std::string message = error_of(replace_records(
@@ -585,4 +592,33 @@ TEST(GatewayConfig, GsdmlParameterRecordsAreWrittenFirstAndTheFileMayReplaceThem
   EXPECT_EQ(controller->state(), pn::ControllerArState::kOffline);
   EXPECT_EQ(controller->last_error(), (pn::PnioStatus{0xDF, 0x80, 0xB8, 0x00}));
   EXPECT_EQ(drive->monitoring_records(), 0);
+}
+
+// An IODWriteReq addresses its record by API, slot, subslot and index (IEC 61158-6-10), and a PROFIdrive
+// submodule is in API 0x3A00: a record of the file goes to the API of the submodule plugged at its place, as
+// the GSDML's own records do (decision I34; found in the review of stop 33, when the file's records kept API
+// 0).
+TEST(GatewayConfig, AFileRecordGoesToTheApiOfTheSubmoduleAtItsPlace) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tomc17-gsdml-api-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "drive.xml") << edited(
+      "<SubmoduleItem ID=\"TEL3\" SubmoduleIdentNumber=\"0x00010003\"",
+      "<SubmoduleItem ID=\"TEL3\" API=\"0x3A00\" SubmoduleIdentNumber=\"0x00010003\"");
+  sc::ProfinetGatewayConfig config;
+  const auto problems = gateway_problems("\"gsdml\": \"" + (dir / "drive.xml").string() + R"(",
+      "modules": [ { "slot": 1, "module": "DO_DRIVE", "submodules": [ { "subslot": 2, "submodule": "TEL3" } ] } ],
+      "records": [ { "slot": 1, "subslot": 2, "index": 1, "data": "01" },
+                   { "slot": 0, "subslot": 1, "index": 2, "data": "02" } ])",
+                                         config);
+  std::filesystem::remove_all(dir);
+  ASSERT_TRUE(problems.empty()) << only(problems);
+  const auto& records = config.devices.at(0).records;
+  ASSERT_EQ(records.size(), 3u);  // the DAP's GSDML record, then the file's two in their order
+  EXPECT_TRUE(records[0].from_gsdml);
+  EXPECT_EQ(records[0].api, 0u);
+  EXPECT_EQ(records[1].index, 1);
+  EXPECT_EQ(records[1].api, 0x3A00u);  // the telegram submodule's
+  EXPECT_EQ(records[2].index, 2);
+  EXPECT_EQ(records[2].api, 0u);  // the DAP's
 }

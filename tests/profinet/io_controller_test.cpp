@@ -546,9 +546,9 @@ TEST(IoController, ALostAlarmAckIsResentAfterTheRtaTimeoutUntilTheDeviceAcknowle
 }
 
 // After RTARetries resends without the device's acknowledge, one more timeout ends the AR (APMS
-// TimerExpired with the retry counter at 0: A_Data.cnf(-), the AR aborted with "AR alarm send.cnf(-)",
-// p-net PNET_ERROR_CODE_2_ABORT_AR_ALARM_SEND_CNF_NEG). Factor 1, retries 3, 1 ms cycles: the AlarmAck of
-// cycle 5 is resent in cycles 105, 205 and 305, the AR ends in cycle 405 (kOffline, PNIOStatus 0xCF81FD08),
+// TimerExpired with the retry counter at 0: A_Data.cnf(-), the AR aborted with "AR alarm-ack-send.cnf(-)",
+// p-net PNET_ERROR_CODE_2_ABORT_AR_ALARM_ACK_SEND_CNF_NEG). Factor 1, retries 3, 1 ms cycles: the AlarmAck of
+// cycle 5 is resent in cycles 105, 205 and 305, the AR ends in cycle 405 (kOffline, PNIOStatus 0xCF81FD09),
 // the cyclic frames stop; the same controller reconnects and its channels start afresh. Low priority here;
 // a repeated notification's resend counts towards the same RTARetries and restarts the timeout (I28).
 // IEC 61158-6-10 APMS (RTARetries, TimerExpired: the AR aborted), decisions I28 and I30.
@@ -577,8 +577,8 @@ TEST(IoController, RtaRetriesUnacknowledgedResendsEndTheAr) {
   EXPECT_EQ(resends, (std::vector<int>{105, 205, 305}));
   EXPECT_EQ(aborted_in, 405);
   EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
-  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD08u);
-  EXPECT_EQ(pn::kAlarmSendTimeoutStatus.value(), 0xCF81FD08u);
+  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD09u);
+  EXPECT_EQ(pn::kAlarmAckSendTimeoutStatus.value(), 0xCF81FD09u);
   std::array<std::uint8_t, 1518> frame{};
   EXPECT_EQ(pair.controller->next_output_frame(frame), 0u);  // the device's watchdog will end its side
   EXPECT_EQ(run_timers(pair, 10'000'000).low, pn::AlarmTimerAction::kNone);  // nothing after the end
@@ -651,7 +651,7 @@ TEST(IoController, CyclicCallsDoNotAllocate) {
 // Decision I35, IEC 61158-6-10 RTA-ERR-PDU: when the RTA timer ends the AR (factor 1, retries 3: the
 // AlarmAck of cycle 5 resent in 105, 205, 305, the end in 405), the timer's buffer holds an ERR-RTA-PDU for
 // the device: PDUType 4, the device's alarm reference as destination (the notification's source endpoint),
-// the same priority's FrameID and VLAN priority, VarPart the PNIOStatus of the end (0xCF81FD08, "AR alarm
+// the same priority's FrameID and VLAN priority, VarPart the PNIOStatus of the end (0xCF81FD09, "AR alarm
 // send.cnf(-)"), as the device would read it.
 TEST(IoController, TheRtaTimerSendsAnErrRtaPduBeforeItEndsTheAr) {
   Pair pair = make_rta_pair(1, 3);
@@ -675,7 +675,7 @@ TEST(IoController, TheRtaTimerSendsAnErrRtaPduBeforeItEndsTheAr) {
   EXPECT_EQ(error.destination_endpoint, notification.source_endpoint);
   EXPECT_EQ(error.source_endpoint, notification.destination_endpoint);
   EXPECT_FALSE(error.has_block);
-  EXPECT_EQ(error.error.value(), 0xCF81FD08u);
+  EXPECT_EQ(error.error.value(), 0xCF81FD09u);
   EXPECT_EQ(error.ack_sequence, notification.send_sequence);
   // Ethernet: to the device, from us, VLAN priority 6 (high); then FrameID 0xFC01, the endpoints, PDUType
   // 0x14 (ERR, version 1) at byte 24, AddFlags, SendSeqNum, AckSeqNum, VarPartLen 4 and the status bytes.
@@ -734,7 +734,7 @@ TEST(IoController, TheDevicesErrRtaPduEndsTheAr) {
   EXPECT_EQ(answer.frames, 0u);
   EXPECT_TRUE(answer.ack.empty());
   EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
-  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD08u);
+  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD09u);
   EXPECT_TRUE(pair.controller->rta_error_received());
   EXPECT_FALSE(pair.controller->rta_error_high_priority());
   std::array<std::uint8_t, 1518> frame{};

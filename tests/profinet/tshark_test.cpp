@@ -203,7 +203,7 @@ std::vector<Frame> every_frame_type() {
   pn::RtaFrame error = transport;
   error.frame_id = pn::kFrameIdAlarmLow;
   error.pdu_type = pn::RtaPduType::kError;
-  error.error = pn::kAlarmSendTimeoutStatus;
+  error.error = pn::kAlarmAckSendTimeoutStatus;
   for (const auto& [rta, to_controller] :
        {std::pair{alarm, true}, {transport, false}, {ack, false}, {error, false}}) {
     Frame f(256);

@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 #include "tomc/profinet/gsdml.hpp"
 
@@ -265,10 +268,13 @@ void apply_ref(const xml::XMLElement& ref, std::vector<std::uint8_t>& data) {
     return;
   }
   if (type == "Float32") {
+    // The whole attribute must be one finite number: sscanf-like parsing would take "1.5abc", "nan", "inf".
     const char* text = ref.Attribute("DefaultValue");
+    const std::string_view digits = text == nullptr ? std::string_view{} : std::string_view{text};
     float value = 0;
-    if (text == nullptr || ref.QueryFloatAttribute("DefaultValue", &value) != xml::XML_SUCCESS)
-      fail(ref, "DefaultValue is not a Float32");
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (digits.empty() || error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(value))
+      fail(ref, "DefaultValue \"" + std::string(digits) + "\" is not a finite Float32");
     put_bytes(ref, data, offset, 4, std::bit_cast<std::uint32_t>(value));
     return;
   }

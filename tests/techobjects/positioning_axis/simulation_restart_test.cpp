@@ -126,8 +126,9 @@ TEST(SimulationRestart, RealToSimulatedStopsCommandingTheDrive) {
 
 // 1 -> 0: a simulated axis built with a drive keeps it (decision B8); after the restart the drive is used
 // again: MC_Power waits for its state machine (spec 01 §6), the actual values come from its encoder — the
-// incremental encoder starts at 0 after the restart (spec 04 §8 rule 8), not at the simulated 30 mm — and a
-// 10 mm move moves the drive's load by 10 mm.
+// restart loses the reference (spec 04 §8 rule 8, HomingDone reset), and the incremental encoder's count starts
+// at 0 then (tomc's own: the drive's encoder, not the simulated 30 mm) — and a 10 mm move moves the drive's load
+// by 10 mm.
 TEST(SimulationRestart, SimulatedToRealUsesTheDriveAgain) {
   PositioningAxisMachine m(simulated_data());
   EXPECT_EQ(m.enable(), 2);

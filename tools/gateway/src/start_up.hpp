@@ -29,7 +29,7 @@ struct ParameterSteps {
   std::uint16_t slot = 1;
   bool check_telegram = true;
   std::uint16_t telegram = 0;     // p0922 must be this
-  float reference_speed_rpm = 0;  // p2000 as read (out; read with p0922, after the writes)
+  float reference_speed_rpm = 0;  // p2000 (out): read with p0922 before the writes; a written p2000 replaces it
   std::vector<SlotParameterWrite> writes;
 };
 
@@ -50,11 +50,11 @@ std::vector<std::uint8_t> wait_for_hello(profinet::RawSocket& raw, const std::ve
                                          std::chrono::milliseconds wait);
 
 // Why the RTA timer ended an AR (IoController::alarm_timer's kAbort; the AR's PNIOStatus is
-// kAlarmSendTimeoutStatus): "RTA timeout: AlarmAck (high) resent 3 times every 100 ms".
+// kAlarmAckSendTimeoutStatus): "RTA timeout: AlarmAck (high) resent 3 times every 100 ms".
 std::string describe_alarm_timeout(bool high_priority, const profinet::ControllerDeviceConfig& device);
 
 // Why the device ended an AR (its ERR-RTA-PDU, decision I35): "RTA ERR from the device (low): PNIOStatus
-// 0xCF81FD08".
+// 0xCF81FD09".
 std::string describe_rta_error(bool high_priority, std::uint32_t status);
 
 // "slot 1 subslot 2: wrong submodule (ident 0x10002)"; "" when no module differs.

@@ -349,6 +349,18 @@ void read_gsdml_modules(ObjectReader& r, const std::filesystem::path& base, Gsdm
         module.submodules.push_back({s.subslot, s.ident, s.input_length, s.output_length});
       device.modules.push_back(std::move(module));
     }
+    // A record of the file goes to the API of the submodule plugged at its slot and subslot (a PROFIdrive
+    // telegram's is 0x3A00, not 0; the expected modules are one entry per slot and API): a device refuses a
+    // write addressed to another API (review of stop 33).
+    for (ProfinetRecordConfig& own : device.records) {
+      for (const ProfinetModuleConfig& m : device.modules) {
+        const bool plugged = m.slot == own.slot && std::any_of(m.submodules.begin(), m.submodules.end(),
+                                                               [&](const ProfinetSubmoduleConfig& sub) {
+                                                                 return sub.subslot == own.subslot;
+                                                               });
+        if (plugged) own.api = m.api;
+      }
+    }
     // The plugged submodules' ParameterRecordDataItems go first (decision I34); a record of the file's own
     // "records" for the same place and index replaces the GSDML default (the file is the user's setting).
     std::vector<ProfinetRecordConfig> records;

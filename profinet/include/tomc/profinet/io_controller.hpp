@@ -54,9 +54,9 @@ enum class AlarmTimerAction : std::uint8_t {
 };
 
 // The PNIOStatus of an AR this controller ended because the device did not acknowledge our alarm DATA:
-// ErrorCode RTA error 0xCF, ErrorDecode PNIO 0x81, ErrorCode1 RTA_ERR_CLS_PROTOCOL 0xFD, ErrorCode2 0x08
-// "AR alarm send.cnf(-)" (IEC 61158-6-10 AR abort reasons; p-net pnet_api.h).
-inline constexpr PnioStatus kAlarmSendTimeoutStatus{0xCF, 0x81, 0xFD, 0x08};
+// ErrorCode RTA error 0xCF, ErrorDecode PNIO 0x81, ErrorCode1 RTA_ERR_CLS_PROTOCOL 0xFD, ErrorCode2 0x09
+// "AR alarm-ack-send.cnf(-)" (IEC 61158-6-10 AR abort reasons; p-net pnet_api.h).
+inline constexpr PnioStatus kAlarmAckSendTimeoutStatus{0xCF, 0x81, 0xFD, 0x09};
 
 enum class ControllerArState : std::uint8_t {
   kOffline,         // not found yet / AR lost: Identify again
@@ -153,7 +153,7 @@ class IoController {
   // side), called every cycle with the cycle's clock: while our AlarmAck DATA waits for the device's
   // acknowledge, RTATimeoutFactor × 100 ms after it was last sent it is sent again (kResend, its bytes in out
   // and out_bytes), at most RTARetries times counting the resends of on_alarm; one timeout after the last
-  // one, the AR ends (kAbort: kOffline, last_error() kAlarmSendTimeoutStatus; the caller sends the
+  // one, the AR ends (kAbort: kOffline, last_error() kAlarmAckSendTimeoutStatus; the caller sends the
   // ERR-RTA-PDU in out, which names that status to the device, and reconnects). Resends from all causes
   // (timer, repeated notification, NACK) share the RTARetries budget and restart the timeout.
   AlarmTimerAction alarm_timer(bool high_priority, std::uint64_t now_us, std::span<std::uint8_t> out,

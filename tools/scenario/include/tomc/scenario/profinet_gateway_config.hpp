@@ -43,7 +43,7 @@ struct ProfinetRecordConfig {
   std::uint16_t subslot = 1;
   std::uint16_t index = 0;
   std::vector<std::uint8_t> data;  // "data": hex digits, two per byte, spaces allowed ("01 00 01 01 10 01")
-  std::uint32_t api = 0;           // the GSDML submodule's API; 0 for the file's records
+  std::uint32_t api = 0;           // the API of the submodule plugged at slot/subslot (from the GSDML); else 0
   bool from_gsdml = false;         // a ParameterRecordDataItem's default rather than the file's "records"
 };
 
