@@ -161,7 +161,13 @@ std::variant<pn::ParameterResponse, std::string> exchange(pn::IoController& cont
   const auto data = controller.on_record_response(read);
   if (!data) return "parameter read refused, " + status();
   auto response = pn::decode_parameter_response(*data);
-  if (!response) return std::string("the drive's parameter response is malformed");
+  // The codec decodes the 16- and 32-bit formats (Integer16/32, Unsigned16/32, FloatingPoint, Word,
+  // DoubleWord, Error); a byte-wide value (Unsigned8, Byte, Boolean, ...) fails here too (review of stop 33).
+  if (!response) {
+    return std::string(
+        "the drive's parameter response is malformed or has a format other than the 16- and 32-bit ones "
+        "tomc reads (Integer16/32, Unsigned16/32, FloatingPoint, Word, DoubleWord)");
+  }
   return std::move(*response);
 }
 
