@@ -651,8 +651,8 @@ TEST(IoController, CyclicCallsDoNotAllocate) {
 // Decision I35, IEC 61158-6-10 RTA-ERR-PDU: when the RTA timer ends the AR (factor 1, retries 3: the
 // AlarmAck of cycle 5 resent in 105, 205, 305, the end in 405), the timer's buffer holds an ERR-RTA-PDU for
 // the device: PDUType 4, the device's alarm reference as destination (the notification's source endpoint),
-// the same priority's FrameID and VLAN priority, VarPart the PNIOStatus of the end (0xCF81FD09, "AR alarm
-// send.cnf(-)"), as the device would read it.
+// the same priority's FrameID and VLAN priority, VarPart the PNIOStatus of the end (0xCF81FD09, "AR
+// alarm-ack-send.cnf(-)": the DATA left unacknowledged is our AlarmAck), as the device would read it.
 TEST(IoController, TheRtaTimerSendsAnErrRtaPduBeforeItEndsTheAr) {
   Pair pair = make_rta_pair(1, 3);
   ASSERT_TRUE(start_up(pair));
@@ -685,7 +685,7 @@ TEST(IoController, TheRtaTimerSendsAnErrRtaPduBeforeItEndsTheAr) {
   EXPECT_EQ(error_frame[14] >> 5, 6);
   EXPECT_EQ(error_frame[24], 0x14);
   EXPECT_EQ((std::vector<std::uint8_t>(error_frame.begin() + 30, error_frame.begin() + 36)),
-            (std::vector<std::uint8_t>{0x00, 0x04, 0xCF, 0x81, 0xFD, 0x08}));
+            (std::vector<std::uint8_t>{0x00, 0x04, 0xCF, 0x81, 0xFD, 0x09}));
   EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
 }
 
@@ -729,12 +729,12 @@ TEST(IoController, TheDevicesErrRtaPduEndsTheAr) {
   error.pdu_type = pn::RtaPduType::kError;
   error.has_block = false;
   error.tack = false;
-  error.error = {0xCF, 0x81, 0xFD, 0x08};
+  error.error = {0xCF, 0x81, 0xFD, 0x05};  // the device's reason: "AR consumer DHT/WDT expired"
   const AlarmAnswer answer = offer(pair, error, 1000);
   EXPECT_EQ(answer.frames, 0u);
   EXPECT_TRUE(answer.ack.empty());
   EXPECT_EQ(pair.controller->state(), pn::ControllerArState::kOffline);
-  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD09u);
+  EXPECT_EQ(pair.controller->last_error().value(), 0xCF81FD05u);  // the device's, not ours
   EXPECT_TRUE(pair.controller->rta_error_received());
   EXPECT_FALSE(pair.controller->rta_error_high_priority());
   std::array<std::uint8_t, 1518> frame{};
