@@ -73,7 +73,7 @@ struct Link {
 // the parameter addresses (attribute 0x10 value, elements, number, subindex), then per parameter its value
 // (format, number of values, values; FloatingPoint 0x08 as IEEE single). The positive response is the header
 // alone (ID 0x02); the negative one (ID 0x82) has a value per parameter: format 0x40 (Zero) for an executed
-// one, 0x44 (Error) with the error number for a refused one.
+// one, 0x44 (Error) with the error number for a refused one. Decision I33.
 TEST(ParameterAccess, AChangeRequestAndItsResponsesHaveTheProfileBytes) {
   const pn::ParameterRequest change{5,
                                     pn::parameter_request_id::kChange,
@@ -172,6 +172,7 @@ TEST(ParameterAccess, AFileValueFitsItsParameterFormatOrIsRefused) {
 // is taken and read back, and the drive's speed scaling follows it; p0922 is read-only (0x01); a value
 // outside p2000's limits 0x02, another format 0x05, an unknown number 0x00, a subindex 0x03; one refusal in a
 // two-parameter request makes the answer 0x82 with 0x40 for the executed one. The AR runs on throughout.
+// Decision I33 (what the emulated drive holds and refuses).
 TEST(ProfinetDrive, AnswersChangeRequestsOfTheParametersItHolds) {
   Link link;
   ASSERT_TRUE(pn::testing::start_up(*link.controller, link.emulator->device()));
